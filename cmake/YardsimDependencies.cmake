@@ -1,0 +1,24 @@
+# Finds every third-party package through its CONFIG package. A missing one stops configure
+# with the Debian package that provides it (scripts/setup.sh installs them all).
+macro(yardsim_require package debian)
+  find_package(${package} CONFIG QUIET ${ARGN})
+  if(NOT ${package}_FOUND)
+    message(FATAL_ERROR
+      "yardsim: CMake package '${package}' not found. Install the Debian package '${debian}' "
+      "(sudo apt-get install --no-install-recommends ${debian}), or run scripts/setup.sh.")
+  endif()
+endmacro()
+
+yardsim_require(Eigen3 libeigen3-dev)
+yardsim_require(Boost libboost-graph-dev COMPONENTS graph)
+yardsim_require(SUNDIALS libsundials-dev)
+yardsim_require(fcl libfcl-dev)
+yardsim_require(yaml-cpp libyaml-cpp-dev)
+yardsim_require(spdlog libspdlog-dev)
+yardsim_require(CLI11 libcli11-dev)
+if(YARDSIM_BUILD_TESTS)
+  yardsim_require(Catch2 catch2)
+endif()
+if(YARDSIM_BUILD_BENCH)
+  yardsim_require(benchmark libbenchmark-dev)
+endif()

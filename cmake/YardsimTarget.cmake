@@ -1,0 +1,51 @@
+# Compiler flags shared by every yardsim target. One C++ standard and one -march setting for
+# every translation unit: mixing them breaks Eigen's alignment assumptions.
+add_library(yardsim_flags INTERFACE)
+target_compile_features(yardsim_flags INTERFACE cxx_std_20)
+target_compile_options(yardsim_flags INTERFACE
+  $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion>
+  $<BUILD_INTERFACE:$<$<BOOL:${YARDSIM_WERROR}>:-Werror>>)
+if(YARDSIM_NATIVE)
+  target_compile_options(yardsim_flags INTERFACE -march=native)
+endif()
+if(YARDSIM_SANITIZE)
+  target_compile_options(yardsim_flags INTERFACE
+    $<BUILD_INTERFACE:-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all>)
+  target_link_options(yardsim_flags INTERFACE
+    $<BUILD_INTERFACE:-fsanitize=address,undefined>)
+endif()
+install(TARGETS yardsim_flags EXPORT yardsimTargets)
+
+# yardsim_layer(NAME SOURCES... [DEPENDS targets...])
+# One library per layer folder, exported as yardsim::NAME. Headers sit next to the sources and
+# are included as "NAME/file.hpp" (build tree: the source root; install tree: include/yardsim).
+function(yardsim_layer name)
+  cmake_parse_arguments(L "" "" "SOURCES;DEPENDS" ${ARGN})
+  if(L_SOURCES)
+    add_library(yardsim_${name} ${L_SOURCES})
+    set(scope PUBLIC)
+  else()
+    add_library(yardsim_${name} INTERFACE)
+    set(scope INTERFACE)
+  endif()
+  add_library(yardsim::${name} ALIAS yardsim_${name})
+  set_target_properties(yardsim_${name} PROPERTIES EXPORT_NAME ${name})
+  target_include_directories(yardsim_${name} ${scope}
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:include/yardsim>)
+  target_link_libraries(yardsim_${name} ${scope} yardsim_flags ${L_DEPENDS})
+  install(TARGETS yardsim_${name} EXPORT yardsimTargets
+    ARCHIVE DESTINATION lib LIBRARY DESTINATION lib)
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/yardsim/${name}
+    FILES_MATCHING PATTERN "*.hpp")
+endfunction()
+
+# yardsim_test(NAME SOURCE... LIBS...) — one Catch2 executable per test file.
+function(yardsim_test name)
+  cmake_parse_arguments(T "" "" "SOURCES;LIBS" ${ARGN})
+  add_executable(${name} ${T_SOURCES})
+  target_link_libraries(${name} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
+  target_compile_definitions(${name} PRIVATE
+    YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  catch_discover_tests(${name})
+endfunction()

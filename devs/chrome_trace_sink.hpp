@@ -1,0 +1,33 @@
+#pragma once
+// Chrome Trace Event JSON (opens in Perfetto or chrome://tracing): one track (tid) per atomic
+// named by its path; steps of discrete-time (DTSS) atomics as complete spans from the previous
+// transition to this one; other transitions and every output message as instants.
+// Timestamps are microseconds of simulation time. The file is a JSON object
+// {"traceEvents":[...],"displayTimeUnit":"ms"} closed by close() or the destructor.
+#include "devs/trace_record.hpp"
+
+namespace yardsim::devs {
+
+class ChromeTraceSink final : public Listener {
+ public:
+  explicit ChromeTraceSink(TraceStream stream);
+  ~ChromeTraceSink() override;
+
+  void onStart(Time t, std::span<AtomicBase* const> atomics) override;
+  void onOutput(Time t, const AtomicBase& m, const PortBase& port) override;
+  void onTransition(Time t, const AtomicBase& m, Transition kind, Time e) override;
+  void onEnd(Time t) override;
+  // () => the closing brackets written; later hooks are ignored
+  void close();
+
+ private:
+  void begin(std::string_view phase, std::string_view name, Time t, const AtomicBase& m);
+  void finish();
+
+  TraceStream stream_;
+  std::string ev_;
+  bool first_ = true;
+  bool closed_ = false;
+};
+
+}  // namespace yardsim::devs

@@ -1,0 +1,45 @@
+#pragma once
+// Coupled models: components (atomic or coupled, any depth) and couplings between their
+// ports. External input couplings (this.in -> child.in), internal couplings
+// (child.out -> child.in) and external output couplings (child.out -> this.out) are checked
+// when they are added: direction, ownership and value type.
+#include <memory>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "devs/model.hpp"
+
+namespace yardsim::devs {
+
+class Coupled : public Model {
+ public:
+  explicit Coupled(std::string name) : Model(std::move(name)) {}
+  bool isAtomic() const final { return false; }
+
+  // (model) => owned child; throws ModelError on a duplicate name or a model already placed
+  Model& addComponent(std::unique_ptr<Model> model);
+  template <class M, class... Args>
+  M& add(Args&&... args) {
+    return static_cast<M&>(addComponent(std::make_unique<M>(std::forward<Args>(args)...)));
+  }
+
+  // (from port, to port) => coupling; throws ModelError naming both ports, their value types
+  // and their models' paths when the types differ or the direction is not EIC, IC or EOC
+  void couple(PortBase& from, PortBase& to);
+
+  const std::vector<std::unique_ptr<Model>>& components() const { return components_; }
+  Model* findComponent(std::string_view name) const;
+  std::size_t couplingCount() const { return couplings_; }
+
+ private:
+  // (model subtree) => cached paths dropped, recomputed under the new parent
+  static void dropPathCache(const Model& m);
+
+  std::vector<std::unique_ptr<Model>> components_;
+  std::unordered_map<std::string_view, Model*> byName_;
+  std::size_t couplings_ = 0;
+};
+
+}  // namespace yardsim::devs

@@ -1,0 +1,81 @@
+#include "devs/event_queue.hpp"
+
+namespace yardsim::devs {
+
+void EventQueue::resize(std::size_t models) {
+  heap_.clear();
+  heap_.reserve(models);
+  pos_.assign(models, kAbsent);
+  tn_.assign(models, kInfinity);
+}
+
+std::uint32_t EventQueue::pop() {
+  const std::uint32_t top = heap_.front();
+  removeAt(0);
+  tn_[top] = kInfinity;
+  return top;
+}
+
+void EventQueue::schedule(std::uint32_t model, Time tn) {
+  const Time old = tn_[model];
+  tn_[model] = tn;
+  const std::uint32_t p = pos_[model];
+  if (tn == kInfinity) {
+    if (p != kAbsent) removeAt(p);
+    return;
+  }
+  if (p == kAbsent) {
+    pos_[model] = static_cast<std::uint32_t>(heap_.size());
+    heap_.push_back(model);
+    siftUp(pos_[model]);
+  } else if (tn < old) {
+    siftUp(p);
+  } else if (tn > old) {
+    siftDown(p);
+  }
+}
+
+void EventQueue::removeAt(std::uint32_t pos) {
+  const std::uint32_t gone = heap_[pos];
+  pos_[gone] = kAbsent;
+  const std::uint32_t last = heap_.back();
+  heap_.pop_back();
+  if (pos == heap_.size()) return;
+  heap_[pos] = last;
+  pos_[last] = pos;
+  siftDown(pos);
+  siftUp(pos_[last]);
+}
+
+void EventQueue::siftUp(std::uint32_t pos) {
+  const std::uint32_t m = heap_[pos];
+  const Time t = tn_[m];
+  while (pos > 0) {
+    const std::uint32_t parent = (pos - 1) / 2;
+    if (!(t < tn_[heap_[parent]])) break;
+    heap_[pos] = heap_[parent];
+    pos_[heap_[pos]] = pos;
+    pos = parent;
+  }
+  heap_[pos] = m;
+  pos_[m] = pos;
+}
+
+void EventQueue::siftDown(std::uint32_t pos) {
+  const std::uint32_t n = static_cast<std::uint32_t>(heap_.size());
+  const std::uint32_t m = heap_[pos];
+  const Time t = tn_[m];
+  for (;;) {
+    std::uint32_t child = 2 * pos + 1;
+    if (child >= n) break;
+    if (child + 1 < n && tn_[heap_[child + 1]] < tn_[heap_[child]]) ++child;
+    if (!(tn_[heap_[child]] < t)) break;
+    heap_[pos] = heap_[child];
+    pos_[heap_[pos]] = pos;
+    pos = child;
+  }
+  heap_[pos] = m;
+  pos_[m] = pos;
+}
+
+}  // namespace yardsim::devs

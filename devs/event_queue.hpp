@@ -1,0 +1,35 @@
+#pragma once
+// Indexed binary min-heap of next-event times: O(log n) to schedule, move or remove one model.
+// Passive models (tn = infinity) are kept out of the heap.
+#include <cstdint>
+#include <vector>
+
+#include "devs/time.hpp"
+
+namespace yardsim::devs {
+
+class EventQueue {
+ public:
+  explicit EventQueue(std::size_t models = 0) { resize(models); }
+  void resize(std::size_t models);
+
+  bool empty() const { return heap_.empty(); }
+  Time topTime() const { return empty() ? kInfinity : tn_[heap_.front()]; }
+  // () => index of a model with the smallest tn, removed from the heap
+  std::uint32_t pop();
+  // (model, tn) => scheduled at tn (inserted, moved, or removed when tn is infinite)
+  void schedule(std::uint32_t model, Time tn);
+  Time tn(std::uint32_t model) const { return tn_[model]; }
+
+ private:
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
+  void siftUp(std::uint32_t pos);
+  void siftDown(std::uint32_t pos);
+  void removeAt(std::uint32_t pos);
+
+  std::vector<std::uint32_t> heap_;  // model indices
+  std::vector<std::uint32_t> pos_;   // heap position of each model, or kAbsent
+  std::vector<Time> tn_;             // next event time of each model
+};
+
+}  // namespace yardsim::devs

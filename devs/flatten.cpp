@@ -1,0 +1,49 @@
+#include "devs/flatten.hpp"
+
+#include "devs/coupled.hpp"
+
+namespace yardsim::devs {
+
+FlatModel flatten(Model& root) {
+  FlatModel flat;
+  // (hierarchy) => atomics in depth-first order
+  std::vector<Model*> stack{&root};
+  while (!stack.empty()) {
+    Model* m = stack.back();
+    stack.pop_back();
+    if (m->isAtomic()) {
+      flat.atomics.push_back(static_cast<AtomicBase*>(m));
+    } else {
+      const auto& children = static_cast<Coupled*>(m)->components();
+      for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(it->get());
+    }
+  }
+  for (std::uint32_t i = 0; i < flat.atomics.size(); ++i) flat.atomics[i]->simIndex_ = i;
+
+  // (atomic output ports, couplings) => atomic input ports reached through any depth
+  std::vector<PortBase*> frontier;
+  flat.outBegin.reserve(flat.atomics.size() + 1);
+  for (AtomicBase* a : flat.atomics) {
+    flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
+    for (const auto& out : a->outPorts()) {
+      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+      flat.outPorts.push_back(out.get());
+      frontier.assign(out->links().begin(), out->links().end());
+      while (!frontier.empty()) {
+        PortBase* p = frontier.back();
+        frontier.pop_back();
+        Model& owner = p->owner();
+        if (owner.isAtomic()) {
+          flat.dests.push_back({p, static_cast<AtomicBase&>(owner).simIndex()});
+        } else {
+          frontier.insert(frontier.end(), p->links().begin(), p->links().end());
+        }
+      }
+    }
+  }
+  flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
+  flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+  return flat;
+}
+
+}  // namespace yardsim::devs

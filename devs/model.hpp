@@ -1,0 +1,63 @@
+#pragma once
+// Common base of atomic and coupled models: a name, a parent, typed input and output ports.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "devs/port.hpp"
+
+namespace yardsim::devs {
+
+// A structural mistake in a model (bad name, bad coupling): thrown at construction time.
+class ModelError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Model {
+ public:
+  explicit Model(std::string name);
+  virtual ~Model();
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const std::string& name() const { return name_; }
+  // () => full dot-separated path from the root, e.g. "gpt.ef.genr" (cached)
+  const std::string& path() const;
+  Coupled* parent() const { return parent_; }
+  virtual bool isAtomic() const = 0;
+
+  const std::vector<std::unique_ptr<PortBase>>& inPorts() const { return in_; }
+  const std::vector<std::unique_ptr<PortBase>>& outPorts() const { return out_; }
+  // (name) => input or output port of that name, or nullptr
+  PortBase* findPort(std::string_view name) const;
+
+  template <class T>
+  InPort<T>& addInPort(std::string name) {
+    return static_cast<InPort<T>&>(
+        registerPort(std::make_unique<InPort<T>>(*this, std::move(name)), in_));
+  }
+  template <class T>
+  OutPort<T>& addOutPort(std::string name) {
+    return static_cast<OutPort<T>&>(
+        registerPort(std::make_unique<OutPort<T>>(*this, std::move(name)), out_));
+  }
+
+ private:
+  friend class Coupled;
+  PortBase& registerPort(std::unique_ptr<PortBase> port,
+                         std::vector<std::unique_ptr<PortBase>>& list);
+
+  std::string name_;
+  mutable std::string path_;
+  Coupled* parent_ = nullptr;
+  std::vector<std::unique_ptr<PortBase>> in_;
+  std::vector<std::unique_ptr<PortBase>> out_;
+};
+
+// (name) => throws ModelError unless it is a valid model or port name (non-empty, no '.')
+void checkName(std::string_view name, std::string_view what);
+
+}  // namespace yardsim::devs

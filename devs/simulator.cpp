@@ -1,0 +1,149 @@
+#include "devs/simulator.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace yardsim::devs {
+namespace {
+constexpr std::uint8_t kImminent = 1;
+constexpr std::uint8_t kHasInput = 2;
+}  // namespace
+
+Simulator::Simulator(Model& root, Time t0) : flat_(flatten(root)), t_(t0) {
+  const std::size_t n = flat_.atomics.size();
+  queue_.resize(n);
+  tl_.assign(n, t0);
+  flags_.assign(n, 0);
+  imminent_.reserve(n);
+  receivers_.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    flat_.atomics[i]->initialize(t0);
+    reschedule(i, t0);
+  }
+}
+
+void Simulator::addListener(Listener& listener) { listeners_.push_back(&listener); }
+
+void Simulator::reschedule(std::uint32_t i, Time t) {
+  const Time tn = flat_.atomics[i]->nextEventTime(t);
+  if (!(tn >= t)) {
+    throw SimulationError("model '" + flat_.atomics[i]->path() + "' scheduled its next event at " +
+                          std::to_string(tn) + " s, before the current time " +
+                          std::to_string(t) + " s; a time advance must be >= 0 (or infinity)");
+  }
+  tl_[i] = t;
+  queue_.schedule(i, tn);
+}
+
+void Simulator::start() {
+  if (started_) return;
+  started_ = true;
+  for (Listener* l : listeners_) {
+    l->onStart(t_, flat_.atomics);
+    for (AtomicBase* a : flat_.atomics) l->onState(t_, *a);
+  }
+}
+
+bool Simulator::step() {
+  start();
+  if (queue_.empty()) return false;
+  const Time t = queue_.topTime();
+  t_ = t;
+  const bool traced = !listeners_.empty();
+
+  // (heap) => imminent atomics, removed from the heap
+  imminent_.clear();
+  while (!queue_.empty() && queue_.topTime() == t) {
+    const std::uint32_t i = queue_.pop();
+    imminent_.push_back(i);
+    flags_[i] = kImminent;
+  }
+
+  // (imminent states) => output bags, copied along the flattened couplings
+  receivers_.clear();
+  filled_.clear();
+  for (const std::uint32_t i : imminent_) {
+    AtomicBase* a = flat_.atomics[i];
+    a->lambda();
+    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j) {
+      const PortBase* out = flat_.outPorts[j];
+      if (out->empty()) continue;
+      if (traced)
+        for (Listener* l : listeners_) l->onOutput(t, *a, *out);
+      for (std::uint32_t k = flat_.destBegin[j]; k < flat_.destBegin[j + 1]; ++k) {
+        const FlatModel::Destination& d = flat_.dests[k];
+        if (d.port->empty()) filled_.push_back(d.port);
+        out->appendTo(*d.port);
+        stats_.messages += out->size();
+        if (!(flags_[d.atomic] & kHasInput)) {
+          if (!(flags_[d.atomic] & kImminent)) receivers_.push_back(d.atomic);
+          flags_[d.atomic] |= kHasInput;
+        }
+      }
+    }
+  }
+  if (traced)
+    for (PortBase* p : filled_)
+      for (Listener* l : listeners_)
+        l->onInput(t, static_cast<const AtomicBase&>(p->owner()), *p);
+
+  // (inputs, states) => internal, confluent and external transitions
+  for (const std::uint32_t i : imminent_) {
+    AtomicBase* a = flat_.atomics[i];
+    const Time e = t - tl_[i];
+    Transition kind;
+    if (flags_[i] & kHasInput) {
+      a->deltaConf(e);
+      kind = Transition::Confluent;
+      ++stats_.confluent;
+    } else {
+      a->deltaInt();
+      kind = Transition::Internal;
+      ++stats_.internal;
+    }
+    if (traced)
+      for (Listener* l : listeners_) {
+        l->onTransition(t, *a, kind, e);
+        l->onState(t, *a);
+      }
+  }
+  for (const std::uint32_t r : receivers_) {
+    AtomicBase* a = flat_.atomics[r];
+    const Time e = t - tl_[r];
+    a->deltaExt(e);
+    ++stats_.external;
+    if (traced)
+      for (Listener* l : listeners_) {
+        l->onTransition(t, *a, Transition::External, e);
+        l->onState(t, *a);
+      }
+  }
+
+  // (transitioned atomics) => bags cleared, flags reset, rescheduled
+  for (const std::uint32_t i : imminent_) {
+    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
+      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
+    flags_[i] = 0;
+    reschedule(i, t);
+  }
+  for (const std::uint32_t r : receivers_) {
+    flags_[r] = 0;
+    reschedule(r, t);
+  }
+  for (PortBase* p : filled_) p->clear();
+  ++stats_.eventTimes;
+  return true;
+}
+
+void Simulator::runUntil(Time tEnd) {
+  start();
+  while (!queue_.empty() && queue_.topTime() <= tEnd) step();
+  if (tEnd != kInfinity && tEnd > t_) t_ = tEnd;
+  notifyEnd();
+}
+
+void Simulator::notifyEnd() {
+  for (Listener* l : listeners_) l->onEnd(t_);
+}
+
+}  // namespace yardsim::devs

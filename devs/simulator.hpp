@@ -1,0 +1,75 @@
+#pragma once
+// The Parallel DEVS root coordinator over a flattened model.
+//
+// One event time (step):
+//  1. every imminent atomic (tn == t) runs its output function;
+//  2. each output bag is copied to the input ports it reaches (flattened couplings);
+//  3. imminent atomics with input run deltaConf, imminent ones without run deltaInt,
+//     non-imminent receivers run deltaExt(e = t - tl);
+//  4. bags are cleared, and every atomic that transitioned is rescheduled (tn = t + ta).
+// Tie rule: all atomics imminent at the same t act together (no select function); outputs
+// are computed from the states before any transition of that t, and zero time advances make
+// further event times at the same t, processed by the next step in order.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "devs/event_queue.hpp"
+#include "devs/flatten.hpp"
+#include "devs/listener.hpp"
+
+namespace yardsim::devs {
+
+// A model broke the rules at run time (negative or NaN time advance).
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SimulatorStats {
+  std::uint64_t eventTimes = 0;  // steps that executed at least one transition
+  std::uint64_t internal = 0;
+  std::uint64_t external = 0;
+  std::uint64_t confluent = 0;
+  std::uint64_t messages = 0;  // messages delivered to input ports
+};
+
+class Simulator {
+ public:
+  // (root model, start time) => flattened, every atomic initialised and scheduled
+  explicit Simulator(Model& root, Time t0 = 0.0);
+
+  // (listener) => receives every hook from now on; not owned, must outlive the run
+  void addListener(Listener& listener);
+
+  Time time() const { return t_; }
+  Time nextEventTime() const { return queue_.topTime(); }
+  // () => all events of the next event time executed; false when no event is left
+  bool step();
+  // (t_end) => every event with t <= t_end executed; time() == t_end afterwards
+  void runUntil(Time tEnd);
+  // () => run until no event is left
+  void run() { runUntil(kInfinity); }
+
+  const SimulatorStats& stats() const { return stats_; }
+  std::span<AtomicBase* const> atomics() const { return flat_.atomics; }
+
+ private:
+  void start();  // start hooks, once
+  void reschedule(std::uint32_t i, Time t);
+  void notifyEnd();
+
+  FlatModel flat_;
+  EventQueue queue_;
+  std::vector<Time> tl_;                  // time of last transition per atomic
+  std::vector<std::uint8_t> flags_;       // kImminent | kHasInput per atomic
+  std::vector<std::uint32_t> imminent_;   // scratch, reused every step
+  std::vector<std::uint32_t> receivers_;  // non-imminent atomics that got input
+  std::vector<PortBase*> filled_;         // input ports holding messages this step
+  std::vector<Listener*> listeners_;
+  SimulatorStats stats_;
+  Time t_;
+  bool started_ = false;
+};
+
+}  // namespace yardsim::devs

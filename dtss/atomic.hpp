@@ -1,0 +1,176 @@
+#pragma once
+// A discrete-time (DTSS) model inside the DEVS world. To the coordinator it is a DEVS atomic;
+// inside, a continuous state x is advanced on the grid t_k = t0 + k h.
+//
+// Rules (see docs/devs.md):
+//  - Look-ahead: after each transition at time t the model computes x at its next target
+//    (the next grid point, or an earlier scheduled time event) and schedules itself there.
+//    The internal transition commits that state.
+//  - External events between steps: an input at t_e < target discards the look-ahead,
+//    advances the committed x from its time to t_e exactly (one partial step), applies the
+//    input, and continues to the next grid point after t_e: the grid is never shifted.
+//    An input exactly at the target is confluent: the step is committed first, then the input.
+//  - State events: event functions g_j(x, t) are checked over every advance; when one changes
+//    sign the way it is declared to, its crossing time is located (Illinois, to the model's
+//    tolerance, by re-advancing from the start of the step), the target is moved there, and an
+//    output event is emitted at that time; onStateEvent then lets the model react.
+//  - Time events: times known in advance (nextTimeEvent) are landed on exactly.
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devs/atomic.hpp"
+#include "dtss/crossing.hpp"
+#include "dtss/grid.hpp"
+
+namespace yardsim::dtss {
+
+// What the look-ahead target of a step is.
+enum class Target : std::uint8_t { Grid, TimeEvent, StateEvent };
+
+// The DEVS state of a DTSS model: a plain value type.
+template <class X>
+struct State {
+  X x;                  // committed continuous state
+  Time tx = 0.0;        // its time (also the time of the last transition)
+  X xNext;              // look-ahead state at tNext
+  Time tNext = 0.0;     // next transition time
+  Target target = Target::Grid;
+  int event = -1;       // index of the state event located at tNext, when target is StateEvent
+  std::int64_t steps = 0;  // grid steps committed
+};
+
+template <class X>
+class Atomic : public devs::Atomic<State<X>> {
+ public:
+  using S = State<X>;
+  // (name, initial state, step h, start time t0, state-event time tolerance)
+  Atomic(std::string name, X x0, Time h, Time t0 = 0.0, Time eventTolerance = 1e-9)
+      : devs::Atomic<S>(std::move(name), S{x0, t0, x0, t0}),
+        grid_{t0, h},
+        tolerance_(eventTolerance) {
+    if (!(h > 0.0)) throw devs::ModelError("DTSS model '" + this->name() + "': step h must be > 0");
+  }
+
+  Time stepSize() const { return grid_.h; }
+  std::string_view kind() const final { return "dtss"; }
+
+ protected:
+  // (x at t, dt in (0, h]) => x at t + dt
+  virtual void advance(X& x, Time t, Time dt) const = 0;
+  // (input bags at t) => x after the inputs are applied
+  virtual void applyInput(X& /*x*/, Time /*t*/) const {}
+  // Directions of the state-event functions; their number is the number of functions.
+  virtual std::span<const Crossing> eventDirections() const { return {}; }
+  // (x, t) => g_j(x, t) for every state-event function
+  virtual void eventFunctions(const X& /*x*/, Time /*t*/, std::span<double> /*g*/) const {}
+  // (x, t) => first time event strictly after t (kInfinity when none)
+  virtual Time nextTimeEvent(const X& /*x*/, Time /*t*/) const { return devs::kInfinity; }
+  // (x at the target, t, what the target is, event index) => output messages at t
+  virtual void outputAt(const X& /*x*/, Time /*t*/, Target /*target*/, int /*event*/) const {}
+  // (x at a located state event) => x after the model's reaction (bounce, latch, ...)
+  virtual void onStateEvent(X& /*x*/, Time /*t*/, int /*event*/) const {}
+
+  void initialize(Time t0) override { lookAhead(this->mutableState(), t0); }
+
+  Time timeAdvance(const S& s) const final { return s.tNext - s.tx; }
+  Time nextEventTime(Time /*tl*/) const final { return this->state().tNext; }
+  void output(const S& s) const final { outputAt(s.xNext, s.tNext, s.target, s.event); }
+  void internalTransition(S& s) const final {
+    commit(s);
+    lookAhead(s, s.tx);
+  }
+  void externalTransition(S& s, Time e) const final {
+    const Time te = s.tx + e;
+    if (te > s.tx) advance(s.x, s.tx, te - s.tx);
+    s.tx = te;
+    applyInput(s.x, te);
+    lookAhead(s, te);
+  }
+  void confluentTransition(S& s, Time /*e*/) const final {
+    commit(s);
+    applyInput(s.x, s.tx);
+    lookAhead(s, s.tx);
+  }
+
+ private:
+  // (look-ahead) => committed state, with the state-event reaction applied
+  void commit(S& s) const {
+    s.x = s.xNext;
+    s.tx = s.tNext;
+    if (s.target == Target::Grid) ++s.steps;
+    if (s.target == Target::StateEvent) onStateEvent(s.x, s.tx, s.event);
+  }
+
+  // (committed x at t) => xNext at the next target, moved to the earliest state event
+  void lookAhead(S& s, Time t) const {
+    Time target = grid_.at(grid_.indexAfter(t));
+    s.target = Target::Grid;
+    const Time te = nextTimeEvent(s.x, t);
+    if (te <= target && te > t) {
+      target = te;
+      s.target = Target::TimeEvent;
+    }
+    s.xNext = s.x;
+    advance(s.xNext, t, target - t);
+    s.tNext = target;
+    s.event = -1;
+    const auto dirs = eventDirections();
+    if (dirs.empty()) return;
+    g0_.resize(dirs.size());
+    g1_.resize(dirs.size());
+    eventFunctions(s.x, t, g0_);
+    eventFunctions(s.xNext, target, g1_);
+    Time earliest = devs::kInfinity;
+    int which = -1;
+    for (std::size_t j = 0; j < dirs.size(); ++j) {
+      if (!crosses(g0_[j], g1_[j], dirs[j])) continue;
+      X probe = s.x;
+      g2_.resize(dirs.size());
+      auto g = [&](Time tau) {
+        probe = s.x;
+        advance(probe, t, tau - t);
+        eventFunctions(probe, tau, g2_);
+        return g2_[j];
+      };
+      const Time tc = locateCrossing(g, t, g0_[j], target, g1_[j], tolerance_);
+      if (tc < earliest) {
+        earliest = tc;
+        which = static_cast<int>(j);
+      }
+    }
+    if (which < 0) return;
+    if (earliest < target) {
+      s.xNext = s.x;
+      advance(s.xNext, t, earliest - t);
+      s.tNext = earliest;
+    }
+    s.target = Target::StateEvent;
+    s.event = which;
+  }
+
+  Grid grid_;
+  Time tolerance_;
+  mutable std::vector<double> g0_, g1_, g2_;  // scratch for event functions
+};
+
+}  // namespace yardsim::dtss
+
+namespace yardsim::devs {
+// A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}
+template <class X>
+struct TraceFormat<dtss::State<X>> {
+  static void write(std::string& out, const dtss::State<X>& s) {
+    out += "{\"t\":";
+    appendJsonNumber(out, s.tx);
+    out += ",\"steps\":";
+    out += std::to_string(s.steps);
+    out += ",\"x\":";
+    TraceFormat<X>::write(out, s.x);
+    out += '}';
+  }
+};
+}  // namespace yardsim::devs

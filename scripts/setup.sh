@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages yardsim builds against. Idempotent: packages already
+# present are skipped, so a second run does nothing but check.
+set -euo pipefail
+packages=(
+  g++ cmake ninja-build git pkg-config ca-certificates
+  libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
+  libspdlog-dev catch2 libcli11-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

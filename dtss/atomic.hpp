@@ -28,8 +28,14 @@
 
 namespace yardsim::dtss {
 
-// What the look-ahead target of a step is.
-enum class Target : std::uint8_t { Grid, TimeEvent, StateEvent };
+// What the look-ahead target of a step is: a grid point, a time event, a located state
+// event, or several of them at once (a time event on a grid point).
+struct Reached {
+  bool grid = false;
+  bool timeEvent = false;
+  int stateEvent = -1;  // index of the state-event function, -1 when none
+  bool operator==(const Reached&) const = default;
+};
 
 // The DEVS state of a DTSS model: a plain value type.
 template <class X>
@@ -38,8 +44,7 @@ struct State {
   Time tx = 0.0;        // its time (also the time of the last transition)
   X xNext;              // look-ahead state at tNext
   Time tNext = 0.0;     // next transition time
-  Target target = Target::Grid;
-  int event = -1;       // index of the state event located at tNext, when target is StateEvent
+  Reached reached;      // what tNext is
   std::int64_t steps = 0;  // grid steps committed
 };
 
@@ -49,7 +54,7 @@ class Atomic : public devs::Atomic<State<X>> {
   using S = State<X>;
   // (name, initial state, step h, start time t0, state-event time tolerance)
   Atomic(std::string name, X x0, Time h, Time t0 = 0.0, Time eventTolerance = 1e-9)
-      : devs::Atomic<S>(std::move(name), S{x0, t0, x0, t0}),
+      : devs::Atomic<S>(std::move(name), S{x0, t0, x0, t0, Reached{}, 0}),
         grid_{t0, h},
         tolerance_(eventTolerance) {
     if (!(h > 0.0)) throw devs::ModelError("DTSS model '" + this->name() + "': step h must be > 0");
@@ -69,8 +74,8 @@ class Atomic : public devs::Atomic<State<X>> {
   virtual void eventFunctions(const X& /*x*/, Time /*t*/, std::span<double> /*g*/) const {}
   // (x, t) => first time event strictly after t (kInfinity when none)
   virtual Time nextTimeEvent(const X& /*x*/, Time /*t*/) const { return devs::kInfinity; }
-  // (x at the target, t, what the target is, event index) => output messages at t
-  virtual void outputAt(const X& /*x*/, Time /*t*/, Target /*target*/, int /*event*/) const {}
+  // (x at the target, t, what the target is) => output messages at t
+  virtual void outputAt(const X& /*x*/, Time /*t*/, const Reached& /*reached*/) const {}
   // (x at a located state event) => x after the model's reaction (bounce, latch, ...)
   virtual void onStateEvent(X& /*x*/, Time /*t*/, int /*event*/) const {}
 
@@ -78,7 +83,7 @@ class Atomic : public devs::Atomic<State<X>> {
 
   Time timeAdvance(const S& s) const final { return s.tNext - s.tx; }
   Time nextEventTime(Time /*tl*/) const final { return this->state().tNext; }
-  void output(const S& s) const final { outputAt(s.xNext, s.tNext, s.target, s.event); }
+  void output(const S& s) const final { outputAt(s.xNext, s.tNext, s.reached); }
   void internalTransition(S& s) const final {
     commit(s);
     lookAhead(s, s.tx);
@@ -101,23 +106,19 @@ class Atomic : public devs::Atomic<State<X>> {
   void commit(S& s) const {
     s.x = s.xNext;
     s.tx = s.tNext;
-    if (s.target == Target::Grid) ++s.steps;
-    if (s.target == Target::StateEvent) onStateEvent(s.x, s.tx, s.event);
+    if (s.reached.grid) ++s.steps;
+    if (s.reached.stateEvent >= 0) onStateEvent(s.x, s.tx, s.reached.stateEvent);
   }
 
   // (committed x at t) => xNext at the next target, moved to the earliest state event
   void lookAhead(S& s, Time t) const {
-    Time target = grid_.at(grid_.indexAfter(t));
-    s.target = Target::Grid;
+    const Time gridTime = grid_.at(grid_.indexAfter(t));
     const Time te = nextTimeEvent(s.x, t);
-    if (te <= target && te > t) {
-      target = te;
-      s.target = Target::TimeEvent;
-    }
+    const Time target = te > t ? std::min(gridTime, te) : gridTime;
+    s.reached = Reached{target == gridTime, target == te, -1};
     s.xNext = s.x;
     advance(s.xNext, t, target - t);
     s.tNext = target;
-    s.event = -1;
     const auto dirs = eventDirections();
     if (dirs.empty()) return;
     g0_.resize(dirs.size());
@@ -147,9 +148,9 @@ class Atomic : public devs::Atomic<State<X>> {
       s.xNext = s.x;
       advance(s.xNext, t, earliest - t);
       s.tNext = earliest;
+      s.reached = Reached{};
     }
-    s.target = Target::StateEvent;
-    s.event = which;
+    s.reached.stateEvent = which;
   }
 
   Grid grid_;

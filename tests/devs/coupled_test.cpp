@@ -1,0 +1,77 @@
+#include "devs/coupled.hpp"
+
+#include <catch2/catch.hpp>
+
+#include "support/test_models.hpp"
+
+using namespace yardsim;
+using namespace yardsim::testing;
+using devs::Coupled;
+using devs::ModelError;
+
+namespace {
+struct DoubleSink final : devs::Atomic<int> {
+  DoubleSink() : devs::Atomic<int>("dsink", 0) {}
+  devs::InPort<double>& in = addInPort<double>("level");
+  devs::Time timeAdvance(const int&) const override { return devs::kInfinity; }
+  void output(const int&) const override {}
+  void internalTransition(int&) const override {}
+  void externalTransition(int&, devs::Time) const override {}
+};
+}  // namespace
+
+TEST_CASE("a coupling between different value types names both ports, types and paths") {
+  Coupled root("yard");
+  auto& crane = root.add<Coupled>("crane");
+  auto& gen = crane.add<Emitter>("gen", std::vector<devs::Time>{});
+  auto& out = crane.addOutPort<int>("out");
+  crane.couple(gen.out, out);
+  auto& sink = root.add<DoubleSink>();
+  try {
+    root.couple(out, sink.in);
+    FAIL("expected a ModelError");
+  } catch (const ModelError& e) {
+    const std::string msg = e.what();
+    CHECK_THAT(msg, Catch::Contains("'out'") && Catch::Contains("'yard.crane'"));
+    CHECK_THAT(msg, Catch::Contains("'level'") && Catch::Contains("'yard.dsink'"));
+    CHECK_THAT(msg, Catch::Contains("value type int") && Catch::Contains("value type double"));
+  }
+}
+
+TEST_CASE("couplings must be EIC, IC or EOC of the model that declares them") {
+  Coupled root("root");
+  auto& a = root.add<Emitter>("a", std::vector<devs::Time>{});
+  auto& b = root.add<Collector>("b");
+  auto& inner = root.add<Coupled>("inner");
+  auto& c = inner.add<Collector>("c");
+  // input to output of the same child, output to output of a sibling, reaching two levels down
+  CHECK_THROWS_AS(root.couple(b.in, b.tick), ModelError);
+  CHECK_THROWS_AS(root.couple(a.out, b.tick), ModelError);
+  CHECK_THROWS_WITH(root.couple(a.out, c.in),
+                    Catch::Contains("root.inner.c") && Catch::Contains("a coupling goes from"));
+  CHECK_NOTHROW(root.couple(a.out, b.in));
+  CHECK(root.couplingCount() == 1);
+}
+
+TEST_CASE("names are checked: duplicates, dots, re-parenting") {
+  Coupled root("root");
+  root.add<Collector>("x");
+  CHECK_THROWS_WITH(root.add<Collector>("x"), Catch::Contains("already has a component named 'x'"));
+  CHECK_THROWS_WITH(Coupled("a.b"), Catch::Contains("dots"));
+  CHECK_THROWS_WITH(Coupled(""), Catch::Contains("empty"));
+  Coupled other("other");
+  auto loose = std::make_unique<Collector>("y");
+  CHECK_THROWS_WITH(loose->addInPort<int>("in"), Catch::Contains("already has a port named 'in'"));
+  other.addComponent(std::move(loose));
+  CHECK(other.findComponent("y")->path() == "other.y");
+}
+
+TEST_CASE("paths follow the hierarchy once placed") {
+  auto inner = std::make_unique<Coupled>("inner");
+  auto& leaf = inner->add<Collector>("leaf");
+  CHECK(leaf.path() == "inner.leaf");  // cached before placement...
+  Coupled root("root");
+  root.addComponent(std::move(inner));
+  CHECK(leaf.path() == "root.inner.leaf");  // ...and recomputed after
+  CHECK(leaf.in.path() == "root.inner.leaf.in");
+}

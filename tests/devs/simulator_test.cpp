@@ -1,0 +1,206 @@
+#include "devs/simulator.hpp"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <tuple>
+
+#include "devs/coupled.hpp"
+#include "gpt_models.hpp"
+#include "support/record_collector.hpp"
+#include "support/test_models.hpp"
+
+using namespace yardsim;
+using namespace yardsim::testing;
+using devs::Coupled;
+using devs::Simulator;
+
+namespace {
+
+// (records) => (t, leaf model name, kind, port, value) sorted within each event time, so a
+// hierarchy and its flat form can be compared whatever their paths and routing order.
+std::vector<std::tuple<double, std::string, std::string, std::string, std::string>> normalised(
+    const std::vector<Record>& records) {
+  std::vector<std::tuple<double, std::string, std::string, std::string, std::string>> out;
+  for (const auto& r : records)
+    out.emplace_back(r.t, r.model.substr(r.model.rfind('.') + 1), r.kind, r.port, r.value);
+  std::stable_sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<Record> traceOf(devs::Model& root, devs::Time until = devs::kInfinity) {
+  Simulator sim(root);
+  RecordCollector rec;
+  sim.addListener(rec);
+  sim.runUntil(until);
+  return rec.records;
+}
+
+}  // namespace
+
+TEST_CASE("a three-level hierarchy gives the same trace as its flattened form") {
+  examples::gpt::Parameters p{1.0, 1.5, 20.0};
+  auto hier = examples::gpt::makeGpt(p);
+  auto flat = examples::gpt::makeFlatGpt(p);
+  const auto a = traceOf(*hier);
+  const auto b = traceOf(*flat);
+  REQUIRE(a.size() > 50);
+  CHECK(normalised(a) == normalised(b));
+  // the paths in the hierarchical trace name every level
+  CHECK(std::any_of(a.begin(), a.end(), [](const Record& r) { return r.model == "gpt.ef.genr"; }));
+}
+
+TEST_CASE("a processor nested four levels deep behaves as when it sits at the top") {
+  auto deep = std::make_unique<Coupled>("root");
+  auto& gen = deep->add<Emitter>("gen", std::vector<devs::Time>{0.5, 1.0, 4.0}, 2);
+  auto& l1 = deep->add<Coupled>("l1");
+  auto& l1in = l1.addInPort<int>("in");
+  auto& l1out = l1.addOutPort<int>("out");
+  auto& l2 = l1.add<Coupled>("l2");
+  auto& l2in = l2.addInPort<int>("in");
+  auto& l2out = l2.addOutPort<int>("out");
+  auto& relay = l2.add<Relay>("relay", 0.25);
+  auto& sink = deep->add<Collector>("sink");
+  deep->couple(gen.out, l1in);
+  l1.couple(l1in, l2in);
+  l2.couple(l2in, relay.in);
+  l2.couple(relay.out, l2out);
+  l1.couple(l2out, l1out);
+  deep->couple(l1out, sink.in);
+
+  auto flat = std::make_unique<Coupled>("root");
+  auto& gen2 = flat->add<Emitter>("gen", std::vector<devs::Time>{0.5, 1.0, 4.0}, 2);
+  auto& relay2 = flat->add<Relay>("relay", 0.25);
+  auto& sink2 = flat->add<Collector>("sink");
+  flat->couple(gen2.out, relay2.in);
+  flat->couple(relay2.out, sink2.in);
+
+  CHECK(normalised(traceOf(*deep)) == normalised(traceOf(*flat)));
+  REQUIRE(sink.state().bags.size() == 3);
+  CHECK(sink.state().bags[0].first == Approx(0.75));
+  CHECK(sink.state().bags[2].first == Approx(4.25));
+  CHECK(sink.state().bags[1].second == std::vector<int>{100, 101});
+}
+
+TEST_CASE("internal and external events at the same time make a confluent transition") {
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0, 2.5});
+  auto& col = root.add<Collector>("col", 1.0);  // fires at 1, 2, 3, ...
+  root.couple(gen.out, col.in);
+  Simulator sim(root);
+  sim.runUntil(3.0);
+  const auto& s = col.state();
+  CHECK(s.confluent == 1);          // t = 1: own event and the emitter's message together
+  CHECK(s.lastConfluentE == 1.0);   // elapsed time since the last transition (t = 0)
+  CHECK(s.external == 1);           // t = 2.5
+  CHECK(s.internal == 2);           // t = 2 and t = 3
+  CHECK(sim.stats().confluent == 1);
+  REQUIRE(s.bags.size() == 2);
+  CHECK(s.bags[0].first == 1.0);
+  CHECK(s.bags[1].first == 2.5);
+}
+
+TEST_CASE("several messages on one port arrive in one bag") {
+  Coupled root("root");
+  auto& a = root.add<Emitter>("a", std::vector<devs::Time>{2.0}, 3);
+  auto& b = root.add<Emitter>("b", std::vector<devs::Time>{2.0}, 1);
+  auto& col = root.add<Collector>("col");
+  root.couple(a.out, col.in);
+  root.couple(b.out, col.in);
+  Simulator sim(root);
+  sim.run();
+  REQUIRE(col.state().external == 1);
+  auto bag = col.state().bags.at(0).second;
+  std::sort(bag.begin(), bag.end());
+  CHECK(bag == std::vector<int>{0, 0, 1, 2});
+  CHECK(sim.stats().messages == 4);
+}
+
+TEST_CASE("a message reaching a port along two coupling paths is delivered twice") {
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0});
+  auto& box = root.add<Coupled>("box");
+  auto& boxIn = box.addInPort<int>("in");
+  auto& boxOut = box.addOutPort<int>("out");
+  auto& relay = box.add<Relay>("relay", 0.0);
+  box.couple(boxIn, relay.in);
+  box.couple(relay.out, boxOut);
+  auto& col = root.add<Collector>("col");
+  root.couple(gen.out, boxIn);
+  root.couple(gen.out, boxIn);  // a second coupling between the same ports
+  root.couple(boxOut, col.in);
+  Simulator sim(root);
+  sim.run();
+  REQUIRE(col.state().bags.size() == 1);
+  CHECK(col.state().bags[0].second.size() == 2);
+}
+
+TEST_CASE("zero-delay chains run as successive steps at the same time") {
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0});
+  auto& r1 = root.add<Relay>("r1", 0.0);
+  auto& r2 = root.add<Relay>("r2", 0.0);
+  auto& col = root.add<Collector>("col");
+  root.couple(gen.out, r1.in);
+  root.couple(r1.out, r2.in);
+  root.couple(r2.out, col.in);
+  Simulator sim(root);
+  int steps = 0;
+  while (sim.step()) {
+    ++steps;
+    CHECK(sim.time() == 1.0);
+  }
+  CHECK(steps == 3);
+  REQUIRE(col.state().bags.size() == 1);
+  CHECK(col.state().bags[0].first == 1.0);
+}
+
+TEST_CASE("run until a time, until no event is left, or one event time per call") {
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0, 2.0, 5.0});
+  auto& col = root.add<Collector>("col");
+  root.couple(gen.out, col.in);
+  Simulator sim(root);
+  CHECK(sim.nextEventTime() == 1.0);
+  REQUIRE(sim.step());
+  CHECK(sim.time() == 1.0);
+  CHECK(col.state().bags.size() == 1);
+  sim.runUntil(3.0);
+  CHECK(sim.time() == 3.0);
+  CHECK(col.state().bags.size() == 2);
+  CHECK(sim.nextEventTime() == 5.0);
+  sim.run();
+  CHECK(col.state().bags.size() == 3);
+  CHECK(sim.nextEventTime() == devs::kInfinity);
+  CHECK_FALSE(sim.step());
+}
+
+namespace {
+struct Broken final : devs::Atomic<int> {
+  Broken() : devs::Atomic<int>("broken", 0) {}
+  devs::Time timeAdvance(const int& s) const override { return s == 0 ? 1.0 : -1.0; }
+  void output(const int&) const override {}
+  void internalTransition(int& s) const override { s = 1; }
+  void externalTransition(int&, devs::Time) const override {}
+};
+}  // namespace
+
+TEST_CASE("a negative time advance stops the run naming the model") {
+  Coupled root("top");
+  root.add<Broken>();
+  Simulator sim(root);
+  REQUIRE_THROWS_WITH(sim.run(), Catch::Contains("top.broken") && Catch::Contains(">= 0"));
+}
+
+TEST_CASE("atomic states are plain values that can be checkpointed and restored") {
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0, 2.0});
+  auto& col = root.add<Collector>("col");
+  root.couple(gen.out, col.in);
+  Simulator sim(root);
+  sim.runUntil(1.5);
+  const CollectorState checkpoint = col.state();
+  sim.run();
+  CHECK(col.state().bags.size() == 2);
+  col.setState(checkpoint);
+  CHECK(col.state().bags.size() == 1);
+}

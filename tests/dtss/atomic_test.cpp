@@ -1,0 +1,189 @@
+#include "dtss/atomic.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <sstream>
+#include <yaml-cpp/yaml.h>
+
+#include "devs/chrome_trace_sink.hpp"
+#include "devs/coupled.hpp"
+#include "devs/simulator.hpp"
+#include "support/record_collector.hpp"
+#include "support/test_models.hpp"
+
+using namespace yardsim;
+using devs::Time;
+using dtss::Crossing;
+
+namespace {
+
+// A ball falling under gravity onto the ground, bouncing with restitution e. The step is
+// the exact ballistic solution, so the located impact times can be checked in closed form.
+struct Ball {
+  double y, v;
+};
+std::ostream& operator<<(std::ostream& os, const Ball& b) { return os << b.y << "," << b.v; }
+
+constexpr double kG = 9.81;
+
+class BouncingBall final : public dtss::Atomic<Ball> {
+ public:
+  BouncingBall(double y0, double restitution, Time h, Time tol)
+      : dtss::Atomic<Ball>("ball", Ball{y0, 0.0}, h, 0.0, tol), e_(restitution) {}
+  devs::OutPort<double>& bounce = addOutPort<double>("bounce");
+
+ protected:
+  void advance(Ball& b, Time, Time dt) const override {
+    b.y += b.v * dt - 0.5 * kG * dt * dt;
+    b.v -= kG * dt;
+  }
+  std::span<const Crossing> eventDirections() const override { return dirs_; }
+  void eventFunctions(const Ball& b, Time, std::span<double> g) const override { g[0] = b.y; }
+  void outputAt(const Ball& b, Time, const dtss::Reached& r) const override {
+    if (r.stateEvent == 0) bounce.add(b.v);
+  }
+  void onStateEvent(Ball& b, Time, int) const override { b.v = -e_ * b.v; }
+
+ private:
+  double e_;
+  std::array<Crossing, 1> dirs_{Crossing::Falling};
+};
+
+// x' = 1 (a clock); inputs add 100 to x; lands on a user schedule of time events.
+struct ClockState {
+  double x = 0.0;
+  std::vector<std::pair<Time, double>> inputs;  // (t, x after the input)
+};
+std::ostream& operator<<(std::ostream& os, const ClockState& s) { return os << s.x; }
+
+class Clock final : public dtss::Atomic<ClockState> {
+ public:
+  Clock(Time h, std::vector<Time> schedule)
+      : dtss::Atomic<ClockState>("clock", ClockState{}, h), schedule_(std::move(schedule)) {}
+  devs::InPort<int>& in = addInPort<int>("in");
+  devs::OutPort<double>& tick = addOutPort<double>("tick");
+  devs::OutPort<double>& step = addOutPort<double>("step");
+
+ protected:
+  void advance(ClockState& s, Time, Time dt) const override { s.x += dt; }
+  void applyInput(ClockState& s, Time t) const override {
+    s.x += 100.0 * static_cast<double>(in.values().size());
+    s.inputs.push_back({t, s.x});
+  }
+  Time nextTimeEvent(const ClockState&, Time t) const override {
+    for (Time te : schedule_)
+      if (te > t) return te;
+    return devs::kInfinity;
+  }
+  void outputAt(const ClockState& s, Time, const dtss::Reached& r) const override {
+    if (r.timeEvent) tick.add(s.x);
+    if (r.grid) step.add(s.x);
+  }
+
+ private:
+  std::vector<Time> schedule_;
+};
+
+std::vector<double> times(const std::vector<testing::Record>& records, const std::string& port) {
+  std::vector<double> out;
+  for (const auto& r : records)
+    if (r.kind == "out" && r.port == port) out.push_back(r.t);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a bouncing ball's impacts are located at the closed-form times") {
+  const double y0 = 10.0, e = 0.8, tol = 1e-11;
+  devs::Coupled root("root");
+  auto& ball = root.add<BouncingBall>(y0, e, 0.1, tol);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(8.0);
+
+  const auto impacts = times(rec.records, "bounce");
+  REQUIRE(impacts.size() >= 4);
+  // t1 = sqrt(2 y0 / g); then each flight lasts 2 e^k v1 / g
+  const double v1 = std::sqrt(2.0 * kG * y0);
+  double expected = v1 / kG;
+  for (std::size_t k = 0; k < 4; ++k) {
+    INFO("impact " << k);
+    CHECK(impacts[k] == Approx(expected).margin(1e-8));
+    expected += 2.0 * std::pow(e, static_cast<double>(k + 1)) * v1 / kG;
+  }
+  // the impact speed is reported at the located time, and it never tunnels below ground
+  const auto outs = rec.ofKind("out");
+  CHECK(YAML::Load(outs.front().value).as<double>() == Approx(-v1).epsilon(1e-8));
+  CHECK(ball.state().x.y > -1e-6);
+}
+
+TEST_CASE("a clock's time events land exactly on user-given times and the grid is kept") {
+  const std::vector<Time> schedule{0.35, 0.7, 1.0, 2.123456789};
+  devs::Coupled root("root");
+  root.add<Clock>(0.1, schedule);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(3.05);
+
+  CHECK(times(rec.records, "tick") == schedule);  // exactly, not approximately
+  const dtss::Grid grid{0.0, 0.1};
+  const auto steps = times(rec.records, "step");
+  REQUIRE(steps.size() == 30);
+  for (std::size_t k = 0; k < steps.size(); ++k) CHECK(steps[k] == grid.at(std::int64_t(k) + 1));
+  // x integrates x' = 1: its value at each tick is that time
+  for (const auto& r : rec.ofKind("out"))
+    CHECK(YAML::Load(r.value).as<double>() == Approx(r.t).margin(1e-12));
+}
+
+TEST_CASE("external events between steps are applied at their exact time") {
+  devs::Coupled root("root");
+  auto& gen = root.add<testing::Emitter>("gen", std::vector<Time>{0.25, 0.5, 0.625});
+  auto& clock = root.add<Clock>(0.1, std::vector<Time>{});
+  root.couple(gen.out, clock.in);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(1.0);
+
+  const auto& inputs = clock.state().x.inputs;
+  REQUIRE(inputs.size() == 3);
+  CHECK(inputs[0].first == 0.25);
+  CHECK(inputs[0].second == Approx(0.25 + 100.0).epsilon(1e-14));
+  CHECK(inputs[1].first == 0.5);  // on a grid point: the step is committed, then the input
+  CHECK(inputs[1].second == Approx(0.5 + 200.0).epsilon(1e-14));
+  CHECK(inputs[2].first == 0.625);
+  CHECK(inputs[2].second == Approx(0.625 + 300.0).epsilon(1e-14));
+  // the grid is not shifted by the inputs: steps still land on k h
+  const auto steps = times(rec.records, "step");
+  REQUIRE(steps.size() == 10);
+  for (std::size_t k = 0; k < steps.size(); ++k)
+    CHECK(steps[k] == dtss::Grid{0.0, 0.1}.at(std::int64_t(k) + 1));
+  CHECK(clock.state().x.x == Approx(1.0 + 300.0).epsilon(1e-14));
+  CHECK(sim.stats().confluent == 1);
+}
+
+TEST_CASE("DTSS steps are spans in the Chrome trace") {
+  devs::Coupled root("root");
+  root.add<Clock>(0.25, std::vector<Time>{});
+  devs::Simulator sim(root);
+  std::ostringstream text;
+  {
+    devs::ChromeTraceSink chrome{devs::TraceStream(text)};
+    sim.addListener(chrome);
+    sim.runUntil(2.0);
+  }
+  int spans = 0;
+  for (const auto& ev : YAML::Load(text.str())["traceEvents"]) {
+    if (ev["ph"].as<std::string>() != "X") continue;
+    ++spans;
+    CHECK(ev["dur"].as<double>() == Approx(0.25e6));
+    CHECK(ev["name"].as<std::string>() == "step");
+  }
+  CHECK(spans == 8);
+}
+
+TEST_CASE("a non-positive step is refused") {
+  CHECK_THROWS_WITH(Clock(0.0, {}), Catch::Contains("clock") && Catch::Contains("h must be > 0"));
+}

@@ -19,12 +19,17 @@ int main(int argc, char** argv) {
   app.add_option("--variant", variantName, "LI, HI, HO or HOmod")->capture_default_str();
   app.add_option("--depth", depth, "depth d >= 1")->capture_default_str();
   app.add_option("--width", width, "width w >= 1")->capture_default_str();
+  bool hooks = false;
+  app.add_flag("--null-listener", hooks,
+               "attach a listener whose hooks do nothing (measures the cost of the trace hooks)");
   CLI11_PARSE(app, argc, argv);
   try {
     const auto variant = bench::devstone::parseVariant(variantName);
     const auto t0 = Clock::now();
     auto root = bench::devstone::build(variant, depth, width);
     devs::Simulator sim(*root);
+    devs::Listener nullListener;
+    if (hooks) sim.addListener(nullListener);
     const auto t1 = Clock::now();
     sim.run();
     const auto t2 = Clock::now();

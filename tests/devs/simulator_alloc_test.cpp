@@ -8,6 +8,10 @@
 #include "devs/simulator.hpp"
 #include "support/test_models.hpp"
 
+// The replacement operators below pair malloc with free; GCC inlines them and then
+// mistakes the pair for new-with-free.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 namespace {
 std::size_t gAllocations = 0;
 }

@@ -22,7 +22,10 @@ Model::Model(std::string name) : name_(std::move(name)) { checkName(name_, "mode
 Model::~Model() = default;
 
 const std::string& Model::path() const {
-  if (path_.empty()) path_ = parent_ ? parent_->path() + "." + name_ : name_;
+  if (path_.empty()) {
+    const Model* p = parent_;
+    path_ = (p && !p->hidden_) ? p->path() + "." + name_ : name_;
+  }
   return path_;
 }
 

@@ -24,8 +24,11 @@ class Model {
   Model& operator=(const Model&) = delete;
 
   const std::string& name() const { return name_; }
-  // () => full dot-separated path from the root, e.g. "gpt.ef.genr" (cached)
+  // () => full dot-separated path from the root, e.g. "gpt.ef.genr" (cached); a root whose
+  // name is hidden (a scene) does not appear in its descendants' paths: "ef.genr"
   const std::string& path() const;
+  // () => this model's name left out of its descendants' paths (call before adding children)
+  void hideNameInPaths() { hidden_ = true; }
   Coupled* parent() const { return parent_; }
   virtual bool isAtomic() const = 0;
 
@@ -53,6 +56,7 @@ class Model {
   std::string name_;
   mutable std::string path_;
   Coupled* parent_ = nullptr;
+  bool hidden_ = false;
   std::vector<std::unique_ptr<PortBase>> in_;
   std::vector<std::unique_ptr<PortBase>> out_;
 };

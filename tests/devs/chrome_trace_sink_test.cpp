@@ -6,13 +6,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include "devs/simulator.hpp"
-#include "gpt_models.hpp"
+#include "support/gpt_builders.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("the Chrome trace is one JSON document with a named track per atomic") {
-  auto gpt = examples::gpt::makeGpt({1.0, 1.5, 10.0});
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
   devs::Simulator sim(*gpt);
   std::ostringstream text;
   testing::RecordCollector reference(false);

@@ -75,3 +75,12 @@ TEST_CASE("paths follow the hierarchy once placed") {
   CHECK(leaf.path() == "root.inner.leaf");  // ...and recomputed after
   CHECK(leaf.in.path() == "root.inner.leaf.in");
 }
+
+TEST_CASE("a root with a hidden name leaves it out of the paths below it") {
+  Coupled scene("scene");
+  scene.hideNameInPaths();
+  auto& crane = scene.add<Coupled>("crane1");
+  auto& hoist = crane.add<Collector>("hoist");
+  CHECK(hoist.path() == "crane1.hoist");
+  CHECK(scene.path() == "scene");
+}

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "devs/simulator.hpp"
-#include "gpt_models.hpp"
+#include "support/gpt_builders.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
@@ -38,7 +38,7 @@ std::vector<std::string> splitCsv(const std::string& line) {
 }  // namespace
 
 TEST_CASE("the CSV trace parses back to the records the simulator made") {
-  auto gpt = examples::gpt::makeGpt({1.0, 1.5, 10.0});
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
   devs::Simulator sim(*gpt);
   std::ostringstream text;
   devs::CsvTraceSink sink{devs::TraceStream(text)};

@@ -2,12 +2,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "gpt_models.hpp"
+#include "support/gpt_builders.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("flattening reaches atomic inputs through every level") {
-  auto gpt = examples::gpt::makeGpt({});
+  auto gpt = testing::makeGpt(testing::GptParameters{});
   const auto flat = devs::flatten(*gpt);
   REQUIRE(flat.atomics.size() == 3);
   CHECK(flat.atomics[0]->path() == "gpt.ef.genr");

@@ -6,13 +6,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include "devs/simulator.hpp"
-#include "gpt_models.hpp"
+#include "support/gpt_builders.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("the JSON Lines trace parses back line by line to the records the simulator made") {
-  auto gpt = examples::gpt::makeGpt({1.0, 1.5, 10.0});
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
   devs::Simulator sim(*gpt);
   std::ostringstream text;
   devs::JsonlTraceSink sink{devs::TraceStream(text)};

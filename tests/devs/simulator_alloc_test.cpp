@@ -6,6 +6,7 @@
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
+#include "models/library/delay.hpp"
 #include "support/test_models.hpp"
 
 // The replacement operators below pair malloc with free; GCC inlines them and then
@@ -55,8 +56,8 @@ struct Count final : devs::Atomic<long> {
 TEST_CASE("no heap allocation per message in the steady state") {
   devs::Coupled root("root");
   auto& ping = root.add<Ping>();
-  auto& r1 = root.add<testing::Relay>("r1", 0.25);
-  auto& r2 = root.add<testing::Relay>("r2", 0.0);
+  auto& r1 = root.add<models::library::Delay>("r1", 0.25);
+  auto& r2 = root.add<models::library::Delay>("r2", 0.0);
   auto& count = root.add<Count>();
   root.couple(ping.out, r1.in);
   root.couple(r1.out, r2.in);

@@ -5,8 +5,9 @@
 #include <tuple>
 
 #include "devs/coupled.hpp"
-#include "gpt_models.hpp"
+#include "support/gpt_builders.hpp"
 #include "support/record_collector.hpp"
+#include "models/library/delay.hpp"
 #include "support/test_models.hpp"
 
 using namespace yardsim;
@@ -38,9 +39,9 @@ std::vector<Record> traceOf(devs::Model& root, devs::Time until = devs::kInfinit
 }  // namespace
 
 TEST_CASE("a three-level hierarchy gives the same trace as its flattened form") {
-  examples::gpt::Parameters p{1.0, 1.5, 20.0};
-  auto hier = examples::gpt::makeGpt(p);
-  auto flat = examples::gpt::makeFlatGpt(p);
+  testing::GptParameters p{1.0, 1.5, 20.0};
+  auto hier = testing::makeGpt(p);
+  auto flat = testing::makeFlatGpt(p);
   const auto a = traceOf(*hier);
   const auto b = traceOf(*flat);
   REQUIRE(a.size() > 50);
@@ -58,7 +59,7 @@ TEST_CASE("a processor nested four levels deep behaves as when it sits at the to
   auto& l2 = l1.add<Coupled>("l2");
   auto& l2in = l2.addInPort<int>("in");
   auto& l2out = l2.addOutPort<int>("out");
-  auto& relay = l2.add<Relay>("relay", 0.25);
+  auto& relay = l2.add<models::library::Delay>("relay", 0.25);
   auto& sink = deep->add<Collector>("sink");
   deep->couple(gen.out, l1in);
   l1.couple(l1in, l2in);
@@ -69,7 +70,7 @@ TEST_CASE("a processor nested four levels deep behaves as when it sits at the to
 
   auto flat = std::make_unique<Coupled>("root");
   auto& gen2 = flat->add<Emitter>("gen", std::vector<devs::Time>{0.5, 1.0, 4.0}, 2);
-  auto& relay2 = flat->add<Relay>("relay", 0.25);
+  auto& relay2 = flat->add<models::library::Delay>("relay", 0.25);
   auto& sink2 = flat->add<Collector>("sink");
   flat->couple(gen2.out, relay2.in);
   flat->couple(relay2.out, sink2.in);
@@ -121,7 +122,7 @@ TEST_CASE("a message reaching a port along two coupling paths is delivered twice
   auto& box = root.add<Coupled>("box");
   auto& boxIn = box.addInPort<int>("in");
   auto& boxOut = box.addOutPort<int>("out");
-  auto& relay = box.add<Relay>("relay", 0.0);
+  auto& relay = box.add<models::library::Delay>("relay", 0.0);
   box.couple(boxIn, relay.in);
   box.couple(relay.out, boxOut);
   auto& col = root.add<Collector>("col");
@@ -137,8 +138,8 @@ TEST_CASE("a message reaching a port along two coupling paths is delivered twice
 TEST_CASE("zero-delay chains run as successive steps at the same time") {
   Coupled root("root");
   auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0});
-  auto& r1 = root.add<Relay>("r1", 0.0);
-  auto& r2 = root.add<Relay>("r2", 0.0);
+  auto& r1 = root.add<models::library::Delay>("r1", 0.0);
+  auto& r2 = root.add<models::library::Delay>("r2", 0.0);
   auto& col = root.add<Collector>("col");
   root.couple(gen.out, r1.in);
   root.couple(r1.out, r2.in);

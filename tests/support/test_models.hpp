@@ -88,38 +88,4 @@ class Collector final : public devs::Atomic<CollectorState> {
   Time period_;
 };
 
-// Forwards every message it receives after `delay` seconds (0: zero-delay relay).
-struct RelayState {
-  Time sigma = devs::kInfinity;
-  std::vector<int> held;
-};
-inline std::ostream& operator<<(std::ostream& os, const RelayState& s) {
-  return os << "held=" << s.held.size();
-}
-
-class Relay final : public devs::Atomic<RelayState> {
- public:
-  Relay(std::string name, Time delay)
-      : devs::Atomic<RelayState>(std::move(name), RelayState{}), delay_(delay) {}
-  devs::InPort<int>& in = addInPort<int>("in");
-  devs::OutPort<int>& out = addOutPort<int>("out");
-
- protected:
-  Time timeAdvance(const RelayState& s) const override { return s.sigma; }
-  void output(const RelayState& s) const override {
-    for (int v : s.held) out.add(v);
-  }
-  void internalTransition(RelayState& s) const override {
-    s.held.clear();
-    s.sigma = devs::kInfinity;
-  }
-  void externalTransition(RelayState& s, Time) const override {
-    s.held.insert(s.held.end(), in.values().begin(), in.values().end());
-    s.sigma = delay_;
-  }
-
- private:
-  Time delay_;
-};
-
 }  // namespace yardsim::testing

@@ -8,9 +8,10 @@
 #include <ostream>
 
 #include "devs/atomic.hpp"
-#include "devs/coupled.hpp"
+#include "models/channels.hpp"
 
-namespace yardsim::examples::gpt {
+// Scene types: generator (period), processor (processing_time), transducer (observe).
+namespace yardsim::models::library {
 
 using devs::Time;
 
@@ -21,11 +22,12 @@ struct GeneratorState {
 };
 std::ostream& operator<<(std::ostream& os, const GeneratorState& s);
 
-class Generator final : public devs::Atomic<GeneratorState> {
+class Generator final : public devs::Atomic<GeneratorState>, public Observable {
  public:
   Generator(std::string name, Time period);
   devs::InPort<bool>& stop = addInPort<bool>("stop");
   devs::OutPort<int>& out = addOutPort<int>("out");
+  void channels(std::vector<Channel>& out) const override;
 
  protected:
   Time timeAdvance(const GeneratorState& s) const override;
@@ -43,11 +45,12 @@ struct ProcessorState {
 };
 std::ostream& operator<<(std::ostream& os, const ProcessorState& s);
 
-class Processor final : public devs::Atomic<ProcessorState> {
+class Processor final : public devs::Atomic<ProcessorState>, public Observable {
  public:
   Processor(std::string name, Time processing);
   devs::InPort<int>& in = addInPort<int>("in");
   devs::OutPort<int>& out = addOutPort<int>("out");
+  void channels(std::vector<Channel>& out) const override;
 
  protected:
   Time timeAdvance(const ProcessorState& s) const override { return s.sigma; }
@@ -69,7 +72,7 @@ struct TransducerState {
 };
 std::ostream& operator<<(std::ostream& os, const TransducerState& s);
 
-class Transducer final : public devs::Atomic<TransducerState> {
+class Transducer final : public devs::Atomic<TransducerState>, public Observable {
  public:
   Transducer(std::string name, Time observe);
   devs::InPort<int>& arrived = addInPort<int>("arrived");
@@ -78,6 +81,7 @@ class Transducer final : public devs::Atomic<TransducerState> {
 
   double throughput() const;          // solved jobs per second of observation
   double meanTurnaround() const;      // mean time from arrival to solution
+  void channels(std::vector<Channel>& out) const override;
 
  protected:
   Time timeAdvance(const TransducerState& s) const override { return s.sigma; }
@@ -86,15 +90,4 @@ class Transducer final : public devs::Atomic<TransducerState> {
   void externalTransition(TransducerState& s, Time e) const override;
 };
 
-struct Parameters {
-  Time period = 1.0;
-  Time processing = 1.5;
-  Time observe = 20.0;
-};
-
-// (parameters) => the hierarchical model gpt = { ef = { genr, transd }, proc }
-std::unique_ptr<devs::Coupled> makeGpt(const Parameters& p);
-// (parameters) => the same atomics in one flat coupled model with direct couplings
-std::unique_ptr<devs::Coupled> makeFlatGpt(const Parameters& p);
-
-}  // namespace yardsim::examples::gpt
+}  // namespace yardsim::models::library

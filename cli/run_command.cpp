@@ -1,0 +1,47 @@
+#include <cmath>
+#include <cstdio>
+
+#include "cli/commands.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/logging.hpp"
+#include "cli/progress.hpp"
+#include "cli/scene_input.hpp"
+#include "models/assembler.hpp"
+#include "models/runner.hpp"
+
+namespace yardsim::cli {
+
+int runCommand(const RunArgs& a) {
+  auto scene = loadAndReport(a.scene);
+  if (!scene) return kInvalidInput;
+  models::RunOptions opt;
+  opt.outdir = a.outdir;
+  opt.until = a.until >= 0 ? a.until : scene->until;
+  opt.trace = a.traceGiven ? a.trace : scene->trace;
+  for (const auto& t : opt.trace)
+    if (t != "jsonl" && t != "chrome" && t != "csv") {
+      std::fprintf(stderr, "--trace: unknown sink '%s' (expected jsonl, chrome or csv)\n", t.c_str());
+      return kInvalidInput;
+    }
+  ProgressPrinter printer;
+  if (!a.quiet) opt.progress = [&](const models::Progress& p) { printer(p); };
+  auto log = logger("cli");
+  auto root = models::assemble(*scene);
+  try {
+    const models::RunResult r = models::runScene(*scene, *root, opt);
+    printer.finish();
+    if (!a.quiet)
+      log->info("{}: simulated {:.6g} s in {:.3g} s wall (real-time factor {:.3g}), {} samples, "
+                "{} transitions; output in {}",
+                scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
+                r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
+    return kOk;
+  } catch (const devs::SimulationError& e) {
+    printer.finish();
+    std::fprintf(stderr, "numerical failure: %s\neverything recorded until then is in %s\n",
+                 e.what(), a.outdir.c_str());
+    return kNumericalFailure;
+  }
+}
+
+}  // namespace yardsim::cli

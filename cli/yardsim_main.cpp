@@ -1,0 +1,67 @@
+#include "cli/yardsim_main.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "cli/commands.hpp"
+#include "cli/exit_codes.hpp"
+#include "cli/logging.hpp"
+#include "models/timeseries_writer.hpp"
+
+namespace yardsim::cli {
+
+int yardsimMain(int argc, char** argv) {
+  CLI::App app{"yardsim: heavy-lift and marine operation simulator"};
+  app.set_version_flag("--version", std::string("yardsim ") + models::kVersion);
+  app.require_subcommand(1);
+
+  RunArgs run;
+  auto* runCmd = app.add_subcommand("run", "run a scene and write its outputs");
+  runCmd->add_option("scene", run.scene, "scene file (YAML)")->required();
+  runCmd->add_option("-o,--outdir", run.outdir, "output folder")->capture_default_str();
+  runCmd->add_option("--until", run.until, "end time in s (default: the scene's `until`)");
+  runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
+  runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
+
+  std::string validateScene;
+  bool printResolved = false;
+  auto* validate = app.add_subcommand("validate", "check a scene without running it");
+  validate->add_option("scene", validateScene, "scene file (YAML)")->required();
+  validate->add_flag("--print-resolved", printResolved, "list exactly what would run");
+
+  TraceArgs trace;
+  auto* traceCmd = app.add_subcommand("trace", "filter and pretty-print a JSON Lines trace");
+  traceCmd->add_option("file", trace.file, "OUTDIR/trace.jsonl")->required();
+  traceCmd->add_option("--model", trace.model, "glob over model paths")->capture_default_str();
+  traceCmd->add_option("--port", trace.port, "glob over port names")->capture_default_str();
+  traceCmd->add_option("--from", trace.from, "start time, s");
+  traceCmd->add_option("--to", trace.to, "end time, s");
+
+  app.add_subcommand("list-types", "list the registered model types and their parameters");
+  std::string channelsScene;
+  auto* channels = app.add_subcommand("list-channels", "list the channels a scene can record");
+  channels->add_option("scene", channelsScene, "scene file (YAML)")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kInvalidInput;
+  }
+  setupLogging();
+  try {
+    if (runCmd->parsed()) {
+      run.traceGiven = runCmd->count("--trace") > 0;
+      return runCommand(run);
+    }
+    if (validate->parsed()) return validateCommand(validateScene, printResolved);
+    if (traceCmd->parsed()) return traceCommand(trace);
+    if (channels->parsed()) return listChannelsCommand(channelsScene);
+    return listTypesCommand();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "yardsim: internal error: %s\n", e.what());
+    return kInternalError;
+  }
+}
+
+}  // namespace yardsim::cli

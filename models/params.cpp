@@ -1,0 +1,71 @@
+#include "models/params.hpp"
+
+#include <stdexcept>
+
+namespace yardsim::models {
+
+std::string describe(ParamKind kind) {
+  switch (kind) {
+    case ParamKind::Number: return "a number";
+    case ParamKind::Integer: return "an integer";
+    case ParamKind::Boolean: return "true or false";
+    case ParamKind::String: return "a string";
+    case ParamKind::NumberList: return "a list of numbers";
+    case ParamKind::StringList: return "a list of strings";
+    case ParamKind::Map: return "a mapping";
+    case ParamKind::Any: return "any value";
+  }
+  return "?";
+}
+
+namespace {
+template <class T>
+bool converts(const YAML::Node& n) {
+  T out;
+  return n.IsScalar() && YAML::convert<T>::decode(n, out);
+}
+}  // namespace
+
+bool hasKind(const YAML::Node& v, ParamKind kind) {
+  switch (kind) {
+    case ParamKind::Number: return converts<double>(v);
+    case ParamKind::Integer: return converts<long long>(v);
+    case ParamKind::Boolean: return converts<bool>(v);
+    case ParamKind::String: return v.IsScalar();
+    case ParamKind::NumberList:
+      if (!v.IsSequence()) return false;
+      for (const auto& e : v)
+        if (!converts<double>(e)) return false;
+      return true;
+    case ParamKind::StringList:
+      if (!v.IsSequence()) return false;
+      for (const auto& e : v)
+        if (!e.IsScalar()) return false;
+      return true;
+    case ParamKind::Map: return v.IsMap();
+    case ParamKind::Any: return v.IsDefined();
+  }
+  return false;
+}
+
+const YAML::Node& Params::at(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) throw std::out_of_range("parameter '" + name + "' is not set");
+  return it->second;
+}
+
+SourceMark Params::mark(const std::string& name) const {
+  auto it = marks_.find(name);
+  return it == marks_.end() ? SourceMark{} : it->second;
+}
+
+void Params::set(const std::string& name, YAML::Node value, SourceMark where) {
+  values_[name] = std::move(value);
+  marks_[name] = std::move(where);
+}
+
+void ParamCheck::error(const std::string& param, const std::string& message) {
+  diags_.error(params_.mark(param), keyPath_ + "." + param, message);
+}
+
+}  // namespace yardsim::models

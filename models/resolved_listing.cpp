@@ -1,0 +1,71 @@
+#include "models/resolved_listing.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace yardsim::models {
+namespace {
+
+std::string flow(const YAML::Node& n) {
+  YAML::Emitter e;
+  e.SetMapFormat(YAML::Flow);
+  e.SetSeqFormat(YAML::Flow);
+  e << n;
+  return e.c_str();
+}
+
+void instances(const Instance& inst, std::ostringstream& os, int& atomics, int& coupled) {
+  for (const auto& c : inst.children) {
+    if (c->atomic()) {
+      ++atomics;
+      os << "  atomic  " << c->path << "  type=" << c->type->name;
+      for (const auto& [k, v] : c->params.values()) os << "  " << k << "=" << flow(v);
+      os << "\n";
+    } else {
+      ++coupled;
+      os << "  coupled " << c->path;
+      if (!c->source.empty()) os << "  from=" << c->source;
+      os << "\n";
+      instances(*c, os, atomics, coupled);
+    }
+  }
+}
+
+void couplings(const Instance& inst, std::ostringstream& os) {
+  auto full = [&](const std::string& model, const std::string& port) {
+    std::string p = inst.path;
+    if (!model.empty()) p += (p.empty() ? "" : ".") + model;
+    return (p.empty() ? std::string("<scene>") : p) + "." + port;
+  };
+  for (const auto& k : inst.couplings)
+    os << "  " << full(k.fromModel, k.fromPort) << " -> " << full(k.toModel, k.toPort) << "\n";
+  for (const auto& c : inst.children) couplings(*c, os);
+}
+
+}  // namespace
+
+std::string resolvedListing(const Scene& s) {
+  std::ostringstream body, os;
+  int atomics = 0, coupled = 0;
+  instances(s.root, body, atomics, coupled);
+  os << "scene " << s.name << " (" << s.file.string() << ", sha256 " << s.sha256 << ")\n"
+     << "run: until=" << (std::isinf(s.until) ? std::string("no event left") : std::to_string(s.until))
+     << " seed=" << s.seed << " integrator=" << s.integrator << " dt=" << s.dt << "\n"
+     << "models: " << atomics << " atomic, " << coupled << " coupled\n"
+     << body.str() << "couplings:\n";
+  couplings(s.root, os);
+  os << "recorder: ";
+  if (s.record.interval > 0) {
+    os << "every " << s.record.interval << " s, channels";
+    for (const auto& g : s.record.channels) os << " " << g;
+    os << "\n";
+  } else {
+    os << "none\n";
+  }
+  os << "trace sinks:";
+  for (const auto& t : s.trace) os << " " << t;
+  os << (s.trace.empty() ? " none\n" : "\n");
+  return os.str();
+}
+
+}  // namespace yardsim::models

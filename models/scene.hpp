@@ -1,0 +1,68 @@
+#pragma once
+// A scene after loading and validation: the instance tree every component of every included
+// file resolved (types found, `$name` references replaced, overrides applied), plus the
+// run settings of the root file. Nothing is built yet: assemble() does that.
+#include <array>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "models/params.hpp"
+#include "models/registry.hpp"
+
+namespace yardsim::models {
+
+struct Placement {
+  std::array<double, 3> xyz{0.0, 0.0, 0.0};     // m, in the parent's frame
+  std::array<double, 3> rpyDeg{0.0, 0.0, 0.0};  // roll, pitch, yaw in degrees
+};
+
+struct CouplingSpec {
+  std::string fromModel, fromPort;  // fromModel empty: this coupled model's own port
+  std::string toModel, toPort;
+  SourceMark where;
+};
+
+struct Instance {
+  std::string name;
+  std::string path;  // dot path from the scene root ("" for the root)
+  SourceMark where;  // where the scene declares it
+  std::string keyPath;
+  Placement placement;  // relative to the parent
+  // atomic
+  const TypeInfo* type = nullptr;
+  Params params;
+  bool feedthrough = false;  // from the type, for these params
+  // both: ports (for an atomic, from its type)
+  std::vector<PortSpec> ports;
+  // coupled
+  std::string source;  // file that defines it (include) or "" when inline or atomic
+  std::vector<std::unique_ptr<Instance>> children;
+  std::vector<CouplingSpec> couplings;
+
+  bool atomic() const { return type != nullptr; }
+  const Instance* child(const std::string& n) const;
+  const PortSpec* port(const std::string& n) const;
+};
+
+struct RecordSpec {
+  double interval = 0.0;              // s; 0: nothing recorded
+  std::vector<std::string> channels;  // globs over channel names
+};
+
+struct Scene {
+  std::filesystem::path file;
+  std::string name;
+  std::string sha256;  // of the root file's bytes
+  double until = std::numeric_limits<double>::infinity();
+  long long seed = 0;
+  std::string integrator = "none";  // method named by the scene (metadata until physics)
+  double dt = 0.0;
+  RecordSpec record;
+  std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv
+  Instance root;
+};
+
+}  // namespace yardsim::models

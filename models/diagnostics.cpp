@@ -64,7 +64,14 @@ std::string didYouMean(std::string_view name, const std::vector<std::string>& ca
     }
   }
   const std::size_t limit = std::max<std::size_t>(2, name.size() / 3);
-  if (!pick || best > limit) return {};
+  if (pick && best > limit) {
+    // a truncated or extended name ("out" for "output") is still a near miss
+    const std::string_view a = name, b = *pick;
+    const bool prefix = std::min(a.size(), b.size()) >= 2 &&
+                        (a.substr(0, b.size()) == b || b.substr(0, a.size()) == a);
+    if (!prefix) pick = nullptr;
+  }
+  if (!pick) return {};
   return "did you mean '" + *pick + "'?";
 }
 

@@ -244,16 +244,30 @@ class Loader {
     const std::string pkp = joinKey(kp, "params");
     bool ok = true;
     if (params) ok = checkKeys(params, known, f, pkp, d_);
+    // a misspelt key already says which parameter it meant: don't also call that one missing
+    std::set<std::string> meant;
+    if (params)
+      for (auto it = params.begin(); it != params.end(); ++it) {
+        const auto key = it->first.as<std::string>();
+        if (std::find(known.begin(), known.end(), key) == known.end())
+          if (const std::string h = didYouMean(key, known); !h.empty())
+            meant.insert(h.substr(14, h.size() - 16));  // "did you mean 'x'?" => x
+      }
     for (const auto& spec : type->params) {
-      const YAML::Node given = params ? params[spec.name] : YAML::Node();
+      const YAML::Node given = params ? params[spec.name] : params;  // undefined when absent
       if (given) {
+        const std::size_t before = d_.errorCount();
         const YAML::Node value = resolveRefs(given, scope, f, joinKey(pkp, spec.name), d_);
-        if (!hasKind(value, spec.kind)) {
+        if (d_.errorCount() > before) {
+          ok = false;  // an unknown $name, already reported
+        } else if (!hasKind(value, spec.kind)) {
           d_.error(markOf(given, f), joinKey(pkp, spec.name),
                    "expected " + describe(spec.kind) + unitNote(spec) + ", got " + shown(value));
           ok = false;
         }
         c.params.set(spec.name, value, markOf(given, f));
+      } else if (spec.required && meant.count(spec.name)) {
+        ok = false;
       } else if (spec.required) {
         d_.error(params ? markOf(params, f) : c.where, pkp,
                  "missing required parameter '" + spec.name + "' (" + describe(spec.kind) +

@@ -1,0 +1,120 @@
+// The yardsim command, run as a process: every subcommand and every exit status.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <sys/wait.h>
+
+#include "support/csv_file.hpp"
+#include "support/scene_files.hpp"
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out;  // stdout and stderr together
+};
+
+// (arguments) => exit status and output of `yardsim arguments`
+Result runYardsim(const std::string& args) {
+  const std::string cmd = std::string(YARDSIM_EXE) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p);
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int raw = pclose(p);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+const std::string kGpt = std::string(YARDSIM_SOURCE_DIR) + "/examples/gpt/scene.yaml";
+
+}  // namespace
+
+TEST_CASE("yardsim run writes the time series and the traces asked for (exit 0)") {
+  yardsim::testing::SceneDir dir;
+  const auto r = runYardsim("run " + kGpt + " -o " + dir.file("out") + " --trace jsonl,csv --quiet");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK(std::filesystem::exists(dir.path() / "out/trace.jsonl"));
+  CHECK(std::filesystem::exists(dir.path() / "out/trace.csv"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "out/trace.json"));  // --trace replaced the scene's list
+  const yardsim::testing::CsvFile csv(dir.file("out/timeseries.csv"));
+  CHECK(csv.header.front() == "time[s]");
+  CHECK(csv.column("ef.transd.solved[-]") > 0);
+  CHECK(csv.meta.at("scene_sha256").size() == 64);
+  CHECK(csv.rows.back()[0] == 21.5);  // runs until no event is left
+
+  const auto limited = runYardsim("run " + kGpt + " -o " + dir.file("short") + " --until 5 --quiet");
+  CHECK(limited.status == 0);
+  CHECK(yardsim::testing::CsvFile(dir.file("short/timeseries.csv")).rows.back()[0] == 5.0);
+}
+
+TEST_CASE("yardsim run and validate refuse a bad scene with exit 1 and every error") {
+  yardsim::testing::SceneDir dir;
+  const auto bad = dir.write("bad.yaml", "schema_version: 1\ncomponents:\n  p: {type: procesor}\n"
+                                         "  q: {type: processor, params: {processing_time: x}}\n");
+  for (const std::string cmd : {"run", "validate"}) {
+    const auto r = runYardsim(cmd + " " + bad.string() + (cmd == "run" ? " -o " + dir.file("out") : ""));
+    INFO(r.out);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.out, Catch::Contains("bad.yaml:3:13: error: components.p.type"));
+    CHECK_THAT(r.out, Catch::Contains("bad.yaml:4:50: error: components.q.params.processing_time"));
+    CHECK_THAT(r.out, Catch::Contains("2 error(s)"));
+  }
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "out"));  // nothing simulated
+  CHECK(runYardsim("run").status == 1);                          // missing argument
+}
+
+TEST_CASE("yardsim run exits 2 on a numerical failure and keeps the samples") {
+  yardsim::testing::SceneDir dir;
+  const auto scene = dir.write("blow.yaml", R"(schema_version: 1
+components:
+  s: {type: spring_mass, params: {mass: 1, stiffness: 1, x0: 1, dt: 3.0, blowup_limit: 100}}
+record: {interval: 3.0}
+until: 1000
+)");
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out, Catch::Contains("numerical failure") && Catch::Contains("suggestion"));
+  CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 2);
+}
+
+TEST_CASE("yardsim exits 3 when it cannot write its output") {
+  yardsim::testing::SceneDir dir;
+  dir.write("file", "not a folder");
+  const auto r = runYardsim("run " + kGpt + " -o " + dir.file("file/out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 3);
+  CHECK_THAT(r.out, Catch::Contains("internal error"));
+}
+
+TEST_CASE("yardsim validate --print-resolved lists exactly what will run") {
+  const auto r = runYardsim("validate " + kGpt + " --print-resolved");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("models: 3 atomic, 1 coupled"));
+  CHECK_THAT(r.out, Catch::Contains("atomic  ef.genr  type=generator  period=1.0"));
+  CHECK_THAT(r.out, Catch::Contains("ef.out -> proc.in"));
+  CHECK_THAT(r.out, Catch::Contains("trace sinks: jsonl chrome"));
+}
+
+TEST_CASE("yardsim trace filters by model, port and time") {
+  yardsim::testing::SceneDir dir;
+  REQUIRE(runYardsim("run " + kGpt + " -o " + dir.file("out") + " --trace jsonl --quiet").status == 0);
+  const auto r = runYardsim("trace " + dir.file("out/trace.jsonl") + " --model 'ef.*' --port out --from 2 --to 3");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("ef.genr"));
+  CHECK_THAT(r.out, !Catch::Contains("proc "));
+  CHECK_THAT(r.out, Catch::Contains("2 of "));  // genr's outputs at t = 2 and t = 3
+  CHECK(runYardsim("trace " + dir.file("missing.jsonl")).status == 1);
+}
+
+TEST_CASE("yardsim list-types and list-channels") {
+  const auto types = runYardsim("list-types");
+  CHECK(types.status == 0);
+  CHECK_THAT(types.out, Catch::Contains("spring_mass") && Catch::Contains("param stiffness"));
+  const auto ch = runYardsim("list-channels " + kGpt);
+  CHECK(ch.status == 0);
+  CHECK_THAT(ch.out, Catch::Contains("ef.transd.throughput[1/s]"));
+}

@@ -1,0 +1,18 @@
+#pragma once
+// The joint-space mass matrix by the composite-rigid-body algorithm, computed in the world frame
+// (composite inertias summed in world coordinates, H_ij = S_j^T IC_i S_i).
+
+#include <Eigen/Core>
+
+#include "dynamics/data.hpp"
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+/// (q) => data.M (both triangles), and data.X_WB, data.S_W, data.IC_W.
+const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::VectorXd& q);
+
+/// (data.M) => data.llt, the Cholesky factor of M (needs crba first).
+void choleskyFactor(const Model& model, Data& data);
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,59 @@
+#pragma once
+// The mutable workspace of the algorithms, made once from a Model: every buffer they need is
+// allocated here, so the algorithms themselves never allocate.
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <vector>
+
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+struct Data {
+  explicit Data(const Model& model);
+
+  // kinematics (index 0 = world)
+  std::vector<Transform> X_PB;  ///< pose of body i in its parent body
+  std::vector<Transform> X_WB;  ///< pose of body i in the world
+  std::vector<MotionSubspace> S;  ///< joint motion subspace of body i, body frame
+  std::vector<Motion> V;  ///< spatial velocity of body i, body frame
+  std::vector<Motion> A;  ///< spatial acceleration of body i, body frame (forwardKinematics: without gravity)
+  std::vector<Motion> C;  ///< velocity-product acceleration c_i = c_J + v_i x v_J, body frame
+
+  // RNEA / ABA
+  std::vector<Force> F;   ///< RNEA: force transmitted by joint i; ABA: bias force p_i
+  std::vector<Force> Fext;  ///< external force on body i, body frame (from ExternalForces)
+  std::vector<Matrix6> IA;  ///< articulated inertia
+  std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> U;
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> Dinv;
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>> u;
+  Eigen::VectorXd tau;  ///< RNEA output
+  Eigen::VectorXd ddq;  ///< ABA output
+
+  // CRBA, bias forces, Cholesky
+  std::vector<Matrix6> IC_W;  ///< composite inertia of the subtree of i, world frame
+  Eigen::Matrix<double, 6, Eigen::Dynamic> S_W;  ///< motion subspace columns, world frame (6 x nv)
+  Eigen::MatrixXd M;   ///< joint-space mass matrix (upper and lower triangle)
+  Eigen::VectorXd nle; ///< bias forces h(q, v) (Coriolis, centrifugal, gravity)
+  Eigen::LLT<Eigen::MatrixXd> llt;
+
+  // loop constraints
+  Eigen::MatrixXd J;        ///< nc x nv constraint Jacobian
+  Eigen::VectorXd residual; ///< nc position residual
+  Eigen::VectorXd cv;       ///< nc velocity residual J v
+  Eigen::VectorXd kappa;    ///< nc acceleration bias: d/dt(J v) = J ddq + kappa
+  Eigen::VectorXd lambda;   ///< nc multipliers: the generalized constraint force is J^T lambda
+  Eigen::MatrixXd MinvJt;   ///< nv x nc
+  Eigen::MatrixXd schur;    ///< nc x nc  J M^-1 J^T
+  Eigen::VectorXd rhs;      ///< nc
+  Eigen::VectorXd work;     ///< nc
+  std::vector<int> perm;    ///< nc pivot order
+  int schurRank = 0;
+  std::vector<Motion> V_W;  ///< spatial velocity of body i, world frame
+  std::vector<Motion> A0_W; ///< spatial acceleration with ddq = 0, world frame (no gravity)
+  Eigen::VectorXd dv;       ///< nv scratch
+  Eigen::VectorXd dq;       ///< nq scratch
+};
+
+}  // namespace yardsim::dynamics

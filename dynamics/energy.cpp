@@ -1,0 +1,35 @@
+#include "dynamics/energy.hpp"
+
+#include "dynamics/kinematics.hpp"
+
+namespace yardsim::dynamics {
+
+double kineticEnergy(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  forwardKinematics(m, d, q, v);
+  double T = 0.0;
+  for (int i = 1; i < m.nbodies; ++i) T += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i]));
+  return T;
+}
+
+double potentialEnergy(const Model& m, Data& d, const Eigen::VectorXd& q) {
+  forwardKinematics(m, d, q);
+  double U = 0.0;
+  for (int i = 1; i < m.nbodies; ++i) U -= m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+  return U;
+}
+
+Vector3 centerOfMass(const Model& m, Data& d, const Eigen::VectorXd& q) {
+  forwardKinematics(m, d, q);
+  Vector3 c = Vector3::Zero();
+  for (int i = 1; i < m.nbodies; ++i) c += m.inertias[i].mass * d.X_WB[i].actPoint(m.inertias[i].com);
+  return c / m.totalMass();
+}
+
+Force momentum(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  forwardKinematics(m, d, q, v);
+  Force h = Force::Zero();
+  for (int i = 1; i < m.nbodies; ++i) h += d.X_WB[i].actForce(m.inertias[i].apply(d.V[i]));
+  return h;
+}
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,20 @@
+#pragma once
+// Kinetic and potential energy, centre of mass, and the spatial momentum of the whole system.
+
+#include <Eigen/Core>
+
+#include "dynamics/data.hpp"
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+/// (q, v) => T = 1/2 sum V_i . I_i V_i (runs forward kinematics).
+double kineticEnergy(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
+/// (q) => U = - sum m_i g . c_i (gravity potential, zero at the world origin; runs forward kinematics).
+double potentialEnergy(const Model& model, Data& data, const Eigen::VectorXd& q);
+/// (q) => centre of mass of all bodies in the world frame (runs forward kinematics).
+Vector3 centerOfMass(const Model& model, Data& data, const Eigen::VectorXd& q);
+/// (q, v) => spatial momentum in the world frame: [angular momentum about the world origin; linear momentum].
+Force momentum(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,76 @@
+#pragma once
+// The immutable description of a multibody system: a tree of bodies, each attached to its
+// parent by a joint with its placement, gravity, and loop-closure constraints. Made by
+// ModelBuilder (model_builder.hpp), which checks it. Body 0 is the world; parent[i] < i.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dynamics/joint.hpp"
+#include "dynamics/spatial.hpp"
+
+namespace yardsim::dynamics {
+
+/// Components of a loop constraint, in the constraint frame F on body A; rows are stacked in the
+/// order rot x, rot y, rot z, trans x, trans y, trans z (those present).
+enum ConstraintAxis : std::uint8_t {
+  kRotX = 1,
+  kRotY = 2,
+  kRotZ = 4,
+  kTransX = 8,
+  kTransY = 16,
+  kTransZ = 32,
+};
+/// The origins of F and G coincide (a ball-joint cut).
+inline constexpr std::uint8_t kPointConstraint = kTransX | kTransY | kTransZ;
+/// Origins coincide and the z axes are aligned (a revolute cut about z).
+inline constexpr std::uint8_t kAxisConstraint = kPointConstraint | kRotX | kRotY;
+/// Origin of G on F's z axis and z axes aligned (a cylindrical cut along z).
+inline constexpr std::uint8_t kCylinderConstraint = kTransX | kTransY | kRotX | kRotY;
+/// F and G coincide (a weld cut).
+inline constexpr std::uint8_t kWeldConstraint = 63;
+/// Origins coincide in F's x-y plane (a revolute cut of a mechanism that moves in that plane).
+inline constexpr std::uint8_t kPlanarPointConstraint = kTransX | kTransY;
+
+/// A cut joint closing a loop: frame F fixed on body A, frame G fixed on body B.
+struct LoopConstraint {
+  std::string name;
+  int bodyA = 0;
+  int bodyB = 0;
+  Transform X_AF;  ///< pose of F in A
+  Transform X_BG;  ///< pose of G in B
+  std::uint8_t mask = kPointConstraint;
+  int dim = 0;  ///< number of rows (bits set in mask)
+  int row = 0;  ///< first row in the stacked constraint vector
+};
+
+struct Model {
+  int nbodies = 1;  ///< including the world (index 0)
+  int nq = 0;
+  int nv = 0;
+  int nc = 0;  ///< total loop-constraint rows
+  Vector3 gravity{0.0, 0.0, -9.81};
+
+  std::vector<std::string> names;     ///< names[0] = "world"
+  std::vector<int> parent;            ///< parent[0] = -1
+  std::vector<Joint> joints;          ///< joints[0] unused
+  std::vector<Transform> X_PJ;        ///< pose of the joint frame in the parent body frame
+  std::vector<SpatialInertia> inertias;
+  std::vector<Matrix6> inertiaMatrices;  ///< 6x6 body inertia about the body origin, body frame
+  std::vector<std::string> geometry;  ///< optional geometry reference per body
+  std::vector<int> idxQ;              ///< first configuration index of body i's joint
+  std::vector<int> idxV;              ///< first velocity index of body i's joint
+  std::vector<int> jointNq;
+  std::vector<int> jointNv;
+  std::vector<int> dofBody;           ///< body owning each velocity index
+  std::vector<LoopConstraint> loops;
+
+  /// Index of a body by name, or -1.
+  int bodyIndex(std::string_view name) const;
+  /// Total mass of all bodies.
+  double totalMass() const;
+};
+
+}  // namespace yardsim::dynamics

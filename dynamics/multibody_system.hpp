@@ -1,0 +1,51 @@
+#pragma once
+// The multibody model as an AccelerationSource for the integrators: joint forces tau, external
+// forces from an optional callback evaluated at every stage, ABA for a tree or the Schur-complement
+// forward dynamics when the model has loops, with optional Baumgarte terms and post-step projection.
+
+#include <functional>
+
+#include "dynamics/constrained_dynamics.hpp"
+#include "dynamics/data.hpp"
+#include "dynamics/external_forces.hpp"
+#include "dynamics/integrators/integrator.hpp"
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+class MultibodySystem final : public AccelerationSource {
+ public:
+  /// (t, q, v, data after forward kinematics(q, v)) => forces to add, and tau (zeroed before the call).
+  using ForceCallback = std::function<void(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Data& data,
+                                           ExternalForces& forces, Eigen::VectorXd& tau)>;
+
+  explicit MultibodySystem(const Model& model);
+
+  void setForces(ForceCallback callback) { callback_ = std::move(callback); }
+  void setBaumgarte(const Baumgarte& stab) { stab_ = stab; }
+  /// Project positions (to tol) and velocities onto the loop manifold after every step.
+  void setProjection(bool on, double tol = 1e-12) {
+    project_ = on;
+    projectTol_ = tol;
+  }
+
+  void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
+  void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
+
+  const Model& model() const { return model_; }
+  Data& data() { return data_; }
+  Eigen::VectorXd& tau() { return tau_; }  ///< constant joint forces used when no callback is set
+
+ private:
+  const Model& model_;
+  Data data_;
+  Data scratch_;
+  ExternalForces forces_;
+  Eigen::VectorXd tau_, tauStage_;
+  ForceCallback callback_;
+  Baumgarte stab_;
+  bool project_ = false;
+  double projectTol_ = 1e-12;
+};
+
+}  // namespace yardsim::dynamics

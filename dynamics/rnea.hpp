@@ -1,0 +1,22 @@
+#pragma once
+// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1), and the
+// bias forces h(q, v) = RNEA(q, v, 0).
+
+#include <Eigen/Core>
+
+#include "dynamics/data.hpp"
+#include "dynamics/external_forces.hpp"
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+/// (q, v, ddq, external forces) => data.tau with M ddq + h = tau + sum J_i^T F_ext_i.
+/// Also leaves data.X_PB, data.V, data.A (with gravity: A includes -g), data.F.
+const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                            const Eigen::VectorXd& ddq, const ExternalForces* fext = nullptr);
+
+/// (q, v, external forces) => data.nle = h(q, v) - sum J_i^T F_ext_i, i.e. RNEA with ddq = 0.
+const Eigen::VectorXd& biasForces(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                  const ExternalForces* fext = nullptr);
+
+}  // namespace yardsim::dynamics

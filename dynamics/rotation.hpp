@@ -1,0 +1,30 @@
+#pragma once
+// Rotations: exponential and logarithm of SO(3), the inverse right Jacobian, quaternions stored
+// scalar first (w, x, y, z), and Euler angles for output.
+
+#include "dynamics/spatial.hpp"
+
+namespace yardsim::dynamics {
+
+/// exp([w]x): the rotation by |w| about w/|w| (Rodrigues).
+Matrix3 expSO3(const Vector3& w);
+/// The rotation vector w with expSO3(w) = R, |w| <= pi.
+Vector3 logSO3(const Matrix3& R);
+/// Jr^{-1}(w): for R(t) = R0 exp([w(t)]x) with body angular velocity omega, dw/dt = Jr^{-1}(w) omega.
+Matrix3 rightJacobianInverse(const Vector3& w);
+/// The rotation by angle about a unit axis.
+Matrix3 axisRotation(const Vector3& axis, double angle);
+
+/// The rotation matrix of a unit quaternion stored (w, x, y, z) at q[0..3].
+Matrix3 quaternionToMatrix(const double* q);
+/// A rotation matrix => unit quaternion (w, x, y, z) with w >= 0, written to q[0..3].
+void matrixToQuaternion(const Matrix3& R, double* q);
+
+/// Euler angles (roll, pitch, yaw) of R in the z-y'-x'' intrinsic (Tait-Bryan, aerospace/marine)
+/// convention: R = Rz(yaw) * Ry(pitch) * Rx(roll), with pitch in [-pi/2, pi/2] and roll, yaw in
+/// (-pi, pi]. At pitch = +-pi/2 (gimbal lock) roll is set to 0 and yaw carries the rotation.
+Vector3 eulerAngles(const Matrix3& R);
+/// The inverse of eulerAngles: Rz(yaw) * Ry(pitch) * Rx(roll).
+Matrix3 eulerToMatrix(const Vector3& rollPitchYaw);
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,101 @@
+// The algorithms allocate nothing once Data exists: every global operator new is counted.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <new>
+
+#include "dynamics/aba.hpp"
+#include "dynamics/configuration.hpp"
+#include "dynamics/constrained_dynamics.hpp"
+#include "dynamics/crba.hpp"
+#include "dynamics/energy.hpp"
+#include "dynamics/integrators/rk4.hpp"
+#include "dynamics/integrators/semi_implicit_euler.hpp"
+#include "dynamics/multibody_system.hpp"
+#include "dynamics/projection.hpp"
+#include "dynamics/rnea.hpp"
+#include "test_mechanisms.hpp"
+#include "test_models.hpp"
+
+// The replacement operators pair malloc with free; GCC inlines them and then mistakes the pair.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
+namespace {
+std::size_t gAllocations = 0;
+}
+
+void* operator new(std::size_t n) {
+  ++gAllocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  ++gAllocations;
+  const std::size_t al = static_cast<std::size_t>(a);
+  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+using namespace yardsim::dynamics;
+using namespace yardsim::dynamics::testing;
+
+TEST_CASE("RNEA, ABA, CRBA + Cholesky, energy and RK4 steps do not allocate") {
+  std::mt19937 rng(32);
+  const Model m = randomTree(rng, 24);
+  Data d(m);
+  ExternalForces f(m);
+  MultibodySystem sys(m);
+  sys.setForces([](double, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data&, ExternalForces& fx, Eigen::VectorXd&) {
+    fx.addWorldFrame(2, Force::Constant(1.0));
+  });
+  Rk4 rk(m);
+  SemiImplicitEuler se(m);
+  Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), tau = randomVectorX(rng, m.nv);
+  f.addWorldFrame(3, Force::Constant(2.0));
+  f.addBodyFrame(4, Force::Constant(1.0));
+  double t = 0.0;
+  const std::size_t before = gAllocations;
+  for (int k = 0; k < 3; ++k) {
+    rnea(m, d, q, v, tau, &f);
+    biasForces(m, d, q, v);
+    aba(m, d, q, v, tau, &f);
+    crba(m, d, q);
+    choleskyFactor(m, d);
+    constrainedForwardDynamics(m, d, q, v, tau, &f);
+    kineticEnergy(m, d, q, v);
+    momentum(m, d, q, v);
+    rk.step(sys, t, q, v, 1e-3);
+    se.step(sys, t, q, v, 1e-3);
+  }
+  CHECK(gAllocations == before);
+}
+
+TEST_CASE("closed-loop dynamics and projection do not allocate") {
+  const FourBar fb = makeFourBar(1.0, 3.0, 2.5, 3.0);
+  Data d(fb.model);
+  MultibodySystem sys(fb.model);
+  sys.setProjection(true);
+  sys.setBaumgarte({1.0, 1.0});
+  Rk4 rk(fb.model);
+  Eigen::VectorXd q = fb.closedConfiguration(0.5), v = Eigen::VectorXd::Zero(3), tau = Eigen::VectorXd::Zero(3);
+  double t = 0.0;
+  const std::size_t before = gAllocations;
+  for (int k = 0; k < 3; ++k) {
+    constrainedForwardDynamics(fb.model, d, q, v, tau);
+    rk.step(sys, t, q, v, 1e-3);
+    q[2] += 1e-4;
+    projectPositions(fb.model, d, q);
+    projectVelocities(fb.model, d, q, v);
+  }
+  CHECK(gAllocations == before);
+}

@@ -1,0 +1,44 @@
+// The mass matrix: symmetric positive definite, 1/2 v^T M v equals the kinetic energy summed body
+// by body, and its columns are RNEA responses to unit accelerations.
+#include <catch2/catch.hpp>
+
+#include "dynamics/configuration.hpp"
+#include "dynamics/crba.hpp"
+#include "dynamics/energy.hpp"
+#include "dynamics/rnea.hpp"
+#include "test_models.hpp"
+
+using namespace yardsim::dynamics;
+using namespace yardsim::dynamics::testing;
+
+TEST_CASE("CRBA: symmetric positive definite, kinetic energy, unit-acceleration columns") {
+  std::mt19937 rng(18);
+  for (int n : {1, 4, 9, 20}) {
+    Model m = randomTree(rng, n);
+    m.gravity.setZero();
+    Data d(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv);
+    const Eigen::MatrixXd M = crba(m, d, q);
+    CHECK((M - M.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    choleskyFactor(m, d);
+    CHECK(d.llt.info() == Eigen::Success);
+    CHECK(0.5 * v.dot(M * v) == Approx(kineticEnergy(m, d, q, v)).epsilon(1e-12));
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.nv);
+    for (int k = 0; k < m.nv; ++k) {
+      Eigen::VectorXd e = zero;
+      e[k] = 1.0;
+      CHECK(relativeError(rnea(m, d, q, zero, e), M.col(k)) < 1e-12);
+    }
+  }
+}
+
+TEST_CASE("a single free body has M = its spatial inertia in the body frame") {
+  ModelBuilder b;
+  std::mt19937 rng(19);
+  const SpatialInertia I = randomInertia(rng);
+  b.addBody("block", "world", Joint::free(), {}, I);
+  const Model m = b.build();
+  Data d(m);
+  const Eigen::VectorXd q = randomConfiguration(m, rng);
+  CHECK(relativeError(crba(m, d, q), I.matrix()) < 1e-13);
+}

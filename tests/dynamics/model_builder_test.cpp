@@ -1,0 +1,99 @@
+// The checked builder: valid trees are ordered parent-first; bad input is refused with a message
+// naming the body or loop.
+#include <catch2/catch.hpp>
+
+#include "dynamics/model_builder.hpp"
+#include "test_models.hpp"
+
+using namespace yardsim::dynamics;
+using namespace yardsim::dynamics::testing;
+using Catch::Matchers::Contains;
+
+namespace {
+const SpatialInertia kUnit = boxInertia(1.0, Vector3(1, 1, 1));
+}
+
+TEST_CASE("bodies may be declared before their parents; the model orders parents first") {
+  ModelBuilder b;
+  b.addBody("tip", "arm", Joint::revolute(), Transform::translation(Vector3(1, 0, 0)), kUnit);
+  b.addBody("arm", "base", Joint::revolute(), {}, kUnit);
+  b.addBody("base", "world", Joint::free(), {}, kUnit, "base.stl");
+  const Model m = b.build();
+  REQUIRE(m.nbodies == 4);
+  CHECK(m.names[1] == "base");
+  CHECK(m.names[2] == "arm");
+  CHECK(m.names[3] == "tip");
+  CHECK(m.nq == 9);
+  CHECK(m.nv == 8);
+  CHECK(m.geometry[1] == "base.stl");
+  for (int i = 1; i < m.nbodies; ++i) CHECK(m.parent[i] < i);
+  CHECK(m.bodyIndex("tip") == 3);
+  CHECK(m.bodyIndex("nope") == -1);
+}
+
+TEST_CASE("bad models are rejected naming the body") {
+  auto build = [](auto&& edit) {
+    ModelBuilder b;
+    b.addBody("hull", "world", Joint::free(), {}, kUnit);
+    edit(b);
+    return b.build();
+  };
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("boom", "hull", Joint::revolute(), {}, makeInertia(0.0, Vector3::Zero(), Matrix3::Identity())); }),
+                    Contains("body 'boom'") && Contains("mass must be positive"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("boom", "hull", Joint::revolute(), {}, makeInertia(-2.0, Vector3::Zero(), Matrix3::Identity())); }),
+                    Contains("body 'boom'") && Contains("mass"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      b.addBody("jib", "hull", Joint::revolute(), {}, makeInertia(1.0, Vector3::Zero(), Vector3(1, 1, -1).asDiagonal()));
+                    }),
+                    Contains("body 'jib'") && Contains("positive definite"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      b.addBody("jib", "hull", Joint::revolute(), {}, makeInertia(1.0, Vector3::Zero(), Vector3(1, 1, 3).asDiagonal()));
+                    }),
+                    Contains("body 'jib'") && Contains("triangle inequality"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      Matrix3 I = Matrix3::Identity();
+                      I(0, 1) = 0.5;
+                      b.addBody("jib", "hull", Joint::revolute(), {}, makeInertia(1.0, Vector3::Zero(), I));
+                    }),
+                    Contains("body 'jib'") && Contains("symmetric"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("hook", "trolley", Joint::prismatic(), {}, kUnit); }),
+                    Contains("body 'hook'") && Contains("unknown parent 'trolley'"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("hull", "world", Joint::free(), {}, kUnit); }),
+                    Contains("body 'hull'") && Contains("twice"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      b.addBody("a", "c", Joint::revolute(), {}, kUnit);
+                      b.addBody("c", "a", Joint::revolute(), {}, kUnit);
+                    }),
+                    Contains("body 'a'") && Contains("cycle") && Contains("a -> c -> a"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("self", "self", Joint::revolute(), {}, kUnit); }),
+                    Contains("body 'self'") && Contains("own parent"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addBody("pin", "hull", Joint::revolute(Vector3::Zero()), {}, kUnit); }),
+                    Contains("body 'pin'") && Contains("axis"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      b.addBody("cardan", "hull", Joint::universal(Vector3::UnitX(), Vector3(1, 1, 0)), {}, kUnit);
+                    }),
+                    Contains("body 'cardan'") && Contains("orthogonal"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) {
+                      b.addBody("skewed", "hull", Joint::revolute(), Transform{2.0 * Matrix3::Identity(), Vector3::Zero()}, kUnit);
+                    }),
+                    Contains("body 'skewed'") && Contains("placement"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addLoop("stay", "hull", {}, "mast", {}, kPointConstraint); }),
+                    Contains("loop 'stay'") && Contains("unknown body 'mast'"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addLoop("stay", "hull", {}, "hull", {}, kPointConstraint); }),
+                    Contains("loop 'stay'"));
+  CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addLoop("stay", "hull", {}, "world", {}, kRotX | kTransX); }),
+                    Contains("loop 'stay'") && Contains("rotational"));
+}
+
+TEST_CASE("loops get consecutive rows") {
+  ModelBuilder b;
+  b.addBody("a", "world", Joint::revolute(), {}, kUnit);
+  b.addBody("c", "a", Joint::revolute(), {}, kUnit);
+  b.addLoop("l1", "c", {}, "world", {}, kAxisConstraint);
+  b.addLoop("l2", "a", {}, "world", {}, kPlanarPointConstraint);
+  const Model m = b.build();
+  REQUIRE(m.loops.size() == 2);
+  CHECK(m.loops[0].dim == 5);
+  CHECK(m.loops[1].row == 5);
+  CHECK(m.nc == 7);
+}

@@ -1,0 +1,69 @@
+// Rotations: exp/log, quaternions, Euler angles with the documented z-y'-x'' convention.
+#include <catch2/catch.hpp>
+
+#include "dynamics/rotation.hpp"
+#include "test_models.hpp"
+
+using namespace yardsim::dynamics;
+using namespace yardsim::dynamics::testing;
+
+TEST_CASE("exp and log of SO(3) are inverse, and exp matches Eigen's angle-axis") {
+  std::mt19937 rng(5);
+  for (int k = 0; k < 50; ++k) {
+    const Vector3 w = randomVector(rng, 3.0);
+    if (w.norm() >= M_PI) continue;
+    const Matrix3 R = expSO3(w);
+    CHECK((R - Eigen::AngleAxisd(w.norm(), w.normalized()).toRotationMatrix()).norm() < 1e-13);
+    CHECK((logSO3(R) - w).norm() < 1e-11);
+  }
+  CHECK((expSO3(Vector3(1e-9, 0, 0)) - Matrix3::Identity()).norm() < 1e-8);
+}
+
+TEST_CASE("quaternion (w, x, y, z) round trip") {
+  std::mt19937 rng(6);
+  for (int k = 0; k < 50; ++k) {
+    const Matrix3 R = randomRotation(rng);
+    double q[4];
+    matrixToQuaternion(R, q);
+    CHECK(q[0] >= 0.0);
+    CHECK((quaternionToMatrix(q) - R).norm() < 1e-13);
+  }
+  const double qz[4] = {std::cos(0.25), 0.0, 0.0, std::sin(0.25)};  // 0.5 rad about z
+  CHECK((quaternionToMatrix(qz) - axisRotation(Vector3::UnitZ(), 0.5)).norm() < 1e-15);
+}
+
+TEST_CASE("Euler angles are roll, pitch, yaw with R = Rz(yaw) Ry(pitch) Rx(roll)") {
+  const double roll = 0.3, pitch = -0.4, yaw = 2.5;
+  const Matrix3 R = axisRotation(Vector3::UnitZ(), yaw) * axisRotation(Vector3::UnitY(), pitch) *
+                    axisRotation(Vector3::UnitX(), roll);
+  const Vector3 e = eulerAngles(R);
+  CHECK(e.x() == Approx(roll));
+  CHECK(e.y() == Approx(pitch));
+  CHECK(e.z() == Approx(yaw));
+  CHECK((eulerToMatrix(e) - R).norm() < 1e-14);
+  // a ship pitched bow-down by 0.1 rad about its y axis reports pitch 0.1 only
+  const Vector3 p = eulerAngles(axisRotation(Vector3::UnitY(), 0.1));
+  CHECK(p.x() == Approx(0.0).margin(1e-15));
+  CHECK(p.y() == Approx(0.1));
+  CHECK(p.z() == Approx(0.0).margin(1e-15));
+  std::mt19937 rng(7);
+  for (int k = 0; k < 50; ++k) {
+    const Matrix3 Q = randomRotation(rng);
+    CHECK((eulerToMatrix(eulerAngles(Q)) - Q).norm() < 1e-12);
+  }
+  // gimbal lock keeps the rotation
+  const Matrix3 G = eulerToMatrix(Vector3(0.7, M_PI / 2, 0.2));
+  CHECK((eulerToMatrix(eulerAngles(G)) - G).norm() < 1e-7);
+}
+
+TEST_CASE("right Jacobian inverse maps body angular velocity to the rate of the rotation vector") {
+  std::mt19937 rng(8);
+  for (int k = 0; k < 20; ++k) {
+    const Vector3 w = randomVector(rng, 1.5), omega = randomVector(rng);
+    const double h = 1e-6;
+    // exp(w + h Jr^-1 omega) ~ exp(w) exp(h omega)
+    const Matrix3 lhs = expSO3(w + h * (rightJacobianInverse(w) * omega));
+    const Matrix3 rhs = expSO3(w) * expSO3(h * omega);
+    CHECK((lhs - rhs).norm() < 1e-10);
+  }
+}

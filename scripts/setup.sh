@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
-  libspdlog-dev catch2 libcli11-dev libbenchmark-dev
+  libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -116,7 +116,7 @@ void checkCouplingGraph(const Instance& root, Diagnostics& diags) {
 
   for (const Instance* a : ix.atomics)
     for (const auto& p : a->ports)
-      if (p.input && !fed.count({a, p.name}))
+      if (p.input && !p.optional && !fed.count({a, p.name}))
         diags.warning(a->where, a->keyPath,
                       "input port '" + p.name + "' of '" + a->path + "' is not connected");
 }

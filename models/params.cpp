@@ -65,7 +65,21 @@ void Params::set(const std::string& name, YAML::Node value, SourceMark where) {
 }
 
 void ParamCheck::error(const std::string& param, const std::string& message) {
+  failed_ = true;
   diags_.error(params_.mark(param), keyPath_ + "." + param, message);
+}
+
+void ParamCheck::errorAt(const std::string& param, const YAML::Node& node,
+                         const std::string& subKey, const std::string& message,
+                         const std::string& hint) {
+  failed_ = true;
+  SourceMark where = params_.mark(param);
+  const YAML::Mark m = node.Mark();
+  if (node.IsDefined() && !m.is_null()) {
+    where.line = m.line + 1;
+    where.column = m.column + 1;
+  }
+  diags_.error(where, keyPath_ + "." + param + (subKey.empty() ? "" : "." + subKey), message, hint);
 }
 
 }  // namespace yardsim::models

@@ -62,11 +62,16 @@ class ParamCheck {
       : diags_(diags), params_(params), keyPath_(std::move(keyPath)) {}
   // (parameter, message) => an error at that parameter
   void error(const std::string& param, const std::string& message);
+  // (node inside parameter `param`, key path below it, message) => an error at that node
+  void errorAt(const std::string& param, const YAML::Node& node, const std::string& subKey,
+               const std::string& message, const std::string& hint = {});
+  bool failed() const { return failed_; }
 
  private:
   Diagnostics& diags_;
   const Params& params_;
   std::string keyPath_;
+  bool failed_ = false;
 };
 
 }  // namespace yardsim::models

@@ -1,6 +1,7 @@
 #include "models/port_types.hpp"
 
 #include "devs/type_name.hpp"
+#include "models/multibody/messages.hpp"
 
 namespace yardsim::models {
 namespace {
@@ -15,8 +16,10 @@ PortType make(const char* name) {
 }
 
 const std::vector<PortType>& table() {
-  static const std::vector<PortType> types{make<int>("int"), make<double>("double"),
-                                           make<bool>("bool"), make<std::string>("string")};
+  static const std::vector<PortType> types{
+      make<int>("int"),           make<double>("double"),
+      make<bool>("bool"),         make<std::string>("string"),
+      make<SetPoint>("setpoint"), make<MechanicsEvent>("mechanics_event")};
   return types;
 }
 

@@ -17,7 +17,8 @@ struct PortType {
   devs::PortBase& (*addOutput)(devs::Model&, std::string);
 };
 
-// (name) => the port type, or nullptr; built in: int, double, bool, string
+// (name) => the port type, or nullptr; built in: int, double, bool, string, setpoint,
+// mechanics_event
 const PortType* findPortType(std::string_view name);
 // (C++ type) => its scene name, or the demangled C++ name when it has none
 std::string portTypeName(const std::type_info& type);

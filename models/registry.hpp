@@ -21,6 +21,7 @@ struct PortSpec {
   std::string name;
   std::string type;  // a registered port type name: int, double, bool, string, ...
   bool input = true;
+  bool optional = false;  // an input that may stay unconnected without a warning
 };
 
 struct TypeInfo {

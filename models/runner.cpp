@@ -7,6 +7,7 @@
 #include "devs/chrome_trace_sink.hpp"
 #include "devs/csv_trace_sink.hpp"
 #include "devs/jsonl_trace_sink.hpp"
+#include "dtss/grid.hpp"
 #include "models/channels.hpp"
 #include "models/timeseries_writer.hpp"
 
@@ -52,7 +53,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   if (recorder) recorder->sample(0.0);
   for (std::int64_t k = 1;; ++k) {
     // (events up to the next sample time) => executed, then one row
-    const double next = recorder ? std::min(static_cast<double>(k) * interval, opt.until) : opt.until;
+    const double next = recorder ? std::min(dtss::gridOffset(interval, k), opt.until) : opt.until;
     std::size_t steps = 0;
     while (sim.nextEventTime() <= next) {
       sim.step();

@@ -316,7 +316,7 @@ class Loader {
       } else if (!findPortType(type)) {
         d_.error(markOf(it->second, f), joinKey(kp, name),
                  "unknown port value type " + shown(it->second) + "; expected one of: int, "
-                 "double, bool, string",
+                 "double, bool, string, setpoint, mechanics_event",
                  didYouMean(type, portTypeNames()));
       } else {
         inst.ports.push_back({name, type, input});

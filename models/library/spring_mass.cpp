@@ -96,7 +96,7 @@ YARDSIM_REGISTER_TYPE(spring_mass, TypeInfo{
              "|x| beyond this stops the run as a numerical failure"},
         },
     .ports = [](const Params&) {
-      return std::vector<PortSpec>{{"force", "double", true}, {"upcrossing", "double", false}};
+      return std::vector<PortSpec>{{"force", "double", true, true}, {"upcrossing", "double", false}};
     },
     .create = [](const std::string& n, const Params& p) -> std::unique_ptr<devs::AtomicBase> {
       return std::make_unique<SpringMass>(

@@ -16,5 +16,9 @@ TEST_CASE("the first grid point after t is found exactly, rounding included") {
       if (k > 0) REQUIRE(g.at(k - 1) <= t);
     }
   }
-  CHECK(Grid{0.0, 0.1}.at(7) == 7 * 0.1);  // from k, not by accumulating h
+  CHECK(Grid{0.0, 0.3}.at(7) == 7 * 0.3);  // from k, not by accumulating h
+  // steps whose inverse is an integer land on the nearest double of the decimal time
+  CHECK(Grid{0.0, 0.05}.at(599) == 29.95);
+  CHECK(Grid{0.0, 0.002}.at(14975) == 29.95);
+  CHECK(Grid{0.0, 0.1}.at(3) == 0.3);
 }

@@ -1,0 +1,254 @@
+#include "models/multibody/mechanics_spec.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "dynamics/model_builder.hpp"
+#include "dynamics/rotation.hpp"
+#include "models/diagnostics.hpp"
+
+namespace yardsim::models {
+namespace {
+
+using dynamics::Vector3;
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Reader {
+  const MechanicsReport& report;
+  std::string param;
+
+  void fail(const YAML::Node& at, const std::string& key, const std::string& msg) const {
+    report(param, at, key, msg);
+  }
+  bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
+            const std::string& key) const {
+    if (!map.IsMap()) {
+      fail(map, key, "expected a mapping");
+      return false;
+    }
+    bool ok = true;
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const auto k = it->first.as<std::string>();
+      if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+      const std::string hint = didYouMean(k, allowed);
+      fail(it->first, key.empty() ? k : key + "." + k,
+           "unknown key '" + k + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+      ok = false;
+    }
+    return ok;
+  }
+  double number(const YAML::Node& n, const std::string& key, double fallback,
+                bool required = false) const {
+    if (!n) {
+      if (required) fail(n, key, "missing required key '" + key + "' (a number)");
+      return fallback;
+    }
+    double v = 0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v)) {
+      fail(n, key, "expected a number, got " + (n.IsScalar() ? "'" + n.Scalar() + "'" : std::string("a collection")));
+      return fallback;
+    }
+    return v;
+  }
+  std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t size) const {
+    std::vector<double> out;
+    if (!n.IsSequence() || (size && n.size() != size)) {
+      fail(n, key, "expected a list of " + (size ? std::to_string(size) + " " : std::string()) + "numbers");
+      return std::vector<double>(size, 0.0);
+    }
+    for (std::size_t i = 0; i < n.size(); ++i) out.push_back(number(n[i], key, 0.0));
+    return out;
+  }
+  Vector3 vec3(const YAML::Node& n, const std::string& key, const Vector3& fallback) const {
+    if (!n) return fallback;
+    const auto v = numbers(n, key, 3);
+    return {v[0], v[1], v[2]};
+  }
+  // ({xyz, rpy_deg}) => transform
+  dynamics::Transform pose(const YAML::Node& n, const std::string& key) const {
+    if (!n) return dynamics::Transform::identity();
+    if (!keys(n, {"xyz", "rpy_deg"}, key)) return dynamics::Transform::identity();
+    const Vector3 rpy = vec3(n["rpy_deg"], key + ".rpy_deg", Vector3::Zero()) * kDeg;
+    return {dynamics::eulerToMatrix(rpy), vec3(n["xyz"], key + ".xyz", Vector3::Zero())};
+  }
+};
+
+// (joint mapping) => joint type, axes, initial state
+void joint(const Reader& r, const YAML::Node& n, const std::string& key, MechanicsSpec::Body& b) {
+  b.jointName = b.name + "_joint";
+  if (!n) {
+    r.fail(n, key, "missing required key 'joint' ({type: revolute|prismatic|cylindrical|universal|"
+                   "spherical|planar|fixed|free, ...})");
+    return;
+  }
+  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg"}, key)) return;
+  if (n["name"]) b.jointName = n["name"].as<std::string>();
+  const std::string type = n["type"] && n["type"].IsScalar() ? n["type"].Scalar() : "";
+  const Vector3 axis = r.vec3(n["axis"], key + ".axis", Vector3::UnitZ());
+  const Vector3 axis2 = r.vec3(n["axis2"], key + ".axis2", Vector3::UnitY());
+  using dynamics::Joint;
+  static const std::vector<std::string> types{"fixed",     "revolute",  "prismatic", "cylindrical",
+                                              "universal", "spherical", "planar",    "free"};
+  if (type == "fixed") b.joint = Joint::fixed();
+  else if (type == "revolute") b.joint = Joint::revolute(axis.normalized());
+  else if (type == "prismatic") b.joint = Joint::prismatic(axis.normalized());
+  else if (type == "cylindrical") b.joint = Joint::cylindrical(axis.normalized());
+  else if (type == "universal") b.joint = Joint::universal(axis.normalized(), axis2.normalized());
+  else if (type == "spherical") b.joint = Joint::spherical();
+  else if (type == "planar") b.joint = Joint::planar();
+  else if (type == "free") b.joint = Joint::free();
+  else {
+    const std::string hint = didYouMean(type, types);
+    r.fail(n["type"], key + ".type",
+           "unknown joint type '" + type + "'; expected one of fixed, revolute, prismatic, "
+           "cylindrical, universal, spherical, planar, free" + (hint.empty() ? "" : " (" + hint + ")"));
+    return;
+  }
+  if ((n["axis"] && axis.norm() < 1e-12) || (n["axis2"] && axis2.norm() < 1e-12))
+    r.fail(n["axis"], key + ".axis", "a joint axis must not be zero");
+  // (q0 / q0_deg, v0 / v0_deg) => initial state in joint units; free joints take {xyz, rpy_deg}
+  const int nq = b.joint.nq(), nv = b.joint.nv();
+  auto values = [&](const char* rad, const char* deg, int size) -> std::vector<double> {
+    const YAML::Node nr = n[rad], nd = n[deg];
+    if (!nr && !nd) return {};
+    const double scale = nd ? kDeg : 1.0;
+    const YAML::Node v = nd ? nd : nr;
+    const std::string k = key + "." + (nd ? deg : rad);
+    std::vector<double> out = v.IsSequence() ? r.numbers(v, k, static_cast<std::size_t>(size))
+                                             : std::vector<double>{r.number(v, k, 0.0)};
+    if (static_cast<int>(out.size()) != size) r.fail(v, k, "expected " + std::to_string(size) + " values");
+    for (double& x : out) x *= scale;
+    return out;
+  };
+  if (b.joint.type == dynamics::JointType::Free || b.joint.type == dynamics::JointType::Spherical) {
+    if (const YAML::Node q = n["q0"]) {
+      const auto X = r.pose(q, key + ".q0");
+      b.q0.assign(static_cast<std::size_t>(nq), 0.0);
+      double quat[4];
+      dynamics::matrixToQuaternion(X.R, quat);
+      int off = 0;
+      if (b.joint.type == dynamics::JointType::Free) {
+        for (int i = 0; i < 3; ++i) b.q0[static_cast<std::size_t>(i)] = X.p[i];
+        off = 3;
+      }
+      for (int i = 0; i < 4; ++i) b.q0[static_cast<std::size_t>(off + i)] = quat[i];
+    }
+    b.v0 = values("v0", "v0_deg", nv);
+  } else {
+    b.q0 = values("q0", "q0_deg", nq);
+    b.v0 = values("v0", "v0_deg", nv);
+  }
+}
+
+}  // namespace
+
+MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
+  MechanicsSpec spec;
+  const Reader top{report, "gravity"};
+  spec.gravity = top.vec3(p.node("gravity"), "", spec.gravity);
+
+  const Reader r{report, "bodies"};
+  const YAML::Node bodies = p.node("bodies");
+  if (!bodies.IsMap() || bodies.size() == 0) {
+    r.fail(bodies, "", "expected a mapping of at least one body: {name: {parent, joint, mass, ...}}");
+    return spec;
+  }
+  std::set<std::string> names{"world"};
+  for (auto it = bodies.begin(); it != bodies.end(); ++it) {
+    MechanicsSpec::Body b;
+    b.name = it->first.as<std::string>();
+    const YAML::Node n = it->second;
+    if (!names.insert(b.name).second) {
+      r.fail(it->first, b.name, "duplicate body name '" + b.name + "'");
+      continue;
+    }
+    if (!r.keys(n, {"parent", "joint", "placement", "mass", "com", "inertia", "geometry"}, b.name))
+      continue;
+    b.parent = n["parent"] && n["parent"].IsScalar() ? n["parent"].Scalar() : "";
+    if (b.parent.empty()) r.fail(n, b.name, "missing required key 'parent' (a body name or world)");
+    joint(r, n["joint"], b.name + ".joint", b);
+    b.X_PJ = r.pose(n["placement"], b.name + ".placement");
+    b.mass = r.number(n["mass"], b.name + ".mass", 0.0, true);
+    if (n["mass"] && !(b.mass > 0)) r.fail(n["mass"], b.name + ".mass", "mass must be > 0 kg");
+    b.com = r.vec3(n["com"], b.name + ".com", Vector3::Zero());
+    if (const YAML::Node in = n["inertia"]) {
+      const auto v = in.IsSequence() && in.size() == 6 ? r.numbers(in, b.name + ".inertia", 6)
+                                                        : r.numbers(in, b.name + ".inertia", 3);
+      b.inertia.diagonal() << v[0], v[1], v[2];
+      if (v.size() == 6) {
+        b.inertia(0, 1) = b.inertia(1, 0) = v[3];
+        b.inertia(0, 2) = b.inertia(2, 0) = v[4];
+        b.inertia(1, 2) = b.inertia(2, 1) = v[5];
+      }
+    } else {
+      r.fail(n, b.name, "missing required key 'inertia' ([Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, "
+                        "Ixz, Iyz] about the centre of mass, kg m^2)");
+    }
+    if (const YAML::Node g = n["geometry"]) {
+      YAML::Emitter e;
+      e.SetMapFormat(YAML::Flow);
+      e.SetSeqFormat(YAML::Flow);
+      e << g;
+      b.geometry = e.c_str();
+    }
+    spec.bodies.push_back(std::move(b));
+  }
+  for (const auto& b : spec.bodies)
+    if (!b.parent.empty() && !names.count(b.parent)) {
+      std::vector<std::string> known(names.begin(), names.end());
+      const std::string hint = didYouMean(b.parent, known);
+      r.fail(bodies[b.name]["parent"], b.name + ".parent",
+             "unknown parent body '" + b.parent + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+    }
+
+  const YAML::Node loops = p.node("loops");
+  const Reader lr{report, "loops"};
+  if (loops.IsMap()) {
+    for (auto it = loops.begin(); it != loops.end(); ++it) {
+      MechanicsSpec::Loop l;
+      l.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      if (!lr.keys(n, {"body_a", "frame_a", "body_b", "frame_b", "constrain"}, l.name)) continue;
+      l.bodyA = n["body_a"] ? n["body_a"].as<std::string>() : "";
+      l.bodyB = n["body_b"] ? n["body_b"].as<std::string>() : "";
+      for (const auto* bn : {&l.bodyA, &l.bodyB})
+        if (!names.count(*bn)) lr.fail(n, l.name, "unknown body '" + *bn + "' in loop '" + l.name + "'");
+      l.X_AF = lr.pose(n["frame_a"], l.name + ".frame_a");
+      l.X_BG = lr.pose(n["frame_b"], l.name + ".frame_b");
+      const std::string c = n["constrain"] ? n["constrain"].as<std::string>() : "point";
+      if (c == "point") l.mask = dynamics::kPointConstraint;
+      else if (c == "axis") l.mask = dynamics::kAxisConstraint;
+      else if (c == "weld") l.mask = dynamics::kAxisConstraint | dynamics::kRotZ;
+      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis or weld, got '" + c + "'");
+      spec.loops.push_back(std::move(l));
+    }
+  } else if (loops.IsDefined() && !loops.IsNull()) {
+    lr.fail(loops, "", "expected a mapping of loop closures");
+  }
+  return spec;
+}
+
+BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
+  dynamics::ModelBuilder builder;
+  builder.setGravity(spec.gravity);
+  for (const auto& b : spec.bodies)
+    builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
+                    b.geometry);
+  for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
+  BuiltMechanics out{builder.build(), {}, {}, {}};
+  const auto& m = out.model;
+  out.q0 = Eigen::VectorXd::Zero(m.nq);
+  out.v0 = Eigen::VectorXd::Zero(m.nv);
+  out.jointNames.assign(static_cast<std::size_t>(m.nbodies), "");
+  for (int i = 1; i < m.nbodies; ++i) dynamics::jointNeutral(m.joints[i], out.q0.data() + m.idxQ[i]);
+  for (const auto& b : spec.bodies) {
+    const int i = m.bodyIndex(b.name);
+    out.jointNames[static_cast<std::size_t>(i)] = b.jointName;
+    for (std::size_t k = 0; k < b.q0.size(); ++k) out.q0[m.idxQ[i] + static_cast<int>(k)] = b.q0[k];
+    for (std::size_t k = 0; k < b.v0.size(); ++k) out.v0[m.idxV[i] + static_cast<int>(k)] = b.v0[k];
+  }
+  return out;
+}
+
+}  // namespace yardsim::models

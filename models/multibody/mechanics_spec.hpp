@@ -1,0 +1,55 @@
+#pragma once
+// The mechanics a `multibody` component declares in YAML — bodies (mass, centre of mass,
+// inertia about the centre of mass), the joint attaching each to its parent and where, loop
+// closures, initial state, gravity, step — parsed and checked with positions, then built into
+// an immutable dynamics::Model with its initial q and v.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <yaml-cpp/yaml.h>
+
+#include "dynamics/model.hpp"
+#include "models/params.hpp"
+
+namespace yardsim::models {
+
+struct MechanicsSpec {
+  struct Body {
+    std::string name, parent, jointName, geometry;
+    dynamics::Joint joint;
+    dynamics::Transform X_PJ;  // joint frame in the parent's frame
+    double mass = 0.0;
+    dynamics::Vector3 com = dynamics::Vector3::Zero();
+    dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
+    std::vector<double> q0, v0;  // empty: neutral / at rest
+  };
+  struct Loop {
+    std::string name, bodyA, bodyB;
+    dynamics::Transform X_AF, X_BG;
+    std::uint8_t mask = 0;
+  };
+  dynamics::Vector3 gravity{0.0, 0.0, -9.81};
+  std::vector<Body> bodies;
+  std::vector<Loop> loops;
+};
+
+// Where parsing reports a problem: (node, key path below the parameter, message, hint).
+using MechanicsReport =
+    std::function<void(const std::string& param, const YAML::Node& at, const std::string& key,
+                       const std::string& message)>;
+
+// (params gravity, bodies, loops) => spec; every problem reported with its node
+MechanicsSpec parseMechanics(const Params& params, const MechanicsReport& report);
+
+struct BuiltMechanics {
+  dynamics::Model model;
+  Eigen::VectorXd q0, v0;
+  std::vector<std::string> jointNames;  // per body index (0: world, "")
+};
+
+// (spec) => model and initial state; throws dynamics::ModelError naming the body
+BuiltMechanics buildMechanics(const MechanicsSpec& spec);
+
+}  // namespace yardsim::models

@@ -1,0 +1,22 @@
+#include "models/multibody/messages.hpp"
+
+namespace yardsim::models {
+
+std::ostream& operator<<(std::ostream& os, const SetPoint& s) {
+  switch (s.kind) {
+    case SetPoint::Kind::JointTarget:
+      return os << s.element << " -> " << s.target << " at " << s.speed;
+    case SetPoint::Kind::WinchPayout:
+      return os << s.element << " payout " << s.amount << " at " << s.speed;
+    case SetPoint::Kind::BodyLoad:
+      return os << s.element << " load (" << s.force[0] << "," << s.force[1] << "," << s.force[2]
+                << ")";
+  }
+  return os;
+}
+
+std::ostream& operator<<(std::ostream& os, const MechanicsEvent& e) {
+  return os << e.element << " " << e.what << " " << e.value << (e.actor.empty() ? "" : " for " + e.actor);
+}
+
+}  // namespace yardsim::models

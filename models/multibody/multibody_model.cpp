@@ -1,0 +1,210 @@
+#include "models/multibody/multibody_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/crba.hpp"
+#include "dynamics/energy.hpp"
+#include "dynamics/integrators/rk4.hpp"
+#include "dynamics/integrators/semi_implicit_euler.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/loop_constraints.hpp"
+#include "dynamics/rnea.hpp"
+#include "models/numerical_error.hpp"
+
+namespace yardsim::models {
+
+std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
+  os << "q=[";
+  for (Eigen::Index i = 0; i < s.q.size(); ++i) os << (i ? "," : "") << s.q[i];
+  return os << "]";
+}
+
+namespace {
+MultibodyState initialState(const BuiltMechanics& m) {
+  const auto n = static_cast<std::size_t>(m.model.nbodies);
+  return {m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n)};
+}
+}  // namespace
+
+MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
+                               const MultibodyOptions& options)
+    : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
+      mech_(std::move(mechanics)),
+      opt_(options),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies), dtss::Crossing::Rising),
+      system_(mech_.model),
+      view_(mech_.model),
+      feedforward_(mech_.model) {
+  if (opt_.method == "semi_implicit_euler")
+    integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
+  else
+    integrator_ = std::make_unique<dynamics::Rk4>(mech_.model);
+  if (mech_.model.nc > 0 && opt_.projectLoops) system_.setProjection(true);
+  if (opt_.driveBandwidth <= 0.0) opt_.driveBandwidth = std::min(10.0, 0.1 / opt_.dt);
+  // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
+  dynamics::Data data(mech_.model);
+  const Eigen::MatrixXd& M = dynamics::crba(mech_.model, data, mech_.q0);
+  servoInertia_.assign(static_cast<std::size_t>(mech_.model.nbodies), 0.0);
+  for (int i = 1; i < mech_.model.nbodies; ++i)
+    if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
+  system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                           const dynamics::Data& d, dynamics::ExternalForces& f,
+                           Eigen::VectorXd& tau) { setPointForces(t, q, v, d, f, tau); });
+}
+
+int MultibodyModel::jointBody(const std::string& joint) const {
+  for (std::size_t i = 1; i < mech_.jointNames.size(); ++i)
+    if (mech_.jointNames[i] == joint) return static_cast<int>(i);
+  return -1;
+}
+
+void MultibodyModel::setPointForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                    const dynamics::Data&, dynamics::ExternalForces& f,
+                                    Eigen::VectorXd& tau) const {
+  const MultibodyState& x = *current_;
+  const auto& m = mech_.model;
+  const double wc = opt_.driveBandwidth;
+  // (q, v) => bias forces h(q, v), the drives' feedforward (gravity and velocity terms)
+  const bool driving = std::any_of(x.drives.begin(), x.drives.end(), [](auto& d) { return d.active; });
+  if (driving) dynamics::biasForces(m, feedforward_, q, v);
+  for (int i = 1; i < m.nbodies; ++i) {
+    // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
+    const JointDrive& d = x.drives[i];
+    if (d.active) {
+      const int iq = m.idxQ[i], iv = m.idxV[i];
+      const double dir = d.target >= d.start ? 1.0 : -1.0;
+      const double travel = std::abs(d.target - d.start);
+      const double moved = std::min(travel, d.speed * std::max(0.0, t - d.t0));
+      const double qRef = d.start + dir * moved;
+      const double vRef = moved < travel ? dir * d.speed : 0.0;
+      const double I = servoInertia_[i];
+      double u = I * (wc * wc * (qRef - q[iq]) + 2.0 * wc * (vRef - v[iv])) + feedforward_.nle[iv];
+      if (opt_.driveMaxEffort > 0) u = std::clamp(u, -opt_.driveMaxEffort, opt_.driveMaxEffort);
+      tau[iv] += u;
+    }
+    const BodyLoad& l = x.loads[i];
+    if (!l.force.isZero() || !l.moment.isZero()) {
+      dynamics::Force F_W;
+      F_W << l.moment, l.force;
+      f.addWorldFrame(i, F_W);
+    }
+  }
+}
+
+void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
+  current_ = &x;
+  double time = t;
+  integrator_->step(system_, time, x.q, x.v, dt);
+  if (x.q.allFinite() && x.v.allFinite()) return;
+  // (non-finite state) => the first body whose joint went bad
+  const auto& m = mech_.model;
+  int bad = 1;
+  for (int i = 1; i < m.nbodies; ++i)
+    if (!x.q.segment(m.idxQ[i], m.jointNq[i]).allFinite() ||
+        !x.v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
+      bad = i;
+      break;
+    }
+  throw NumericalError("multibody '" + path() + "', body '" + m.names[bad] + "' (joint '" +
+                           mech_.jointNames[bad] + "')",
+                       t + dt, "its state became NaN or infinite",
+                       "a smaller dt, softer drives (bandwidth), or an implicit integrator");
+}
+
+void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
+  for (const SetPoint& s : setpoint.values()) {
+    switch (s.kind) {
+      case SetPoint::Kind::JointTarget: {
+        const int i = jointBody(s.element);
+        if (i < 0 || mech_.model.jointNv[i] != 1)
+          throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
+                                      "' names '" + s.element + "', which is not a 1-dof joint here");
+        const double q = x.q[mech_.model.idxQ[i]];
+        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor};
+        break;
+      }
+      case SetPoint::Kind::BodyLoad: {
+        const int i = mech_.model.bodyIndex(s.element);
+        if (i <= 0)
+          throw devs::SimulationError("multibody '" + path() + "': load from '" + s.actor +
+                                      "' names unknown body '" + s.element + "'");
+        x.loads[i].force = Eigen::Vector3d(s.force[0], s.force[1], s.force[2]);
+        x.loads[i].moment = Eigen::Vector3d(s.moment[0], s.moment[1], s.moment[2]);
+        break;
+      }
+      case SetPoint::Kind::WinchPayout:
+        throw devs::SimulationError("multibody '" + path() + "': no rope '" + s.element +
+                                    "' (wire ropes are not part of this model yet)");
+    }
+  }
+}
+
+void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time, std::span<double> g) const {
+  // (drive) => > 0 once the joint is within tolerance of its target, on the side it comes from
+  g[0] = -1.0;
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    const JointDrive& d = x.drives[i];
+    if (!d.active || d.reported) {
+      g[i] = -1.0;
+      continue;
+    }
+    const double dir = d.target >= d.start ? 1.0 : -1.0;
+    g[i] = dir * (x.q[mech_.model.idxQ[i]] - d.target) + opt_.driveTolerance;
+  }
+}
+
+void MultibodyModel::outputAt(const MultibodyState& x, devs::Time, const dtss::Reached& r) const {
+  if (r.stateEvent <= 0) return;
+  const auto i = static_cast<std::size_t>(r.stateEvent);
+  event.add({mech_.jointNames[i], x.drives[i].actor, "reached", x.q[mech_.model.idxQ[r.stateEvent]]});
+}
+
+void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
+  if (e > 0) x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
+}
+
+const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) const {
+  if (viewState_ != &x || viewTime_ != state().tx) {
+    dynamics::forwardKinematics(mech_.model, view_, x.q, x.v);
+    viewState_ = &x;
+    viewTime_ = state().tx;
+  }
+  return view_;
+}
+
+double MultibodyModel::energy() const {
+  const auto& x = state().x;
+  return dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
+         dynamics::potentialEnergy(mech_.model, view_, x.q);
+}
+
+void MultibodyModel::channels(std::vector<Channel>& out) const {
+  const auto& m = mech_.model;
+  for (int i = 1; i < m.nbodies; ++i) {
+    const std::string& j = mech_.jointNames[static_cast<std::size_t>(i)];
+    const bool linear = m.joints[i].type == dynamics::JointType::Prismatic;
+    for (int k = 0; k < m.jointNq[i] && m.jointNq[i] == m.jointNv[i]; ++k) {
+      const std::string suffix = m.jointNq[i] == 1 ? "" : std::to_string(k);
+      const int iq = m.idxQ[i] + k, iv = m.idxV[i] + k;
+      out.push_back({j + ".q" + suffix, linear ? "m" : "rad", [this, iq] { return state().x.q[iq]; }});
+      out.push_back({j + ".v" + suffix, linear ? "m/s" : "rad/s", [this, iv] { return state().x.v[iv]; }});
+    }
+    const std::string& b = m.names[i];
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k)
+      out.push_back({b + "." + axes[k], "m", [this, i, k] { return kinematicsOf(state().x).X_WB[i].p[k]; }});
+    const char* angles[3] = {"roll", "pitch", "yaw"};
+    for (int k = 0; k < 3; ++k)
+      out.push_back({b + "." + angles[k], "rad", [this, i, k] {
+                       return dynamics::bodyEulerAngles(kinematicsOf(state().x), i)[k];
+                     }});
+  }
+  out.push_back({"energy", "J", [this] { return energy(); }});
+  if (m.nc > 0)
+    out.push_back({"loop_residual", "m", [this] {
+                     return dynamics::loopResidualNorm(mech_.model, view_, state().x.q);
+                   }});
+}
+
+}  // namespace yardsim::models

@@ -1,0 +1,94 @@
+#pragma once
+// Scene type `multibody`: one mechanically connected system as a DTSS atomic. It steps the
+// multibody kernel (ABA, or the Schur-complement forward dynamics when it has loops) with a
+// fixed-step integrator at step dt; joint drives and body loads set by actors through the
+// `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
+// reaches its target is a located state event, reported on the `event` port.
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dtss/atomic.hpp"
+#include "dynamics/integrators/integrator.hpp"
+#include "dynamics/multibody_system.hpp"
+#include "models/channels.hpp"
+#include "models/multibody/mechanics_spec.hpp"
+#include "models/multibody/messages.hpp"
+
+namespace yardsim::models {
+
+// A joint driven towards a target by a bounded servo following a ramp at a given speed.
+struct JointDrive {
+  bool active = false;
+  bool reported = false;  // the "reached" event was sent
+  double start = 0.0, target = 0.0, speed = 0.0, t0 = 0.0;
+  std::string actor;
+};
+
+struct BodyLoad {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+};
+
+// The DTSS state: configuration, velocity and the set-points in force.
+struct MultibodyState {
+  Eigen::VectorXd q, v;
+  std::vector<JointDrive> drives;  // per body index (its joint)
+  std::vector<BodyLoad> loads;     // per body index
+};
+std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
+
+struct MultibodyOptions {
+  double dt = 1e-3;
+  std::string method = "rk4";   // rk4 | semi_implicit_euler
+  double driveBandwidth = 0.0;  // rad/s of the joint servos; 0: min(10, 0.1/dt)
+  double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
+  double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
+  bool projectLoops = true;     // project q and v onto the loop manifold after each step
+};
+
+class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
+ public:
+  MultibodyModel(std::string name, BuiltMechanics mechanics, const MultibodyOptions& options);
+  devs::InPort<SetPoint>& setpoint = addInPort<SetPoint>("setpoint");
+  devs::OutPort<MechanicsEvent>& event = addOutPort<MechanicsEvent>("event");
+
+  const dynamics::Model& mechanics() const { return mech_.model; }
+  void channels(std::vector<Channel>& out) const override;
+  // (committed state) => kinetic + gravity potential energy, J
+  double energy() const;
+  // (joint name) => body index, or -1
+  int jointBody(const std::string& joint) const;
+
+ protected:
+  void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;
+  void applyInput(MultibodyState& x, devs::Time t) const override;
+  std::span<const dtss::Crossing> eventDirections() const override { return directions_; }
+  void eventFunctions(const MultibodyState& x, devs::Time t, std::span<double> g) const override;
+  void outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const override;
+  void onStateEvent(MultibodyState& x, devs::Time t, int event) const override;
+
+ private:
+  // (t, q, v, x's set-points) => joint forces of the drives and the body loads
+  void setPointForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                      const dynamics::Data& data, dynamics::ExternalForces& f,
+                      Eigen::VectorXd& tau) const;
+  // (state) => data holds its forward kinematics (cached by time)
+  const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
+
+  BuiltMechanics mech_;
+  MultibodyOptions opt_;
+  std::vector<dtss::Crossing> directions_;
+  std::vector<double> servoInertia_;  // per body: joint-space inertia for the servo gains
+  mutable dynamics::MultibodySystem system_;
+  mutable std::unique_ptr<dynamics::Integrator> integrator_;
+  mutable const MultibodyState* current_ = nullptr;  // the state being advanced
+  mutable dynamics::Data view_;                      // kinematics for channels
+  mutable dynamics::Data feedforward_;               // bias forces for the drives
+  mutable double viewTime_ = -1.0;
+  mutable const MultibodyState* viewState_ = nullptr;
+};
+
+}  // namespace yardsim::models

@@ -1,0 +1,72 @@
+// Registration of the scene type `multibody` (see multibody_model.hpp and docs/multibody_scenes.md).
+#include "dynamics/model_builder.hpp"
+#include "models/multibody/multibody_model.hpp"
+#include "models/registry.hpp"
+
+namespace yardsim::models {
+namespace {
+
+MultibodyOptions options(const Params& p) {
+  return {p.number("dt"), p.string("method"), p.number("drive_bandwidth"),
+          p.number("drive_max_effort"), p.number("drive_tolerance"), p.boolean("project_loops")};
+}
+
+// (params) => spec; the first problem thrown (used after validation, so it never throws)
+MechanicsSpec parsed(const Params& p) {
+  return parseMechanics(p, [](const std::string& param, const YAML::Node&, const std::string& key,
+                              const std::string& msg) {
+    throw std::invalid_argument(param + "." + key + ": " + msg);
+  });
+}
+
+}  // namespace
+
+YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
+    .name = "multibody",
+    .summary = "a mechanically connected system of bodies and joints, stepped at dt (DTSS); "
+               "actors drive its joints and load its bodies through `setpoint`",
+    .params =
+        {
+            {"bodies", ParamKind::Map, true, "", "",
+             "name: {parent, joint: {type, axis, q0|q0_deg, v0}, placement: {xyz, rpy_deg}, mass, "
+             "com, inertia, geometry}"},
+            {"loops", ParamKind::Any, false, "{}", "",
+             "name: {body_a, frame_a, body_b, frame_b, constrain: point|axis|weld}"},
+            {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
+            {"dt", ParamKind::Number, true, "", "s", "integrator step"},
+            {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},
+            {"drive_bandwidth", ParamKind::Number, false, "0", "rad/s",
+             "joint servo bandwidth (0: min(10, 0.1/dt))"},
+            {"drive_max_effort", ParamKind::Number, false, "0", "N m or N",
+             "joint servo force bound (0: unbounded)"},
+            {"drive_tolerance", ParamKind::Number, false, "1e-3", "rad or m",
+             "a drive has reached its target within this"},
+            {"project_loops", ParamKind::Boolean, false, "true", "",
+             "project q and v onto the loop constraints after every step"},
+        },
+    .ports = [](const Params&) {
+      return std::vector<PortSpec>{{"setpoint", "setpoint", true, true},
+                                   {"event", "mechanics_event", false}};
+    },
+    .create = [](const std::string& n, const Params& p) -> std::unique_ptr<devs::AtomicBase> {
+      return std::make_unique<MultibodyModel>(n, buildMechanics(parsed(p)), options(p));
+    },
+    .check =
+        [](const Params& p, ParamCheck& c) {
+          if (!(p.number("dt") > 0)) c.error("dt", "must be > 0 s");
+          const auto method = p.string("method");
+          if (method != "rk4" && method != "semi_implicit_euler")
+            c.error("method", "expected rk4 or semi_implicit_euler, got '" + method + "'");
+          const MechanicsSpec spec = parseMechanics(
+              p, [&](const std::string& param, const YAML::Node& at, const std::string& key,
+                     const std::string& msg) { c.errorAt(param, at, key, msg); });
+          if (c.failed()) return;
+          try {
+            buildMechanics(spec);
+          } catch (const dynamics::ModelError& e) {
+            c.error("bodies", e.what());
+          }
+        },
+    .feedthrough = {}});
+
+}  // namespace yardsim::models

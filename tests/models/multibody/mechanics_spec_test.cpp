@@ -1,0 +1,73 @@
+#include "models/multibody/mechanics_spec.hpp"
+
+#include <catch2/catch.hpp>
+
+#include "models/scene_loader.hpp"
+#include "support/scene_files.hpp"
+
+using namespace yardsim;
+
+namespace {
+models::LoadResult load(const testing::SceneDir& dir, const std::string& bodies) {
+  return models::loadScene(dir.write("s.yaml", "schema_version: 1\ncomponents:\n  m:\n    type: multibody\n"
+                                               "    params:\n      dt: 0.01\n      bodies:\n" + bodies));
+}
+}  // namespace
+
+TEST_CASE("multibody bodies are checked with positions inside the params") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        a:
+          parent: world
+          joint: {type: revolut, axis: [0, 1, 0]}
+          mass: 1
+          inertia: [1, 1, 1]
+        b:
+          parent: c
+          joint: {type: revolute}
+          mass: -2
+          inertia: [1, 1, 1]
+)");
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 3);
+  const auto& d = r.diagnostics.all();
+  CHECK(d[0].keyPath == "components.m.params.bodies.a.joint.type");
+  CHECK(d[0].where.line == 10);
+  CHECK_THAT(d[0].message, Catch::Contains("did you mean 'revolute'?"));
+  CHECK(d[1].keyPath == "components.m.params.bodies.b.mass");
+  CHECK(d[1].where.line == 16);
+  CHECK(d[2].keyPath == "components.m.params.bodies.b.parent");
+  CHECK(d[2].where.line == 14);
+}
+
+TEST_CASE("an inertia that violates the triangle inequality is refused naming the body") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        slab:
+          parent: world
+          joint: {type: revolute}
+          mass: 1
+          inertia: [1, 1, 5]
+)");
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  CHECK_THAT(r.diagnostics.all()[0].message, Catch::Contains("slab"));
+}
+
+TEST_CASE("initial positions in degrees and placements build into the model") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        a:
+          parent: world
+          joint: {name: j0, type: revolute, axis: [0, 1, 0], q0_deg: 30, v0: 0.5}
+          placement: {xyz: [0, 0, 2]}
+          mass: 1
+          inertia: [1, 1, 1]
+)");
+  REQUIRE(r.scene);
+  const auto& inst = *r.scene->root.child("m");
+  const auto spec = models::parseMechanics(inst.params, [](auto&&...) { FAIL("unexpected"); });
+  const auto built = models::buildMechanics(spec);
+  CHECK(built.model.nbodies == 2);
+  CHECK(built.q0[0] == Approx(M_PI / 6));
+  CHECK(built.v0[0] == 0.5);
+  CHECK(built.jointNames[1] == "j0");
+  CHECK(built.model.X_PJ[1].p.z() == 2.0);
+}

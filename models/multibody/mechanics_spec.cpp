@@ -219,8 +219,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       const std::string c = n["constrain"] ? n["constrain"].as<std::string>() : "point";
       if (c == "point") l.mask = dynamics::kPointConstraint;
       else if (c == "axis") l.mask = dynamics::kAxisConstraint;
+      else if (c == "cylinder") l.mask = dynamics::kCylinderConstraint;
       else if (c == "weld") l.mask = dynamics::kAxisConstraint | dynamics::kRotZ;
-      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis or weld, got '" + c + "'");
+      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis, cylinder or weld, got '" + c + "'");
       spec.loops.push_back(std::move(l));
     }
   } else if (loops.IsDefined() && !loops.IsNull()) {

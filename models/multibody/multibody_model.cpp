@@ -173,6 +173,18 @@ const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) cons
   return view_;
 }
 
+const Eigen::VectorXd& MultibodyModel::acceleration() const {
+  // (committed state, set-points in force) => accelerations, cached by time
+  const auto& s = state();
+  if (accelTime_ != s.tx || accel_.size() != s.x.v.size()) {
+    accel_.resize(s.x.v.size());
+    current_ = &s.x;
+    system_.acceleration(s.tx, s.x.q, s.x.v, accel_);
+    accelTime_ = s.tx;
+  }
+  return accel_;
+}
+
 double MultibodyModel::energy() const {
   const auto& x = state().x;
   return dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
@@ -189,6 +201,8 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       const int iq = m.idxQ[i] + k, iv = m.idxV[i] + k;
       out.push_back({j + ".q" + suffix, linear ? "m" : "rad", [this, iq] { return state().x.q[iq]; }});
       out.push_back({j + ".v" + suffix, linear ? "m/s" : "rad/s", [this, iv] { return state().x.v[iv]; }});
+      out.push_back({j + ".a" + suffix, linear ? "m/s^2" : "rad/s^2",
+                     [this, iv] { return acceleration()[iv]; }});
     }
     const std::string& b = m.names[i];
     const char* axes[3] = {"x", "y", "z"};

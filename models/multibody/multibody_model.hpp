@@ -59,6 +59,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   void channels(std::vector<Channel>& out) const override;
   // (committed state) => kinetic + gravity potential energy, J
   double energy() const;
+  // (committed state) => joint accelerations (dv/dt), with the set-points in force
+  const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
 
@@ -87,6 +89,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* current_ = nullptr;  // the state being advanced
   mutable dynamics::Data view_;                      // kinematics for channels
   mutable dynamics::Data feedforward_;               // bias forces for the drives
+  mutable Eigen::VectorXd accel_;                    // accelerations for channels
+  mutable double accelTime_ = -1.0;
   mutable double viewTime_ = -1.0;
   mutable const MultibodyState* viewState_ = nullptr;
 };

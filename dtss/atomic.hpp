@@ -78,6 +78,8 @@ class Atomic : public devs::Atomic<State<X>> {
   virtual void outputAt(const X& /*x*/, Time /*t*/, const Reached& /*reached*/) const {}
   // (x at a located state event) => x after the model's reaction (bounce, latch, ...)
   virtual void onStateEvent(X& /*x*/, Time /*t*/, int /*event*/) const {}
+  // (x at a time event) => x after the model's reaction (a winch stops, a schedule advances)
+  virtual void onTimeEvent(X& /*x*/, Time /*t*/) const {}
 
   void initialize(Time t0) override { lookAhead(this->mutableState(), t0); }
 
@@ -107,6 +109,7 @@ class Atomic : public devs::Atomic<State<X>> {
     s.x = s.xNext;
     s.tx = s.tNext;
     if (s.reached.grid) ++s.steps;
+    if (s.reached.timeEvent) onTimeEvent(s.x, s.tx);
     if (s.reached.stateEvent >= 0) onStateEvent(s.x, s.tx, s.reached.stateEvent);
   }
 

@@ -52,6 +52,7 @@ class BouncingBall final : public dtss::Atomic<Ball> {
 // x' = 1 (a clock); inputs add 100 to x; lands on a user schedule of time events.
 struct ClockState {
   double x = 0.0;
+  int timeEvents = 0;  // reactions to time events
   std::vector<std::pair<Time, double>> inputs;  // (t, x after the input)
 };
 std::ostream& operator<<(std::ostream& os, const ClockState& s) { return os << s.x; }
@@ -75,6 +76,7 @@ class Clock final : public dtss::Atomic<ClockState> {
       if (te > t) return te;
     return devs::kInfinity;
   }
+  void onTimeEvent(ClockState& s, Time) const override { ++s.timeEvents; }
   void outputAt(const ClockState& s, Time, const dtss::Reached& r) const override {
     if (r.timeEvent) tick.add(s.x);
     if (r.grid) step.add(s.x);
@@ -128,6 +130,8 @@ TEST_CASE("a clock's time events land exactly on user-given times and the grid i
   sim.runUntil(3.05);
 
   CHECK(times(rec.records, "tick") == schedule);  // exactly, not approximately
+  const auto& clock = static_cast<const Clock&>(*root.findComponent("clock"));
+  CHECK(clock.state().x.timeEvents == 4);  // the model reacted to each of them once
   const dtss::Grid grid{0.0, 0.1};
   const auto steps = times(rec.records, "step");
   REQUIRE(steps.size() == 30);

@@ -68,7 +68,7 @@ TEST_CASE("a free body falls under the provider as under the kernel's gravity") 
   CHECK((dynamics::centerOfMass(withProvider, d, a.q) - expected).norm() < 1e-9);
 }
 
-TEST_CASE("a double pendulum swings under the provider as under the kernel's gravity, energy constant") {
+TEST_CASE("a double pendulum swings under the provider as under the kernel gravity with constant energy") {
   const dynamics::Model withProvider = doublePendulum(Vector3::Zero()), withModel = doublePendulum(kG);
   Gravity gravity("gravity", kG);
   Rig a(withProvider, {&gravity}), b(withModel, {});

@@ -1,0 +1,93 @@
+// The providers allocate nothing once built: evaluate(), potentialEnergy(), power() and the
+// reports of every provider in this folder, with every global operator new counted.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "force_rig.hpp"
+#include "forces/body_load.hpp"
+#include "forces/equalizer.hpp"
+#include "forces/gravity.hpp"
+#include "forces/wire_rope.hpp"
+
+// The replacement operators pair malloc with free; GCC inlines them and then mistakes the pair.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
+namespace {
+std::size_t gAllocations = 0;
+}
+
+void* operator new(std::size_t n) {
+  ++gAllocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  ++gAllocations;
+  const std::size_t al = static_cast<std::size_t>(a);
+  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+using namespace yardsim;
+using namespace yardsim::forces;
+using namespace yardsim::forces::testing;
+
+TEST_CASE("gravity, wire rope, equalizer and body load do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("hook", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(5e3, Vector3(1, 1, 1)));
+  b.addBody("load", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(1e5, Vector3(6, 4, 2)));
+  const dynamics::Model m = b.build();
+  RopeProperties p;
+  p.ea = 1e9;
+  p.l0 = 5.0;
+  p.damping = 1e5;
+  p.breakingLoad = 1e7;
+  Gravity gravity("gravity", Vector3(0.0, 0.0, -9.81));
+  WireRope wire("hoist", m, {{0, Vector3(0, 0, 40)}, {0, Vector3(1, 0, 40)}, {1, Vector3(0, 0, 0.5)}}, p, 4);
+  wire.setPayoutRate(0.0, 0.083);
+  p.l0 = 10.0;
+  Equalizer eq("eq", m, {1, Vector3(0, 0, -0.5)}, {{{2, Vector3(-3, 0, 1)}}, {{2, Vector3(0, 1, 1)}, {2, Vector3(3, 0, 1)}}}, p);
+  BodyLoad load("wind", m, 2, Vector3(1, 0, 0), LoadFrame::Body);
+  load.setTable({{0.0, 1, 2, 3, 4, 5, 6}, {1.0, 0, 0, 0, 0, 0, 0}, {2.0, 5, 5, 5, 5, 5, 5}});
+  Rig r(m, {&gravity, &wire, &eq, &load});
+  r.q << 0.0, 0.0, 33.0, 1.0, 0.0, 0.0, 0.0, 0.1, 0.0, 25.0, 1.0, 0.0, 0.0, 0.0;
+  r.v.setConstant(0.1);
+  r.step(1e-3);  // everything warmed up
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  const std::size_t before = gAllocations;
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&gravity, &wire, &eq, &load}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += wire.tension(s) + wire.length(s) + eq.tension(s) + eq.length(s) + load.at(1.5).force.x();
+  sink += wire.exceedsBreakingLoad() ? 1.0 : 0.0;
+  const std::size_t after = gAllocations;
+  CHECK(after == before);
+  // (the counter counts) => a vector that escapes is seen
+  std::vector<double> probe(100, 1.0);
+  volatile double read = probe[37];
+  CHECK(read == 1.0);
+  CHECK(gAllocations > after);
+  CHECK(wire.lastTension() > 0.0);
+  CHECK(eq.lastTension() > 0.0);
+  CHECK(std::isfinite(sink));
+}

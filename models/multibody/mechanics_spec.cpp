@@ -227,6 +227,48 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   } else if (loops.IsDefined() && !loops.IsNull()) {
     lr.fail(loops, "", "expected a mapping of loop closures");
   }
+  const YAML::Node ropes = p.node("ropes");
+  const Reader rr{report, "ropes"};
+  if (ropes.IsMap()) {
+    for (auto it = ropes.begin(); it != ropes.end(); ++it) {
+      MechanicsSpec::Rope rope;
+      rope.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      const std::string k = rope.name;
+      if (!rr.keys(n, {"path", "EA", "L0", "damping", "parts", "min_length", "mbl"}, k)) continue;
+      const YAML::Node path = n["path"];
+      if (!path.IsSequence() || path.size() < 2) {
+        rr.fail(path, k + ".path", "expected a list of at least two points {body, point: [x, y, z]}: "
+                                   "first end, sheaves, last end");
+      } else {
+        for (std::size_t i = 0; i < path.size(); ++i) {
+          const std::string pk = k + ".path[" + std::to_string(i) + "]";
+          if (!rr.keys(path[i], {"body", "point"}, pk)) continue;
+          const std::string body = path[i]["body"] ? path[i]["body"].as<std::string>() : "world";
+          if (!names.count(body)) {
+            std::vector<std::string> known(names.begin(), names.end());
+            const std::string hint = didYouMean(body, known);
+            rr.fail(path[i]["body"], pk + ".body",
+                    "unknown body '" + body + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+          }
+          rope.path.emplace_back(body, rr.vec3(path[i]["point"], pk + ".point", Vector3::Zero()));
+        }
+      }
+      rope.ea = rr.number(n["EA"], k + ".EA", 0.0, true);
+      rope.l0 = rr.number(n["L0"], k + ".L0", 0.0, true);
+      rope.damping = rr.number(n["damping"], k + ".damping", 0.0);
+      rope.minLength = rr.number(n["min_length"], k + ".min_length", 0.01);
+      rope.mbl = rr.number(n["mbl"], k + ".mbl", 0.0);
+      rope.parts = static_cast<int>(rr.number(n["parts"], k + ".parts", 1.0));
+      if (n["EA"] && !(rope.ea > 0)) rr.fail(n["EA"], k + ".EA", "EA must be > 0 N");
+      if (n["L0"] && !(rope.l0 > 0)) rr.fail(n["L0"], k + ".L0", "L0 must be > 0 m");
+      if (rope.damping < 0) rr.fail(n["damping"], k + ".damping", "damping must be >= 0 N s/m");
+      if (rope.parts < 1) rr.fail(n["parts"], k + ".parts", "parts must be >= 1");
+      spec.ropes.push_back(std::move(rope));
+    }
+  } else if (ropes.IsDefined() && !ropes.IsNull()) {
+    rr.fail(ropes, "", "expected a mapping of wire ropes");
+  }
   return spec;
 }
 
@@ -237,7 +279,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}};
+  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes};
   const auto& m = out.model;
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);

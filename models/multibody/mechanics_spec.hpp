@@ -30,9 +30,16 @@ struct MechanicsSpec {
     dynamics::Transform X_AF, X_BG;
     std::uint8_t mask = 0;
   };
+  struct Rope {
+    std::string name;
+    std::vector<std::pair<std::string, dynamics::Vector3>> path;  // (body, p_B): end, sheaves, end
+    double ea = 0.0, l0 = 0.0, damping = 0.0, minLength = 0.01, mbl = 0.0;  // mbl 0: none
+    int parts = 1;
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   std::vector<Body> bodies;
   std::vector<Loop> loops;
+  std::vector<Rope> ropes;
 };
 
 // Where parsing reports a problem: (node, key path below the parameter, message, hint).
@@ -47,6 +54,7 @@ struct BuiltMechanics {
   dynamics::Model model;
   Eigen::VectorXd q0, v0;
   std::vector<std::string> jointNames;  // per body index (0: world, "")
+  std::vector<MechanicsSpec::Rope> ropes;
 };
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body

@@ -23,7 +23,8 @@ std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
 namespace {
 MultibodyState initialState(const BuiltMechanics& m) {
   const auto n = static_cast<std::size_t>(m.model.nbodies);
-  return {m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n)};
+  return {m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n),
+          std::vector<WinchJob>(m.ropes.size()), 0.0};
 }
 }  // namespace
 
@@ -32,10 +33,26 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies), dtss::Crossing::Rising),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size(),
+                  dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
-      feedforward_(mech_.model) {
+      feedforward_(mech_.model),
+      scratch_(mech_.model),
+      spForces_(mech_.model),
+      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+  // (rope specs) => wire rope providers, evaluated at every stage
+  for (const auto& r : mech_.ropes) {
+    std::vector<forces::Attachment> path;
+    for (const auto& [body, p_B] : r.path) path.push_back({mech_.model.bodyIndex(body), p_B});
+    forces::RopeProperties props;
+    props.ea = r.ea;
+    props.l0 = r.l0;
+    props.damping = r.damping;
+    props.minLength = r.minLength;
+    if (r.mbl > 0) props.breakingLoad = r.mbl;
+    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path, props, r.parts));
+  }
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
   else
@@ -50,7 +67,11 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
   system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const dynamics::Data& d, dynamics::ExternalForces& f,
-                           Eigen::VectorXd& tau) { setPointForces(t, q, v, d, f, tau); });
+                           Eigen::VectorXd& tau) {
+    const forces::Stage stage{t, mech_.model, d, q, v};
+    for (auto& r : ropes_) r->evaluate(stage, f, tau);
+    setPointForces(t, q, v, d, f, tau);
+  });
 }
 
 int MultibodyModel::jointBody(const std::string& joint) const {
@@ -92,11 +113,34 @@ void MultibodyModel::setPointForces(double t, const Eigen::VectorXd& q, const Ei
   }
 }
 
+double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) const {
+  const auto& m = mech_.model;
+  dynamics::forwardKinematics(m, scratch_, x.q, x.v);
+  const forces::Stage stage{t, m, scratch_, x.q, x.v};
+  double p = 0.0;
+  for (const auto& r : ropes_) p += r->power(stage);
+  // (drives, loads) => their forces at this state, and the power they deliver
+  const MultibodyState* saved = current_;
+  current_ = &x;
+  spForces_.clear();
+  spTau_.setZero();
+  setPointForces(t, x.q, x.v, scratch_, spForces_, spTau_);
+  current_ = saved;
+  p += spTau_.dot(x.v);
+  for (int b = 1; b < m.nbodies; ++b) p += spForces_.inBodyFrame(scratch_, b).dot(scratch_.V[b]);
+  return p;
+}
+
 void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
+  // (power at both ends of the step) => the work of non-conservative forces, trapezoidal
+  const double p0 = nonConservativePower(x, t);
   current_ = &x;
   double time = t;
   integrator_->step(system_, time, x.q, x.v, dt);
-  if (x.q.allFinite() && x.v.allFinite()) return;
+  if (x.q.allFinite() && x.v.allFinite()) {
+    x.work += 0.5 * dt * (p0 + nonConservativePower(x, t + dt));
+    return;
+  }
   // (non-finite state) => the first body whose joint went bad
   const auto& m = mech_.model;
   int bad = 1;
@@ -133,14 +177,44 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         x.loads[i].moment = Eigen::Vector3d(s.moment[0], s.moment[1], s.moment[2]);
         break;
       }
-      case SetPoint::Kind::WinchPayout:
-        throw devs::SimulationError("multibody '" + path() + "': no rope '" + s.element +
-                                    "' (wire ropes are not part of this model yet)");
+      case SetPoint::Kind::WinchPayout: {
+        const int r = ropeIndex(s.element);
+        if (r < 0 || !(s.speed > 0))
+          throw devs::SimulationError("multibody '" + path() + "': winch set-point from '" +
+                                      s.actor + "' names '" + s.element +
+                                      "', which is not a rope here, or has no positive speed");
+        const auto ri = static_cast<std::size_t>(r);
+        ropes_[ri]->setPayoutRate(t, s.amount >= 0 ? s.speed : -s.speed);
+        x.winches[ri] = WinchJob{true, t + std::abs(s.amount) / s.speed, s.actor};
+        break;
+      }
     }
   }
 }
 
-void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time, std::span<double> g) const {
+int MultibodyModel::ropeIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < ropes_.size(); ++i)
+    if (ropes_[i]->name() == name) return static_cast<int>(i);
+  return -1;
+}
+
+devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) const {
+  devs::Time next = devs::kInfinity;
+  for (const auto& w : x.winches)
+    if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  return next;
+}
+
+void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
+  // (winch jobs ending now) => winches stopped
+  for (std::size_t r = 0; r < x.winches.size(); ++r)
+    if (x.winches[r].active && x.winches[r].tEnd <= t) {
+      ropes_[r]->setPayoutRate(t, 0.0);
+      x.winches[r].active = false;
+    }
+}
+
+void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::span<double> g) const {
   // (drive) => > 0 once the joint is within tolerance of its target, on the side it comes from
   g[0] = -1.0;
   for (int i = 1; i < mech_.model.nbodies; ++i) {
@@ -152,16 +226,37 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time, std::sp
     const double dir = d.target >= d.start ? 1.0 : -1.0;
     g[i] = dir * (x.q[mech_.model.idxQ[i]] - d.target) + opt_.driveTolerance;
   }
+  // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
+  if (ropes_.empty()) return;
+  dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+  const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+    const auto& mbl = ropes_[r]->properties().breakingLoad;
+    g[static_cast<std::size_t>(mech_.model.nbodies) + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+  }
 }
 
-void MultibodyModel::outputAt(const MultibodyState& x, devs::Time, const dtss::Reached& r) const {
+void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
+  const int nb = mech_.model.nbodies;
+  if (r.timeEvent)
+    for (std::size_t k = 0; k < x.winches.size(); ++k)
+      if (x.winches[k].active && x.winches[k].tEnd <= t)
+        event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
   if (r.stateEvent <= 0) return;
+  if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
+    const auto k = static_cast<std::size_t>(r.stateEvent - nb);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    event.add({ropes_[k]->name(), "", "over_mbl",
+               ropes_[k]->tension({t, mech_.model, scratch_, x.q, x.v})});
+    return;
+  }
   const auto i = static_cast<std::size_t>(r.stateEvent);
   event.add({mech_.jointNames[i], x.drives[i].actor, "reached", x.q[mech_.model.idxQ[r.stateEvent]]});
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
-  if (e > 0) x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
+  if (e > 0 && e < mech_.model.nbodies)
+    x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }
 
 const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) const {
@@ -186,9 +281,13 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
 }
 
 double MultibodyModel::energy() const {
-  const auto& x = state().x;
-  return dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
-         dynamics::potentialEnergy(mech_.model, view_, x.q);
+  const auto& s = state();
+  const auto& x = s.x;
+  double e = dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
+             dynamics::potentialEnergy(mech_.model, view_, x.q);
+  const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
+  for (const auto& r : ropes_) e += r->potentialEnergy(stage);
+  return e;
 }
 
 void MultibodyModel::channels(std::vector<Channel>& out) const {
@@ -214,7 +313,20 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
                        return dynamics::bodyEulerAngles(kinematicsOf(state().x), i)[k];
                      }});
   }
+  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+    const std::string& n = ropes_[r]->name();
+    auto stage = [this] {
+      const auto& s = state();
+      return forces::Stage{s.tx, mech_.model, kinematicsOf(s.x), s.x.q, s.x.v};
+    };
+    out.push_back({n + ".tension", "N", [this, r, stage] { return ropes_[r]->tension(stage()); }});
+    out.push_back({n + ".length", "m", [this, r, stage] { return ropes_[r]->length(stage()); }});
+    out.push_back({n + ".unstretched_length", "m",
+                   [this, r] { return ropes_[r]->unstretchedLength(state().tx); }});
+  }
   out.push_back({"energy", "J", [this] { return energy(); }});
+  out.push_back({"work", "J", [this] { return state().x.work; }});
+  out.push_back({"energy_balance", "J", [this] { return energy() - state().x.work; }});
   if (m.nc > 0)
     out.push_back({"loop_residual", "m", [this] {
                      return dynamics::loopResidualNorm(mech_.model, view_, state().x.q);

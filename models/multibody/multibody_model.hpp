@@ -14,6 +14,7 @@
 #include "dtss/atomic.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
 #include "models/multibody/mechanics_spec.hpp"
 #include "models/multibody/messages.hpp"
@@ -28,6 +29,13 @@ struct JointDrive {
   std::string actor;
 };
 
+// A winch job on a rope: paying out (or hauling in) until tEnd.
+struct WinchJob {
+  bool active = false;
+  double tEnd = 0.0;
+  std::string actor;
+};
+
 struct BodyLoad {
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
 };
@@ -37,6 +45,8 @@ struct MultibodyState {
   Eigen::VectorXd q, v;
   std::vector<JointDrive> drives;  // per body index (its joint)
   std::vector<BodyLoad> loads;     // per body index
+  std::vector<WinchJob> winches;   // per rope
+  double work = 0.0;               // J: integral of the power of non-conservative forces
 };
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
@@ -57,8 +67,11 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
 
   const dynamics::Model& mechanics() const { return mech_.model; }
   void channels(std::vector<Channel>& out) const override;
-  // (committed state) => kinetic + gravity potential energy, J
+  // (committed state) => kinetic + gravity potential + stored (rope) energy, J
   double energy() const;
+  // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W
+  double nonConservativePower(const MultibodyState& x, double t) const;
+  const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
@@ -71,6 +84,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   void eventFunctions(const MultibodyState& x, devs::Time t, std::span<double> g) const override;
   void outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const override;
   void onStateEvent(MultibodyState& x, devs::Time t, int event) const override;
+  devs::Time nextTimeEvent(const MultibodyState& x, devs::Time t) const override;
+  void onTimeEvent(MultibodyState& x, devs::Time t) const override;
 
  private:
   // (t, q, v, x's set-points) => joint forces of the drives and the body loads
@@ -79,6 +94,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
                       Eigen::VectorXd& tau) const;
   // (state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
+  // (rope name) => index, or -1
+  int ropeIndex(const std::string& name) const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -93,6 +110,10 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable double accelTime_ = -1.0;
   mutable double viewTime_ = -1.0;
   mutable const MultibodyState* viewState_ = nullptr;
+  mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
+  mutable dynamics::Data scratch_;         // kinematics for power and event functions
+  mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
+  mutable Eigen::VectorXd spTau_;
 };
 
 }  // namespace yardsim::models

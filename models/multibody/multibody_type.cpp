@@ -32,6 +32,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "com, inertia, geometry}"},
             {"loops", ParamKind::Any, false, "{}", "",
              "name: {body_a, frame_a, body_b, frame_b, constrain: point|axis|weld}"},
+            {"ropes", ParamKind::Any, false, "{}", "",
+             "name: {path: [{body, point}, ...], EA, L0, damping, parts, min_length, mbl}"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
             {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},

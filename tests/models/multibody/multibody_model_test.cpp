@@ -18,7 +18,7 @@ namespace {
 models::Params params(const std::string& yaml) {
   models::Params p;
   const YAML::Node n = YAML::Load(yaml);
-  for (const char* key : {"bodies", "loops", "gravity"})
+  for (const char* key : {"bodies", "loops", "ropes", "gravity"})
     p.set(key, n[key] ? n[key] : YAML::Load(key == std::string("gravity") ? "[0, 0, -9.81]" : "{}"), {});
   return p;
 }

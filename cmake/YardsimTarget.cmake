@@ -49,5 +49,6 @@ function(yardsim_test name)
   target_link_libraries(${name} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
   target_compile_definitions(${name} PRIVATE
     YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
-  catch_discover_tests(${name})
+  # --warn NoTests: a test whose name Catch cannot match fails instead of passing empty
+  catch_discover_tests(${name} EXTRA_ARGS --warn NoTests)
 endfunction()

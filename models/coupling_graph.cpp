@@ -6,70 +6,63 @@
 #include <set>
 
 namespace yardsim::models {
-namespace {
-
-using PortKey = std::pair<const Instance*, std::string>;
-
-struct Index {
-  std::vector<const Instance*> atomics;
-  std::map<const Instance*, std::size_t> atomicId;
-  std::map<PortKey, std::vector<PortKey>> links;  // coupling edges between ports
-};
+CouplingIndex::CouplingIndex(const Instance& root) { collect(root); }
 
 // (instance tree) => atomics and the port-to-port coupling edges of every coupled model
-void collect(const Instance& inst, Index& ix) {
+void CouplingIndex::collect(const Instance& inst) {
   if (inst.atomic()) {
-    ix.atomicId[&inst] = ix.atomics.size();
-    ix.atomics.push_back(&inst);
+    atomicId_[&inst] = atomics_.size();
+    atomics_.push_back(&inst);
     return;
   }
   for (const auto& c : inst.couplings) {
     const Instance* from = c.fromModel.empty() ? &inst : inst.child(c.fromModel);
     const Instance* to = c.toModel.empty() ? &inst : inst.child(c.toModel);
-    ix.links[{from, c.fromPort}].push_back({to, c.toPort});
+    links_[{from, c.fromPort}].push_back({to, c.toPort});
   }
-  for (const auto& child : inst.children) collect(*child, ix);
+  for (const auto& child : inst.children) collect(*child);
 }
 
-}  // namespace
+std::vector<CouplingIndex::PortKey> CouplingIndex::reach(const Instance* atomic,
+                                                         const std::string& port) const {
+  std::vector<PortKey> out, frontier{{atomic, port}};
+  std::set<PortKey> seen;
+  while (!frontier.empty()) {
+    const PortKey k = frontier.back();
+    frontier.pop_back();
+    auto it = links_.find(k);
+    if (it == links_.end()) continue;
+    for (const PortKey& next : it->second) {
+      if (!seen.insert(next).second) continue;
+      (next.first->atomic() ? out : frontier).push_back(next);
+    }
+  }
+  return out;
+}
 
 void checkCouplingGraph(const Instance& root, Diagnostics& diags) {
-  Index ix;
-  collect(root, ix);
-  const std::size_t n = ix.atomics.size();
+  const CouplingIndex index(root);
+  const auto& atomics = index.atomics();
+  const std::size_t n = atomics.size();
 
   // (port links) => atomic-to-atomic edges, and which atomic input ports are fed
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS>;
   Graph g(n);
-  std::set<PortKey> fed;
-  for (std::size_t a = 0; a < n; ++a) {
-    for (const auto& p : ix.atomics[a]->ports) {
+  std::set<CouplingIndex::PortKey> fed;
+  for (std::size_t a = 0; a < n; ++a)
+    for (const auto& p : atomics[a]->ports) {
       if (p.input) continue;
-      std::vector<PortKey> frontier{{ix.atomics[a], p.name}};
-      std::set<PortKey> seen;
-      while (!frontier.empty()) {
-        const PortKey k = frontier.back();
-        frontier.pop_back();
-        auto it = ix.links.find(k);
-        if (it == ix.links.end()) continue;
-        for (const PortKey& next : it->second) {
-          if (!seen.insert(next).second) continue;
-          if (next.first->atomic()) {
-            fed.insert(next);
-            boost::add_edge(a, ix.atomicId.at(next.first), g);
-          } else {
-            frontier.push_back(next);
-          }
-        }
+      for (const auto& dst : index.reach(atomics[a], p.name)) {
+        fed.insert(dst);
+        boost::add_edge(a, index.id(dst.first), g);
       }
     }
-  }
 
   // (edges among feedthrough atomics) => strongly connected components = algebraic loops
   Graph ft(n);
   for (auto [e, end] = boost::edges(g); e != end; ++e) {
     const auto s = boost::source(*e, g), t = boost::target(*e, g);
-    if (ix.atomics[s]->feedthrough && ix.atomics[t]->feedthrough)
+    if (atomics[s]->feedthrough && atomics[t]->feedthrough)
       boost::add_edge(s, t, ft);
   }
   std::vector<std::size_t> comp(n);
@@ -106,19 +99,52 @@ void checkCouplingGraph(const Instance& root, Diagnostics& diags) {
       for (std::size_t v = last; v != head; v = parent.at(v)) cycle.insert(cycle.begin(), v);
     cycle.insert(cycle.begin(), head);
     std::string names;
-    for (std::size_t v : cycle) names += ix.atomics[v]->path + " -> ";
-    names += ix.atomics[cycle[0]]->path;
-    diags.error(ix.atomics[m[0]]->where, ix.atomics[m[0]]->keyPath,
+    for (std::size_t v : cycle) names += atomics[v]->path + " -> ";
+    names += atomics[cycle[0]]->path;
+    diags.error(atomics[m[0]]->where, atomics[m[0]]->keyPath,
                 "zero-delay algebraic loop: " + names +
                     "; each of these models answers an input at the same time, so the loop never "
                     "advances (give one of them a delay)");
   }
 
-  for (const Instance* a : ix.atomics)
+  for (const Instance* a : atomics)
     for (const auto& p : a->ports)
       if (p.input && !p.optional && !fed.count({a, p.name}))
         diags.warning(a->where, a->keyPath,
                       "input port '" + p.name + "' of '" + a->path + "' is not connected");
+}
+
+}  // namespace yardsim::models
+
+namespace yardsim::models {
+
+void checkElementReferences(const Instance& root, Diagnostics& diags) {
+  const CouplingIndex index(root);
+  for (const Instance* a : index.atomics()) {
+    if (!a->type->references) continue;
+    const auto refs = a->type->references(a->params);
+    if (refs.empty()) continue;
+    // (the atomics its set-points reach) => those that declare mechanical elements
+    std::vector<const Instance*> targets;
+    for (const auto& [dst, port] : index.reach(a, "setpoint"))
+      if (dst->type->elements) targets.push_back(dst);
+    if (targets.empty()) {
+      diags.error(a->where, a->keyPath,
+                  "'" + a->path + "' acts on mechanical elements, but its `setpoint` port reaches "
+                  "no multibody model; couple it, e.g. {from: " + a->name + ".setpoint, to: <model>.setpoint}");
+      continue;
+    }
+    for (const auto& ref : refs)
+      for (const Instance* t : targets) {
+        std::vector<std::string> names;
+        for (const auto& e : t->type->elements(t->params))
+          if (e.kind == ref.kind) names.push_back(e.name);
+        if (std::find(names.begin(), names.end(), ref.name) != names.end()) continue;
+        diags.error(a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
+                    "'" + t->path + "' has no " + ref.kind + " '" + ref.name + "'",
+                    didYouMean(ref.name, names));
+      }
+  }
 }
 
 }  // namespace yardsim::models

@@ -24,6 +24,13 @@ struct PortSpec {
   bool optional = false;  // an input that may stay unconnected without a warning
 };
 
+// A mechanical element (joint, rope, body) a model has, or an actor names (in parameter `param`).
+struct ElementRef {
+  std::string kind;
+  std::string name;
+  std::string param;
+};
+
 struct TypeInfo {
   std::string name;
   std::string summary;
@@ -37,6 +44,10 @@ struct TypeInfo {
   // (params) => true when an input can produce an output at the same time (zero delay): such
   // models closing a loop make an algebraic loop. Unset: never.
   std::function<bool(const Params&)> feedthrough;
+  // (params) => the mechanical elements an instance has (multibody models); optional
+  std::function<std::vector<ElementRef>(const Params&)> elements = {};
+  // (params) => the elements an instance acts on through its `setpoint` port (actors); optional
+  std::function<std::vector<ElementRef>(const Params&)> references = {};
 };
 
 class Registry {

@@ -504,6 +504,7 @@ LoadResult loadScene(const fs::path& file) {
   Loader loader(r.diagnostics);
   auto scene = loader.root(file);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkElementReferences(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

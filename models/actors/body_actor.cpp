@@ -59,6 +59,9 @@ YARDSIM_REGISTER_TYPE(bodyActor, TypeInfo{
           if (p.numbers("moment").size() != 3) c.error("moment", "expected 3 numbers (N m)");
           if (p.number("duration") < 0) c.error("duration", "must be >= 0 s");
         },
-    .feedthrough = [](const Params& p) { return p.number("duration") == 0.0; }});
+    .feedthrough = [](const Params& p) { return p.number("duration") == 0.0; },
+    .references = [](const Params& p) {
+      return std::vector<ElementRef>{{"body", p.string("body"), "body"}};
+    }});
 
 }  // namespace yardsim::models

@@ -69,6 +69,9 @@ YARDSIM_REGISTER_TYPE(jointActor, TypeInfo{
           else if (!(angleOrLength(p, "speed", "speed_deg") > 0))
             c.error(p.node("speed").IsNull() ? "speed_deg" : "speed", "must be > 0");
         },
-    .feedthrough = {}});
+    .feedthrough = {},
+    .references = [](const Params& p) {
+      return std::vector<ElementRef>{{"joint", p.string("joint"), "joint"}};
+    }});
 
 }  // namespace yardsim::models

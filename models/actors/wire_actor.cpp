@@ -57,6 +57,9 @@ YARDSIM_REGISTER_TYPE(wireActor, TypeInfo{
           if (!(p.number("speed") > 0)) c.error("speed", "must be > 0 m/s");
           if (p.number("payout") == 0) c.error("payout", "must not be 0 m");
         },
-    .feedthrough = {}});
+    .feedthrough = {},
+    .references = [](const Params& p) {
+      return std::vector<ElementRef>{{"rope", p.string("rope"), "rope"}};
+    }});
 
 }  // namespace yardsim::models

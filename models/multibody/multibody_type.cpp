@@ -69,6 +69,17 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             c.error("bodies", e.what());
           }
         },
-    .feedthrough = {}});
+    .feedthrough = {},
+    .elements =
+        [](const Params& p) {
+          std::vector<ElementRef> out;
+          const MechanicsSpec spec = parsed(p);
+          for (const auto& b : spec.bodies) {
+            out.push_back({"body", b.name, ""});
+            out.push_back({"joint", b.jointName.empty() ? b.name + "_joint" : b.jointName, ""});
+          }
+          for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
+          return out;
+        }});
 
 }  // namespace yardsim::models

@@ -56,7 +56,7 @@ TEST_CASE("velocities and accelerations are the time derivatives of poses and ve
   }
 }
 
-TEST_CASE("a planar chain stretched along x puts link k at x = k; Euler angles of a rotated link") {
+TEST_CASE("a planar chain stretched along x puts link k at x = k — Euler angles of a rotated link") {
   const Model m = planarChain(4);
   Data d(m);
   Eigen::VectorXd q = Eigen::VectorXd::Zero(4);

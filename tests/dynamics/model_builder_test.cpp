@@ -13,7 +13,7 @@ namespace {
 const SpatialInertia kUnit = boxInertia(1.0, Vector3(1, 1, 1));
 }
 
-TEST_CASE("bodies may be declared before their parents; the model orders parents first") {
+TEST_CASE("bodies may be declared before their parents — the model orders parents first") {
   ModelBuilder b;
   b.addBody("tip", "arm", Joint::revolute(), Transform::translation(Vector3(1, 0, 0)), kUnit);
   b.addBody("arm", "base", Joint::revolute(), {}, kUnit);

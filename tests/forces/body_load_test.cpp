@@ -89,7 +89,7 @@ TEST_CASE("a body-frame moment about a principal axis spins the body up at M t /
   CHECK(r.v.tail<3>().norm() < 1e-12);
 }
 
-TEST_CASE("world and body frames: the spatial force is [p x F + M; F] with F and M turned by R_WB") {
+TEST_CASE("world and body frames: the spatial force is [p x F + M — F] with F and M turned by R_WB") {
   const dynamics::Model m = freeBox();
   const Vector3 p_B(1.0, -2.0, 0.5), F(10.0, 20.0, -5.0), M(1.0, 2.0, 3.0);
   Rig r(m, {});

@@ -34,7 +34,7 @@ couplings:
   CHECK_THAT(msg, Catch::Contains("box.d1") && Catch::Contains("box.d2") && Catch::Contains("d3"));
 }
 
-TEST_CASE("a loop with a delay in it is fine; an unfed input is a warning") {
+TEST_CASE("a loop with a delay in it is fine — an unfed input is a warning") {
   testing::SceneDir dir;
   const auto r = models::loadScene(dir.write("s.yaml", R"(schema_version: 1
 components:

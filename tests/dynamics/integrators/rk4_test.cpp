@@ -91,7 +91,7 @@ TEST_CASE("prismatic slider on an incline under gravity: s = 1/2 g sin(alpha) t^
   CHECK(v[0] == Approx(9.81 * std::sin(alpha) * t).epsilon(1e-12));
 }
 
-TEST_CASE("free body without forces keeps its momentum and energy; under gravity its centre follows a parabola") {
+TEST_CASE("free body without forces keeps its momentum and energy — under gravity its centre follows a parabola") {
   std::mt19937 rng(22);
   ModelBuilder b;
   b.addBody("block", "world", Joint::free(), {}, randomInertia(rng));

@@ -36,7 +36,7 @@ TEST_CASE("an undamped spring-mass oscillates at 2 pi sqrt(m/k), located by stat
   for (std::size_t k = 0; k < 4; ++k) CHECK(t[k] == Approx(double(k + 1) * period).margin(1e-8));
 }
 
-TEST_CASE("RK4 keeps the energy of an undamped spring; damping removes it") {
+TEST_CASE("RK4 keeps the energy of an undamped spring — damping removes it") {
   auto finalEnergy = [](double damping) {
     devs::Coupled root("root");
     auto& s = root.add<SpringMass>("s", SpringMassParams{1, 1, damping, 1, 0, 0.01, StepMethod::Rk4, 1e6});

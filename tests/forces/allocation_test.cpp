@@ -45,7 +45,7 @@ using namespace yardsim;
 using namespace yardsim::forces;
 using namespace yardsim::forces::testing;
 
-TEST_CASE("gravity, wire rope, equalizer and body load do not allocate at a stage") {
+TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at a stage") {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("hook", "world", dynamics::Joint::free(), dynamics::Transform::identity(),

@@ -32,7 +32,7 @@ dynamics::Model freeBox() {
 
 }  // namespace
 
-TEST_CASE("the time series is linear between samples and held outside, with steps at equal times") {
+TEST_CASE("the time series is linear between samples and held outside with steps at equal times") {
   const dynamics::Model m = freeBox();
   BodyLoad load("wind", m, 1, Vector3::Zero(), LoadFrame::World);
   CHECK(load.at(3.0).force.isZero(0.0));
@@ -89,7 +89,7 @@ TEST_CASE("a body-frame moment about a principal axis spins the body up at M t /
   CHECK(r.v.tail<3>().norm() < 1e-12);
 }
 
-TEST_CASE("world and body frames: the spatial force is [p x F + M; F] with F and M turned by R_WB") {
+TEST_CASE("world and body frames: the spatial force is p x F + M and F with F and M turned by R_WB") {
   const dynamics::Model m = freeBox();
   const Vector3 p_B(1.0, -2.0, 0.5), F(10.0, 20.0, -5.0), M(1.0, 2.0, 3.0);
   Rig r(m, {});
@@ -126,7 +126,7 @@ TEST_CASE("the load's power closes the kinetic-energy balance") {
   CHECK(bal.maxError / bal.maxWork < 1e-8);
 }
 
-TEST_CASE("a body load refuses the world, unknown bodies and bad series") {
+TEST_CASE("a body load refuses the world and unknown bodies and bad series") {
   const dynamics::Model m = freeBox();
   CHECK_THROWS_WITH(BodyLoad("wind-3", m, 0, Vector3::Zero(), LoadFrame::World), Contains("wind-3"));
   CHECK_THROWS_AS(BodyLoad("wind-3", m, 2, Vector3::Zero(), LoadFrame::World), std::invalid_argument);

@@ -171,7 +171,7 @@ TEST_CASE("three branches: the sheave body feels T times the sum of the unit vec
   CHECK(power == Approx(-T * eq.lengthRate(s)).epsilon(1e-9));
 }
 
-TEST_CASE("an equalizer needs two branches, each with an end, and valid properties") {
+TEST_CASE("an equalizer needs two branches each with an end and valid properties") {
   const dynamics::Model m = beam();
   RopeProperties p;
   p.ea = kEA;

@@ -39,10 +39,17 @@ class WireRope final : public ForceProvider {
   // (stage) => the path is longer than L0(t)
   bool isTaut(const Stage& s) const { return length(s) > unstretchedLength(s.t); }
 
-  // the per-part tension of the last evaluate(), N
+  // the per-part tension of the last evaluate(), N: the integrator's last stage, which is not
+  // the accepted state of a multi-stage method (use tension(stage) for that)
   double lastTension() const { return lastTension_; }
   // the last evaluate()'s tension exceeded the minimum breaking load (never if none was given)
-  bool exceedsBreakingLoad() const { return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad; }
+  bool exceedsBreakingLoad() const {
+    return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad;
+  }
+  // (stage) => its tension exceeds the minimum breaking load (never if none was given)
+  bool exceedsBreakingLoad(const Stage& s) const {
+    return properties_.breakingLoad && tension(s) > *properties_.breakingLoad;
+  }
 
   int parts() const { return parts_; }
   const RopeProperties& properties() const { return properties_; }

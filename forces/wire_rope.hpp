@@ -24,8 +24,8 @@ class WireRope final : public ForceProvider {
            const RopeProperties& properties, int parts = 1);
 
   // (t, rate) => from time t on the unstretched length of a part changes at rate, m/s (> 0 pays
-  // out and lowers the load by rate; with n parts the drum speed is n rate); L0 is held at
-  // properties.minLength. Set-points come in time order (std::invalid_argument otherwise).
+  // out and lowers the load by rate; with n parts the drum speed is n rate); L0 never goes
+  // below properties.minLength. Set-points come in time order (std::invalid_argument otherwise).
   void setPayoutRate(double t, double rate) { winch_.setPayoutRate(t, rate); }
   // (t) => unstretched length of one part L0(t), m; and its rate, m/s
   double unstretchedLength(double t) const { return winch_.length(t); }

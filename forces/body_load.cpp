@@ -10,24 +10,30 @@ namespace yardsim::forces {
 
 using dynamics::Vector3;
 
-BodyLoad::BodyLoad(std::string name, const dynamics::Model& model, int body, const Vector3& p_B, LoadFrame frame)
+BodyLoad::BodyLoad(std::string name, const dynamics::Model& model, int body, const Vector3& p_B,
+                   LoadFrame frame)
     : ForceProvider(std::move(name)), body_(body), p_B_(p_B), frame_(frame) {
   if (body_ < 1 || body_ >= model.nbodies)
     throw std::invalid_argument("body load '" + this->name() + "': body " + std::to_string(body_) +
-                                " is the world or outside the model's " + std::to_string(model.nbodies) + " bodies");
-  if (!p_B_.allFinite()) throw std::invalid_argument("body load '" + this->name() + "': the point is not finite");
+                                " is the world or outside the model's " +
+                                std::to_string(model.nbodies) + " bodies");
+  if (!p_B_.allFinite())
+    throw std::invalid_argument("body load '" + this->name() + "': the point is not finite");
 }
 
 void BodyLoad::setTimeSeries(std::vector<LoadSample> samples) {
   // (samples) => finite, times non-decreasing
-  if (samples.empty()) throw std::invalid_argument("body load '" + name() + "': an empty time series");
+  if (samples.empty())
+    throw std::invalid_argument("body load '" + name() + "': an empty time series");
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const LoadSample& x = samples[i];
     if (!std::isfinite(x.t) || !x.force.allFinite() || !x.moment.allFinite())
-      throw std::invalid_argument("body load '" + name() + "': sample " + std::to_string(i) + " is not finite");
+      throw std::invalid_argument("body load '" + name() + "': sample " + std::to_string(i) +
+                                  " is not finite");
     if (i > 0 && x.t < samples[i - 1].t)
-      throw std::invalid_argument("body load '" + name() + "': sample " + std::to_string(i) + " at t = " +
-                                  std::to_string(x.t) + " s is earlier than the one before it");
+      throw std::invalid_argument("body load '" + name() + "': sample " + std::to_string(i) +
+                                  " at t = " + std::to_string(x.t) +
+                                  " s is earlier than the one before it");
   }
   samples_ = std::move(samples);
 }
@@ -35,14 +41,16 @@ void BodyLoad::setTimeSeries(std::vector<LoadSample> samples) {
 void BodyLoad::setTable(const std::vector<std::array<double, 7>>& rows) {
   std::vector<LoadSample> samples;
   samples.reserve(rows.size());
-  for (const auto& r : rows) samples.push_back({r[0], Vector3(r[1], r[2], r[3]), Vector3(r[4], r[5], r[6])});
+  for (const auto& r : rows)
+    samples.push_back({r[0], Vector3(r[1], r[2], r[3]), Vector3(r[4], r[5], r[6])});
   setTimeSeries(std::move(samples));
 }
 
 void BodyLoad::set(double t, const Vector3& force, const Vector3& moment) {
   // (t, F, M) => history up to t kept (with its value just before t), then a step to (F, M)
   if (!std::isfinite(t) || !force.allFinite() || !moment.allFinite())
-    throw std::invalid_argument("body load '" + name() + "': an event with a non-finite time or load");
+    throw std::invalid_argument("body load '" + name() +
+                                "': an event with a non-finite time or load");
   const LoadSample before = at(t);  // stamped with time t
   samples_.erase(std::upper_bound(samples_.begin(), samples_.end(), t,
                                   [](double x, const LoadSample& s) { return x < s.t; }),

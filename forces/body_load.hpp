@@ -26,7 +26,8 @@ class BodyLoad final : public ForceProvider {
   // (name, model (for checks only), body index >= 1, p_B: point of application in the body
   // frame, m, frame of F and M) => a zero load; throws std::invalid_argument naming it for a
   // body outside the model, the world, or a non-finite point
-  BodyLoad(std::string name, const dynamics::Model& model, int body, const dynamics::Vector3& p_B, LoadFrame frame);
+  BodyLoad(std::string name, const dynamics::Model& model, int body, const dynamics::Vector3& p_B,
+           LoadFrame frame);
 
   // (samples, times non-decreasing; two equal times make a step) => the load follows them,
   // linear in between, held at the first value before and the last after; replaces any

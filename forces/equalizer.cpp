@@ -5,12 +5,16 @@
 namespace yardsim::forces {
 
 Equalizer::Equalizer(std::string name, const dynamics::Model& model, const Attachment& sheave,
-                     const std::vector<std::vector<Attachment>>& branches, const RopeProperties& properties)
-    : ForceProvider(std::move(name)), properties_(properties), winch_(properties.l0, properties.minLength) {
+                     const std::vector<std::vector<Attachment>>& branches,
+                     const RopeProperties& properties)
+    : ForceProvider(std::move(name)),
+      properties_(properties),
+      winch_(properties.l0, properties.minLength) {
   // (sheave, branches) => one path per branch starting at the sheave point
   checkRopeProperties(properties_, this->name());
   if (branches.size() < 2)
-    throw std::invalid_argument("equalizer '" + this->name() + "': needs at least 2 branches (got " +
+    throw std::invalid_argument("equalizer '" + this->name() +
+                                "': needs at least 2 branches (got " +
                                 std::to_string(branches.size()) + ")");
   branches_.reserve(branches.size());
   for (std::size_t j = 0; j < branches.size(); ++j) {
@@ -21,7 +25,8 @@ Equalizer::Equalizer(std::string name, const dynamics::Model& model, const Attac
     points.reserve(branches[j].size() + 1);
     points.push_back(sheave);
     points.insert(points.end(), branches[j].begin(), branches[j].end());
-    branches_.emplace_back(model, std::move(points), this->name() + "' branch '" + std::to_string(j));
+    branches_.emplace_back(model, std::move(points),
+                           this->name() + "' branch '" + std::to_string(j));
   }
 }
 

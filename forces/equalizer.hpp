@@ -38,8 +38,15 @@ class Equalizer final : public ForceProvider {
   double branchLength(const Stage& s, int j) const { return branches_[j].measure(s.data).length; }
   bool isTaut(const Stage& s) const { return length(s) > unstretchedLength(s.t); }
 
+  // as on the wire rope: the tension of the last evaluate() (the integrator's last stage), N
   double lastTension() const { return lastTension_; }
-  bool exceedsBreakingLoad() const { return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad; }
+  bool exceedsBreakingLoad() const {
+    return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad;
+  }
+  // (stage) => its tension exceeds the minimum breaking load (never if none was given)
+  bool exceedsBreakingLoad(const Stage& s) const {
+    return properties_.breakingLoad && tension(s) > *properties_.breakingLoad;
+  }
 
   int branchCount() const { return static_cast<int>(branches_.size()); }
   // branch j's path, starting at the sheave point; after evaluate(), its world points

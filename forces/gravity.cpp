@@ -6,8 +6,10 @@
 
 namespace yardsim::forces {
 
-Gravity::Gravity(std::string name, const dynamics::Vector3& g_W) : ForceProvider(std::move(name)), g_W_(g_W) {
-  if (!g_W_.allFinite()) throw std::invalid_argument("gravity '" + this->name() + "': g must be finite");
+Gravity::Gravity(std::string name, const dynamics::Vector3& g_W)
+    : ForceProvider(std::move(name)), g_W_(g_W) {
+  if (!g_W_.allFinite())
+    throw std::invalid_argument("gravity '" + this->name() + "': g must be finite");
 }
 
 void Gravity::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {

@@ -10,11 +10,12 @@ namespace yardsim::forces {
 
 // The material of one rope part. SI units.
 struct RopeProperties {
-  double ea = 0.0;                      // axial stiffness EA of one part, N
-  double l0 = 0.0;                      // unstretched length at the start, m
-  double damping = 0.0;                 // viscous damping c on the elongation rate, N s/m
-  double minLength = 0.01;              // shortest unstretched length a winch can haul in to, m
-  std::optional<double> breakingLoad;   // minimum breaking load MBL of one part, N (not checked if empty)
+  double ea = 0.0;          // axial stiffness EA of one part, N
+  double l0 = 0.0;          // unstretched length at the start, m
+  double damping = 0.0;     // viscous damping c on the elongation rate, N s/m
+  double minLength = 0.01;  // shortest unstretched length a winch can haul in to, m
+  std::optional<double>
+      breakingLoad;  // minimum breaking load MBL of one part, N (not checked if empty)
 };
 
 // (properties, owner name) => nothing, or std::invalid_argument naming the owner and the parameter
@@ -30,7 +31,8 @@ struct RopeStrain {
 
 // (EA, strain) => elastic tension EA/L0 (L - L0) when taut, else 0, N
 double elasticTension(double ea, const RopeStrain& s);
-// (EA, c, strain) => tension of one part, >= 0 (a slack rope never pushes, damping never makes it push), N
+// (EA, c, strain) => tension of one part, >= 0 (a slack rope never pushes, damping never makes it
+// push), N
 double ropeTension(double ea, double c, const RopeStrain& s);
 // (EA, L, L0) => strain energy of one part, J
 double strainEnergy(double ea, double length, double l0);

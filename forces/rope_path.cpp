@@ -8,19 +8,23 @@ namespace yardsim::forces {
 
 using dynamics::Vector3;
 
-RopePath::RopePath(const dynamics::Model& model, std::vector<Attachment> points, const std::string& owner)
+RopePath::RopePath(const dynamics::Model& model, std::vector<Attachment> points,
+                   const std::string& owner)
     : points_(std::move(points)) {
   // (points) => at least two, on bodies of the model, finite
   if (points_.size() < 2)
-    throw std::invalid_argument("rope '" + owner + "': a path needs at least two points (its two ends)");
+    throw std::invalid_argument("rope '" + owner +
+                                "': a path needs at least two points (its two ends)");
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const Attachment& a = points_[i];
     if (a.body < 0 || a.body >= model.nbodies)
-      throw std::invalid_argument("rope '" + owner + "': path point " + std::to_string(i) + " is on body " +
-                                  std::to_string(a.body) + ", outside the model's " +
-                                  std::to_string(model.nbodies) + " bodies");
+      throw std::invalid_argument("rope '" + owner + "': path point " + std::to_string(i) +
+                                  " is on body " + std::to_string(a.body) +
+                                  ", outside the model's " + std::to_string(model.nbodies) +
+                                  " bodies");
     if (!a.p_B.allFinite())
-      throw std::invalid_argument("rope '" + owner + "': path point " + std::to_string(i) + " is not finite");
+      throw std::invalid_argument("rope '" + owner + "': path point " + std::to_string(i) +
+                                  " is not finite");
   }
   p_W_.assign(points_.size(), Vector3::Zero());
   u_W_.assign(points_.size() - 1, Vector3::Zero());

@@ -14,7 +14,8 @@
 
 namespace yardsim::forces {
 
-// A point fixed on a body: body index (0 = the world / ground) and p_B, the point in the body frame, m.
+// A point fixed on a body: body index (0 = the world / ground) and p_B, the point in the body
+// frame, m.
 struct Attachment {
   int body = 0;
   dynamics::Vector3 p_B = dynamics::Vector3::Zero();

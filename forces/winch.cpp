@@ -34,8 +34,9 @@ void Winch::setPayoutRate(double t, double rate) {
   if (!std::isfinite(t) || !std::isfinite(rate))
     throw std::invalid_argument("winch set-point: time and rate must be finite");
   if (t < setPoints_.back().t)
-    throw std::invalid_argument("winch set-point at t = " + std::to_string(t) +
-                                " s is earlier than the last one at t = " + std::to_string(setPoints_.back().t) + " s");
+    throw std::invalid_argument(
+        "winch set-point at t = " + std::to_string(t) +
+        " s is earlier than the last one at t = " + std::to_string(setPoints_.back().t) + " s");
   setPoints_.push_back({t, length(t), rate});
 }
 

@@ -44,7 +44,8 @@ void WireRope::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::Ve
 }
 
 double WireRope::doPotentialEnergy(const Stage& s) const {
-  return static_cast<double>(parts_) * strainEnergy(properties_.ea, length(s), unstretchedLength(s.t));
+  return static_cast<double>(parts_) *
+         strainEnergy(properties_.ea, length(s), unstretchedLength(s.t));
 }
 
 double WireRope::doPower(const Stage& s) const {

@@ -24,8 +24,8 @@ class WireRope final : public ForceProvider {
            const RopeProperties& properties, int parts = 1);
 
   // (t, rate) => from time t on the unstretched length of a part changes at rate, m/s (> 0 pays
-  // out and lowers the load by rate; with n parts the drum speed is n rate); L0 is held at
-  // properties.minLength. Set-points come in time order (std::invalid_argument otherwise).
+  // out and lowers the load by rate; with n parts the drum speed is n rate); L0 never goes
+  // below properties.minLength. Set-points come in time order (std::invalid_argument otherwise).
   void setPayoutRate(double t, double rate) { winch_.setPayoutRate(t, rate); }
   // (t) => unstretched length of one part L0(t), m; and its rate, m/s
   double unstretchedLength(double t) const { return winch_.length(t); }
@@ -39,10 +39,17 @@ class WireRope final : public ForceProvider {
   // (stage) => the path is longer than L0(t)
   bool isTaut(const Stage& s) const { return length(s) > unstretchedLength(s.t); }
 
-  // the per-part tension of the last evaluate(), N
+  // the per-part tension of the last evaluate(), N: the integrator's last stage, which is not
+  // the accepted state of a multi-stage method (use tension(stage) for that)
   double lastTension() const { return lastTension_; }
   // the last evaluate()'s tension exceeded the minimum breaking load (never if none was given)
-  bool exceedsBreakingLoad() const { return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad; }
+  bool exceedsBreakingLoad() const {
+    return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad;
+  }
+  // (stage) => its tension exceeds the minimum breaking load (never if none was given)
+  bool exceedsBreakingLoad(const Stage& s) const {
+    return properties_.breakingLoad && tension(s) > *properties_.breakingLoad;
+  }
 
   int parts() const { return parts_; }
   const RopeProperties& properties() const { return properties_; }

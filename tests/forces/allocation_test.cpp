@@ -24,28 +24,48 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
-void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new[](std::size_t n) {
+  return operator new(n);
+}
 void* operator new(std::size_t n, std::align_val_t a) {
   ++gAllocations;
   const std::size_t al = static_cast<std::size_t>(a);
   if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
   throw std::bad_alloc();
 }
-void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void* operator new[](std::size_t n, std::align_val_t a) {
+  return operator new(n, a);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
 
 using namespace yardsim;
 using namespace yardsim::forces;
 using namespace yardsim::forces::testing;
 
-TEST_CASE("gravity, wire rope, equalizer and body load do not allocate at a stage") {
+TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at a stage") {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("hook", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
@@ -59,10 +79,12 @@ TEST_CASE("gravity, wire rope, equalizer and body load do not allocate at a stag
   p.damping = 1e5;
   p.breakingLoad = 1e7;
   Gravity gravity("gravity", Vector3(0.0, 0.0, -9.81));
-  WireRope wire("hoist", m, {{0, Vector3(0, 0, 40)}, {0, Vector3(1, 0, 40)}, {1, Vector3(0, 0, 0.5)}}, p, 4);
+  WireRope wire("hoist", m,
+                {{0, Vector3(0, 0, 40)}, {0, Vector3(1, 0, 40)}, {1, Vector3(0, 0, 0.5)}}, p, 4);
   wire.setPayoutRate(0.0, 0.083);
   p.l0 = 10.0;
-  Equalizer eq("eq", m, {1, Vector3(0, 0, -0.5)}, {{{2, Vector3(-3, 0, 1)}}, {{2, Vector3(0, 1, 1)}, {2, Vector3(3, 0, 1)}}}, p);
+  Equalizer eq("eq", m, {1, Vector3(0, 0, -0.5)},
+               {{{2, Vector3(-3, 0, 1)}}, {{2, Vector3(0, 1, 1)}, {2, Vector3(3, 0, 1)}}}, p);
   BodyLoad load("wind", m, 2, Vector3(1, 0, 0), LoadFrame::Body);
   load.setTable({{0.0, 1, 2, 3, 4, 5, 6}, {1.0, 0, 0, 0, 0, 0, 0}, {2.0, 5, 5, 5, 5, 5, 5}});
   Rig r(m, {&gravity, &wire, &eq, &load});

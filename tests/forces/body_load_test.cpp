@@ -32,11 +32,14 @@ dynamics::Model freeBox() {
 
 }  // namespace
 
-TEST_CASE("the time series is linear between samples and held outside, with steps at equal times") {
+TEST_CASE("the time series is linear between samples and held outside with steps at equal times") {
   const dynamics::Model m = freeBox();
   BodyLoad load("wind", m, 1, Vector3::Zero(), LoadFrame::World);
   CHECK(load.at(3.0).force.isZero(0.0));
-  load.setTable({{0.0, 0, 0, 0, 0, 0, 0}, {10.0, 100, -50, 0, 0, 0, 20}, {10.0, 0, 0, 0, 0, 0, 0}, {20.0, 0, 0, 10, 0, 0, 0}});
+  load.setTable({{0.0, 0, 0, 0, 0, 0, 0},
+                 {10.0, 100, -50, 0, 0, 0, 20},
+                 {10.0, 0, 0, 0, 0, 0, 0},
+                 {20.0, 0, 0, 10, 0, 0, 0}});
   CHECK(load.at(-5.0).force.isZero(0.0));
   CHECK((load.at(2.5).force - Vector3(25.0, -12.5, 0.0)).norm() < 1e-12);
   CHECK((load.at(2.5).moment - Vector3(0.0, 0.0, 5.0)).norm() < 1e-12);
@@ -55,10 +58,11 @@ TEST_CASE("an event sets the load from its exact time on and overrides the rest 
   CHECK(load.at(1e6).moment == Vector3(0.0, 0.0, 4.0));
   load.setTable({{0.0, 0, 0, 0, 0, 0, 0}, {10.0, 10, 0, 0, 0, 0, 0}});
   load.set(4.0, Vector3(-1.0, 0.0, 0.0), Vector3::Zero());
-  CHECK((load.at(2.0).force - Vector3(2.0, 0.0, 0.0)).norm() < 1e-12);    // the ramp before 4 s is kept
+  CHECK((load.at(2.0).force - Vector3(2.0, 0.0, 0.0)).norm() <
+        1e-12);  // the ramp before 4 s is kept
   CHECK((load.at(3.999).force - Vector3(3.999, 0.0, 0.0)).norm() < 1e-12);
   CHECK(load.at(4.0).force == Vector3(-1.0, 0.0, 0.0));
-  CHECK(load.at(8.0).force == Vector3(-1.0, 0.0, 0.0));                  // the rest is overridden
+  CHECK(load.at(8.0).force == Vector3(-1.0, 0.0, 0.0));  // the rest is overridden
 }
 
 TEST_CASE("a ramped world force at the centre of mass moves a free body by F t^3 / (6 m T)") {
@@ -69,7 +73,8 @@ TEST_CASE("a ramped world force at the centre of mass moves a free body by F t^3
   load.setTimeSeries({{0.0, Vector3::Zero(), Vector3::Zero()}, {ramp, F, Vector3::Zero()}});
   Rig r(m, {&load});
   r.q << 1.0, 2.0, 3.0, 1.0, 0.0, 0.0, 0.0;
-  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(1, 1, 0).normalized(), 0.5), r.q.data() + 3);
+  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(1, 1, 0).normalized(), 0.5),
+                               r.q.data() + 3);
   const Vector3 p0(1.0, 2.0, 3.0);
   for (int k = 0; k < 2000; ++k) r.step(1e-3);  // t = 2 s = ramp
   const Vector3 expected = p0 + F * std::pow(r.t, 3) / (6.0 * kMass * ramp);
@@ -89,7 +94,7 @@ TEST_CASE("a body-frame moment about a principal axis spins the body up at M t /
   CHECK(r.v.tail<3>().norm() < 1e-12);
 }
 
-TEST_CASE("world and body frames: the spatial force is [p x F + M — F] with F and M turned by R_WB") {
+TEST_CASE("world and body frames: F and M turned by R_WB and the moment p x F + M") {
   const dynamics::Model m = freeBox();
   const Vector3 p_B(1.0, -2.0, 0.5), F(10.0, 20.0, -5.0), M(1.0, 2.0, 3.0);
   Rig r(m, {});
@@ -126,14 +131,18 @@ TEST_CASE("the load's power closes the kinetic-energy balance") {
   CHECK(bal.maxError / bal.maxWork < 1e-8);
 }
 
-TEST_CASE("a body load refuses the world, unknown bodies and bad series") {
+TEST_CASE("a body load refuses the world and unknown bodies and bad series") {
   const dynamics::Model m = freeBox();
-  CHECK_THROWS_WITH(BodyLoad("wind-3", m, 0, Vector3::Zero(), LoadFrame::World), Contains("wind-3"));
-  CHECK_THROWS_AS(BodyLoad("wind-3", m, 2, Vector3::Zero(), LoadFrame::World), std::invalid_argument);
-  CHECK_THROWS_AS(BodyLoad("wind-3", m, 1, Vector3(0, std::nan(""), 0), LoadFrame::World), std::invalid_argument);
+  CHECK_THROWS_WITH(BodyLoad("wind-3", m, 0, Vector3::Zero(), LoadFrame::World),
+                    Contains("wind-3"));
+  CHECK_THROWS_AS(BodyLoad("wind-3", m, 2, Vector3::Zero(), LoadFrame::World),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(BodyLoad("wind-3", m, 1, Vector3(0, std::nan(""), 0), LoadFrame::World),
+                  std::invalid_argument);
   BodyLoad load("wind-3", m, 1, Vector3::Zero(), LoadFrame::World);
   CHECK_THROWS_AS(load.setTable({}), std::invalid_argument);
-  CHECK_THROWS_AS(load.setTable({{1.0, 0, 0, 0, 0, 0, 0}, {0.5, 0, 0, 0, 0, 0, 0}}), std::invalid_argument);
+  CHECK_THROWS_AS(load.setTable({{1.0, 0, 0, 0, 0, 0, 0}, {0.5, 0, 0, 0, 0, 0, 0}}),
+                  std::invalid_argument);
   CHECK_THROWS_AS(load.setTable({{1.0, std::nan(""), 0, 0, 0, 0, 0}}), std::invalid_argument);
   CHECK_THROWS_AS(load.set(1.0, Vector3(INFINITY, 0, 0), Vector3::Zero()), std::invalid_argument);
 }

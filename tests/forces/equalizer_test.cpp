@@ -24,13 +24,14 @@ constexpr double kMass = 200e3;  // kg
 constexpr double kEA = 1e9;      // N
 const Vector3 kSheave(0.0, 0.0, 20.0);
 const Vector3 kLugA(-3.0, 0.0, 0.0), kLugB(3.0, 0.0, 0.0);  // on the beam
-const Vector3 kCom(1.0, 0.0, -0.5);                           // off-centre, below the lugs
+const Vector3 kCom(1.0, 0.0, -0.5);                         // off-centre, below the lugs
 
 dynamics::Model beam() {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("beam", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
-            dynamics::makeInertia(kMass, kCom, dynamics::boxInertia(kMass, Vector3(8.0, 2.0, 1.0)).inertiaCom));
+            dynamics::makeInertia(kMass, kCom,
+                                  dynamics::boxInertia(kMass, Vector3(8.0, 2.0, 1.0)).inertiaCom));
   return b.build();
 }
 
@@ -43,7 +44,8 @@ class Damper final : public ForceProvider {
  protected:
   void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) override {
     const Vector3 com = s.model.inertias[1].com;
-    f.addPointForceWorld(1, dynamics::pointPosition(s.data, 1, com), -c_ * dynamics::pointVelocity(s.data, 1, com));
+    f.addPointForceWorld(1, dynamics::pointPosition(s.data, 1, com),
+                         -c_ * dynamics::pointVelocity(s.data, 1, com));
     dynamics::Force M = dynamics::Force::Zero();
     M.head<3>() = -cr_ * omega(s);
     f.addWorldFrame(1, M);
@@ -60,7 +62,7 @@ class Damper final : public ForceProvider {
 
 }  // namespace
 
-TEST_CASE("an unevenly placed load comes to rest on an equalizer with equal tensions carrying its weight") {
+TEST_CASE("an uneven load rests on an equalizer with equal tensions carrying its weight") {
   const dynamics::Model m = beam();
   Gravity gravity("gravity", kG);
   // (level beam 8 m under the sheave) => both branches sqrt(3^2 + 8^2), the rope just straight
@@ -73,7 +75,8 @@ TEST_CASE("an unevenly placed load comes to rest on an equalizer with equal tens
   Damper damper(2.0 * kMass, 2.0 * kMass * 10.0);
   Rig r(m, {&gravity, &eq, &damper});
   r.q << 0.0, 0.0, zBeam, 1.0, 0.0, 0.0, 0.0;
-  const Rig::Balance bal = r.energyBalance(1e-3, 44000);  // the slowest (overdamped) mode decays as e^(-0.6 t)
+  const Rig::Balance bal =
+      r.energyBalance(1e-3, 44000);  // the slowest (overdamped) mode decays as e^(-0.6 t)
   const Stage s = r.stage();
   CHECK(r.v.norm() < 1e-7);
   // (statics) => the centre of mass hangs under the sheave: the rope forces meet there
@@ -85,12 +88,15 @@ TEST_CASE("an unevenly placed load comes to rest on an equalizer with equal tens
   CHECK(std::abs(lA - lB) > 0.5);
   // (one tension T in both branches) => vertical sum = weight, horizontal sum = 0, equal angles
   const double T = eq.tension(s);
-  const Vector3 pA = dynamics::pointPosition(s.data, 1, kLugA), pB = dynamics::pointPosition(s.data, 1, kLugB);
-  const Vector3 fA = T * (kSheave - pA) / (kSheave - pA).norm(), fB = T * (kSheave - pB) / (kSheave - pB).norm();
+  const Vector3 pA = dynamics::pointPosition(s.data, 1, kLugA),
+                pB = dynamics::pointPosition(s.data, 1, kLugB);
+  const Vector3 fA = T * (kSheave - pA) / (kSheave - pA).norm(),
+                fB = T * (kSheave - pB) / (kSheave - pB).norm();
   CHECK(fA.z() + fB.z() == Approx(kMass * 9.81).epsilon(1e-7));
   CHECK(std::abs(fA.x() + fB.x()) < 1e-7 * kMass * 9.81);
   CHECK(fA.z() / fA.norm() == Approx(fB.z() / fB.norm()).epsilon(1e-7));
   CHECK(eq.lastTension() == Approx(T).epsilon(1e-7));
+  CHECK_FALSE(eq.exceedsBreakingLoad(s));  // no breaking load given
   CHECK(eq.branchLength(s, 0) == Approx((kSheave - pA).norm()).epsilon(1e-14));
   // (rope law) => total length L0 + T / (EA / L0), and the sum of the branches
   CHECK(eq.length(s) == Approx(lA + lB).epsilon(1e-14));
@@ -119,7 +125,8 @@ TEST_CASE("an undamped equalizer conserves kinetic plus potential energy") {
 }
 
 TEST_CASE("three branches: the sheave body feels T times the sum of the unit vectors") {
-  // the equalizing sheave on a hook block (body 1); branch 2 runs over a sheave on the load (body 2)
+  // the equalizing sheave on a hook block (body 1); branch 2 runs over a sheave on the load (body
+  // 2)
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("hook", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
@@ -139,8 +146,10 @@ TEST_CASE("three branches: the sheave body feels T times the sum of the unit vec
   Equalizer eq("equalizer", m, {1, sheave_H}, branches, p);
   Rig r(m, {&eq});
   r.q << 0.3, -0.2, 20.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 5.0, 0.0, 0.0, 0.0, 0.0;
-  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(0.2, 1.0, 0.1).normalized(), 0.3), r.q.data() + 3);
-  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(1.0, 0.3, 0.0).normalized(), 0.2), r.q.data() + 10);
+  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(0.2, 1.0, 0.1).normalized(), 0.3),
+                               r.q.data() + 3);
+  dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(1.0, 0.3, 0.0).normalized(), 0.2),
+                               r.q.data() + 10);
   r.v << 0.1, 0.2, -0.1, 0.5, -0.3, 0.4, 0.0, 0.1, 0.0, -0.2, 0.1, 0.3;
   const Stage s = r.stage();
   // (geometry by hand) => branch lengths, total length, tension
@@ -158,27 +167,30 @@ TEST_CASE("three branches: the sheave body feels T times the sum of the unit vec
   const double T = eq.lastTension();
   REQUIRE(L > p.l0);
   CHECK(T == Approx(kEA / p.l0 * (L - p.l0) + p.damping * eq.lengthRate(s)).epsilon(1e-12));
-  const Vector3 onHook = T * ((a - pS).normalized() + (bb - pS).normalized() + (c - pS).normalized());
+  const Vector3 onHook =
+      T * ((a - pS).normalized() + (bb - pS).normalized() + (c - pS).normalized());
   CHECK((f.worldFrame(1).tail<3>() - onHook).norm() < 1e-9 * T);
   CHECK((f.worldFrame(1).head<3>() - pS.cross(onHook)).norm() < 1e-9 * T * 30.0);
   // (load) => T toward the sheave at a and b, T (u_prev + u_next) at the load's sheave c
-  const Vector3 onLoad = T * ((pS - a).normalized() + (pS - bb).normalized() + (pS - c).normalized() +
-                              (end - c).normalized());
+  const Vector3 onLoad = T * ((pS - a).normalized() + (pS - bb).normalized() +
+                              (pS - c).normalized() + (end - c).normalized());
   CHECK((f.worldFrame(2).tail<3>() - onLoad).norm() < 1e-9 * T);
   // (virtual work) => the forces do power -T dL/dt
   double power = 0.0;
-  for (int k = 1; k < m.nbodies; ++k) power += f.worldFrame(k).dot(dynamics::bodyVelocityWorld(s.data, k));
+  for (int k = 1; k < m.nbodies; ++k)
+    power += f.worldFrame(k).dot(dynamics::bodyVelocityWorld(s.data, k));
   CHECK(power == Approx(-T * eq.lengthRate(s)).epsilon(1e-9));
 }
 
-TEST_CASE("an equalizer needs two branches, each with an end, and valid properties") {
+TEST_CASE("an equalizer needs two branches each with an end and valid properties") {
   const dynamics::Model m = beam();
   RopeProperties p;
   p.ea = kEA;
   p.l0 = 10.0;
   CHECK_THROWS_WITH(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}}, p), Contains("eq-1"));
   CHECK_THROWS_AS(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {}}, p), std::invalid_argument);
-  CHECK_THROWS_AS(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{2, kLugB}}}, p), std::invalid_argument);
+  CHECK_THROWS_AS(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{2, kLugB}}}, p),
+                  std::invalid_argument);
   p.ea = std::nan("");
   CHECK_THROWS_WITH(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p),
                     Contains("eq-1") && Contains("EA"));

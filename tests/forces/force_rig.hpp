@@ -21,8 +21,8 @@ using dynamics::Vector3;
 inline dynamics::Model verticalBlock(double m, const Vector3& gravity = Vector3::Zero()) {
   dynamics::ModelBuilder b;
   b.setGravity(gravity);
-  b.addBody("block", "world", dynamics::Joint::prismatic(Vector3::UnitZ()), dynamics::Transform::identity(),
-            dynamics::boxInertia(m, Vector3(2.0, 2.0, 1.0)));
+  b.addBody("block", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
+            dynamics::Transform::identity(), dynamics::boxInertia(m, Vector3(2.0, 2.0, 1.0)));
   return b.build();
 }
 
@@ -36,8 +36,9 @@ class Rig {
         data_(model),
         q(dynamics::neutralConfiguration(model)),
         v(Eigen::VectorXd::Zero(model.nv)) {
-    system_.setForces([this](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, const dynamics::Data& d,
-                             dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+    system_.setForces([this](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs,
+                             const dynamics::Data& d, dynamics::ExternalForces& f,
+                             Eigen::VectorXd& tau) {
       const Stage s{ts, model_, d, qs, vs};
       for (ForceProvider* p : providers_) p->evaluate(s, f, tau);
     });

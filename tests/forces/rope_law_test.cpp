@@ -14,8 +14,10 @@ using Catch::Matchers::Contains;
 TEST_CASE("tension is k e + c e' while taut and never negative") {
   const double ea = 2e8, c = 3e4;
   // (taut) => EA/L0 (L - L0) + c (L' - L0')
-  CHECK(ropeTension(ea, c, {20.1, 0.3, 20.0, 0.1}) == Approx(ea / 20.0 * (20.1 - 20.0) + c * 0.2).epsilon(1e-14));
-  CHECK(elasticTension(ea, {20.1, 0.3, 20.0, 0.1}) == Approx(ea / 20.0 * (20.1 - 20.0)).epsilon(1e-14));
+  CHECK(ropeTension(ea, c, {20.1, 0.3, 20.0, 0.1}) ==
+        Approx(ea / 20.0 * (20.1 - 20.0) + c * 0.2).epsilon(1e-14));
+  CHECK(elasticTension(ea, {20.1, 0.3, 20.0, 0.1}) ==
+        Approx(ea / 20.0 * (20.1 - 20.0)).epsilon(1e-14));
   // (slack or just straight) => 0 whatever the rates
   CHECK(ropeTension(ea, c, {19.9, 5.0, 20.0, 0.0}) == 0.0);
   CHECK(ropeTension(ea, c, {20.0, 5.0, 20.0, 0.0}) == 0.0);
@@ -43,8 +45,10 @@ TEST_CASE("the power is what the tension does beyond -dV/dL plus the winch's cha
   const double T = ropeTension(ea, c, s);
   // (d/dt of n V along the motion) - (power of the rope on the bodies, -n T L') = power
   const double dt = 1e-6;
-  const double dVdt = n * (strainEnergy(ea, s.length + s.lengthRate * dt, s.l0 + s.l0Rate * dt) -
-                           strainEnergy(ea, s.length - s.lengthRate * dt, s.l0 - s.l0Rate * dt)) / (2 * dt);
+  const double dVdt = n *
+                      (strainEnergy(ea, s.length + s.lengthRate * dt, s.l0 + s.l0Rate * dt) -
+                       strainEnergy(ea, s.length - s.lengthRate * dt, s.l0 - s.l0Rate * dt)) /
+                      (2 * dt);
   CHECK(ropePower(ea, T, n, s) == Approx(dVdt - n * T * s.lengthRate).epsilon(1e-7));
   // (slack) => no power
   CHECK(ropePower(ea, 0.0, n, {19.0, 0.3, 20.0, 0.05}) == 0.0);

@@ -27,12 +27,14 @@ dynamics::Model twoFreeBodies() {
   return b.build();
 }
 
-const std::vector<Attachment> kPoints{
-    {0, Vector3(0.0, 0.0, 30.0)}, {1, Vector3(0.2, 0.0, 0.3)}, {0, Vector3(4.0, 1.0, 28.0)}, {2, Vector3(1.0, 0.5, 0.5)}};
+const std::vector<Attachment> kPoints{{0, Vector3(0.0, 0.0, 30.0)},
+                                      {1, Vector3(0.2, 0.0, 0.3)},
+                                      {0, Vector3(4.0, 1.0, 28.0)},
+                                      {2, Vector3(1.0, 0.5, 0.5)}};
 
 }  // namespace
 
-TEST_CASE("the length is the sum of the segment lengths and its rate the derivative along a motion") {
+TEST_CASE("the length is the sum of the segments and its rate the derivative along a motion") {
   const dynamics::Model m = twoFreeBodies();
   RopePath path(m, kPoints, "r");
   std::mt19937 rng(7);
@@ -85,7 +87,8 @@ TEST_CASE("a uniform tension pulls each point along the rope and does power -T d
   CHECK((f.worldFrame(2).tail<3>() - T * (p[2] - p[3]).normalized()).norm() < 1e-10 * T);
   // (virtual work) => sum over bodies of F_W . V_W = -T dL/dt
   double power = 0.0;
-  for (int b = 1; b < m.nbodies; ++b) power += f.worldFrame(b).dot(dynamics::bodyVelocityWorld(d, b));
+  for (int b = 1; b < m.nbodies; ++b)
+    power += f.worldFrame(b).dot(dynamics::bodyVelocityWorld(d, b));
   CHECK(power == Approx(-T * pm.rate).epsilon(1e-10));
   CHECK(path.segmentDirections().size() == kPoints.size() - 1);
 }
@@ -93,7 +96,10 @@ TEST_CASE("a uniform tension pulls each point along the rope and does power -T d
 TEST_CASE("a path needs two points on bodies of the model") {
   const dynamics::Model m = twoFreeBodies();
   CHECK_THROWS_AS(RopePath(m, {{0, Vector3::Zero()}}, "r"), std::invalid_argument);
-  CHECK_THROWS_AS(RopePath(m, {{0, Vector3::Zero()}, {3, Vector3::Zero()}}, "r"), std::invalid_argument);
-  CHECK_THROWS_AS(RopePath(m, {{-1, Vector3::Zero()}, {1, Vector3::Zero()}}, "r"), std::invalid_argument);
-  CHECK_THROWS_AS(RopePath(m, {{0, Vector3::Zero()}, {1, Vector3(std::nan(""), 0, 0)}}, "r"), std::invalid_argument);
+  CHECK_THROWS_AS(RopePath(m, {{0, Vector3::Zero()}, {3, Vector3::Zero()}}, "r"),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(RopePath(m, {{-1, Vector3::Zero()}, {1, Vector3::Zero()}}, "r"),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(RopePath(m, {{0, Vector3::Zero()}, {1, Vector3(std::nan(""), 0, 0)}}, "r"),
+                  std::invalid_argument);
 }

@@ -47,5 +47,6 @@ TEST_CASE("set-points earlier than the last one or not finite are refused") {
   w.setPayoutRate(5.0, 0.1);
   CHECK_THROWS_AS(w.setPayoutRate(4.0, 0.1), std::invalid_argument);
   CHECK_THROWS_AS(w.setPayoutRate(6.0, std::nan("")), std::invalid_argument);
-  CHECK_THROWS_AS(w.setPayoutRate(std::numeric_limits<double>::infinity(), 0.1), std::invalid_argument);
+  CHECK_THROWS_AS(w.setPayoutRate(std::numeric_limits<double>::infinity(), 0.1),
+                  std::invalid_argument);
 }

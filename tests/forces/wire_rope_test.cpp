@@ -19,10 +19,10 @@ using Catch::Matchers::Contains;
 namespace {
 
 const Vector3 kG(0.0, 0.0, -9.81);
-constexpr double kMass = 200e3;    // a 200 t block, kg
-constexpr double kEA = 1e9;        // N
-constexpr double kL0 = 30.0;       // m
-constexpr double kTop = 40.0;      // height of the crane's point, m
+constexpr double kMass = 200e3;     // a 200 t block, kg
+constexpr double kEA = 1e9;         // N
+constexpr double kL0 = 30.0;        // m
+constexpr double kTop = 40.0;       // height of the crane's point, m
 const Vector3 kLug(0.0, 0.0, 0.5);  // the block's lug in the block frame
 
 RopeProperties rope(double dampingRatio, int parts = 1) {
@@ -85,7 +85,8 @@ TEST_CASE("a block settles on a damped rope at T = m g with stretch m g L0 / EA"
 TEST_CASE("an undamped block bounces at sqrt(k / m) with k = n EA / L0") {
   for (int parts : {1, 4}) {
     HangingBlock hb(rope(0.0, parts), parts);
-    const double k = parts * kEA / kL0, omega = std::sqrt(k / kMass), zEq = HangingBlock::heightFor(kL0 + kMass * 9.81 / k);
+    const double k = parts * kEA / kL0, omega = std::sqrt(k / kMass),
+                 zEq = HangingBlock::heightFor(kL0 + kMass * 9.81 / k);
     const double delta = 0.2 * kMass * 9.81 / k;  // stays taut
     hb.rig.q[0] = zEq + delta;
     double worst = 0.0;
@@ -98,7 +99,7 @@ TEST_CASE("an undamped block bounces at sqrt(k / m) with k = n EA / L0") {
   }
 }
 
-TEST_CASE("a slack rope exerts nothing: the block falls freely until taut and then stretches as energy says") {
+TEST_CASE("a slack rope exerts nothing: free fall until taut and then the stretch energy says") {
   HangingBlock hb(rope(0.0));
   const double drop = 0.5, z0 = HangingBlock::heightFor(kL0 - drop), g = 9.81;
   hb.rig.q[0] = z0;
@@ -148,7 +149,7 @@ TEST_CASE("damping acts only while taut and never makes the rope push") {
   CHECK(evaluate(hb.wire, hb.rig.stage()).F_W.isZero(0.0));
 }
 
-TEST_CASE("n parts: n T on the block with per-part tension m g / n and per-part stretch m g / (n EA / L0)") {
+TEST_CASE("n parts: n T on the block and per part tension m g / n and stretch m g L0 / (n EA)") {
   const int n = 4;
   HangingBlock hb(rope(0.3, n), n);
   hb.rig.q[0] = HangingBlock::heightFor(kL0);
@@ -167,14 +168,16 @@ TEST_CASE("n parts: n T on the block with per-part tension m g / n and per-part 
   CHECK(hb.wire.potentialEnergy(s) == Approx(n * 0.5 * kEA / kL0 * e * e).epsilon(1e-12));
 }
 
-TEST_CASE("over a sheave: the length is the sum of the segments and the sheave body feels T (u1 + u2)") {
+TEST_CASE("over a sheave: the length sums the segments and the sheave body feels T (u1 + u2)") {
   // a trolley (body 1) sliding along x carries the sheave; the block (body 2) slides vertically
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("trolley", "world", dynamics::Joint::prismatic(Vector3::UnitX()),
-            dynamics::Transform::translation(Vector3(0.0, 0.0, kTop)), dynamics::boxInertia(5e3, Vector3(1, 1, 1)));
+            dynamics::Transform::translation(Vector3(0.0, 0.0, kTop)),
+            dynamics::boxInertia(5e3, Vector3(1, 1, 1)));
   b.addBody("block", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
-            dynamics::Transform::translation(Vector3(3.0, 0.0, 0.0)), dynamics::boxInertia(kMass, Vector3(2, 2, 1)));
+            dynamics::Transform::translation(Vector3(3.0, 0.0, 0.0)),
+            dynamics::boxInertia(kMass, Vector3(2, 2, 1)));
   const dynamics::Model m = b.build();
   const Vector3 drum(-20.0, 0.0, 30.0), sheave(0.0, 0.5, -0.5);
   RopeProperties p = rope(0.0);
@@ -204,7 +207,7 @@ TEST_CASE("over a sheave: the length is the sum of the segments and the sheave b
   CHECK((f.worldFrame(2).head<3>() - pB.cross(onBlock)).norm() < 1e-9 * T * kTop);
 }
 
-TEST_CASE("a block hanging over a fixed sheave settles with T = m g and the summed length stretched by m g L0 / EA") {
+TEST_CASE("a block over a fixed sheave settles at T = m g with the total stretch m g L0 / EA") {
   const dynamics::Model m = verticalBlock(kMass);
   Gravity gravity("gravity", kG);
   const Vector3 drum(-20.0, 0.0, 30.0), sheave(0.0, 0.0, kTop);
@@ -221,7 +224,7 @@ TEST_CASE("a block hanging over a fixed sheave settles with T = m g and the summ
   CHECK(wire.length(s) - p.l0 == Approx(kMass * 9.81 * p.l0 / kEA).epsilon(1e-7));
 }
 
-TEST_CASE("a winch paying out lowers a hanging block at its rate and hauling in lifts it with the energy balance closed") {
+TEST_CASE("a winch lowers or lifts a hanging block at its rate and the energy balance closes") {
   const double r = 0.083, w = kMass * 9.81;
   for (double rate : {r, -r}) {
     HangingBlock hb(rope(0.2));
@@ -252,6 +255,7 @@ TEST_CASE("the breaking load is exceeded when the last evaluated tension passes 
     HangingBlock hb(p);
     hb.rig.q[0] = HangingBlock::heightFor(kL0 + w * kL0 / kEA);
     CHECK_FALSE(hb.wire.exceedsBreakingLoad());  // nothing evaluated yet
+    CHECK(hb.wire.exceedsBreakingLoad(hb.rig.stage()) == (mbl < w));
     hb.rig.step(1e-3);
     CHECK(hb.wire.exceedsBreakingLoad() == (mbl < w));
   }
@@ -262,7 +266,7 @@ TEST_CASE("the breaking load is exceeded when the last evaluated tension passes 
   CHECK_FALSE(none.wire.exceedsBreakingLoad());
 }
 
-TEST_CASE("bad parameters are refused at construction and a non-finite state at evaluate naming the rope") {
+TEST_CASE("bad parameters and a non-finite state are refused naming the rope") {
   const dynamics::Model m = verticalBlock(kMass);
   const std::vector<Attachment> path{{0, Vector3(0.0, 0.0, kTop)}, {1, kLug}};
   RopeProperties p = rope(0.1);
@@ -277,8 +281,10 @@ TEST_CASE("bad parameters are refused at construction and a non-finite state at 
   p = rope(0.1);
   p.breakingLoad = 0.0;
   CHECK_THROWS_AS(WireRope("hoist-7", m, path, p), std::invalid_argument);
-  CHECK_THROWS_WITH(WireRope("hoist-7", m, path, rope(0.1), 0), Contains("hoist-7") && Contains("parts"));
-  CHECK_THROWS_WITH(WireRope("hoist-7", m, {{0, Vector3::Zero()}, {2, kLug}}, rope(0.1)), Contains("hoist-7"));
+  CHECK_THROWS_WITH(WireRope("hoist-7", m, path, rope(0.1), 0),
+                    Contains("hoist-7") && Contains("parts"));
+  CHECK_THROWS_WITH(WireRope("hoist-7", m, {{0, Vector3::Zero()}, {2, kLug}}, rope(0.1)),
+                    Contains("hoist-7"));
   // (NaN position) => evaluate throws ForceError naming the provider and the body
   WireRope wire("hoist-7", m, path, rope(0.1));
   Rig r(m, {&wire});

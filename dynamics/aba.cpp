@@ -4,7 +4,8 @@
 
 namespace yardsim::dynamics {
 
-const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+// flatten: inline every Eigen helper into the three passes (GCC otherwise leaves 6x6 products as calls)
+[[gnu::flatten]] const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext) {
   // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {

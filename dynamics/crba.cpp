@@ -4,7 +4,8 @@
 
 namespace yardsim::dynamics {
 
-const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
+// flatten: inline every Eigen helper (GCC otherwise leaves small products as calls)
+[[gnu::flatten]] const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
   // (q) => X_WB, S_W, IC_W = X_WB^* I X_WB^-1
   for (int i = 1; i < m.nbodies; ++i) {
     updateJointPlacement(m, d, i, q);

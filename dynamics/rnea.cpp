@@ -6,8 +6,9 @@ namespace yardsim::dynamics {
 
 namespace {
 
+// flatten: inline every Eigen helper (GCC otherwise leaves small products and cross products as calls)
 template <bool kZeroAcc>
-void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd* ddq,
+[[gnu::flatten]] void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd* ddq,
               const ExternalForces* fext, Eigen::VectorXd& out) {
   const bool world = fext != nullptr && fext->hasWorldFrame();
   d.A[0].head<3>().setZero();

@@ -192,7 +192,10 @@ Model ModelBuilder::build() const {
     if (m.parent[i] > 0) m.nvSubtree[m.parent[i]] += m.nvSubtree[i];
   }
   m.nvSubtree[0] = m.nv;
-  for (int i = 0; i < m.nbodies; ++i) m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
+  for (int i = 0; i < m.nbodies; ++i) {
+    m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
+    if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;
+  }
   // (loop specs) => loops with rows
   for (const auto& l : loops_) {
     const std::string who = "loop '" + l.name + "': ";

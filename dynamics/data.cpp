@@ -9,7 +9,7 @@ Data::Data(const Model& m)
       V(m.nbodies, Motion::Zero()),
       A(m.nbodies, Motion::Zero()),
       C(m.nbodies, Motion::Zero()),
-      F(m.nbodies, Force::Zero()),
+      F_W(m.nbodies, Force::Zero()),
       Fext(m.nbodies, Force::Zero()),
       IA(m.nbodies, Matrix6::Zero()),
       A_W(m.nbodies, Motion::Zero()),

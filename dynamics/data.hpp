@@ -22,7 +22,7 @@ struct Data {
   std::vector<Motion> C;  ///< velocity-product acceleration c_i = c_J + v_i x v_J, body frame
 
   // RNEA / ABA
-  std::vector<Force> F;   ///< RNEA: force transmitted by joint i, body frame
+  std::vector<Force> F_W;  ///< RNEA: force transmitted by joint i to body i, world frame
   std::vector<Force> Fext;  ///< external force on body i, body frame (from ExternalForces)
   std::vector<Matrix6> IA;  ///< articulated inertia, world frame
   std::vector<Motion> A_W;  ///< ABA: spatial acceleration, world frame, including -g

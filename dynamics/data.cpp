@@ -10,7 +10,6 @@ Data::Data(const Model& m)
       A(m.nbodies, Motion::Zero()),
       C(m.nbodies, Motion::Zero()),
       F_W(m.nbodies, Force::Zero()),
-      Fext(m.nbodies, Force::Zero()),
       IA(m.nbodies, Matrix6::Zero()),
       A_W(m.nbodies, Motion::Zero()),
       C_W(m.nbodies, Motion::Zero()),

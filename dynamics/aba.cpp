@@ -4,78 +4,87 @@
 
 namespace yardsim::dynamics {
 
-const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+// flatten: inline every Eigen helper into the three passes (GCC otherwise leaves 6x6 products as calls)
+[[gnu::flatten]] const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext) {
-  const bool world = fext != nullptr && fext->hasWorldFrame();
-  // (q, v) => X_PB, V, C = c_J + V x S v_i, IA = I, pA = V x* I V - F_ext
+  // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
     updateJointPlacement(m, d, i, q);
     const int p = m.parent[i];
-    if (world) d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+    const Transform& X = d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
     const int nv = m.jointNv[i];
+    const int iv = m.idxV[i];
     Motion vJ;
     if (nv == 1) {
-      vJ = d.S[i].col(0) * v[m.idxV[i]];
-      d.C[i] = Motion::Zero();
+      const Motion s = X.actMotion(d.S[i].col(0));
+      d.S_W.col(iv) = s;
+      vJ = s * v[iv];
+      d.C_W[i] = Motion::Zero();
     } else {
-      vJ = d.S[i] * v.segment(m.idxV[i], nv);
-      d.C[i] = jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + m.idxV[i]);
+      for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
+      vJ = d.S_W.middleCols(iv, nv) * v.segment(iv, nv);
+      d.C_W[i] = m.joints[i].constantSubspace()
+                     ? Motion::Zero()
+                     : X.actMotion(jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv));
     }
-    d.V[i] = d.X_PB[i].invActMotion(d.V[p]) + vJ;
-    d.C[i] += crossMotion(d.V[i], vJ);
-    d.IA[i] = m.inertiaMatrices[i];
-    d.F[i] = crossForce(d.V[i], m.inertias[i].apply(d.V[i]));
-    if (fext != nullptr) d.F[i] -= fext->inBodyFrame(d, i);
+    d.V_W[i] = d.V_W[p] + vJ;
+    d.C_W[i] += crossMotion(d.V_W[i], vJ);
+    d.IA[i] = m.inertias[i].matrixIn(X);
+    d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]);
+    if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }
-  // (IA, pA) => U = IA S, D^-1, u = tau - S^T pA; articulated inertia and bias to the parent
+  // (IA, PA) => U = IA S, D^-1, u = tau - S^T PA; articulated inertia and bias added to the parent
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const int nv = m.jointNv[i];
     const int p = m.parent[i];
-    Matrix6 Ia;
-    Force pa;
+    const int iv = m.idxV[i];
+    const Motion& c = d.C_W[i];
     if (nv == 1) {
-      const auto s = d.S[i].col(0);
-      auto U = d.U[i].col(0);
-      U.noalias() = d.IA[i] * s;
+      const Motion s = d.S_W.col(iv);
+      const Vector6 U = d.IA[i] * s;
       const double Dinv = 1.0 / s.dot(U);
+      const double ui = tau[iv] - s.dot(d.PA_W[i]);
+      d.U[i].col(0) = U;
       d.Dinv[i](0, 0) = Dinv;
-      const double ui = tau[m.idxV[i]] - s.dot(d.F[i]);
       d.u[i][0] = ui;
       if (p == 0) continue;
-      Ia.noalias() = d.IA[i] - (Dinv * U) * U.transpose();
-      pa = d.F[i] + Ia * d.C[i] + U * (Dinv * ui);
+      // pa = PA + Ia c + U D^-1 u with Ia = IA - U D^-1 U^T
+      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c + U * (Dinv * (ui - U.dot(c)));
+      d.IA[p] += d.IA[i];
+      d.IA[p].noalias() -= (Dinv * U) * U.transpose();
     } else if (nv > 0) {
-      d.U[i].noalias() = d.IA[i] * d.S[i];
-      d.Dinv[i] = (d.S[i].transpose() * d.U[i]).inverse();
-      d.u[i].noalias() = tau.segment(m.idxV[i], nv) - d.S[i].transpose() * d.F[i];
+      const auto S = d.S_W.middleCols(iv, nv);
+      d.U[i].noalias() = d.IA[i] * S;
+      d.Dinv[i] = (S.transpose() * d.U[i]).inverse();
+      d.u[i].noalias() = tau.segment(iv, nv) - S.transpose() * d.PA_W[i];
       if (p == 0) continue;
-      Ia.noalias() = d.IA[i] - d.U[i] * d.Dinv[i] * d.U[i].transpose();
-      pa = d.F[i] + Ia * d.C[i] + d.U[i] * (d.Dinv[i] * d.u[i]);
+      const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * c);
+      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c + d.U[i] * w;
+      d.IA[p] += d.IA[i];
+      d.IA[p].noalias() -= d.U[i] * d.Dinv[i] * d.U[i].transpose();
     } else {
       if (p == 0) continue;
-      Ia = d.IA[i];
-      pa = d.F[i] + Ia * d.C[i];
+      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c;
+      d.IA[p] += d.IA[i];
     }
-    d.IA[p] += actInertia(d.X_PB[i], Ia);
-    d.F[p] += d.X_PB[i].actForce(pa);
   }
-  // (IA, pA, U, D, u) => ddq, A (including -g)
-  d.A[0].head<3>().setZero();
-  d.A[0].tail<3>() = -m.gravity;
+  // (IA, PA, U, D, u) => ddq, A_W (including -g)
+  d.A_W[0].head<3>().setZero();
+  d.A_W[0].tail<3>() = -m.gravity;
   for (int i = 1; i < m.nbodies; ++i) {
     const int nv = m.jointNv[i];
-    const Motion a = d.X_PB[i].invActMotion(d.A[m.parent[i]]) + d.C[i];
+    const int iv = m.idxV[i];
+    const Motion a = d.A_W[m.parent[i]] + d.C_W[i];
     if (nv == 1) {
-      const auto s = d.S[i].col(0);
       const double qdd = d.Dinv[i](0, 0) * (d.u[i][0] - d.U[i].col(0).dot(a));
-      d.ddq[m.idxV[i]] = qdd;
-      d.A[i] = a + s * qdd;
+      d.ddq[iv] = qdd;
+      d.A_W[i] = a + d.S_W.col(iv) * qdd;
     } else if (nv > 0) {
-      auto qdd = d.ddq.segment(m.idxV[i], nv);
+      auto qdd = d.ddq.segment(iv, nv);
       qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);
-      d.A[i] = a + d.S[i] * qdd;
+      d.A_W[i] = a + d.S_W.middleCols(iv, nv) * qdd;
     } else {
-      d.A[i] = a;
+      d.A_W[i] = a;
     }
   }
   return d.ddq;

@@ -1,5 +1,7 @@
 #pragma once
-// Forward dynamics by the articulated-body algorithm, O(n) (Featherstone, table 7.1).
+// Forward dynamics by the articulated-body algorithm, O(n) (Featherstone, table 7.1), written in
+// the world frame: articulated inertias and bias forces are accumulated in world coordinates, so
+// passing them to the parent is an addition rather than a Plücker transform (as in Pinocchio 3).
 
 #include <Eigen/Core>
 
@@ -10,7 +12,8 @@
 namespace yardsim::dynamics {
 
 /// (q, v, tau, external forces) => data.ddq with M ddq + h = tau + sum J_i^T F_ext_i.
-/// Also leaves data.X_PB, data.V, data.C, data.IA and data.A (which includes -g).
+/// Also leaves data.X_PB, data.X_WB, data.S_W, data.V_W, data.C_W, data.IA (world frame) and
+/// data.A_W (world frame, including -g: add g to the linear part for the true acceleration).
 const Eigen::VectorXd& aba(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext = nullptr);
 

@@ -3,18 +3,30 @@
 namespace yardsim::dynamics {
 
 void integrate(const Model& m, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double dt, Eigen::VectorXd& qOut) {
+  if (m.euclidean) {
+    qOut = q + dt * v;
+    return;
+  }
   for (int i = 1; i < m.nbodies; ++i) {
     jointIntegrate(m.joints[i], q.data() + m.idxQ[i], v.data() + m.idxV[i], dt, qOut.data() + m.idxQ[i]);
   }
 }
 
 void difference(const Model& m, const Eigen::VectorXd& q0, const Eigen::VectorXd& q1, Eigen::VectorXd& d) {
+  if (m.euclidean) {
+    d = q1 - q0;
+    return;
+  }
   for (int i = 1; i < m.nbodies; ++i) {
     jointDifference(m.joints[i], q0.data() + m.idxQ[i], q1.data() + m.idxQ[i], d.data() + m.idxV[i]);
   }
 }
 
 void chartRate(const Model& m, const Eigen::VectorXd& theta, const Eigen::VectorXd& v, Eigen::VectorXd& thetaDot) {
+  if (m.euclidean) {
+    thetaDot = v;
+    return;
+  }
   for (int i = 1; i < m.nbodies; ++i) {
     jointChartRate(m.joints[i], theta.data() + m.idxV[i], v.data() + m.idxV[i], thetaDot.data() + m.idxV[i]);
   }

@@ -4,32 +4,33 @@
 
 namespace yardsim::dynamics {
 
-const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
+// flatten: inline every Eigen helper (GCC otherwise leaves small products as calls)
+[[gnu::flatten]] const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
   // (q) => X_WB, S_W, IC_W = X_WB^* I X_WB^-1
   for (int i = 1; i < m.nbodies; ++i) {
     updateJointPlacement(m, d, i, q);
     d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
     for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
-    d.IC_W[i] = actInertia(d.X_WB[i], m.inertiaMatrices[i]);
+    d.IC_W[i] = m.inertias[i].matrixIn(d.X_WB[i]);
   }
   // (IC_W) => composite inertias of subtrees
   for (int i = m.nbodies - 1; i >= 1; --i) {
     if (m.parent[i] > 0) d.IC_W[m.parent[i]] += d.IC_W[i];
   }
-  // (IC_W, S_W) => M_ji = S_j^T IC_i S_i for j on the path from i to the root
-  for (int i = 1; i < m.nbodies; ++i) {
+  // (IC_W, S_W) => F = IC_W S_W per dof; column block of body i over its subtree: M = F^T S_i
+  for (int i = m.nbodies - 1; i >= 1; --i) {
     const int nv = m.jointNv[i];
-    const int vi = m.idxV[i];
+    if (nv == 0) continue;
+    const int iv = m.idxV[i];
+    const int ns = m.nvSubtree[i];
+    d.Fcrb.middleCols(iv, nv).noalias() = d.IC_W[i] * d.S_W.middleCols(iv, nv);
     for (int k = 0; k < nv; ++k) {
-      const Force F = d.IC_W[i] * d.S_W.col(vi + k);
-      for (int j = i; j > 0; j = m.parent[j]) {
-        for (int l = 0; l < m.jointNv[j]; ++l) {
-          const double h = d.S_W.col(m.idxV[j] + l).dot(F);
-          d.M(m.idxV[j] + l, vi + k) = h;
-          d.M(vi + k, m.idxV[j] + l) = h;
-        }
-      }
+      d.M.col(iv + k).segment(iv, ns).noalias() = d.Fcrb.middleCols(iv, ns).transpose() * d.S_W.col(iv + k);
     }
+  }
+  // (lower triangle) => upper triangle; entries between bodies on different branches stay zero
+  for (int c = 1; c < m.nv; ++c) {
+    for (int r = 0; r < c; ++r) d.M(r, c) = d.M(c, r);
   }
   return d.M;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The joint-space mass matrix by the composite-rigid-body algorithm, computed in the world frame
-// (composite inertias summed in world coordinates, H_ij = S_j^T IC_i S_i).
+// (composite inertias summed in world coordinates; H_ki = S_k^T IC_k S_i for k in the subtree of i,
+// one product per degree of freedom over its contiguous subtree rows).
 
 #include <Eigen/Core>
 

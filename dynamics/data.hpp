@@ -17,14 +17,16 @@ struct Data {
   std::vector<Transform> X_PB;  ///< pose of body i in its parent body
   std::vector<Transform> X_WB;  ///< pose of body i in the world
   std::vector<MotionSubspace> S;  ///< joint motion subspace of body i, body frame
-  std::vector<Motion> V;  ///< spatial velocity of body i, body frame
-  std::vector<Motion> A;  ///< spatial acceleration of body i, body frame (forwardKinematics: without gravity)
-  std::vector<Motion> C;  ///< velocity-product acceleration c_i = c_J + v_i x v_J, body frame
+  std::vector<Motion> V;  ///< forwardKinematics: spatial velocity of body i, body frame
+  std::vector<Motion> A;  ///< forwardKinematics: spatial acceleration of body i, body frame, without gravity
+  std::vector<Motion> C;  ///< forwardKinematics: velocity-product acceleration c_J + V x S v_i, body frame
 
-  // RNEA / ABA
-  std::vector<Force> F;   ///< RNEA: force transmitted by joint i; ABA: bias force p_i
-  std::vector<Force> Fext;  ///< external force on body i, body frame (from ExternalForces)
-  std::vector<Matrix6> IA;  ///< articulated inertia
+  // RNEA / ABA (world frame)
+  std::vector<Force> F_W;  ///< RNEA: force transmitted by joint i to body i, world frame
+  std::vector<Matrix6> IA;  ///< articulated inertia, world frame
+  std::vector<Motion> A_W;  ///< RNEA, ABA: spatial acceleration, world frame, including -g
+  std::vector<Motion> C_W;  ///< ABA: velocity-product acceleration, world frame
+  std::vector<Force> PA_W;  ///< ABA: articulated bias force, world frame
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> U;
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> Dinv;
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>> u;
@@ -34,6 +36,7 @@ struct Data {
   // CRBA, bias forces, Cholesky
   std::vector<Matrix6> IC_W;  ///< composite inertia of the subtree of i, world frame
   Eigen::Matrix<double, 6, Eigen::Dynamic> S_W;  ///< motion subspace columns, world frame (6 x nv)
+  Eigen::Matrix<double, 6, Eigen::Dynamic> Fcrb;  ///< CRBA: IC_W S_W column by column (6 x nv)
   Eigen::MatrixXd M;   ///< joint-space mass matrix (upper and lower triangle)
   Eigen::VectorXd nle; ///< bias forces h(q, v) (Coriolis, centrifugal, gravity)
   Eigen::LLT<Eigen::MatrixXd> llt;
@@ -50,7 +53,7 @@ struct Data {
   Eigen::VectorXd work;     ///< nc
   std::vector<int> perm;    ///< nc pivot order
   int schurRank = 0;
-  std::vector<Motion> V_W;  ///< spatial velocity of body i, world frame
+  std::vector<Motion> V_W;  ///< spatial velocity of body i, world frame (RNEA, ABA, loop Jacobians)
   std::vector<Motion> A0_W; ///< spatial acceleration with ddq = 0, world frame (no gravity)
   Eigen::VectorXd dv;       ///< nv scratch
   Eigen::VectorXd dq;       ///< nq scratch

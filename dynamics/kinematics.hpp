@@ -36,7 +36,13 @@ Vector3 bodyEulerAngles(const Data& data, int body);
 inline void updateJointPlacement(const Model& model, Data& data, int i, const Eigen::VectorXd& q) {
   const Joint& j = model.joints[i];
   const double* qi = q.data() + model.idxQ[i];
-  data.X_PB[i] = model.X_PJ[i] * jointTransform(j, qi);
+  if (model.placementRotated[i]) {
+    data.X_PB[i] = model.X_PJ[i] * jointTransform(j, qi);
+  } else {
+    const Transform X_JC = jointTransform(j, qi);
+    data.X_PB[i].R = X_JC.R;
+    data.X_PB[i].p = model.X_PJ[i].p + X_JC.p;
+  }
   if (!j.constantSubspace()) jointMotionSubspace(j, qi, data.S[i]);
 }
 

@@ -20,7 +20,7 @@ const Eigen::VectorXd& loopResidual(const Model& model, Data& data, const Eigen:
 const Eigen::MatrixXd& loopJacobian(const Model& model, Data& data, const Eigen::VectorXd& q);
 /// (q, v) => data.J, data.cv = J v and data.kappa with d/dt(J v) = J ddq + kappa.
 void loopJacobianAndBias(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
-/// max |residual| of each loop is also available as the infinity norm of data.residual.
+/// (q) => max |g(q)| over all loop rows (0 without loops), leaving data.residual.
 double loopResidualNorm(const Model& model, Data& data, const Eigen::VectorXd& q);
 
 }  // namespace yardsim::dynamics

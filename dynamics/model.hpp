@@ -65,6 +65,9 @@ struct Model {
   std::vector<int> jointNq;
   std::vector<int> jointNv;
   std::vector<int> dofBody;           ///< body owning each velocity index
+  std::vector<int> nvSubtree;         ///< velocity count of the subtree rooted at body i (contiguous from idxV[i])
+  std::vector<bool> placementRotated; ///< false when X_PJ[i] is a pure translation
+  bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;
 
   /// Index of a body by name, or -1.

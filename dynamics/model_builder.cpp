@@ -186,6 +186,16 @@ Model ModelBuilder::build() const {
     m.nq += joints[n - 1].nq();
     m.nv += joints[n - 1].nv();
   }
+  // (tree) => subtree sizes (depth-first order makes each subtree's velocities contiguous)
+  m.nvSubtree = m.jointNv;
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    if (m.parent[i] > 0) m.nvSubtree[m.parent[i]] += m.nvSubtree[i];
+  }
+  m.nvSubtree[0] = m.nv;
+  for (int i = 0; i < m.nbodies; ++i) {
+    m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
+    if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;
+  }
   // (loop specs) => loops with rows
   for (const auto& l : loops_) {
     const std::string who = "loop '" + l.name + "': ";

@@ -6,50 +6,54 @@ namespace yardsim::dynamics {
 
 namespace {
 
+// flatten: inline every Eigen helper (GCC otherwise leaves small products and cross products as calls)
 template <bool kZeroAcc>
-void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd* ddq,
-              const ExternalForces* fext, Eigen::VectorXd& out) {
-  const bool world = fext != nullptr && fext->hasWorldFrame();
-  d.A[0].head<3>().setZero();
-  d.A[0].tail<3>() = -m.gravity;
-  // (q, v, ddq) => V, A, F = I A + V x* I V - F_ext
+[[gnu::flatten]] void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               const Eigen::VectorXd* ddq, const ExternalForces* fext, Eigen::VectorXd& out) {
+  d.A_W[0].head<3>().setZero();
+  d.A_W[0].tail<3>() = -m.gravity;
+  // (q, v, ddq) => X_WB, S_W, V_W, A_W, F_W = I_W A_W + V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
     updateJointPlacement(m, d, i, q);
     const int p = m.parent[i];
-    if (world) d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+    const Transform& X = d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
     const int nv = m.jointNv[i];
-    const Transform& X = d.X_PB[i];
+    const int iv = m.idxV[i];
     if (nv == 1) {
-      const auto s = d.S[i].col(0);
-      const double vi = v[m.idxV[i]];
-      const Motion vJ = s * vi;
-      d.V[i] = X.invActMotion(d.V[p]) + vJ;
-      Motion a = X.invActMotion(d.A[p]) + crossMotion(d.V[i], vJ);
-      if constexpr (!kZeroAcc) a += s * (*ddq)[m.idxV[i]];
-      d.A[i] = a;
+      const Motion s = X.actMotion(d.S[i].col(0));
+      d.S_W.col(iv) = s;
+      const Motion vJ = s * v[iv];
+      d.V_W[i] = d.V_W[p] + vJ;
+      d.A_W[i] = d.A_W[p] + crossMotion(d.V_W[i], vJ);
+      if constexpr (!kZeroAcc) d.A_W[i] += s * (*ddq)[iv];
     } else {
-      const auto vi = v.segment(m.idxV[i], nv);
-      const Motion vJ = d.S[i] * vi;
-      d.V[i] = X.invActMotion(d.V[p]) + vJ;
-      Motion a = X.invActMotion(d.A[p]) + crossMotion(d.V[i], vJ) +
-                 jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + m.idxV[i]);
-      if constexpr (!kZeroAcc) a += d.S[i] * ddq->segment(m.idxV[i], nv);
-      d.A[i] = a;
+      for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
+      const auto S = d.S_W.middleCols(iv, nv);
+      const Motion vJ = nv > 0 ? Motion(S * v.segment(iv, nv)) : Motion::Zero();
+      d.V_W[i] = d.V_W[p] + vJ;
+      d.A_W[i] = d.A_W[p] + crossMotion(d.V_W[i], vJ);
+      if (!m.joints[i].constantSubspace()) {
+        d.A_W[i] += X.actMotion(jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv));
+      }
+      if constexpr (!kZeroAcc) {
+        if (nv > 0) d.A_W[i] += S * ddq->segment(iv, nv);
+      }
     }
-    const SpatialInertia& I = m.inertias[i];
-    d.F[i] = I.apply(d.A[i]) + crossForce(d.V[i], I.apply(d.V[i]));
-    if (fext != nullptr) d.F[i] -= fext->inBodyFrame(d, i);
+    const Matrix6 I = m.inertias[i].matrixIn(X);
+    d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]);
+    if (fext != nullptr) d.F_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }
-  // (F) => tau = S^T F, F_parent += X^* F
+  // (F_W) => tau = S_W^T F_W, F_W(parent) += F_W
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const int nv = m.jointNv[i];
+    const int iv = m.idxV[i];
     if (nv == 1) {
-      out[m.idxV[i]] = d.S[i].col(0).dot(d.F[i]);
+      out[iv] = d.S_W.col(iv).dot(d.F_W[i]);
     } else if (nv > 0) {
-      out.segment(m.idxV[i], nv).noalias() = d.S[i].transpose() * d.F[i];
+      out.segment(iv, nv).noalias() = d.S_W.middleCols(iv, nv).transpose() * d.F_W[i];
     }
     const int p = m.parent[i];
-    if (p > 0) d.F[p] += d.X_PB[i].actForce(d.F[i]);
+    if (p > 0) d.F_W[p] += d.F_W[i];
   }
 }
 

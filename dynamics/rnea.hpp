@@ -1,6 +1,7 @@
 #pragma once
-// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1), and the
-// bias forces h(q, v) = RNEA(q, v, 0).
+// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1), written in
+// the world frame (velocities, accelerations and forces in world coordinates, so a joint force
+// passes to the parent by addition), and the bias forces h(q, v) = RNEA(q, v, 0).
 
 #include <Eigen/Core>
 
@@ -11,7 +12,7 @@
 namespace yardsim::dynamics {
 
 /// (q, v, ddq, external forces) => data.tau with M ddq + h = tau + sum J_i^T F_ext_i.
-/// Also leaves data.X_PB, data.V, data.A (with gravity: A includes -g), data.F.
+/// Also leaves data.X_WB, data.S_W, data.V_W, data.A_W (world frame, including -g) and data.F_W.
 const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                             const Eigen::VectorXd& ddq, const ExternalForces* fext = nullptr);
 

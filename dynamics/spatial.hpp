@@ -133,6 +133,19 @@ struct SpatialInertia {
     I.bottomRightCorner<3, 3>() = mass * Matrix3::Identity();
     return I;
   }
+  /// The 6x6 matrix of this inertia (given in frame B) expressed in frame A, X_AB being the pose of
+  /// B in A; cheaper than actInertia(X_AB, matrix()).
+  Matrix6 matrixIn(const Transform& X_AB) const {
+    const Vector3 c = X_AB.R * com + X_AB.p;
+    const Matrix3 Ic = X_AB.R * inertiaCom * X_AB.R.transpose();
+    const Matrix3 cx = skew(c);
+    Matrix6 I;
+    I.topLeftCorner<3, 3>() = Ic + mass * (c.squaredNorm() * Matrix3::Identity() - c * c.transpose());
+    I.topRightCorner<3, 3>() = mass * cx;
+    I.bottomLeftCorner<3, 3>() = -mass * cx;
+    I.bottomRightCorner<3, 3>() = mass * Matrix3::Identity();
+    return I;
+  }
   /// I * v, the momentum of the body moving with v.
   Force apply(const Motion& v) const {
     Force h;

@@ -46,7 +46,7 @@ TEST_CASE("a free body held by a revolute cut to the world swings like a revolut
   vc[2] = 0.5;
   double tr = 0.0, tc = 0.0, err = 0.0;
   Data d(mc);
-  for (int k = 0; k < 2000 / kScale; ++k) {
+  for (int k = 0; k < 2000; ++k) {
     rr.step(sr, tr, qr, vr, 1e-3);
     rc.step(sc, tc, qc, vc, 1e-3);
     const double angle = 2.0 * std::atan2(qc[6], qc[3]);
@@ -76,7 +76,7 @@ TEST_CASE("a parallelogram four-bar: the coupler keeps its orientation and the r
   Data d(fb.model);
   REQUIRE(loopResidualNorm(fb.model, d, q) < 1e-15);
   double t = 0.0, orient = 0.0, follow = 0.0;
-  for (int k = 0; k < 3000 / kScale; ++k) {
+  for (int k = 0; k < 3000; ++k) {
     rk.step(sys, t, q, v, 1e-3);
     orient = std::max(orient, std::abs(q[0] + q[1]));
     follow = std::max(follow, std::abs(q[2] - q[0]));
@@ -97,7 +97,7 @@ TEST_CASE("a four-bar stays closed with projection, conserves energy, and matche
   projectVelocities(fb.model, d, q, v);
   const double E0 = kineticEnergy(fb.model, d, q, v) + potentialEnergy(fb.model, d, q);
   double t = 0.0, res = 0.0, branch = 0.0, energy = 0.0;
-  for (int k = 0; k < 3000 / kScale; ++k) {
+  for (int k = 0; k < 3000; ++k) {
     rk.step(sys, t, q, v, 1e-3);
     res = std::max(res, loopResidualNorm(fb.model, d, q));
     const Eigen::VectorXd closed = fb.closedConfiguration(q[0]);
@@ -122,7 +122,7 @@ TEST_CASE("a slider-crank stays closed and its slider follows r cos(theta) + sqr
   Eigen::VectorXd q = sc.closedConfiguration(0.3), v = Eigen::VectorXd::Zero(3);
   REQUIRE(loopResidualNorm(sc.model, d, q) < 1e-14);
   double t = 0.0, res = 0.0, kin = 0.0;
-  for (int k = 0; k < 2000 / kScale; ++k) {
+  for (int k = 0; k < 2000; ++k) {
     rk.step(sys, t, q, v, 1e-3);
     res = std::max(res, loopResidualNorm(sc.model, d, q));
     kin = std::max(kin, std::abs(q[2] - sc.sliderPosition(q[0])));
@@ -161,7 +161,7 @@ TEST_CASE("Baumgarte stabilisation keeps the four-bar's drift small without proj
     Eigen::VectorXd q = fb.closedConfiguration(1.0), v = Eigen::VectorXd::Zero(3);
     q[2] += 1e-3;  // start slightly open
     double t = 0.0;
-    for (int k = 0; k < 2000 / kScale; ++k) rk.step(sys, t, q, v, 1e-3);
+    for (int k = 0; k < 2000; ++k) rk.step(sys, t, q, v, 1e-3);
     return loopResidualNorm(fb.model, d, q);
   };
   const double free = run({});

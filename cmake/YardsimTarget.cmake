@@ -47,6 +47,7 @@ function(yardsim_test name)
   cmake_parse_arguments(T "" "" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${name} PRIVATE
     YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
   # --warn NoTests: a test whose name Catch cannot match fails instead of passing empty

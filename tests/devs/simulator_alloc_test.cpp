@@ -1,32 +1,15 @@
 // The steady state of a run allocates nothing: bags keep their capacity, the event queue and
 // the scratch lists are sized once. Every global operator new is counted here.
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <new>
+
+#include "support/allocation_counter.hpp"
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
 #include "models/library/delay.hpp"
 #include "support/test_models.hpp"
 
-// The replacement operators below pair malloc with free; GCC inlines them and then
-// mistakes the pair for new-with-free.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::size_t gAllocations = 0;
-}
-
-void* operator new(std::size_t n) {
-  ++gAllocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+using yardsim::testing::allocationCount;
 
 using namespace yardsim;
 
@@ -65,9 +48,9 @@ TEST_CASE("no heap allocation per message in the steady state") {
   root.couple(ping.out, count.in);
   devs::Simulator sim(root);
   sim.runUntil(10.0);  // warm-up: bags reach their capacity
-  const std::size_t before = gAllocations;
+  const std::size_t before = allocationCount();
   const long countBefore = count.state();
   sim.runUntil(10000.0);
   CHECK(count.state() - countBefore > 50000);  // messages did flow
-  CHECK(gAllocations == before);
+  CHECK(allocationCount() == before);
 }

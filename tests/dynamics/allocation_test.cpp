@@ -1,8 +1,8 @@
 // The algorithms allocate nothing once Data exists: every global operator new is counted.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
-#include <new>
+#include "support/allocation_counter.hpp"
+
 
 #include "dynamics/aba.hpp"
 #include "dynamics/configuration.hpp"
@@ -17,34 +17,7 @@
 #include "test_mechanisms.hpp"
 #include "test_models.hpp"
 
-// The replacement operators pair malloc with free; GCC inlines them and then mistakes the pair.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::size_t gAllocations = 0;
-}
-
-void* operator new(std::size_t n) {
-  ++gAllocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void* operator new(std::size_t n, std::align_val_t a) {
-  ++gAllocations;
-  const std::size_t al = static_cast<std::size_t>(a);
-  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+using yardsim::testing::allocationCount;
 
 using namespace yardsim::dynamics;
 using namespace yardsim::dynamics::testing;
@@ -64,7 +37,7 @@ TEST_CASE("RNEA, ABA, CRBA + Cholesky, energy and RK4 steps do not allocate") {
   f.addWorldFrame(3, Force::Constant(2.0));
   f.addBodyFrame(4, Force::Constant(1.0));
   double t = 0.0;
-  const std::size_t before = gAllocations;
+  const std::size_t before = allocationCount();
   for (int k = 0; k < 3; ++k) {
     rnea(m, d, q, v, tau, &f);
     biasForces(m, d, q, v);
@@ -77,7 +50,7 @@ TEST_CASE("RNEA, ABA, CRBA + Cholesky, energy and RK4 steps do not allocate") {
     rk.step(sys, t, q, v, 1e-3);
     se.step(sys, t, q, v, 1e-3);
   }
-  CHECK(gAllocations == before);
+  CHECK(allocationCount() == before);
 }
 
 TEST_CASE("closed-loop dynamics and projection do not allocate") {
@@ -89,7 +62,7 @@ TEST_CASE("closed-loop dynamics and projection do not allocate") {
   Rk4 rk(fb.model);
   Eigen::VectorXd q = fb.closedConfiguration(0.5), v = Eigen::VectorXd::Zero(3), tau = Eigen::VectorXd::Zero(3);
   double t = 0.0;
-  const std::size_t before = gAllocations;
+  const std::size_t before = allocationCount();
   for (int k = 0; k < 3; ++k) {
     constrainedForwardDynamics(fb.model, d, q, v, tau);
     rk.step(sys, t, q, v, 1e-3);
@@ -97,5 +70,5 @@ TEST_CASE("closed-loop dynamics and projection do not allocate") {
     projectPositions(fb.model, d, q);
     projectVelocities(fb.model, d, q, v);
   }
-  CHECK(gAllocations == before);
+  CHECK(allocationCount() == before);
 }

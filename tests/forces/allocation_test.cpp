@@ -2,8 +2,8 @@
 // reports of every provider in this folder, with every global operator new counted.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
-#include <new>
+#include "support/allocation_counter.hpp"
+
 #include <vector>
 
 #include "force_rig.hpp"
@@ -12,54 +12,7 @@
 #include "forces/gravity.hpp"
 #include "forces/wire_rope.hpp"
 
-// The replacement operators pair malloc with free; GCC inlines them and then mistakes the pair.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-namespace {
-std::size_t gAllocations = 0;
-}
-
-void* operator new(std::size_t n) {
-  ++gAllocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) {
-  return operator new(n);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-  ++gAllocations;
-  const std::size_t al = static_cast<std::size_t>(a);
-  if (void* p = std::aligned_alloc(al, (n + al - 1) / al * al)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-  return operator new(n, a);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
+using yardsim::testing::allocationCount;
 
 using namespace yardsim;
 using namespace yardsim::forces;
@@ -94,7 +47,7 @@ TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at 
   const Stage s = r.stage();
   dynamics::ExternalForces f(m);
   Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
-  const std::size_t before = gAllocations;
+  const std::size_t before = allocationCount();
   double sink = 0.0;
   for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&gravity, &wire, &eq, &load}) {
     fp->evaluate(s, f, tau);
@@ -102,13 +55,13 @@ TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at 
   }
   sink += wire.tension(s) + wire.length(s) + eq.tension(s) + eq.length(s) + load.at(1.5).force.x();
   sink += wire.exceedsBreakingLoad() ? 1.0 : 0.0;
-  const std::size_t after = gAllocations;
+  const std::size_t after = allocationCount();
   CHECK(after == before);
   // (the counter counts) => a vector that escapes is seen
   std::vector<double> probe(100, 1.0);
   volatile double read = probe[37];
   CHECK(read == 1.0);
-  CHECK(gAllocations > after);
+  CHECK(allocationCount() > after);
   CHECK(wire.lastTension() > 0.0);
   CHECK(eq.lastTension() > 0.0);
   CHECK(std::isfinite(sink));

@@ -227,6 +227,44 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   } else if (loops.IsDefined() && !loops.IsNull()) {
     lr.fail(loops, "", "expected a mapping of loop closures");
   }
+  // ({body, point}) => a point on a body, checked
+  auto point = [&](const Reader& rd, const YAML::Node& n, const std::string& k) {
+    MechanicsSpec::Point out{"world", Vector3::Zero()};
+    if (!rd.keys(n, {"body", "point"}, k)) return out;
+    out.first = n["body"] ? n["body"].as<std::string>() : "world";
+    if (!names.count(out.first)) {
+      std::vector<std::string> known(names.begin(), names.end());
+      const std::string hint = didYouMean(out.first, known);
+      rd.fail(n["body"], k + ".body", "unknown body '" + out.first + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+    }
+    out.second = rd.vec3(n["point"], k + ".point", Vector3::Zero());
+    return out;
+  };
+  // (a list of points) => the points, at least `least` of them
+  auto points = [&](const Reader& rd, const YAML::Node& n, const std::string& k, std::size_t least) {
+    std::vector<MechanicsSpec::Point> out;
+    if (!n.IsSequence() || n.size() < least) {
+      rd.fail(n, k, "expected a list of at least " + std::to_string(least) + " points {body, point: [x, y, z]}");
+      return out;
+    }
+    for (std::size_t i = 0; i < n.size(); ++i) out.push_back(point(rd, n[i], k + "[" + std::to_string(i) + "]"));
+    return out;
+  };
+  // (EA, L0, damping, min_length, mbl) => the rope material, checked
+  auto material = [](const Reader& rd, const YAML::Node& n, const std::string& k) {
+    MechanicsSpec::Material m;
+    m.ea = rd.number(n["EA"], k + ".EA", 0.0, true);
+    m.l0 = rd.number(n["L0"], k + ".L0", 0.0, true);
+    m.damping = rd.number(n["damping"], k + ".damping", 0.0);
+    m.minLength = rd.number(n["min_length"], k + ".min_length", 0.01);
+    m.mbl = rd.number(n["mbl"], k + ".mbl", 0.0);
+    if (n["EA"] && !(m.ea > 0)) rd.fail(n["EA"], k + ".EA", "EA must be > 0 N");
+    if (n["L0"] && !(m.l0 > 0)) rd.fail(n["L0"], k + ".L0", "L0 must be > 0 m");
+    if (m.damping < 0) rd.fail(n["damping"], k + ".damping", "damping must be >= 0 N s/m");
+    return m;
+  };
+  const std::vector<std::string> materialKeys{"EA", "L0", "damping", "min_length", "mbl"};
+
   const YAML::Node ropes = p.node("ropes");
   const Reader rr{report, "ropes"};
   if (ropes.IsMap()) {
@@ -235,39 +273,43 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       rope.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       const std::string k = rope.name;
-      if (!rr.keys(n, {"path", "EA", "L0", "damping", "parts", "min_length", "mbl"}, k)) continue;
-      const YAML::Node path = n["path"];
-      if (!path.IsSequence() || path.size() < 2) {
-        rr.fail(path, k + ".path", "expected a list of at least two points {body, point: [x, y, z]}: "
-                                   "first end, sheaves, last end");
-      } else {
-        for (std::size_t i = 0; i < path.size(); ++i) {
-          const std::string pk = k + ".path[" + std::to_string(i) + "]";
-          if (!rr.keys(path[i], {"body", "point"}, pk)) continue;
-          const std::string body = path[i]["body"] ? path[i]["body"].as<std::string>() : "world";
-          if (!names.count(body)) {
-            std::vector<std::string> known(names.begin(), names.end());
-            const std::string hint = didYouMean(body, known);
-            rr.fail(path[i]["body"], pk + ".body",
-                    "unknown body '" + body + "'" + (hint.empty() ? "" : " (" + hint + ")"));
-          }
-          rope.path.emplace_back(body, rr.vec3(path[i]["point"], pk + ".point", Vector3::Zero()));
-        }
-      }
-      rope.ea = rr.number(n["EA"], k + ".EA", 0.0, true);
-      rope.l0 = rr.number(n["L0"], k + ".L0", 0.0, true);
-      rope.damping = rr.number(n["damping"], k + ".damping", 0.0);
-      rope.minLength = rr.number(n["min_length"], k + ".min_length", 0.01);
-      rope.mbl = rr.number(n["mbl"], k + ".mbl", 0.0);
+      auto keys = materialKeys;
+      keys.insert(keys.end(), {"path", "parts"});
+      if (!rr.keys(n, keys, k)) continue;
+      rope.path = points(rr, n["path"], k + ".path", 2);
+      rope.material = material(rr, n, k);
       rope.parts = static_cast<int>(rr.number(n["parts"], k + ".parts", 1.0));
-      if (n["EA"] && !(rope.ea > 0)) rr.fail(n["EA"], k + ".EA", "EA must be > 0 N");
-      if (n["L0"] && !(rope.l0 > 0)) rr.fail(n["L0"], k + ".L0", "L0 must be > 0 m");
-      if (rope.damping < 0) rr.fail(n["damping"], k + ".damping", "damping must be >= 0 N s/m");
       if (rope.parts < 1) rr.fail(n["parts"], k + ".parts", "parts must be >= 1");
       spec.ropes.push_back(std::move(rope));
     }
   } else if (ropes.IsDefined() && !ropes.IsNull()) {
     rr.fail(ropes, "", "expected a mapping of wire ropes");
+  }
+
+  const YAML::Node eqs = p.node("equalizers");
+  const Reader er{report, "equalizers"};
+  if (eqs.IsMap()) {
+    for (auto it = eqs.begin(); it != eqs.end(); ++it) {
+      MechanicsSpec::Equalizer eq;
+      eq.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      const std::string k = eq.name;
+      auto keys = materialKeys;
+      keys.insert(keys.end(), {"sheave", "branches"});
+      if (!er.keys(n, keys, k)) continue;
+      eq.sheave = point(er, n["sheave"], k + ".sheave");
+      const YAML::Node br = n["branches"];
+      if (!br.IsSequence() || br.size() < 2) {
+        er.fail(br, k + ".branches", "expected a list of at least 2 branches, each a list of points");
+      } else {
+        for (std::size_t j = 0; j < br.size(); ++j)
+          eq.branches.push_back(points(er, br[j], k + ".branches[" + std::to_string(j) + "]", 1));
+      }
+      eq.material = material(er, n, k);
+      spec.equalizers.push_back(std::move(eq));
+    }
+  } else if (eqs.IsDefined() && !eqs.IsNull()) {
+    er.fail(eqs, "", "expected a mapping of equalizers");
   }
   return spec;
 }
@@ -279,7 +321,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes};
+  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers};
   const auto& m = out.model;
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);

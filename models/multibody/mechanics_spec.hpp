@@ -30,16 +30,28 @@ struct MechanicsSpec {
     dynamics::Transform X_AF, X_BG;
     std::uint8_t mask = 0;
   };
+  using Point = std::pair<std::string, dynamics::Vector3>;  // (body, p_B)
+  struct Material {
+    double ea = 0.0, l0 = 0.0, damping = 0.0, minLength = 0.01, mbl = 0.0;  // mbl 0: none
+  };
   struct Rope {
     std::string name;
-    std::vector<std::pair<std::string, dynamics::Vector3>> path;  // (body, p_B): end, sheaves, end
-    double ea = 0.0, l0 = 0.0, damping = 0.0, minLength = 0.01, mbl = 0.0;  // mbl 0: none
+    std::vector<Point> path;  // first end, sheaves, last end
+    Material material;
     int parts = 1;
+  };
+  // k >= 2 branches from one equalizing sheave, one total unstretched length and tension
+  struct Equalizer {
+    std::string name;
+    Point sheave;
+    std::vector<std::vector<Point>> branches;  // per branch: sheaves..., end
+    Material material;                         // l0: all branches together
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   std::vector<Body> bodies;
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
+  std::vector<Equalizer> equalizers;
 };
 
 // Where parsing reports a problem: (node, key path below the parameter, message, hint).
@@ -55,6 +67,7 @@ struct BuiltMechanics {
   Eigen::VectorXd q0, v0;
   std::vector<std::string> jointNames;  // per body index (0: world, "")
   std::vector<MechanicsSpec::Rope> ropes;
+  std::vector<MechanicsSpec::Equalizer> equalizers;
 };
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body

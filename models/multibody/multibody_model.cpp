@@ -41,17 +41,33 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       scratch_(mech_.model),
       spForces_(mech_.model),
       spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
-  // (rope specs) => wire rope providers, evaluated at every stage
+  // (rope and equalizer specs) => providers, evaluated at every stage
+  auto attach = [&](const MechanicsSpec::Point& p) {
+    return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
+  };
+  auto properties = [](const MechanicsSpec::Material& m) {
+    forces::RopeProperties props;
+    props.ea = m.ea;
+    props.l0 = m.l0;
+    props.damping = m.damping;
+    props.minLength = m.minLength;
+    if (m.mbl > 0) props.breakingLoad = m.mbl;
+    return props;
+  };
   for (const auto& r : mech_.ropes) {
     std::vector<forces::Attachment> path;
-    for (const auto& [body, p_B] : r.path) path.push_back({mech_.model.bodyIndex(body), p_B});
-    forces::RopeProperties props;
-    props.ea = r.ea;
-    props.l0 = r.l0;
-    props.damping = r.damping;
-    props.minLength = r.minLength;
-    if (r.mbl > 0) props.breakingLoad = r.mbl;
-    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path, props, r.parts));
+    for (const auto& p : r.path) path.push_back(attach(p));
+    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path,
+                                                        properties(r.material), r.parts));
+  }
+  for (const auto& e : mech_.equalizers) {
+    std::vector<std::vector<forces::Attachment>> branches;
+    for (const auto& b : e.branches) {
+      branches.emplace_back();
+      for (const auto& p : b) branches.back().push_back(attach(p));
+    }
+    equalizers_.push_back(std::make_unique<forces::Equalizer>(
+        e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
   }
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
@@ -70,6 +86,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
                            Eigen::VectorXd& tau) {
     const forces::Stage stage{t, mech_.model, d, q, v};
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
+    for (auto& e : equalizers_) e->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
   });
 }
@@ -119,6 +136,7 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   const forces::Stage stage{t, m, scratch_, x.q, x.v};
   double p = 0.0;
   for (const auto& r : ropes_) p += r->power(stage);
+  for (const auto& e : equalizers_) p += e->power(stage);
   // (drives, loads) => their forces at this state, and the power they deliver
   const MultibodyState* saved = current_;
   current_ = &x;
@@ -287,6 +305,7 @@ double MultibodyModel::energy() const {
              dynamics::potentialEnergy(mech_.model, view_, x.q);
   const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
+  for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
   return e;
 }
 
@@ -323,6 +342,18 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back({n + ".length", "m", [this, r, stage] { return ropes_[r]->length(stage()); }});
     out.push_back({n + ".unstretched_length", "m",
                    [this, r] { return ropes_[r]->unstretchedLength(state().tx); }});
+  }
+  for (std::size_t k = 0; k < equalizers_.size(); ++k) {
+    const forces::Equalizer& e = *equalizers_[k];
+    auto stage = [this] {
+      const auto& s = state();
+      return forces::Stage{s.tx, mech_.model, kinematicsOf(s.x), s.x.q, s.x.v};
+    };
+    out.push_back({e.name() + ".tension", "N", [&e, stage] { return e.tension(stage()); }});
+    out.push_back({e.name() + ".length", "m", [&e, stage] { return e.length(stage()); }});
+    for (int j = 0; j < e.branchCount(); ++j)
+      out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
+                     [&e, stage, j] { return e.branchLength(stage(), j); }});
   }
   out.push_back({"energy", "J", [this] { return energy(); }});
   out.push_back({"work", "J", [this] { return state().x.work; }});

@@ -14,6 +14,7 @@
 #include "dtss/atomic.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/equalizer.hpp"
 #include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
 #include "models/multibody/mechanics_spec.hpp"
@@ -72,6 +73,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
+  const forces::Equalizer& equalizer(std::size_t i) const { return *equalizers_[i]; }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
@@ -111,6 +113,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable double viewTime_ = -1.0;
   mutable const MultibodyState* viewState_ = nullptr;
   mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
+  mutable std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;

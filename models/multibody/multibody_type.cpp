@@ -34,6 +34,9 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "name: {body_a, frame_a, body_b, frame_b, constrain: point|axis|weld}"},
             {"ropes", ParamKind::Any, false, "{}", "",
              "name: {path: [{body, point}, ...], EA, L0, damping, parts, min_length, mbl}"},
+            {"equalizers", ParamKind::Any, false, "{}", "",
+             "name: {sheave: {body, point}, branches: [[{body, point}, ...], ...], EA, L0, damping, "
+             "min_length, mbl}"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
             {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},
@@ -79,6 +82,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             out.push_back({"joint", b.jointName.empty() ? b.name + "_joint" : b.jointName, ""});
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
+          for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
           return out;
         }});
 

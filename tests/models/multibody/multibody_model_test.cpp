@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <sstream>
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
@@ -18,7 +19,7 @@ namespace {
 models::Params params(const std::string& yaml) {
   models::Params p;
   const YAML::Node n = YAML::Load(yaml);
-  for (const char* key : {"bodies", "loops", "ropes", "gravity"})
+  for (const char* key : {"bodies", "loops", "ropes", "equalizers", "gravity"})
     p.set(key, n[key] ? n[key] : YAML::Load(key == std::string("gravity") ? "[0, 0, -9.81]" : "{}"), {});
   return p;
 }
@@ -137,4 +138,37 @@ bodies:
   // free joint: v = (omega_B, v_B) in the body frame; no rotation here
   CHECK(mb.state().x.v[3] == Approx(8.0 * 1.0 / 4.0).epsilon(1e-9));
   CHECK(mb.state().x.q[0] == Approx(0.5 * 2.0 * 1.0 + 2.0 * 1.0).epsilon(1e-9));  // x(3) = 1 + 2
+}
+
+TEST_CASE("a block on an equalizer rests where both branches carry m g l / (2 h)") {
+  // anchors at x = +-a, the block's sheave h below them; L0 chosen so that this is equilibrium
+  const double m = 500.0, g = 9.81, a = 2.0, h = 3.0, ea = 5.0e7;
+  const double l = std::sqrt(a * a + h * h), T = m * g * l / (2.0 * h), L = 2.0 * l;
+  const double l0 = L / (1.0 + T / ea);  // T = EA (L - L0) / L0
+  std::ostringstream yaml;
+  yaml.precision(17);
+  yaml << "gravity: [0, 0, -9.81]\nbodies:\n  block:\n    parent: world\n"
+       << "    joint: {type: prismatic, axis: [0, 0, 1], q0: " << -h << "}\n"
+       << "    mass: " << m << "\n    inertia: [10, 10, 10]\n"
+       << "equalizers:\n  eq:\n    sheave: {body: block, point: [0, 0, 0]}\n"
+       << "    branches: [[{body: world, point: [" << -a << ", 0, 0]}], [{body: world, point: [" << a
+       << ", 0, 0]}]]\n    EA: " << ea << "\n    L0: " << l0 << "\n    damping: 1.0e4\n";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  auto& mb = root.add<MultibodyModel>("m", build(yaml.str()), opt);
+  devs::Simulator sim(root);
+  sim.runUntil(2.0);
+  CHECK(mb.state().x.q[0] == Approx(-h).margin(1e-9));
+  std::vector<models::Channel> channels;
+  mb.channels(channels);
+  auto read = [&](const std::string& name) {
+    for (const auto& c : channels)
+      if (c.name == name) return c.read();
+    FAIL("no channel " << name);
+    return 0.0;
+  };
+  CHECK(read("eq.tension") == Approx(T).epsilon(1e-9));
+  CHECK(read("eq.branch0.length") == Approx(l).epsilon(1e-9));
+  CHECK(read("eq.length") == Approx(L).epsilon(1e-9));
 }

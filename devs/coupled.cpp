@@ -37,6 +37,24 @@ Model* Coupled::findComponent(std::string_view name) const {
   return it == byName_.end() ? nullptr : it->second;
 }
 
+void Coupled::coupleDirect(PortBase& from, PortBase& to) {
+  auto below = [this](const Model& m) {
+    for (const Model* p = m.parent(); p; p = p->parent())
+      if (p == this) return true;
+    return false;
+  };
+  if (!from.owner().isAtomic() || from.isInput() || !to.owner().isAtomic() || !to.isInput() ||
+      !below(from.owner()) || !below(to.owner()))
+    throw ModelError("in coupled model '" + path() + "': a direct coupling goes from an atomic's "
+                     "output to an atomic's input, both below this model; cannot couple " +
+                     describe(from) + " to " + describe(to));
+  if (from.type() != to.type())
+    throw ModelError("in coupled model '" + path() + "': value types differ: " + describe(from) +
+                     " cannot feed " + describe(to));
+  from.links_.push_back(&to);
+  ++couplings_;
+}
+
 void Coupled::couple(PortBase& from, PortBase& to) {
   const Model& src = from.owner();
   const Model& dst = to.owner();

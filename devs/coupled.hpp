@@ -29,6 +29,12 @@ class Coupled : public Model {
   // and their models' paths when the types differ or the direction is not EIC, IC or EOC
   void couple(PortBase& from, PortBase& to);
 
+  // (atomic output port, atomic input port, both anywhere below this model) => a direct
+  // coupling across the hierarchy. For what follows paths rather than the DEVS hierarchy: an
+  // actor's set-points reach the multibody model that owns the element it names. Throws
+  // ModelError like couple().
+  void coupleDirect(PortBase& from, PortBase& to);
+
   const std::vector<std::unique_ptr<Model>>& components() const { return components_; }
   Model* findComponent(std::string_view name) const;
   std::size_t couplingCount() const { return couplings_; }

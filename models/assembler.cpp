@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "models/mechanical_systems.hpp"
+#include "models/multibody/multibody_model.hpp"
 #include "models/port_types.hpp"
 
 namespace yardsim::models {
@@ -36,12 +38,52 @@ void build(const Instance& inst, devs::Coupled& c) {
   for (const auto& k : inst.couplings) c.couple(port(k.fromModel, k.fromPort), port(k.toModel, k.toPort));
 }
 
+
+// (instance path) => the DEVS model at that path below root
+devs::Model& modelAt(devs::Coupled& root, const std::string& path) {
+  devs::Model* m = &root;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const auto dot = path.find('.', start);
+    const std::string name = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    m = static_cast<devs::Coupled*>(m)->findComponent(name);
+    if (!m) throw std::logic_error("assembler: no model at '" + path + "'");
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return *m;
+}
+
+// (instance tree) => actors bound to a scene mechanical system, coupled to it directly
+void bindActors(const Instance& inst, devs::Coupled& root) {
+  for (const auto& child : inst.children) {
+    if (!child->atomic()) {
+      bindActors(*child, root);
+      continue;
+    }
+    if (child->boundSystem.empty()) continue;
+    devs::Model& actor = modelAt(root, child->path);
+    devs::Model& mb = *root.findComponent(child->boundSystem);
+    root.coupleDirect(*actor.findPort("setpoint"), *mb.findPort("setpoint"));
+    root.coupleDirect(*mb.findPort("event"), *actor.findPort("event"));
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<devs::Coupled> assemble(const Scene& scene) {
   auto root = std::make_unique<devs::Coupled>("scene");
   root->hideNameInPaths();
   build(scene.root, *root);
+  // (mechanical systems) => one multibody model each, at the scene root
+  for (const auto& system : scene.systems) {
+    MultibodyOptions opt;
+    opt.dt = scene.dt;
+    opt.method = scene.integrator;
+    opt.elementPaths = true;
+    root->addComponent(std::make_unique<MultibodyModel>(system->name, buildMechanics(system->spec), opt));
+  }
+  bindActors(scene.root, *root);
   return root;
 }
 

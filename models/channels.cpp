@@ -22,7 +22,8 @@ std::vector<Channel> collectChannels(const devs::Model& root) {
     if (const auto* obs = dynamic_cast<const Observable*>(m)) {
       const std::size_t first = out.size();
       obs->channels(out);
-      for (std::size_t i = first; i < out.size(); ++i) out[i].name = m->path() + "." + out[i].name;
+      if (!obs->channelNamesArePaths())
+        for (std::size_t i = first; i < out.size(); ++i) out[i].name = m->path() + "." + out[i].name;
     }
   }
   return out;

@@ -23,6 +23,9 @@ class Observable {
   virtual ~Observable() = default;
   // (out) => this model's channels appended, names relative to the model ("x", "hoist1.tension")
   virtual void channels(std::vector<Channel>& out) const = 0;
+  // true when the names are already full paths (a scene's mechanical system names its elements
+  // by their paths: crane1.hoist1.tension)
+  virtual bool channelNamesArePaths() const { return false; }
 };
 
 // (root model) => every channel of every Observable atomic below it, with full names

@@ -118,9 +118,10 @@ void checkCouplingGraph(const Instance& root, Diagnostics& diags) {
 
 namespace yardsim::models {
 
-void checkElementReferences(const Instance& root, Diagnostics& diags) {
-  const CouplingIndex index(root);
-  for (const Instance* a : index.atomics()) {
+void checkElementReferences(Scene& scene, Diagnostics& diags) {
+  const CouplingIndex index(scene.root);
+  for (const Instance* ac : index.atomics()) {
+    auto* a = const_cast<Instance*>(ac);  // the index only reads; references are rewritten here
     if (!a->type->references) continue;
     const auto refs = a->type->references(a->params);
     if (refs.empty()) continue;
@@ -128,10 +129,39 @@ void checkElementReferences(const Instance& root, Diagnostics& diags) {
     std::vector<const Instance*> targets;
     for (const auto& [dst, port] : index.reach(a, "setpoint"))
       if (dst->type->elements) targets.push_back(dst);
+    if (targets.empty() && !scene.systems.empty()) {
+      // (not coupled) => resolved in the scene's mechanical systems, from the actor's parent
+      const auto dot = a->path.rfind('.');
+      const std::string from = dot == std::string::npos ? "" : a->path.substr(0, dot);
+      for (const auto& ref : refs) {
+        std::vector<std::string> names;
+        std::map<std::string, std::string> owner;
+        for (const auto& s : scene.systems)
+          for (const auto& e : systemElements(*s))
+            if (e.kind == ref.kind) {
+              names.push_back(e.name);
+              owner[e.name] = s->name;
+            }
+        const std::string full = resolveName(from, ref.name, names);
+        if (full.empty()) {
+          diags.error(a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
+                      "no " + ref.kind + " '" + ref.name + "' in the scene's mechanics (seen from '" +
+                          (from.empty() ? std::string("the scene root") : from) + "')",
+                      didYouMean(ref.name, names));
+          continue;
+        }
+        if (!a->boundSystem.empty() && a->boundSystem != owner[full])
+          diags.error(a->where, a->keyPath, "an actor acts on one mechanical system only");
+        a->boundSystem = owner[full];
+        a->params.set(ref.param, YAML::Node(full), a->params.mark(ref.param));
+      }
+      continue;
+    }
     if (targets.empty()) {
       diags.error(a->where, a->keyPath,
                   "'" + a->path + "' acts on mechanical elements, but its `setpoint` port reaches "
-                  "no multibody model; couple it, e.g. {from: " + a->name + ".setpoint, to: <model>.setpoint}");
+                  "no multibody model and the scene has no mechanics; couple it, e.g. {from: " +
+                      a->name + ".setpoint, to: <model>.setpoint}");
       continue;
     }
     for (const auto& ref : refs)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/diagnostics.hpp"
+#include "models/mechanical_systems.hpp"
 #include "models/scene.hpp"
 
 namespace yardsim::models {
@@ -31,9 +32,10 @@ class CouplingIndex {
 
 void checkCouplingGraph(const Instance& root, Diagnostics& diags);
 
-// (scene) => an error for every mechanical element an actor names (through the model its
-// `setpoint` port reaches) that this model does not have, with "did you mean"; and for an actor
-// whose set-points reach no model that has elements
-void checkElementReferences(const Instance& root, Diagnostics& diags);
+// (scene) => every mechanical element an actor names, checked: through the model its `setpoint`
+// port reaches when it is coupled, otherwise resolved in the scene's mechanical systems from
+// where the actor sits (the actor is then bound to that system and its reference rewritten to
+// the element's full path). Errors with "did you mean" for names that exist nowhere.
+void checkElementReferences(Scene& scene, Diagnostics& diags);
 
 }  // namespace yardsim::models

@@ -1,5 +1,7 @@
 #include "models/resolved_listing.hpp"
 
+#include "models/mechanical_systems.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -54,6 +56,14 @@ std::string resolvedListing(const Scene& s) {
      << "models: " << atomics << " atomic, " << coupled << " coupled\n"
      << body.str() << "couplings:\n";
   couplings(s.root, os);
+  for (const auto& sys : s.systems) {
+    os << "mechanical system " << sys->name << " (multibody at the scene root):";
+    for (const auto& b : sys->spec.bodies) os << " " << b.name;
+    for (const auto& r : sys->spec.ropes) os << " rope:" << r.name;
+    for (const auto& e : sys->spec.equalizers) os << " equalizer:" << e.name;
+    for (const auto& l : sys->spec.loops) os << " loop:" << l.name;
+    os << "\n";
+  }
   os << "recorder: ";
   if (s.record.interval > 0) {
     os << "every " << s.record.interval << " s, channels";

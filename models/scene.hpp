@@ -35,12 +35,17 @@ struct Instance {
   const TypeInfo* type = nullptr;
   Params params;
   bool feedthrough = false;  // from the type, for these params
+  std::string boundSystem;   // an actor acting on a scene mechanical system (set-points routed there)
   // both: ports (for an atomic, from its type)
   std::vector<PortSpec> ports;
   // coupled
   std::string source;  // file that defines it (include) or "" when inline or atomic
   std::vector<std::unique_ptr<Instance>> children;
   std::vector<CouplingSpec> couplings;
+  // coupled: the fragment of mechanics this model contributes (`mechanics:`, `$name` resolved;
+  // undefined when it has none), and where it was written
+  YAML::Node mechanics{YAML::NodeType::Undefined};
+  SourceMark mechanicsWhere;
 
   bool atomic() const { return type != nullptr; }
   const Instance* child(const std::string& n) const;
@@ -51,6 +56,8 @@ struct RecordSpec {
   double interval = 0.0;              // s; 0: nothing recorded
   std::vector<std::string> channels;  // globs over channel names
 };
+
+struct MechanicalSystem;  // models/mechanical_systems.hpp
 
 struct Scene {
   std::filesystem::path file;
@@ -63,6 +70,9 @@ struct Scene {
   RecordSpec record;
   std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv
   Instance root;
+  // the mechanics of every coupled model, merged and split into mechanically connected
+  // systems (each becomes one multibody model)
+  std::vector<std::shared_ptr<const MechanicalSystem>> systems;
 };
 
 }  // namespace yardsim::models

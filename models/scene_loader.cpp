@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "models/coupling_graph.hpp"
+#include "models/mechanical_systems.hpp"
 #include "models/port_types.hpp"
 #include "models/sha256.hpp"
 #include "models/yaml_source.hpp"
@@ -17,10 +18,10 @@ namespace {
 
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
-                                         "components",     "couplings"};
+                                         "components",     "couplings",  "mechanics"};
 const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace"};
-const std::vector<std::string> kInlineKeys{"description", "params", "inputs",
-                                           "outputs",     "components", "couplings"};
+const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
+                                           "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
                                               "placement", "description"};
 const std::vector<std::string> kTraceSinks{"jsonl", "chrome", "csv"};
@@ -158,6 +159,17 @@ class Loader {
       }
     }
     couplings(inst, def["couplings"], f, joinKey(kp, "couplings"));
+    if (const YAML::Node mech = def["mechanics"]) {
+      if (!mech.IsMap()) {
+        d_.error(markOf(mech, f), joinKey(kp, "mechanics"),
+                 "expected a mapping with bodies, ropes, equalizers, loops, gravity");
+      } else {
+        inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
+        inst.mechanicsWhere = markOf(mech, f);
+        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity"}, f,
+                  joinKey(kp, "mechanics"), d_);
+      }
+    }
   }
 
   // (component definition) => an atomic or coupled child; false when it cannot be built at all
@@ -503,8 +515,9 @@ LoadResult loadScene(const fs::path& file) {
   LoadResult r;
   Loader loader(r.diagnostics);
   auto scene = loader.root(file);
+  if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
-  if (scene && !r.diagnostics.hasErrors()) checkElementReferences(scene->root, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

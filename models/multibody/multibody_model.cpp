@@ -355,11 +355,13 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
                      [&e, stage, j] { return e.branchLength(stage(), j); }});
   }
-  out.push_back({"energy", "J", [this] { return energy(); }});
-  out.push_back({"work", "J", [this] { return state().x.work; }});
-  out.push_back({"energy_balance", "J", [this] { return energy() - state().x.work; }});
+  // (system-wide quantities) => under the model's own name when element names are paths
+  const std::string own = opt_.elementPaths ? path() + "." : "";
+  out.push_back({own + "energy", "J", [this] { return energy(); }});
+  out.push_back({own + "work", "J", [this] { return state().x.work; }});
+  out.push_back({own + "energy_balance", "J", [this] { return energy() - state().x.work; }});
   if (m.nc > 0)
-    out.push_back({"loop_residual", "m", [this] {
+    out.push_back({own + "loop_residual", "m", [this] {
                      return dynamics::loopResidualNorm(mech_.model, view_, state().x.q);
                    }});
 }

@@ -58,6 +58,7 @@ struct MultibodyOptions {
   double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
+  bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
 };
 
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
@@ -68,6 +69,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
 
   const dynamics::Model& mechanics() const { return mech_.model; }
   void channels(std::vector<Channel>& out) const override;
+  bool channelNamesArePaths() const override { return opt_.elementPaths; }
   // (committed state) => kinetic + gravity potential + stored (rope) energy, J
   double energy() const;
   // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W

@@ -1,4 +1,5 @@
 #include "devs/coupled.hpp"
+#include "devs/simulator.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -83,4 +84,18 @@ TEST_CASE("a root with a hidden name leaves it out of the paths below it") {
   auto& hoist = crane.add<Collector>("hoist");
   CHECK(hoist.path() == "crane1.hoist");
   CHECK(scene.path() == "scene");
+}
+
+TEST_CASE("a direct coupling crosses the hierarchy between atomics below the model") {
+  Coupled root("root");
+  auto& a = root.add<Coupled>("a");
+  auto& gen = a.add<Emitter>("gen", std::vector<devs::Time>{1.0});
+  auto& b = root.add<Coupled>("b");
+  auto& col = b.add<Collector>("col");
+  CHECK_THROWS_WITH(a.coupleDirect(gen.out, col.in), Catch::Contains("both below this model"));
+  root.coupleDirect(gen.out, col.in);
+  devs::Simulator sim(root);
+  sim.run();
+  REQUIRE(col.state().bags.size() == 1);
+  CHECK(col.state().bags[0].first == 1.0);
 }

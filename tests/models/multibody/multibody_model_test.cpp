@@ -172,3 +172,40 @@ TEST_CASE("a block on an equalizer rests where both branches carry m g l / (2 h)
   CHECK(read("eq.branch0.length") == Approx(l).epsilon(1e-9));
   CHECK(read("eq.length") == Approx(L).epsilon(1e-9));
 }
+
+TEST_CASE("a rope passing its minimum breaking load raises one located warning event") {
+  // a block released with the rope just slack: the tension rises through 0.9 m g as it takes
+  // the load, which is above the rope's MBL
+  const char* yaml = R"(bodies:
+  block:
+    parent: world
+    joint: {name: lift, type: prismatic, axis: [0, 0, 1], q0: -10.0}
+    mass: 1000.0
+    inertia: [100, 100, 100]
+ropes:
+  hoist:
+    path: [{body: world, point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}]
+    EA: 1.0e8
+    L0: 10.0
+    damping: 2.0e5
+    mbl: 8829.0
+)";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  auto& mb = root.add<MultibodyModel>("m", build(yaml), opt);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(2.0);
+  std::vector<testing::Record> warnings;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "event" && r.value.find("over_mbl") != std::string::npos) warnings.push_back(r);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].t > 0.0);
+  CHECK(warnings[0].t < 0.1);  // the rope takes the load within a few milliseconds
+  // the event reports the tension at the located time: the MBL, to the location tolerance
+  const std::string& v = warnings[0].value;
+  CHECK(std::stod(v.substr(v.find("over_mbl ") + 9)) == Approx(8829.0).epsilon(1e-3));
+  (void)mb;
+}

@@ -154,7 +154,14 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   const double p0 = nonConservativePower(x, t);
   current_ = &x;
   double time = t;
-  integrator_->step(system_, time, x.q, x.v, dt);
+  try {
+    integrator_->step(system_, time, x.q, x.v, dt);
+  } catch (const devs::SimulationError&) {
+    throw;
+  } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
+    throw NumericalError("multibody '" + path() + "'", t, e.what(),
+                         "a smaller dt, softer drives (bandwidth), or an implicit integrator");
+  }
   if (x.q.allFinite() && x.v.allFinite()) {
     x.work += 0.5 * dt * (p0 + nonConservativePower(x, t + dt));
     return;

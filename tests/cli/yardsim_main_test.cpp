@@ -118,3 +118,24 @@ TEST_CASE("yardsim list-types and list-channels") {
   CHECK(ch.status == 0);
   CHECK_THAT(ch.out, Catch::Contains("ef.transd.throughput[1/s]"));
 }
+
+TEST_CASE("a multibody scene that blows up exits 2 naming the model, the body and the time") {
+  yardsim::testing::SceneDir dir;
+  // a 1 kg block on a 1e12 N rope: omega = 3e5 rad/s, far beyond RK4's limit at dt = 10 ms
+  const auto scene = dir.write("stiff.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  bodies:
+    block: {parent: world, joint: {name: drop, type: prismatic, axis: [0, 0, 1], q0: -10.001}, mass: 1, inertia: [1, 1, 1]}
+  ropes:
+    hoist: {path: [{body: world, point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], EA: 1.0e12, L0: 10}
+record: {interval: 0.01}
+until: 10
+)");
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out, Catch::Contains("numerical failure") && Catch::Contains("multibody 'mechanics'"));
+  CHECK_THAT(r.out, Catch::Contains("block") && Catch::Contains("suggestion"));
+  CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 1);
+}

@@ -1,12 +1,11 @@
 #include "dynamics/multibody_system.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "dynamics/aba.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/projection.hpp"
-
-#include <sstream>
 
 namespace yardsim::dynamics {
 
@@ -19,7 +18,7 @@ MultibodySystem::MultibodySystem(const Model& model)
       tauStage_(Eigen::VectorXd::Zero(model.nv)) {}
 
 namespace {
-// (what, index of the first non-finite entry, body) => a diagnosis with a suggestion
+// (what, body, t) => a diagnosis naming the body, with a suggestion
 [[noreturn]] void diverged(const Model& m, double t, const char* what, int body) {
   std::ostringstream s;
   s << "yardsim::dynamics: " << what << " of body '" << m.names[body] << "' is not finite at t = " << t

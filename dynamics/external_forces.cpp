@@ -5,6 +5,7 @@ namespace yardsim::dynamics {
 ExternalForces::ExternalForces(const Model& m) : body_(m.nbodies, Force::Zero()), world_(m.nbodies, Force::Zero()) {}
 
 void ExternalForces::clear() {
+  if (empty()) return;  // nothing was added since the last clear
   for (auto& f : body_) f.setZero();
   for (auto& f : world_) f.setZero();
   hasWorld_ = hasBody_ = false;

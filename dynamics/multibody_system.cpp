@@ -1,5 +1,8 @@
 #include "dynamics/multibody_system.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include "dynamics/aba.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/projection.hpp"
@@ -14,7 +17,31 @@ MultibodySystem::MultibodySystem(const Model& model)
       tau_(Eigen::VectorXd::Zero(model.nv)),
       tauStage_(Eigen::VectorXd::Zero(model.nv)) {}
 
+namespace {
+// (what, body, t) => a diagnosis naming the body, with a suggestion
+[[noreturn]] void diverged(const Model& m, double t, const char* what, int body) {
+  std::ostringstream s;
+  s << "yardsim::dynamics: " << what << " of body '" << m.names[body] << "' is not finite at t = " << t
+    << " s; the integration has diverged: try a smaller step, or an implicit integrator for stiff forces";
+  throw SimulationError(s.str());
+}
+
+int firstNonFinite(const Eigen::VectorXd& x) {
+  for (int k = 0; k < x.size(); ++k) {
+    if (!std::isfinite(x[k])) return k;
+  }
+  return -1;
+}
+}  // namespace
+
 void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) {
+  // (q, v) => refuse a state that has already diverged
+  if (!q.allFinite() || !v.allFinite()) {
+    for (int i = 1; i < model_.nbodies; ++i) {
+      if (!q.segment(model_.idxQ[i], model_.jointNq[i]).allFinite()) diverged(model_, t, "the configuration", i);
+      if (!v.segment(model_.idxV[i], model_.jointNv[i]).allFinite()) diverged(model_, t, "the velocity", i);
+    }
+  }
   // (t, q, v) => forces from the callback (with kinematics available in scratch)
   forces_.clear();
   tauStage_ = tau_;
@@ -29,6 +56,8 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
   } else {
     a = constrainedForwardDynamics(model_, data_, q, v, tauStage_, f, stab_);
   }
+  // (a) => the body whose acceleration is not finite, if any
+  if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
 }
 
 void MultibodySystem::afterStep(double, Eigen::VectorXd& q, Eigen::VectorXd& v) {

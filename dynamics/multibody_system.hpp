@@ -4,6 +4,7 @@
 // forward dynamics when the model has loops, with optional Baumgarte terms and post-step projection.
 
 #include <functional>
+#include <stdexcept>
 
 #include "dynamics/constrained_dynamics.hpp"
 #include "dynamics/data.hpp"
@@ -12,6 +13,12 @@
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
+
+/// Thrown when the state or the accelerations stop being finite; the message names the body.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class MultibodySystem final : public AccelerationSource {
  public:
@@ -29,6 +36,8 @@ class MultibodySystem final : public AccelerationSource {
     projectTol_ = tol;
   }
 
+  /// (t, q, v) => a; throws SimulationError naming the first body whose state or acceleration is
+  /// not finite.
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
 

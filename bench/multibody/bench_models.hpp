@@ -8,6 +8,10 @@
 
 namespace yardsim::bench {
 
+/// The stepping cases (RK4Step, ODEWorldStep, ODEQuickStep) restart the chain from rest every
+/// kResetSteps steps of 1 ms, untimed, so that they integrate the same motion.
+inline constexpr long kResetSteps = 200;
+
 inline std::string linkName(int i) {
   std::string s("link");
   s.append(std::to_string(i));

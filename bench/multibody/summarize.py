@@ -55,7 +55,14 @@ def main():
         cells = []
         for n in ns:
             v = t.get(f"{c}/{n}")
-            cells.append("" if v is None else (f"{v / 1e3:.3g} µs" if v >= 1e3 else f"{v:.3g} ns"))
+            if v is None:
+                cells.append("")
+            elif v >= 1e6:
+                cells.append(f"{v / 1e6:.3g} ms")
+            elif v >= 1e3:
+                cells.append(f"{v / 1e3:.3g} µs")
+            else:
+                cells.append(f"{v:.3g} ns")
         print(f"| {c} | " + " | ".join(cells) + " |")
     print()
     for c in ("ABA", "RNEA"):

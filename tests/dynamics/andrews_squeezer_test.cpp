@@ -1,7 +1,8 @@
 // Andrews' squeezing mechanism (Hairer & Wanner, Solving ODEs II, sec. VII.7; the "andrews"
 // problem of the Bari test set for IVP solvers): seven planar bodies, one loop system closed at a
 // single point by three revolute cuts, a stiff spring (c0 = 4530 N/m) and a driving torque. The
-// reference positions at t = 0.03 s are the published ones; we require six significant digits.
+// reference positions (and velocities) at t = 0.03 s are the published ones; we require six
+// significant digits.
 #include <catch2/catch.hpp>
 
 #include "dynamics/integrators/rk4.hpp"
@@ -105,4 +106,12 @@ TEST_CASE("Andrews' squeezing mechanism reproduces Hairer & Wanner's positions a
   CHECK(q[a.delta] == Approx(0.5244099658805304e+00).epsilon(tol));
   CHECK(q[a.omega] == Approx(0.5347301163226948e+00).epsilon(tol));
   CHECK(q[a.epsilon] == Approx(0.1048080741042263e+01).epsilon(tol));
+  // velocities (the test set's y(8..14)), also to six significant digits
+  CHECK(v[a.beta] == Approx(0.1139920302151208e+04).epsilon(tol));
+  CHECK(v[a.theta] == Approx(-0.1424379294994111e+04).epsilon(tol));
+  CHECK(v[a.gamma] == Approx(0.1103291221937134e+02).epsilon(tol));
+  CHECK(v[a.phi] == Approx(0.1929337464421385e+02).epsilon(tol));
+  CHECK(v[a.delta] == Approx(0.5735699284790808e+00).epsilon(tol));
+  CHECK(v[a.omega] == Approx(-0.1929337464421385e+02).epsilon(tol));
+  CHECK(v[a.epsilon] == Approx(0.3231791658026955e+00).epsilon(tol));
 }

@@ -207,3 +207,21 @@ TEST_CASE("double pendulum released horizontally: RK4 energy drift below 1e-8 ov
   INFO("drift " << drift);
   CHECK(drift < 1e-8);
 }
+
+TEST_CASE("a random tree with every joint type conserves its energy (bias forces are physical)") {
+  std::mt19937 rng(33);
+  const Model m = randomTree(rng, 9);
+  Data d(m);
+  MultibodySystem sys(m);
+  Rk4 rk(m);
+  Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv);
+  const double E0 = kineticEnergy(m, d, q, v) + potentialEnergy(m, d, q);
+  const double T0 = kineticEnergy(m, d, q, v);
+  double t = 0.0, err = 0.0;
+  for (int k = 0; k < 2000 / kScale; ++k) {
+    rk.step(sys, t, q, v, 1e-4);
+    err = std::max(err, std::abs(kineticEnergy(m, d, q, v) + potentialEnergy(m, d, q) - E0));
+  }
+  INFO("energy error " << err << " of kinetic energy " << T0);
+  CHECK(err < 1e-9 * std::max(1.0, T0));
+}

@@ -141,6 +141,54 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
   }
 }
 
+// ({box | cylinder | sphere | mesh, pose}) => what the replay draws for the body
+MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::string& key) {
+  using Shape = MechanicsSpec::Visual::Shape;
+  MechanicsSpec::Visual v;
+  const char* expected = "expected one of {box: [lx, ly, lz]}, {cylinder: {radius, length}}, "
+                         "{sphere: radius}, {mesh: file}, with an optional pose: {xyz, rpy_deg}";
+  if (!n.IsMap()) {
+    r.fail(n, key, expected);
+    return v;
+  }
+  if (!r.keys(n, {"box", "cylinder", "sphere", "mesh", "pose"}, key)) return v;
+  const int shapes = (n["box"] ? 1 : 0) + (n["cylinder"] ? 1 : 0) + (n["sphere"] ? 1 : 0) + (n["mesh"] ? 1 : 0);
+  if (shapes != 1) {
+    r.fail(n, key, std::string(shapes ? "more than one shape; " : "no shape; ") + expected);
+    return v;
+  }
+  auto positive = [&](const YAML::Node& at, const std::string& k, double x) {
+    if (!(x > 0)) r.fail(at, k, "must be > 0 m");
+  };
+  if (const YAML::Node b = n["box"]) {
+    v.shape = Shape::Box;
+    v.size = r.vec3(b, key + ".box", Vector3::Zero());
+    for (int i = 0; i < 3; ++i) positive(b, key + ".box", v.size[i]);
+  } else if (const YAML::Node c = n["cylinder"]) {
+    v.shape = Shape::Cylinder;
+    if (r.keys(c, {"radius", "length"}, key + ".cylinder")) {
+      v.size[0] = r.number(c["radius"], key + ".cylinder.radius", 0.0, true);
+      v.size[1] = r.number(c["length"], key + ".cylinder.length", 0.0, true);
+      if (c["radius"]) positive(c["radius"], key + ".cylinder.radius", v.size[0]);
+      if (c["length"]) positive(c["length"], key + ".cylinder.length", v.size[1]);
+    }
+  } else if (const YAML::Node s = n["sphere"]) {
+    v.shape = Shape::Sphere;
+    v.size[0] = r.number(s, key + ".sphere", 0.0);
+    positive(s, key + ".sphere", v.size[0]);
+  } else {
+    v.shape = Shape::Mesh;
+    const YAML::Node m = n["mesh"];
+    v.file = m.IsScalar() ? m.Scalar() : "";
+    r.fail(m, key + ".mesh", "mesh geometry is not supported yet; use box, cylinder or sphere");
+  }
+  if (n["pose"]) {
+    v.posed = true;
+    v.X_BG = r.pose(n["pose"], key + ".pose");
+  }
+  return v;
+}
+
 }  // namespace
 
 MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
@@ -186,6 +234,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
                         "Ixz, Iyz] about the centre of mass, kg m^2)");
     }
     if (const YAML::Node g = n["geometry"]) {
+      b.visual = visual(r, g, b.name + ".geometry");
       YAML::Emitter e;
       e.SetMapFormat(YAML::Flow);
       e.SetSeqFormat(YAML::Flow);
@@ -321,8 +370,9 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers};
+  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers, {}};
   const auto& m = out.model;
+  out.visuals.resize(static_cast<std::size_t>(m.nbodies));
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);
   out.jointNames.assign(static_cast<std::size_t>(m.nbodies), "");
@@ -330,6 +380,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
   for (const auto& b : spec.bodies) {
     const int i = m.bodyIndex(b.name);
     out.jointNames[static_cast<std::size_t>(i)] = b.jointName;
+    out.visuals[static_cast<std::size_t>(i)] = b.visual;
     for (std::size_t k = 0; k < b.q0.size(); ++k) out.q0[m.idxQ[i] + static_cast<int>(k)] = b.q0[k];
     for (std::size_t k = 0; k < b.v0.size(); ++k) out.v0[m.idxV[i] + static_cast<int>(k)] = b.v0[k];
   }

@@ -16,6 +16,17 @@
 namespace yardsim::models {
 
 struct MechanicsSpec {
+  // What the report's 3D replay draws for a body; not used by the dynamics. Shape Auto is the
+  // uniform box with the body's mass and principal moments of inertia.
+  struct Visual {
+    enum class Shape { Auto, Box, Cylinder, Sphere, Mesh };
+    Shape shape = Shape::Auto;
+    dynamics::Vector3 size = dynamics::Vector3::Zero();  // box: lx, ly, lz; cylinder: radius,
+                                                         // length (along z); sphere: radius
+    std::string file;                                    // mesh
+    bool posed = false;  // false: centred on the centre of mass, along the body axes
+    dynamics::Transform X_BG = dynamics::Transform::identity();  // shape frame in the body frame
+  };
   struct Body {
     std::string name, parent, jointName, geometry;
     dynamics::Joint joint;
@@ -24,6 +35,7 @@ struct MechanicsSpec {
     dynamics::Vector3 com = dynamics::Vector3::Zero();
     dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
     std::vector<double> q0, v0;  // empty: neutral / at rest
+    Visual visual;
   };
   struct Loop {
     std::string name, bodyA, bodyB;
@@ -68,6 +80,7 @@ struct BuiltMechanics {
   std::vector<std::string> jointNames;  // per body index (0: world, "")
   std::vector<MechanicsSpec::Rope> ropes;
   std::vector<MechanicsSpec::Equalizer> equalizers;
+  std::vector<MechanicsSpec::Visual> visuals;  // per body index (0: world)
 };
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body

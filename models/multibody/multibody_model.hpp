@@ -19,6 +19,7 @@
 #include "models/channels.hpp"
 #include "models/multibody/mechanics_spec.hpp"
 #include "models/multibody/messages.hpp"
+#include "models/report/replay.hpp"
 
 namespace yardsim::models {
 
@@ -61,7 +62,7 @@ struct MultibodyOptions {
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
 };
 
-class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
+class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable, public Replayable {
  public:
   MultibodyModel(std::string name, BuiltMechanics mechanics, const MultibodyOptions& options);
   devs::InPort<SetPoint>& setpoint = addInPort<SetPoint>("setpoint");
@@ -80,6 +81,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
+  const MultibodyOptions& options() const { return opt_; }
+  void replayBodies(Replay& out) const override;
+  void replayFrame(Replay& out, std::size_t firstBody) const override;
 
  protected:
   void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;

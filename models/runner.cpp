@@ -9,6 +9,9 @@
 #include "devs/jsonl_trace_sink.hpp"
 #include "dtss/grid.hpp"
 #include "models/channels.hpp"
+#include "models/report/gltf_writer.hpp"
+#include "models/report/replay_recorder.hpp"
+#include "models/report/run_summary.hpp"
 #include "models/timeseries_writer.hpp"
 
 namespace yardsim::models {
@@ -41,6 +44,24 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
         opt.outdir / "timeseries.csv", scene,
         selectChannels(collectChannels(root), scene.record.channels));
 
+  // (record grid, frame budget) => replay frames every `stride` samples
+  ReplayRecorder replay(root);
+  std::int64_t stride = 1;
+  if (interval > 0.0 && std::isfinite(opt.until) && opt.maxReplayFrames > 0)
+    stride = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::ceil(opt.until / interval / static_cast<double>(opt.maxReplayFrames))));
+  const bool replaying = recorder && !replay.empty();
+  RunFacts facts;
+  facts.until = opt.until;
+  facts.replayInterval = replaying ? interval * static_cast<double>(stride) : 0.0;
+  // (facts) => replay.glb and run.json, also when the run fails
+  auto finish = [&] {
+    facts.tEnd = sim.time();
+    facts.wall = wall();
+    if (replaying) writeGlb(replay.replay(), opt.outdir / "replay.glb");
+    writeRunSummary(opt.outdir / "run.json", scene, root, facts);
+  };
+
   RunResult result;
   double lastReport = 0.0;
   auto report = [&](double t) {
@@ -50,22 +71,32 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     lastReport = w;
     opt.progress({t, opt.until, w});
   };
-  if (recorder) recorder->sample(0.0);
-  for (std::int64_t k = 1;; ++k) {
-    // (events up to the next sample time) => executed, then one row
-    const double next = recorder ? std::min(dtss::gridOffset(interval, k), opt.until) : opt.until;
-    std::size_t steps = 0;
-    while (sim.nextEventTime() <= next) {
-      sim.step();
-      if (++steps % 64 == 0) report(sim.time());
+  try {
+    if (recorder) recorder->sample(0.0);
+    if (replaying) replay.sample(0.0);
+    for (std::int64_t k = 1;; ++k) {
+      // (events up to the next sample time) => executed, then one row
+      const double next = recorder ? std::min(dtss::gridOffset(interval, k), opt.until) : opt.until;
+      std::size_t steps = 0;
+      while (sim.nextEventTime() <= next) {
+        sim.step();
+        if (++steps % 64 == 0) report(sim.time());
+      }
+      if (std::isinf(next)) break;  // until no event is left
+      sim.runUntil(next);
+      if (recorder) recorder->sample(next);
+      if (replaying && (k % stride == 0 || next >= opt.until)) replay.sample(next);
+      report(next);
+      if (next >= opt.until) break;
+      if (std::isinf(opt.until) && sim.nextEventTime() == devs::kInfinity) break;
     }
-    if (std::isinf(next)) break;  // until no event is left
-    sim.runUntil(next);
-    if (recorder) recorder->sample(next);
-    report(next);
-    if (next >= opt.until) break;
-    if (std::isinf(opt.until) && sim.nextEventTime() == devs::kInfinity) break;
+  } catch (const std::exception& e) {
+    facts.status = "failed";
+    facts.message = e.what();
+    finish();
+    throw;
   }
+  finish();
   result.tEnd = sim.time();
   result.wall = wall();
   result.samples = recorder ? recorder->rows() : 0;

@@ -25,6 +25,7 @@ struct RunOptions {
   std::vector<std::string> trace;   // sinks: jsonl (trace.jsonl), chrome (trace.json), csv (trace.csv)
   std::function<void(const Progress&)> progress;  // called at most every progressPeriod
   double progressPeriod = 0.1;      // s of wall time
+  std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below
 };
 
 struct RunResult {
@@ -34,7 +35,9 @@ struct RunResult {
   devs::SimulatorStats stats;
 };
 
-// (scene, its assembled model, options) => the run; throws what the simulation throws
+// (scene, its assembled model, options) => the run: OUTDIR/timeseries.csv and the traces asked
+// for, OUTDIR/replay.glb (the bodies' poses on the record grid) when the scene has bodies and
+// records, and OUTDIR/run.json; throws what the simulation throws, after writing what it has
 RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& options);
 
 }  // namespace yardsim::models

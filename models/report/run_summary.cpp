@@ -1,0 +1,91 @@
+#include "models/report/run_summary.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "devs/trace_format.hpp"
+#include "models/multibody/multibody_model.hpp"
+#include "models/timeseries_writer.hpp"
+
+namespace yardsim::models {
+namespace {
+
+using devs::appendJsonNumber;
+using devs::appendJsonString;
+
+// (instance tree) => "{path, kind}" of every actor: an atomic with `started` and `finished` ports
+void actors(const Instance& in, std::string& out) {
+  if (in.atomic()) {
+    if (in.port("started") && in.port("finished")) {
+      out += out.back() == '[' ? "{\"path\":" : ",{\"path\":";
+      appendJsonString(out, in.path);
+      out += ",\"kind\":";
+      appendJsonString(out, in.type->name);
+      out += "}";
+    }
+    return;
+  }
+  for (const auto& c : in.children) actors(*c, out);
+}
+
+// (model tree) => "{model, method, dt}" of every multibody model
+void systems(const devs::Model& m, std::string& out) {
+  if (!m.isAtomic()) {
+    for (const auto& c : static_cast<const devs::Coupled&>(m).components()) systems(*c, out);
+    return;
+  }
+  if (const auto* mb = dynamic_cast<const MultibodyModel*>(&m)) {
+    out += out.back() == '[' ? "{\"model\":" : ",{\"model\":";
+    appendJsonString(out, mb->path());
+    out += ",\"method\":";
+    appendJsonString(out, mb->options().method);
+    out += ",\"dt\":";
+    appendJsonNumber(out, mb->options().dt);
+    out += "}";
+  }
+}
+
+}  // namespace
+
+std::string runSummaryJson(const Scene& scene, const devs::Model& root, const RunFacts& f) {
+  std::string o = "{\"yardsim\":";
+  appendJsonString(o, kVersion);
+  auto field = [&](const char* key) { o += std::string(",\"") + key + "\":"; };
+  field("scene"); appendJsonString(o, scene.name);
+  field("file"); appendJsonString(o, scene.file.string());
+  field("scene_sha256"); appendJsonString(o, scene.sha256);
+  field("integrator"); appendJsonString(o, scene.integrator);
+  field("step"); appendJsonNumber(o, scene.dt);
+  field("until"); appendJsonNumber(o, f.until);
+  field("t_end"); appendJsonNumber(o, f.tEnd);
+  field("wall"); appendJsonNumber(o, f.wall);
+  field("real_time_factor"); appendJsonNumber(o, f.wall > 0 ? f.tEnd / f.wall : 0.0);
+  field("status"); appendJsonString(o, f.status);
+  field("message"); appendJsonString(o, f.message);
+  field("record_interval"); appendJsonNumber(o, scene.record.interval);
+  field("replay_interval"); appendJsonNumber(o, f.replayInterval);
+  field("systems"); o += "[";
+  systems(root, o);
+  o += "]";
+  field("actors"); o += "[";
+  actors(scene.root, o);
+  o += "]";
+  field("report"); o += "{\"plots\":[";
+  for (std::size_t i = 0; i < scene.report.plots.size(); ++i)
+    appendJsonString(o += i ? "," : "", scene.report.plots[i]);
+  o += "],\"static\":{";
+  for (std::size_t i = 0; i < scene.report.staticLevels.size(); ++i) {
+    appendJsonString(o += i ? "," : "", scene.report.staticLevels[i].first);
+    appendJsonNumber(o += ":", scene.report.staticLevels[i].second);
+  }
+  return o + "}}}\n";
+}
+
+void writeRunSummary(const std::filesystem::path& file, const Scene& scene,
+                     const devs::Model& root, const RunFacts& facts) {
+  std::ofstream out(file);
+  out << runSummaryJson(scene, root, facts);
+  if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
+}
+
+}  // namespace yardsim::models

@@ -57,6 +57,13 @@ struct RecordSpec {
   std::vector<std::string> channels;  // globs over channel names
 };
 
+// What the HTML report shows (docs/report.md): the recorded channels it plots and the static
+// levels drawn over them (and the peak of a tension channel is compared with).
+struct ReportSpec {
+  std::vector<std::string> plots;                             // globs; empty: every recorded channel
+  std::vector<std::pair<std::string, double>> staticLevels;   // channel => value in its unit
+};
+
 struct MechanicalSystem;  // models/mechanical_systems.hpp
 
 struct Scene {
@@ -68,6 +75,7 @@ struct Scene {
   std::string integrator = "none";  // method named by the scene (metadata until physics)
   double dt = 0.0;
   RecordSpec record;
+  ReportSpec report;
   std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv
   Instance root;
   // the mechanics of every coupled model, merged and split into mechanically connected

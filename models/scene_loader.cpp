@@ -19,7 +19,7 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
                                          "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace"};
+const std::vector<std::string> kRootKeys{"record", "report", "until", "seed", "integrator", "trace"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
@@ -478,6 +478,7 @@ class Loader {
         else s.record.channels = {"*"};
       }
     }
+    if (const YAML::Node r = doc["report"]) reportSettings(s, r, f);
     if (const YAML::Node t = doc["trace"]) {
       if (!hasKind(t, ParamKind::StringList)) {
         d_.error(markOf(t, f), "trace", "expected a list of trace sinks: jsonl, chrome, csv");
@@ -489,6 +490,33 @@ class Loader {
                      didYouMean(sink, kTraceSinks));
           else s.trace.push_back(sink);
         }
+      }
+    }
+  }
+
+  // ({plots: [globs], static: {channel: value}}) => what the report shows
+  void reportSettings(Scene& s, const YAML::Node& r, const std::string& f) {
+    if (!r.IsMap()) {
+      d_.error(markOf(r, f), "report", "expected {plots: [channel globs], static: {channel: value}}");
+      return;
+    }
+    checkKeys(r, {"plots", "static"}, f, "report", d_);
+    if (const YAML::Node p = r["plots"]) {
+      if (hasKind(p, ParamKind::StringList)) s.report.plots = p.as<std::vector<std::string>>();
+      else d_.error(markOf(p, f), "report.plots", "expected a list of channel globs");
+    }
+    if (const YAML::Node st = r["static"]) {
+      if (!st.IsMap()) {
+        d_.error(markOf(st, f), "report.static",
+                 "expected a mapping {channel: value}, e.g. {crane.hoist.tension: 4.5e6}");
+        return;
+      }
+      for (auto it = st.begin(); it != st.end(); ++it) {
+        const std::string name = it->first.Scalar();
+        if (!hasKind(it->second, ParamKind::Number))
+          d_.error(markOf(it->second, f), "report.static." + name,
+                   "expected a number (the static value in the channel's unit), got " + shown(it->second));
+        else s.report.staticLevels.emplace_back(name, it->second.as<double>());
       }
     }
   }

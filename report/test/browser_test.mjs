@@ -1,0 +1,151 @@
+// Opens a report.html in Debian's chromium (puppeteer-core, headless, no GPU, fresh profile)
+// and checks what a person would: no console errors, no network requests, plots drawn, one
+// mesh per body, the slider moves the most-travelled body and the plot cursor (and the plot
+// cursor moves the slider), one timeline row per actor; saves a screenshot.
+//   node test/browser_test.mjs OUTDIR/report.html SCREENSHOT.png [--chromium /usr/bin/chromium]
+import { mkdtempSync, readFileSync, rmSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import puppeteer from 'puppeteer-core';
+
+const args = process.argv.slice(2);
+const flag = name => { const i = args.indexOf(name); return i >= 0 ? args.splice(i, 2)[1] : undefined; };
+const chromium = flag('--chromium') || process.env.CHROMIUM || '/usr/bin/chromium';
+const [reportPath, screenshot] = args;
+if (!reportPath || !screenshot) {
+  console.error('usage: node test/browser_test.mjs OUTDIR/report.html SCREENSHOT.png [--chromium PATH]');
+  process.exit(2);
+}
+
+let passed = 0, failed = 0;
+function check(what, ok, detail = '') {
+  if (ok) passed++; else failed++;
+  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}${detail ? `: ${detail}` : ''}`);
+}
+
+// (report.html) => its data, and from replay.glb's own JSON the bodies and each one's travel
+const html = readFileSync(reportPath, 'utf8');
+const data = JSON.parse(html.match(/<script type="application\/json" id="yardsim-data">([\s\S]*?)<\/script>/)[1]);
+const bodies = [];
+if (data.glb) {
+  const glb = Buffer.from(data.glb, 'base64');
+  const jsonLength = glb.readUInt32LE(12);
+  const gltf = JSON.parse(glb.subarray(20, 20 + jsonLength).toString('utf8'));
+  const bin = glb.subarray(20 + jsonLength + 8);
+  const floats = a => {
+    const acc = gltf.accessors[a], view = gltf.bufferViews[acc.bufferView];
+    return new Float32Array(bin.buffer.slice(bin.byteOffset + view.byteOffset, bin.byteOffset + view.byteOffset + view.byteLength));
+  };
+  gltf.nodes.forEach((node, i) => {
+    if (!node.extras || node.extras.body === undefined) return;
+    const ch = gltf.animations[0].channels.find(c => c.target.node === i && c.target.path === 'translation');
+    const p = floats(gltf.animations[0].samplers[ch.sampler].output);
+    let travel = 0;
+    for (let k = 3; k < p.length; k += 3) travel = Math.max(travel, Math.hypot(p[k] - p[0], p[k + 1] - p[1], p[k + 2] - p[2]));
+    bodies.push({ name: node.extras.body, travel });
+  });
+}
+// (trace.jsonl beside the report) => the actors that started, independently of the page
+const actors = new Set((data.run && data.run.actors || []).map(a => a.path));
+const trace = join(dirname(reportPath), 'trace.jsonl');
+if (existsSync(trace))
+  for (const line of readFileSync(trace, 'utf8').split('\n'))
+    if (line.includes('"port":"started"')) actors.add(JSON.parse(line).model);
+
+const profile = mkdtempSync(join(tmpdir(), 'yardsim-chromium-'));
+const browser = await puppeteer.launch({
+  executablePath: chromium,
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    '--disable-dev-shm-usage', '--enable-unsafe-swiftshader', `--user-data-dir=${profile}`],
+});
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1400, height: 1000 });
+  const url = pathToFileURL(resolve(reportPath)).href;
+  const errors = [], requests = [];
+  page.on('console', m => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', e => errors.push(String(e)));
+  page.on('request', r => { if (r.url() !== url) requests.push(r.url()); });
+  const t0 = Date.now();
+  await page.goto(url, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.yardsim && (window.yardsim.ready || window.yardsim.error), { timeout: 60000 });
+  const ms = Date.now() - t0;
+  const pageError = await page.evaluate(() => window.yardsim.error);
+  check('the page is ready', !pageError, pageError || `${ms} ms`);
+
+  // (uPlot canvases) => pixels drawn
+  const drawn = await page.evaluate(() => [...document.querySelectorAll('.uplot canvas')].map(c => {
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
+    return n;
+  }));
+  const units = new Set(data.plots.map(i => data.series[i].unit));
+  check('one plot per unit, each with drawn pixels', drawn.length === units.size && drawn.length > 0 && drawn.every(n => n > 500),
+    `${drawn.length} canvases for ${units.size} units, pixels drawn ${drawn.join(', ')}`);
+
+  // (three.js scene) => one mesh per body of replay.glb
+  const meshes = await page.evaluate(() => {
+    const r = window.yardsim.replay;
+    if (!r) return null;
+    const out = [];
+    r.scene.traverse(o => { if (o.isMesh) out.push(o.userData.body); });
+    return out;
+  });
+  check('one mesh per body', meshes !== null && meshes.length === bodies.length &&
+    bodies.every(b => meshes.includes(b.name)), `${meshes && meshes.length} meshes, ${bodies.length} bodies`);
+
+  // (slider dragged to 3/4) => the most-travelled body moves and the plot cursor follows
+  const block = bodies.reduce((a, b) => (b.travel > a.travel ? b : a), bodies[0]);
+  const probe = () => page.evaluate(name => {
+    const y = window.yardsim;
+    const b = y.replay.bodies.find(o => o.userData.body === name);
+    const p = b.getWorldPosition(b.position.clone());
+    return { t: y.time(), slider: Number(document.getElementById('time-slider').value), p: [p.x, p.y, p.z], cursor: y.plots.map(u => u.cursor.left) };
+  }, block.name);
+  const before = await probe();
+  const box = await (await page.$('#time-slider')).boundingBox();
+  await page.mouse.click(box.x + 0.75 * box.width, box.y + box.height / 2);
+  const after = await probe();
+  const moved = Math.hypot(...after.p.map((x, i) => x - before.p[i]));
+  check('the slider moves the time', after.t > before.t && after.slider > 0, `t ${before.t} -> ${after.t}`);
+  check(`the slider moves ${block.name}`, moved > 1e-3 * Math.max(block.travel, 1e-9) && block.travel > 0, `moved ${moved.toFixed(4)} (travel ${block.travel.toFixed(3)})`);
+  const expected = await page.evaluate(t => window.yardsim.plots.map(u => u.valToPos(t, 'x')), after.t);
+  check('the slider moves the plot cursor', after.cursor.length > 0 &&
+    after.cursor.every((l, i) => Math.abs(l - expected[i]) < 1.5 && l !== before.cursor[i]), `${before.cursor} -> ${after.cursor}`);
+
+  // (mouse over the first plot at 1/4) => the slider and the time follow
+  const over = await page.evaluate(() => {
+    const u = window.yardsim.plots[0];
+    u.over.scrollIntoView({ block: 'center' });
+    const r = u.over.getBoundingClientRect();
+    return { x: r.left + 0.25 * r.width, y: r.top + r.height / 2, t: u.posToVal(0.25 * r.width, 'x') };
+  });
+  await page.mouse.move(over.x - 5, over.y, { steps: 2 });
+  await page.mouse.move(over.x, over.y, { steps: 2 });
+  await new Promise(r => setTimeout(r, 100));
+  const hovered = await probe();
+  check('the plot cursor moves the slider', Math.abs(hovered.slider - over.t) < 0.02 * Math.max(after.t, 1) && hovered.slider < after.slider,
+    `slider ${hovered.slider}, cursor at t = ${over.t}`);
+
+  // (timeline) => one row per actor
+  const rows = await page.$$eval('.tl-row', r => r.length);
+  check('one timeline row per actor', rows === actors.size, `${rows} rows, ${actors.size} actors`);
+  const bars = await page.$$eval('.tl-bar', r => r.length);
+  check('a bar for every actor that started', bars === [...actors].filter(a => data.actors.find(x => x.path === a && x.start >= 0)).length, `${bars} bars`);
+
+  check('no console errors', errors.length === 0, errors.join(' | '));
+  check('no network requests', requests.length === 0, requests.join(' '));
+  await page.mouse.move(0, 0);
+  await page.evaluate(() => window.yardsim.setTime(window.yardsim.data.run ? window.yardsim.data.run.t_end * 0.5 : 0, 'test'));
+  await page.screenshot({ path: screenshot, fullPage: true });
+  check('screenshot saved', existsSync(screenshot), screenshot);
+} finally {
+  await browser.close();
+  rmSync(profile, { recursive: true, force: true });
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);

@@ -11,8 +11,12 @@ struct RunArgs {
   std::vector<std::string> trace;
   bool traceGiven = false;
   bool quiet = false;
+  bool report = false;  // also write OUTDIR/report.html (and record trace.jsonl for its timeline)
 };
 int runCommand(const RunArgs& a);
+
+// (OUTDIR) => OUTDIR/report.html from what the run left there
+int reportCommand(const std::string& outdir, bool quiet);
 
 int validateCommand(const std::string& scene, bool printResolved);
 

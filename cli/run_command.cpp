@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -18,6 +19,8 @@ int runCommand(const RunArgs& a) {
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
   opt.trace = a.traceGiven ? a.trace : scene->trace;
+  if (a.report && std::find(opt.trace.begin(), opt.trace.end(), "jsonl") == opt.trace.end())
+    opt.trace.push_back("jsonl");  // the report's actor timeline reads it
   for (const auto& t : opt.trace)
     if (t != "jsonl" && t != "chrome" && t != "csv") {
       std::fprintf(stderr, "--trace: unknown sink '%s' (expected jsonl, chrome or csv)\n", t.c_str());
@@ -35,11 +38,12 @@ int runCommand(const RunArgs& a) {
                 "{} transitions; output in {}",
                 scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
                 r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
-    return kOk;
+    return a.report ? reportCommand(a.outdir, a.quiet) : kOk;
   } catch (const devs::SimulationError& e) {
     printer.finish();
     std::fprintf(stderr, "numerical failure: %s\neverything recorded until then is in %s\n",
                  e.what(), a.outdir.c_str());
+    if (a.report) reportCommand(a.outdir, a.quiet);
     return kNumericalFailure;
   }
 }

@@ -22,6 +22,13 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--until", run.until, "end time in s (default: the scene's `until`)");
   runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
+  runCmd->add_flag("--report", run.report, "also write OUTDIR/report.html (adds the jsonl trace)");
+
+  std::string reportDir;
+  bool reportQuiet = false;
+  auto* reportCmd = app.add_subcommand("report", "write OUTDIR/report.html from a run's outputs");
+  reportCmd->add_option("outdir", reportDir, "output folder of a run")->required();
+  reportCmd->add_flag("--quiet", reportQuiet, "no summary");
 
   std::string validateScene;
   bool printResolved = false;
@@ -54,6 +61,7 @@ int yardsimMain(int argc, char** argv) {
       run.traceGiven = runCmd->count("--trace") > 0;
       return runCommand(run);
     }
+    if (reportCmd->parsed()) return reportCommand(reportDir, reportQuiet);
     if (validate->parsed()) return validateCommand(validateScene, printResolved);
     if (traceCmd->parsed()) return traceCommand(trace);
     if (channels->parsed()) return listChannelsCommand(channelsScene);

@@ -24,7 +24,7 @@ TEST_CASE("samples land on the record grid and the sinks asked for are written")
   testing::SceneDir dir;
   auto scene = models::loadSceneOrThrow(dir.write("s.yaml", springScene(0.05, "rk4", 2.0)));
   auto root = models::assemble(*scene);
-  models::RunOptions opt{dir.path() / "out", scene->until, {"jsonl", "csv"}, {}, 0.1};
+  models::RunOptions opt{dir.path() / "out", scene->until, {"jsonl", "csv"}, {}, 0.1, 2000};
   const auto r = models::runScene(*scene, *root, opt);
   CHECK(r.tEnd == 2.0);
   CHECK(r.samples == 41);
@@ -43,7 +43,7 @@ TEST_CASE("a run that blows up stops with a diagnosis and keeps what it recorded
   // RK4 on an undamped spring is unstable beyond omega*dt = 2.83: dt = 3 grows every step
   auto scene = models::loadSceneOrThrow(dir.write("s.yaml", springScene(3.0, "rk4", 1000.0)));
   auto root = models::assemble(*scene);
-  models::RunOptions opt{dir.path() / "out", scene->until, {}, {}, 0.1};
+  models::RunOptions opt{dir.path() / "out", scene->until, {}, {}, 0.1, 2000};
   try {
     models::runScene(*scene, *root, opt);
     FAIL("expected a numerical failure");

@@ -6,13 +6,18 @@ packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
   libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev
+  chromium  # the report's browser test (tests/report)
 )
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# node and npm rebuild the report bundle and run the browser test (report/); Debian's packages
+# unless a node is already installed (e.g. one that ships its own npm)
+command -v node > /dev/null || missing+=(nodejs)
+command -v npm > /dev/null || missing+=(npm)
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup: all ${#packages[@]} packages already installed"
+  echo "setup: all ${#packages[@]} packages, node and npm already installed"
   exit 0
 fi
 sudo=""

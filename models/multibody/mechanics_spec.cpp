@@ -163,8 +163,8 @@ MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::st
   if (const YAML::Node b = n["box"]) {
     v.shape = Shape::Box;
     v.size = r.vec3(b, key + ".box", Vector3::Zero());
-    for (int i = 0; i < 3; ++i) positive(b, key + ".box", v.size[i]);
-  } else if (const YAML::Node c = n["cylinder"]) {
+    if (b.IsSequence() && b.size() == 3 && !(v.size.minCoeff() > 0)) positive(b, key + ".box", 0.0);
+  } else if (YAML::Node c = n["cylinder"]) {  // not const: a missing key must stay a valid node
     v.shape = Shape::Cylinder;
     if (r.keys(c, {"radius", "length"}, key + ".cylinder")) {
       v.size[0] = r.number(c["radius"], key + ".cylinder.radius", 0.0, true);

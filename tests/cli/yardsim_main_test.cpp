@@ -139,3 +139,25 @@ until: 10
   CHECK_THAT(r.out, Catch::Contains("block") && Catch::Contains("suggestion"));
   CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 1);
 }
+
+TEST_CASE("yardsim run --report and yardsim report write report.html; a folder without a run is refused") {
+  yardsim::testing::SceneDir dir;
+  const std::string pendulum = std::string(YARDSIM_SOURCE_DIR) + "/examples/double_pendulum/scene.yaml";
+  auto r = runYardsim("run " + pendulum + " -o " + dir.file("out") + " --until 1 --trace csv --report --quiet");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK(std::filesystem::file_size(dir.path() / "out/report.html") > 100000);  // the bundle is in it
+  CHECK(std::filesystem::exists(dir.path() / "out/replay.glb"));
+  CHECK(std::filesystem::exists(dir.path() / "out/trace.jsonl"));  // added for the timeline
+  std::filesystem::remove(dir.path() / "out/report.html");
+  r = runYardsim("report " + dir.file("out"));
+  CHECK(r.status == 0);
+  CHECK(std::filesystem::exists(dir.path() / "out/report.html"));
+  r = runYardsim("report " + dir.file("nothing"));
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("is not a folder"));
+  std::filesystem::create_directories(dir.path() / "empty");
+  r = runYardsim("report " + dir.file("empty"));
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("has no timeseries.csv"));
+}

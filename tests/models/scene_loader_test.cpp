@@ -254,3 +254,33 @@ components:
   CHECK(d.keyPath == "components.s.params.mass");
   CHECK_THAT(d.message, Catch::Contains("must be > 0 kg"));
 }
+
+TEST_CASE("the report block: plots and static levels, and its mistakes") {
+  testing::SceneDir dir;
+  const auto ok = load(dir, R"(schema_version: 1
+components:
+  genr: {type: generator, params: {period: 1.0}}
+report:
+  plots: ['crane.*.tension', 'block.roll']
+  static: {crane.hoist.tension: 4.5e6, crane.aux.tension: 1000}
+)");
+  INFO(ok.diagnostics.report());
+  REQUIRE(ok.scene);
+  CHECK(ok.scene->report.plots == std::vector<std::string>{"crane.*.tension", "block.roll"});
+  REQUIRE(ok.scene->report.staticLevels.size() == 2);
+  CHECK(ok.scene->report.staticLevels[0] == std::pair<std::string, double>{"crane.hoist.tension", 4.5e6});
+  const auto bad = load(dir, R"(schema_version: 1
+components:
+  genr: {type: generator, params: {period: 1.0}}
+report:
+  plot: ['x']
+  static: {crane.hoist.tension: heavy}
+)");
+  REQUIRE(bad.diagnostics.errorCount() == 2);
+  const auto& d = bad.diagnostics.all();
+  CHECK(d[0].keyPath == "report.plot");
+  CHECK(d[0].hint == "did you mean 'plots'?");
+  CHECK(d[1].keyPath == "report.static.crane.hoist.tension");
+  CHECK(d[1].where.line == 6);
+  CHECK_THAT(d[1].message, Catch::Contains("expected a number") && Catch::Contains("'heavy'"));
+}

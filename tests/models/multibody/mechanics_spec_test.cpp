@@ -71,3 +71,47 @@ TEST_CASE("initial positions in degrees and placements build into the model") {
   CHECK(built.jointNames[1] == "j0");
   CHECK(built.model.X_PJ[1].p.z() == 2.0);
 }
+
+TEST_CASE("visual geometry: each shape parsed, and every mistake refused at its place") {
+  testing::SceneDir dir;
+  const std::string body = "          parent: world\n          joint: {type: fixed}\n          mass: 1\n"
+                           "          inertia: [1, 1, 1]\n";
+  const auto good = load(dir, "        a:\n" + body + "          geometry: {box: [1, 2, 3]}\n" +
+                                  "        b:\n" + body +
+                                  "          geometry: {cylinder: {radius: 0.5, length: 4}, pose: {xyz: [0, 0, 1]}}\n" +
+                                  "        c:\n" + body + "          geometry: {sphere: 0.25}\n" +
+                                  "        d:\n" + body);
+  REQUIRE(good.scene);
+  using Shape = models::MechanicsSpec::Visual::Shape;
+  const auto spec = models::parseMechanics(good.scene->root.child("m")->params, [](auto&&...) { FAIL("unexpected"); });
+  const auto built = models::buildMechanics(spec);
+  REQUIRE(built.visuals.size() == 5);
+  CHECK(built.visuals[1].shape == Shape::Box);
+  CHECK(built.visuals[1].size == dynamics::Vector3(1, 2, 3));
+  CHECK(built.visuals[2].shape == Shape::Cylinder);
+  CHECK(built.visuals[2].size.head<2>() == Eigen::Vector2d(0.5, 4));
+  CHECK(built.visuals[2].posed);
+  CHECK(built.visuals[2].X_BG.p.z() == 1.0);
+  CHECK(built.visuals[3].shape == Shape::Sphere);
+  CHECK(built.visuals[3].size[0] == 0.25);
+  CHECK(built.visuals[4].shape == Shape::Auto);
+
+  const auto bad = load(dir, "        a:\n" + body + "          geometry: {box: [1, 2]}\n" +
+                                 "        b:\n" + body + "          geometry: {sphere: -1}\n" +
+                                 "        c:\n" + body + "          geometry: {box: [1, 1, 1], sphere: 1}\n" +
+                                 "        d:\n" + body + "          geometry: {cylinder: {radius: 1}}\n" +
+                                 "        e:\n" + body + "          geometry: {cone: 1}\n");
+  INFO(bad.diagnostics.report());
+  REQUIRE(bad.diagnostics.errorCount() == 5);
+  const auto& d = bad.diagnostics.all();
+  CHECK(d[0].keyPath == "components.m.params.bodies.a.geometry.box");
+  CHECK_THAT(d[0].message, Catch::Contains("list of 3 numbers"));
+  CHECK(d[1].keyPath == "components.m.params.bodies.b.geometry.sphere");
+  CHECK(d[1].where.line == 19);
+  CHECK_THAT(d[1].message, Catch::Contains("must be > 0 m"));
+  CHECK(d[2].keyPath == "components.m.params.bodies.c.geometry");
+  CHECK_THAT(d[2].message, Catch::Contains("more than one shape"));
+  CHECK(d[3].keyPath == "components.m.params.bodies.d.geometry.cylinder.length");
+  CHECK(d[4].keyPath == "components.m.params.bodies.e.geometry.cone");
+  CHECK_THAT(d[4].message, Catch::Contains("unknown key 'cone'"));
+}

@@ -91,7 +91,10 @@ async function main() {
     if (playing) { if (now >= tEnd) setTime(0, 'play'); last = 0; requestAnimationFrame(frame); }
   });
   if (data.glb) replay = await makeReplay(bytes(data.glb), replayBox);
-  else replayBox.append(el('p', { class: 'notes' }, 'no replay.glb: the scene has no bodies, or records nothing'));
+  else {
+    replayBox.className = '';
+    replayBox.append(el('p', { class: 'notes' }, 'no replay.glb: the scene has no bodies, or records nothing'));
+  }
   setTime(0, 'init');
   window.yardsim = { data, plots: views.plots.plots, replay, setTime, time: () => now, ready: true };
 }

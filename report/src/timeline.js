@@ -6,6 +6,7 @@ const kindColors = ['#0969da', '#bf8700', '#1a7f37', '#8250df', '#cf222e', '#1b7
 
 // (actors [{path, kind, start, end}], end time, container, onTime) => {setTime(t)}
 export function makeTimeline(actors, tEnd, container, onTime) {
+  if (!actors.length) container.append(el('p', { class: 'notes' }, 'no actors in this scene'));
   const kinds = [...new Set(actors.map(a => a.kind))];
   const color = k => kindColors[kinds.indexOf(k) % kindColors.length];
   const legend = el('div', { class: 'tl-legend' });

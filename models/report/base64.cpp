@@ -1,5 +1,6 @@
 #include "models/report/base64.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace yardsim::models {
@@ -23,6 +24,14 @@ void appendBase64(std::string& out, const void* data, std::size_t bytes) {
     out += rest == 2 ? kAlphabet[(v >> 6) & 63] : '=';
     out += '=';
   }
+}
+
+void appendFloat32Json(std::string& out, const std::vector<double>& values) {
+  std::vector<float> f(values.size());
+  std::transform(values.begin(), values.end(), f.begin(), [](double v) { return static_cast<float>(v); });
+  out += '"';
+  appendBase64(out, f.data(), f.size() * sizeof(float));
+  out += '"';
 }
 
 }  // namespace yardsim::models

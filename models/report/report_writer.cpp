@@ -12,7 +12,7 @@
 #include "devs/trace_format.hpp"
 #include "models/channels.hpp"
 #include "models/report/base64.hpp"
-#include "models/report/report_bundle.hpp"
+#include "models/report/html_page.hpp"
 
 namespace yardsim::models {
 namespace {
@@ -25,22 +25,6 @@ std::string readFile(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read '" + file.string() + "'");
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// (values) => base64 of their float32 form
-void appendFloat32(std::string& out, const std::vector<double>& values) {
-  std::vector<float> f(values.size());
-  std::transform(values.begin(), values.end(), f.begin(), [](double v) { return static_cast<float>(v); });
-  out += '"';
-  appendBase64(out, f.data(), f.size() * sizeof(float));
-  out += '"';
-}
-
-// (text) => safe inside <script>: no "</" that could close the element
-std::string scriptSafe(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
-    text.replace(at, 2, "<\\/");
-  return text;
 }
 
 }  // namespace
@@ -123,7 +107,7 @@ void writeReport(const fs::path& outdir) {
   }
   // (columns) => time and series as base64 float32, the plotted ones by glob
   d += "},\"time\":";
-  appendFloat32(d, ts.columns[0].values);
+  appendFloat32Json(d, ts.columns[0].values);
   d += ",\"series\":[";
   std::vector<std::size_t> plotted;
   for (std::size_t c = 1; c < ts.columns.size(); ++c) {
@@ -132,7 +116,7 @@ void writeReport(const fs::path& outdir) {
     appendJsonString(d, col.name);
     appendJsonString(d += ",\"unit\":", col.unit);
     d += ",\"data\":";
-    appendFloat32(d, col.values);
+    appendFloat32Json(d, col.values);
     d += "}";
     if (plotGlobs.empty() ||
         std::any_of(plotGlobs.begin(), plotGlobs.end(), [&](const auto& g) { return globMatch(g, col.name); }))
@@ -183,15 +167,7 @@ void writeReport(const fs::path& outdir) {
 
   std::string title = "yardsim report";
   if (runJson != "null") title += ": " + YAML::Load(runJson)["scene"].as<std::string>();
-  std::string html = "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>";
-  for (char c : title) html += c == '<' ? std::string("&lt;") : c == '&' ? std::string("&amp;") : std::string(1, c);
-  html += "</title>\n</head>\n<body>\n<script type=\"application/json\" id=\"yardsim-data\">" +
-          scriptSafe(std::move(d)) + "</script>\n<script>" + scriptSafe(std::string(reportBundle())) +
-          "</script>\n</body>\n</html>\n";
-  std::ofstream out(outdir / "report.html", std::ios::binary);
-  out << html;
-  if (!out) throw std::runtime_error("cannot write '" + (outdir / "report.html").string() + "'");
+  writeTextFile(outdir / "report.html", htmlPage(title, std::move(d)));
 }
 
 }  // namespace yardsim::models

@@ -1,4 +1,4 @@
-// yardsim's report page (report.html): reads the data the yardsim binary put in the page and
+// yardsim's pages (report.html; wp.html, see loglog.js): reads the data the yardsim binary put in the page and
 // draws the header, the 3D replay, the actor timeline and the plots, all on one time shared
 // both ways (slider and play, plot cursor, timeline). window.yardsim exposes the parts for the
 // browser test (report/test/browser_test.mjs).
@@ -8,6 +8,7 @@ import { bytes, el, float32, fmt, readData } from './data.js';
 import { makePlots } from './plots.js';
 import { makeTimeline } from './timeline.js';
 import { makeReplay } from './replay3d.js';
+import { renderLogLog } from './loglog.js';
 
 function header(data, tEnd, root) {
   const run = data.run || {};
@@ -39,6 +40,12 @@ function header(data, tEnd, root) {
 async function main() {
   for (const text of [uplotCss, css]) document.head.append(el('style', {}, text));
   const data = readData();
+  if (data.kind === 'loglog') {
+    const root = el('div', { id: 'report' });
+    document.body.append(root);
+    window.yardsim = { data, plots: renderLogLog(data, root), ready: true };
+    return;
+  }
   const time = float32(data.time);
   const tEnd = time.length ? time[time.length - 1] : 0;
   const root = el('div', { id: 'report' });

@@ -75,14 +75,42 @@ try {
   const ms = Date.now() - t0;
   const pageError = await page.evaluate(() => window.yardsim.error);
   check('the page is ready', !pageError, pageError || `${ms} ms`);
+  if (data.kind === 'loglog') await checkLogLog(page);
+  else await checkReport(page);
+  check('no console errors', errors.length === 0, errors.join(' | '));
+  check('no network requests', requests.length === 0, requests.join(' '));
+  await page.screenshot({ path: screenshot, fullPage: true });
+  check('screenshot saved', existsSync(screenshot), screenshot);
+} finally {
+  await browser.close();
+  rmSync(profile, { recursive: true, force: true });
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
 
-  // (uPlot canvases) => pixels drawn
-  const drawn = await page.evaluate(() => [...document.querySelectorAll('.uplot canvas')].map(c => {
+// (uPlot canvases) => pixels drawn in each
+function drawnPixels(page) {
+  return page.evaluate(() => [...document.querySelectorAll('.uplot canvas')].map(c => {
     const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     let n = 0;
     for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
     return n;
   }));
+}
+
+// (wp.html) => one log-log chart per plot with its curves, drawn, log scales
+async function checkLogLog(page) {
+  const drawn = await drawnPixels(page);
+  check('one chart per plot, each with drawn pixels', drawn.length === data.plots.length && drawn.every(n => n > 500), `pixels ${drawn.join(', ')}`);
+  const charts = await page.evaluate(() => window.yardsim.plots.map(u => ({ series: u.series.length - 1, distr: [u.scales.x.distr, u.scales.y.distr] })));
+  check('one series per curve, log-log', charts.every((c, i) => c.series === data.plots[i].curves.length && c.distr[0] === 3 && c.distr[1] === 3),
+    JSON.stringify(charts));
+}
+
+// (report.html) => plots, replay, slider, cursor and timeline as a person uses them
+async function checkReport(page) {
+
+  const drawn = await drawnPixels(page);
   const units = new Set(data.plots.map(i => data.series[i].unit));
   check('one plot per unit, each with drawn pixels', drawn.length === units.size && drawn.length > 0 && drawn.every(n => n > 500),
     `${drawn.length} canvases for ${units.size} units, pixels drawn ${drawn.join(', ')}`);
@@ -144,15 +172,6 @@ try {
   const bars = await page.$$eval('.tl-bar', r => r.length);
   check('a bar for every actor that started', bars === [...actors].filter(a => data.actors.find(x => x.path === a && x.start >= 0)).length, `${bars} bars`);
 
-  check('no console errors', errors.length === 0, errors.join(' | '));
-  check('no network requests', requests.length === 0, requests.join(' '));
   await page.mouse.move(0, 0);
   await page.evaluate(() => window.yardsim.setTime(window.yardsim.data.run ? window.yardsim.data.run.t_end * 0.5 : 0, 'test'));
-  await page.screenshot({ path: screenshot, fullPage: true });
-  check('screenshot saved', existsSync(screenshot), screenshot);
-} finally {
-  await browser.close();
-  rmSync(profile, { recursive: true, force: true });
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);

@@ -140,7 +140,7 @@ until: 10
   CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 1);
 }
 
-TEST_CASE("yardsim run --report and yardsim report write report.html; a folder without a run is refused") {
+TEST_CASE("yardsim run --report and yardsim report write report.html, and refuse a folder without a run") {
   yardsim::testing::SceneDir dir;
   const std::string pendulum = std::string(YARDSIM_SOURCE_DIR) + "/examples/double_pendulum/scene.yaml";
   auto r = runYardsim("run " + pendulum + " -o " + dir.file("out") + " --until 1 --trace csv --report --quiet");

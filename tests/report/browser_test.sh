@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The report in a real browser: runs a scene with --report, then report/test/browser_test.mjs
-# (node + puppeteer-core driving Debian's chromium) on OUTDIR/report.html.
-#   browser_test.sh YARDSIM SCENE OUTDIR SCREENSHOT
+# A page of the report bundle in a real browser: runs COMMAND (which writes PAGE), then
+# report/test/browser_test.mjs (node + puppeteer-core driving Debian's chromium) on PAGE.
+#   browser_test.sh PAGE SCREENSHOT COMMAND...
 # Without chromium, node or report/node_modules it fails under CI (CI=true: .ci/run installs
 # them) and is skipped elsewhere (exit 77), saying what to install.
 set -euo pipefail
-yardsim=$1 scene=$2 out=$3 shot=$4
+page=$1 shot=$2
+shift 2
 js="$(cd "$(dirname "$0")/../../report" && pwd)"
 chromium=${CHROMIUM:-$(command -v chromium || true)}
 missing=()
@@ -20,6 +21,6 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "SKIPPED: the browser test needs ${missing[*]}"
   exit 77
 fi
-rm -rf "$out"
-"$yardsim" run "$scene" -o "$out" --quiet --report
-node "$js/test/browser_test.mjs" "$out/report.html" "$shot" --chromium "$chromium"
+rm -f "$page"
+"$@"
+node "$js/test/browser_test.mjs" "$page" "$shot" --chromium "$chromium"

@@ -9,6 +9,7 @@ import { makePlots } from './plots.js';
 import { makeTimeline } from './timeline.js';
 import { makeReplay } from './replay3d.js';
 import { renderLogLog } from './loglog.js';
+import { renderFigure } from './figure.js';
 
 function header(data, tEnd, root) {
   const run = data.run || {};
@@ -40,6 +41,11 @@ function header(data, tEnd, root) {
 async function main() {
   for (const text of [uplotCss, css]) document.head.append(el('style', {}, text));
   const data = readData();
+  if (window.yardsimFigure) {
+    document.body.style.background = '#fff';
+    window.yardsim = { data, plots: [renderFigure(data, window.yardsimFigure, document.body)], ready: true };
+    return;
+  }
   if (data.kind === 'loglog') {
     const root = el('div', { id: 'report' });
     document.body.append(root);

@@ -77,6 +77,7 @@ try {
   check('the page is ready', !pageError, pageError || `${ms} ms`);
   if (data.kind === 'loglog') await checkLogLog(page);
   else await checkReport(page);
+  if (data.kind !== 'loglog' && data.series.length) await checkFigure(url);
   check('no console errors', errors.length === 0, errors.join(' | '));
   check('no network requests', requests.length === 0, requests.join(' '));
   await page.screenshot({ path: screenshot, fullPage: true });
@@ -96,6 +97,24 @@ function drawnPixels(page) {
     for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
     return n;
   }));
+}
+
+// (figure mode, as report/figure.mjs uses it) => one chart of the first channel, scaled by 2
+async function checkFigure(url) {
+  const tab = await browser.newPage();
+  const first = data.series[0].name;
+  await tab.evaluateOnNewDocument(n => { window.yardsimFigure = { channels: [n], scale: 2, ylabel: 'twice' }; }, first);
+  await tab.goto(url);
+  await tab.waitForFunction(() => window.yardsim && (window.yardsim.ready || window.yardsim.error));
+  const f = await tab.evaluate(() => {
+    const u = window.yardsim.plots && window.yardsim.plots[0];
+    return u ? { series: u.series.length - 1, first: u.data[1][u.data[1].length - 1], figure: !!document.getElementById('figure') } : { error: window.yardsim.error };
+  });
+  const raw = Buffer.from(data.series[0].data, 'base64');
+  const values = new Float32Array(raw.buffer.slice(raw.byteOffset, raw.byteOffset + raw.length));
+  check('figure mode draws the chosen channel, scaled', f.figure && f.series === 1 && Math.abs(f.first - 2 * values[values.length - 1]) <= 1e-6 * Math.abs(f.first) + 1e-30,
+    JSON.stringify(f));
+  await tab.close();
 }
 
 // (wp.html) => one log-log chart per plot with its curves, drawn, log scales

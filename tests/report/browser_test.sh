@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A page of the report bundle in a real browser: runs COMMAND (which writes PAGE), then
-# report/test/browser_test.mjs (node + puppeteer-core driving Debian's chromium) on PAGE.
+# report/test/browser_test.mjs (node + puppeteer-core driving Debian's chromium) on PAGE, then
+# the Khronos glTF validator on the replay.glb beside it, if any.
 #   browser_test.sh PAGE SCREENSHOT COMMAND...
 # Without chromium, node or report/node_modules it fails under CI (CI=true: .ci/run installs
 # them) and is skipped elsewhere (exit 77), saying what to install.
@@ -24,3 +25,6 @@ fi
 rm -f "$page"
 "$@"
 node "$js/test/browser_test.mjs" "$page" "$shot" --chromium "$chromium"
+# (the run's replay.glb, when it has one) => the Khronos glTF validator finds nothing
+glb="$(dirname "$page")/replay.glb"
+if [ -f "$glb" ]; then node "$js/test/validate_glb.mjs" "$glb"; fi

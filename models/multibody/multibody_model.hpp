@@ -48,6 +48,7 @@ struct MultibodyState {
   std::vector<BodyLoad> loads;     // per body index
   std::vector<WinchJob> winches;   // per rope
   double work = 0.0;               // J: integral of the power of non-conservative forces
+  std::vector<double> peakTension; // N per rope part: the largest tension at any step so far
 };
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
@@ -58,6 +59,7 @@ struct MultibodyOptions {
   double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
+  bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
 };
 
@@ -80,6 +82,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
+  // (committed state) => per body, the spatial force its joint transmits to it (world frame,
+  // moment about the world origin first), by RNEA with the accelerations and all forces; trees
+  const std::vector<dynamics::Force>& jointForces() const;
 
  protected:
   void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;
@@ -100,6 +105,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (rope name) => index, or -1
   int ropeIndex(const std::string& name) const;
+  // (initial state) => static equilibrium, or a NumericalError saying why not
+  void settle();
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -110,6 +117,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* current_ = nullptr;  // the state being advanced
   mutable dynamics::Data view_;                      // kinematics for channels
   mutable dynamics::Data feedforward_;               // bias forces for the drives
+  mutable dynamics::Data reaction_;                  // RNEA for the joint forces
+  mutable double reactionTime_ = -1.0;
+  dynamics::MultibodySystem::ForceCallback forces_;  // every force, as evaluated in a stage
   mutable Eigen::VectorXd accel_;                    // accelerations for channels
   mutable double accelTime_ = -1.0;
   mutable double viewTime_ = -1.0;
@@ -119,6 +129,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;
+  // the power at the end of the last step, reused at the start of the next one
+  mutable double powerTime_ = -1.0, power_ = 0.0;
+  mutable const MultibodyState* powerState_ = nullptr;
 };
 
 }  // namespace yardsim::models

@@ -209,3 +209,29 @@ ropes:
   CHECK(std::stod(v.substr(v.find("over_mbl ") + 9)) == Approx(8829.0).epsilon(1e-3));
   (void)mb;
 }
+
+TEST_CASE("a held joint stays where it starts until an actor drives it, a free one falls") {
+  std::string held = kRod;
+  held.replace(held.find("q0_deg: 90}"), 11, "q0_deg: 90, hold: true}");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  devs::Coupled top("top");
+  top.addComponent(std::make_unique<MultibodyModel>("brake", build(held), opt));
+  top.addComponent(std::make_unique<MultibodyModel>("loose", build(kRod), opt));
+  devs::Simulator sim(top);
+  sim.runUntil(1.0);
+  const auto& b = static_cast<const MultibodyModel&>(*top.findComponent("brake"));
+  const auto& l = static_cast<const MultibodyModel&>(*top.findComponent("loose"));
+  CHECK(b.state().x.q[0] == Approx(M_PI / 2).margin(1e-9));  // the servo's feedforward holds gravity
+  CHECK(l.state().x.q[0] < M_PI / 2 - 0.5);                  // horizontal rod: falls freely
+}
+
+TEST_CASE("hold on a joint with more than one degree of freedom is refused") {
+  std::string bad = kRod;
+  bad.replace(bad.find("type: revolute, axis: [0, 1, 0], q0_deg: 90}"), 44, "type: spherical, hold: true}");
+  std::vector<std::string> messages;
+  models::parseMechanics(params(bad), [&](const std::string& param, const YAML::Node&, const std::string& key,
+                                         const std::string& msg) { messages.push_back(param + "." + key + ": " + msg); });
+  REQUIRE(messages.size() == 1);
+  CHECK_THAT(messages[0], Catch::Contains("rod.joint.hold") && Catch::Contains("only a 1-dof joint"));
+}

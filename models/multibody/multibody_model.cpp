@@ -30,7 +30,7 @@ MultibodyState initialState(const BuiltMechanics& m) {
   for (std::size_t i = 1; i < n; ++i)
     if (m.hold[i]) {
       const double q = m.q0[m.model.idxQ[i]];
-      x.drives[i] = JointDrive{true, true, q, q, 0.0, 0.0, ""};
+      x.drives[i] = JointDrive{true, true, q, q, 0.0, 0.0, "", false};
     }
   return x;
 }
@@ -49,7 +49,10 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       reaction_(mech_.model),
       scratch_(mech_.model),
       spForces_(mech_.model),
-      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      prescribedMask_(static_cast<std::size_t>(mech_.model.nv), 0),
+      prescribedAcc_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      accelScratch_(Eigen::VectorXd::Zero(mech_.model.nv)) {
   // (rope and equalizer specs) => providers, evaluated at every stage
   auto attach = [&](const MechanicsSpec::Point& p) {
     return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
@@ -93,6 +96,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   forces_ = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                    const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
     const forces::Stage stage{t, mech_.model, d, q, v};
+    if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
@@ -122,6 +126,28 @@ void MultibodyModel::settle() {
   x.v.setZero();
 }
 
+bool MultibodyModel::prescribedDofs(const MultibodyState& x) const {
+  bool any = false;
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    const bool on = x.drives[i].active && x.drives[i].prescribed;
+    if (mech_.model.jointNv[i] == 1) prescribedMask_[static_cast<std::size_t>(mech_.model.idxV[i])] = on ? 1 : 0;
+    any = any || on;
+  }
+  return any;
+}
+
+void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const {
+  // (dv on the prescribed dofs) => every dof's velocity after the impulse; its work = the change
+  // of kinetic energy
+  const auto& m = mech_.model;
+  const double before = dynamics::kineticEnergy(m, scratch_, x.q, x.v);
+  prescribedDofs(x);
+  system_.hybrid().setPrescribed(prescribedMask_);
+  system_.hybrid().velocityStep(scratch_, x.q, x.v, dv);
+  x.work += dynamics::kineticEnergy(m, scratch_, x.q, x.v) - before;
+  powerState_ = nullptr;
+}
+
 int MultibodyModel::jointBody(const std::string& joint) const {
   for (std::size_t i = 1; i < mech_.jointNames.size(); ++i)
     if (mech_.jointNames[i] == joint) return static_cast<int>(i);
@@ -140,7 +166,7 @@ void MultibodyModel::setPointForces(double t, const Eigen::VectorXd& q, const Ei
   for (int i = 1; i < m.nbodies; ++i) {
     // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
     const JointDrive& d = x.drives[i];
-    if (d.active) {
+    if (d.active && !d.prescribed) {
       const int iq = m.idxQ[i], iv = m.idxV[i];
       const double dir = d.target >= d.start ? 1.0 : -1.0;
       const double travel = std::abs(d.target - d.start);
@@ -174,8 +200,12 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   spForces_.clear();
   spTau_.setZero();
   setPointForces(t, x.q, x.v, scratch_, spForces_, spTau_);
-  current_ = saved;
   p += spTau_.dot(x.v);
+  if (prescribedDofs(x)) {  // (prescribed dofs) => the power of the effort that enforces them
+    system_.acceleration(t, x.q, x.v, accelScratch_);
+    p += system_.prescribedEffort().dot(x.v);
+  }
+  current_ = saved;
   for (int b = 1; b < m.nbodies; ++b) p += spForces_.inBodyFrame(scratch_, b).dot(scratch_.V[b]);
   return p;
 }
@@ -232,7 +262,20 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
                                       "' names '" + s.element + "', which is not a 1-dof joint here");
         const double q = x.q[mech_.model.idxQ[i]];
-        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor};
+        const bool wasPrescribed = x.drives[i].active && x.drives[i].prescribed;
+        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor, s.prescribed};
+        if (s.prescribed && mech_.model.nc > 0)
+          throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" + s.actor +
+                                      "' on '" + s.element + "' needs a system without loop closures; "
+                                      "use mode: servo");
+        if (s.prescribed || wasPrescribed) {
+          // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
+          const int iv = mech_.model.idxV[i];
+          accelScratch_.setZero();
+          if (s.prescribed) accelScratch_[iv] = (s.target >= q ? 1.0 : -1.0) * std::abs(s.speed) - x.v[iv];
+          if (s.prescribed && s.target == q) accelScratch_[iv] = -x.v[iv];
+          prescribedVelocityStep(x, accelScratch_);
+        }
         break;
       }
       case SetPoint::Kind::BodyLoad: {
@@ -269,11 +312,24 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
   devs::Time next = devs::kInfinity;
   for (const auto& w : x.winches)
     if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  for (const auto& d : x.drives)
+    if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
   return next;
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
   powerState_ = nullptr;
+  // (prescribed ramps ending now) => locked exactly at their targets
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    JointDrive& d = x.drives[i];
+    if (!d.active || !d.prescribed || d.reported || d.tEnd() > t) continue;
+    const int iq = mech_.model.idxQ[i], iv = mech_.model.idxV[i];
+    x.q[iq] = d.target;
+    accelScratch_.setZero();
+    accelScratch_[iv] = -x.v[iv];
+    prescribedVelocityStep(x, accelScratch_);
+    d.reported = true;
+  }
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -287,7 +343,7 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   g[0] = -1.0;
   for (int i = 1; i < mech_.model.nbodies; ++i) {
     const JointDrive& d = x.drives[i];
-    if (!d.active || d.reported) {
+    if (!d.active || d.reported || d.prescribed) {
       g[i] = -1.0;
       continue;
     }
@@ -306,10 +362,16 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
   const int nb = mech_.model.nbodies;
-  if (r.timeEvent)
+  if (r.timeEvent) {
     for (std::size_t k = 0; k < x.winches.size(); ++k)
       if (x.winches[k].active && x.winches[k].tEnd <= t)
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
+    for (int i = 1; i < nb; ++i) {
+      const JointDrive& d = x.drives[i];
+      if (d.active && d.prescribed && !d.reported && d.tEnd() <= t)
+        event.add({mech_.jointNames[i], d.actor, "reached", d.target});
+    }
+  }
   if (r.stateEvent <= 0) return;
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);

@@ -4,6 +4,8 @@
 // fixed-step integrator at step dt; joint drives and body loads set by actors through the
 // `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
 // reaches its target is a located state event, reported on the `event` port.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -22,12 +24,16 @@
 
 namespace yardsim::models {
 
-// A joint driven towards a target by a bounded servo following a ramp at a given speed.
+// A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
+// motion prescribed (the ramp exactly; the joint is locked at the target afterwards).
 struct JointDrive {
   bool active = false;
   bool reported = false;  // the "reached" event was sent
   double start = 0.0, target = 0.0, speed = 0.0, t0 = 0.0;
   std::string actor;
+  bool prescribed = false;
+  // (ramp) => when a prescribed ramp ends
+  double tEnd() const { return t0 + std::max(std::abs(target - start) / speed, 1e-9); }
 };
 
 // A winch job on a rope: paying out (or hauling in) until tEnd.
@@ -107,6 +113,10 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   int ropeIndex(const std::string& name) const;
   // (initial state) => static equilibrium, or a NumericalError saying why not
   void settle();
+  // (x's drives) => which dofs have prescribed motion; true when any
+  bool prescribedDofs(const MultibodyState& x) const;
+  // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
+  void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -131,6 +141,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable Eigen::VectorXd spTau_;
   // the power at the end of the last step, reused at the start of the next one
   mutable double powerTime_ = -1.0, power_ = 0.0;
+  mutable std::vector<char> prescribedMask_;  // per dof
+  mutable Eigen::VectorXd prescribedAcc_;     // zero: constant-speed ramps and locks
+  mutable Eigen::VectorXd accelScratch_;
   mutable const MultibodyState* powerState_ = nullptr;
 };
 

@@ -15,7 +15,15 @@ MultibodySystem::MultibodySystem(const Model& model)
       scratch_(model),
       forces_(model),
       tau_(Eigen::VectorXd::Zero(model.nv)),
-      tauStage_(Eigen::VectorXd::Zero(model.nv)) {}
+      tauStage_(Eigen::VectorXd::Zero(model.nv)),
+      hybrid_(model),
+      aPrescribed_(Eigen::VectorXd::Zero(model.nv)),
+      effort_(Eigen::VectorXd::Zero(model.nv)) {}
+
+void MultibodySystem::prescribe(const std::vector<char>& mask, const Eigen::VectorXd& aPrescribed) {
+  hybrid_.setPrescribed(mask);
+  aPrescribed_ = aPrescribed;
+}
 
 namespace {
 // (what, body, t) => a diagnosis naming the body, with a suggestion
@@ -50,8 +58,12 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
     callback_(t, q, v, scratch_, forces_, tauStage_);
   }
   const ExternalForces* f = forces_.empty() ? nullptr : &forces_;
-  // (q, v, tau, f) => ddq by ABA (tree) or with loop multipliers
-  if (model_.nc == 0) {
+  // (q, v, tau, f) => ddq by hybrid dynamics (prescribed dofs), ABA (tree) or with loop multipliers
+  if (hybrid_.any()) {
+    if (model_.nc > 0) throw SimulationError("yardsim::dynamics: prescribed motion needs a tree (no loop closures)");
+    a = aPrescribed_;
+    hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
+  } else if (model_.nc == 0) {
     a = aba(model_, data_, q, v, tauStage_, f);
   } else {
     a = constrainedForwardDynamics(model_, data_, q, v, tauStage_, f, stab_);

@@ -9,6 +9,7 @@
 #include "dynamics/constrained_dynamics.hpp"
 #include "dynamics/data.hpp"
 #include "dynamics/external_forces.hpp"
+#include "dynamics/hybrid_dynamics.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/model.hpp"
 
@@ -41,6 +42,13 @@ class MultibodySystem final : public AccelerationSource {
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
 
+  /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
+  /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
+  /// this at every stage. The joint forces that enforce them: prescribedEffort().
+  void prescribe(const std::vector<char>& mask, const Eigen::VectorXd& aPrescribed);
+  const Eigen::VectorXd& prescribedEffort() const { return effort_; }
+  HybridDynamics& hybrid() { return hybrid_; }
+
   const Model& model() const { return model_; }
   Data& data() { return data_; }
   Eigen::VectorXd& tau() { return tau_; }  ///< constant joint forces used when no callback is set
@@ -51,6 +59,8 @@ class MultibodySystem final : public AccelerationSource {
   Data scratch_;
   ExternalForces forces_;
   Eigen::VectorXd tau_, tauStage_;
+  HybridDynamics hybrid_;
+  Eigen::VectorXd aPrescribed_, effort_;
   ForceCallback callback_;
   Baumgarte stab_;
   bool project_ = false;

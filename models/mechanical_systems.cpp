@@ -45,6 +45,16 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
     p.set("gravity", inst.mechanics["gravity"] ? inst.mechanics["gravity"] : YAML::Load("[0, 0, -9.81]"),
           inst.mechanicsWhere);
     const std::string base = joinKey(inst.keyPath, "mechanics");
+    // (system-wide settings) => read at the scene root only
+    for (const char* key : {"drive_bandwidth", "drive_max_effort", "drive_tolerance", "equilibrium"}) {
+      const YAML::Node n = inst.mechanics[key];
+      if (!n) continue;
+      if (inst.path.empty())
+        p.set(key, n, inst.mechanicsWhere);
+      else
+        diags.error(markOf(n, inst.mechanicsWhere.file), joinKey(base, key),
+                    "a system-wide setting: give it in the scene root's mechanics");
+    }
     auto report = [&](const std::string& param, const YAML::Node& at, const std::string& key,
                       const std::string& msg) {
       SourceMark where = inst.mechanicsWhere;
@@ -107,7 +117,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& f : fragments)
     for (const auto& b : f.spec.bodies) names.push_back(prefixed(f.owner->path, b.name));
   MechanicsSpec all;
-  all.gravity = fragments.front().owner == &scene.root ? fragments.front().spec.gravity : all.gravity;
+  if (fragments.front().owner == &scene.root) {
+    all.gravity = fragments.front().spec.gravity;
+    all.settings = fragments.front().spec.settings;
+  }
   auto resolve = [&](const Fragment& f, const std::string& name, const std::string& what) {
     const std::string full = resolveName(f.owner->path, name, names);
     if (full.empty()) {
@@ -209,6 +222,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     s = std::make_shared<MechanicalSystem>();
     s->name = count == 1 ? "mechanics" : "mechanics" + std::to_string(k + 1);
     s->spec.gravity = all.gravity;
+    s->spec.settings = all.settings;
   }
   auto systemOf = [&](int body) { return systems[static_cast<std::size_t>(component[static_cast<std::size_t>(body)])]; };
   for (std::size_t i = 0; i < all.bodies.size(); ++i) systemOf(static_cast<int>(i))->spec.bodies.push_back(all.bodies[i]);

@@ -36,6 +36,7 @@ struct Instance {
   Params params;
   bool feedthrough = false;  // from the type, for these params
   std::string boundSystem;   // an actor acting on a scene mechanical system (set-points routed there)
+  std::vector<std::string> listensTo;  // actors whose `finished` the assembler couples to `trigger`
   // both: ports (for an atomic, from its type)
   std::vector<PortSpec> ports;
   // coupled

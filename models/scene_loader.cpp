@@ -166,7 +166,8 @@ class Loader {
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
         inst.mechanicsWhere = markOf(mech, f);
-        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity"}, f,
+        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity", "drive_bandwidth",
+                         "drive_max_effort", "drive_tolerance", "equilibrium"}, f,
                   joinKey(kp, "mechanics"), d_);
       }
     }
@@ -546,6 +547,7 @@ LoadResult loadScene(const fs::path& file) {
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

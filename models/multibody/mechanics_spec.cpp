@@ -82,7 +82,7 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
                    "spherical|planar|fixed|free, ...})");
     return;
   }
-  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg"}, key)) return;
+  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg", "hold"}, key)) return;
   if (n["name"]) b.jointName = n["name"].as<std::string>();
   const std::string type = n["type"] && n["type"].IsScalar() ? n["type"].Scalar() : "";
   const Vector3 axis = r.vec3(n["axis"], key + ".axis", Vector3::UnitZ());
@@ -104,6 +104,12 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
            "unknown joint type '" + type + "'; expected one of fixed, revolute, prismatic, "
            "cylindrical, universal, spherical, planar, free" + (hint.empty() ? "" : " (" + hint + ")"));
     return;
+  }
+  if (const YAML::Node h = n["hold"]) {
+    if (!h.IsScalar() || !YAML::convert<bool>::decode(h, b.hold))
+      r.fail(h, key + ".hold", "expected true or false, got '" + (h.IsScalar() ? h.Scalar() : "a collection") + "'");
+    else if (b.hold && b.joint.nv() != 1)
+      r.fail(h, key + ".hold", "only a 1-dof joint (revolute, prismatic) can be held");
   }
   if ((n["axis"] && axis.norm() < 1e-12) || (n["axis2"] && axis2.norm() < 1e-12))
     r.fail(n["axis"], key + ".axis", "a joint axis must not be zero");
@@ -195,6 +201,22 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   MechanicsSpec spec;
   const Reader top{report, "gravity"};
   spec.gravity = top.vec3(p.node("gravity"), "", spec.gravity);
+  // (optional system-wide settings) => spec.settings
+  auto setting = [&](const char* key, double& value, bool positive) {
+    if (!p.has(key)) return;
+    const Reader sr{report, key};
+    value = sr.number(p.node(key), "", value);
+    if (positive ? !(value > 0) : value < 0)
+      sr.fail(p.node(key), "", positive ? "must be > 0" : "must be >= 0");
+  };
+  setting("drive_bandwidth", spec.settings.driveBandwidth, false);
+  setting("drive_max_effort", spec.settings.driveMaxEffort, false);
+  setting("drive_tolerance", spec.settings.driveTolerance, true);
+  if (p.has("equilibrium")) {
+    const YAML::Node e = p.node("equilibrium");
+    if (!e.IsScalar() || !YAML::convert<bool>::decode(e, spec.settings.equilibrium))
+      Reader{report, "equilibrium"}.fail(e, "", "expected true or false");
+  }
 
   const Reader r{report, "bodies"};
   const YAML::Node bodies = p.node("bodies");
@@ -370,16 +392,18 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers, {}};
+  BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, {}};
   const auto& m = out.model;
   out.visuals.resize(static_cast<std::size_t>(m.nbodies));
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);
   out.jointNames.assign(static_cast<std::size_t>(m.nbodies), "");
+  out.hold.assign(static_cast<std::size_t>(m.nbodies), 0);
   for (int i = 1; i < m.nbodies; ++i) dynamics::jointNeutral(m.joints[i], out.q0.data() + m.idxQ[i]);
   for (const auto& b : spec.bodies) {
     const int i = m.bodyIndex(b.name);
     out.jointNames[static_cast<std::size_t>(i)] = b.jointName;
+    out.hold[static_cast<std::size_t>(i)] = b.hold ? 1 : 0;
     out.visuals[static_cast<std::size_t>(i)] = b.visual;
     for (std::size_t k = 0; k < b.q0.size(); ++k) out.q0[m.idxQ[i] + static_cast<int>(k)] = b.q0[k];
     for (std::size_t k = 0; k < b.v0.size(); ++k) out.v0[m.idxV[i] + static_cast<int>(k)] = b.v0[k];

@@ -35,6 +35,7 @@ struct MechanicsSpec {
     dynamics::Vector3 com = dynamics::Vector3::Zero();
     dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
     std::vector<double> q0, v0;  // empty: neutral / at rest
+    bool hold = false;           // a 1-dof joint's servo holds q0 until an actor drives it (brake)
     Visual visual;
   };
   struct Loop {
@@ -59,7 +60,15 @@ struct MechanicsSpec {
     std::vector<std::vector<Point>> branches;  // per branch: sheaves..., end
     Material material;                         // l0: all branches together
   };
+  // System-wide settings: the `multibody` type's params, or the scene root's `mechanics:`
+  struct Settings {
+    double driveBandwidth = 0.0;  // rad/s; 0: min(10, 0.1/dt)
+    double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
+    double driveTolerance = 1e-3; // rad or m
+    bool equilibrium = false;     // start from static equilibrium instead of the given q0
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
+  Settings settings;
   std::vector<Body> bodies;
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
@@ -71,13 +80,16 @@ using MechanicsReport =
     std::function<void(const std::string& param, const YAML::Node& at, const std::string& key,
                        const std::string& message)>;
 
-// (params gravity, bodies, loops) => spec; every problem reported with its node
+// (params gravity, bodies, loops, ropes, equalizers and, when present, the settings
+// drive_bandwidth, drive_max_effort, drive_tolerance, equilibrium) => spec; every problem
+// reported with its node
 MechanicsSpec parseMechanics(const Params& params, const MechanicsReport& report);
 
 struct BuiltMechanics {
   dynamics::Model model;
   Eigen::VectorXd q0, v0;
   std::vector<std::string> jointNames;  // per body index (0: world, "")
+  std::vector<char> hold;               // per body index: the joint starts held (brake)
   std::vector<MechanicsSpec::Rope> ropes;
   std::vector<MechanicsSpec::Equalizer> equalizers;
   std::vector<MechanicsSpec::Visual> visuals;  // per body index (0: world)

@@ -11,6 +11,7 @@
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
 #include "dynamics/rotation.hpp"
+#include "dynamics/static_equilibrium.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
@@ -22,10 +23,17 @@ std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
 }
 
 namespace {
+// (mechanics) => initial state; held joints (brakes) start with a drive holding q0
 MultibodyState initialState(const BuiltMechanics& m) {
   const auto n = static_cast<std::size_t>(m.model.nbodies);
-  return {m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n),
-          std::vector<WinchJob>(m.ropes.size()), 0.0};
+  MultibodyState x{m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n),
+                   std::vector<WinchJob>(m.ropes.size()), 0.0, std::vector<double>(m.ropes.size(), 0.0)};
+  for (std::size_t i = 1; i < n; ++i)
+    if (m.hold[i]) {
+      const double q = m.q0[m.model.idxQ[i]];
+      x.drives[i] = JointDrive{true, true, q, q, 0.0, 0.0, "", false};
+    }
+  return x;
 }
 }  // namespace
 
@@ -39,9 +47,13 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       system_(mech_.model),
       view_(mech_.model),
       feedforward_(mech_.model),
+      reaction_(mech_.model),
       scratch_(mech_.model),
       spForces_(mech_.model),
-      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      prescribedMask_(static_cast<std::size_t>(mech_.model.nv), 0),
+      prescribedAcc_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      accelScratch_(Eigen::VectorXd::Zero(mech_.model.nv)) {
   // (rope and equalizer specs) => providers, evaluated at every stage
   auto attach = [&](const MechanicsSpec::Point& p) {
     return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
@@ -82,14 +94,59 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   servoInertia_.assign(static_cast<std::size_t>(mech_.model.nbodies), 0.0);
   for (int i = 1; i < mech_.model.nbodies; ++i)
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
-  system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           const dynamics::Data& d, dynamics::ExternalForces& f,
-                           Eigen::VectorXd& tau) {
+  forces_ = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                   const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
     const forces::Stage stage{t, mech_.model, d, q, v};
+    if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
-  });
+  };
+  system_.setForces(forces_);
+  if (opt_.equilibrium) settle();
+  // (initial state) => the rope tensions it starts with are the first peaks
+  MultibodyState& x0 = mutableState().x;
+  dynamics::forwardKinematics(mech_.model, scratch_, x0.q, x0.v);
+  const forces::Stage stage{0.0, mech_.model, scratch_, x0.q, x0.v};
+  for (std::size_t r = 0; r < ropes_.size(); ++r) x0.peakTension[r] = ropes_[r]->tension(stage);
+}
+
+void MultibodyModel::settle() {
+  // (q0, forces at rest) => q0 moved to static equilibrium; holds follow their joints
+  MultibodyState& x = mutableState().x;
+  current_ = &x;
+  const auto r = dynamics::solveStaticEquilibrium(mech_.model, system_, 0.0, x.q);
+  current_ = nullptr;
+  if (!r.converged)
+    throw NumericalError("multibody '" + path() + "'", 0.0,
+                         "no static equilibrium found from the given initial state (max |a| = " +
+                             std::to_string(r.residual) + " after " + std::to_string(r.iterations) +
+                             " Newton iterations)",
+                         "start closer to equilibrium, hold the joints that have no stiffness, or "
+                         "set equilibrium: false");
+  x.v.setZero();
+}
+
+bool MultibodyModel::prescribedDofs(const MultibodyState& x) const {
+  bool any = false;
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    const bool on = x.drives[i].active && x.drives[i].prescribed;
+    if (mech_.model.jointNv[i] == 1) prescribedMask_[static_cast<std::size_t>(mech_.model.idxV[i])] = on ? 1 : 0;
+    any = any || on;
+  }
+  return any;
+}
+
+void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const {
+  // (dv on the prescribed dofs) => every dof's velocity after the impulse; its work = the change
+  // of kinetic energy
+  const auto& m = mech_.model;
+  const double before = dynamics::kineticEnergy(m, scratch_, x.q, x.v);
+  prescribedDofs(x);
+  system_.hybrid().setPrescribed(prescribedMask_);
+  system_.hybrid().velocityStep(scratch_, x.q, x.v, dv);
+  x.work += dynamics::kineticEnergy(m, scratch_, x.q, x.v) - before;
+  powerState_ = nullptr;
 }
 
 int MultibodyModel::jointBody(const std::string& joint) const {
@@ -110,7 +167,7 @@ void MultibodyModel::setPointForces(double t, const Eigen::VectorXd& q, const Ei
   for (int i = 1; i < m.nbodies; ++i) {
     // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
     const JointDrive& d = x.drives[i];
-    if (d.active) {
+    if (d.active && !d.prescribed) {
       const int iq = m.idxQ[i], iv = m.idxV[i];
       const double dir = d.target >= d.start ? 1.0 : -1.0;
       const double travel = std::abs(d.target - d.start);
@@ -144,15 +201,21 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   spForces_.clear();
   spTau_.setZero();
   setPointForces(t, x.q, x.v, scratch_, spForces_, spTau_);
-  current_ = saved;
   p += spTau_.dot(x.v);
+  if (prescribedDofs(x)) {  // (prescribed dofs) => the power of the effort that enforces them
+    system_.acceleration(t, x.q, x.v, accelScratch_);
+    p += system_.prescribedEffort().dot(x.v);
+  }
+  current_ = saved;
   for (int b = 1; b < m.nbodies; ++b) p += spForces_.inBodyFrame(scratch_, b).dot(scratch_.V[b]);
   return p;
 }
 
 void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
-  // (power at both ends of the step) => the work of non-conservative forces, trapezoidal
-  const double p0 = nonConservativePower(x, t);
+  // (power at both ends of the step) => the work of non-conservative forces, trapezoidal; the
+  // power at the start is the one computed at the end of the previous step when nothing changed
+  const double p0 = powerState_ == &x && powerTime_ == t ? power_ : nonConservativePower(x, t);
+  powerState_ = nullptr;
   current_ = &x;
   double time = t;
   try {
@@ -164,7 +227,15 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
                          "a smaller dt, softer drives (bandwidth), or an implicit integrator");
   }
   if (x.q.allFinite() && x.v.allFinite()) {
-    x.work += 0.5 * dt * (p0 + nonConservativePower(x, t + dt));
+    const double p1 = nonConservativePower(x, t + dt);
+    x.work += 0.5 * dt * (p0 + p1);
+    // (end-of-step kinematics in scratch_) => running peak of every rope's tension
+    const forces::Stage stage{t + dt, mech_.model, scratch_, x.q, x.v};
+    for (std::size_t r = 0; r < ropes_.size(); ++r)
+      x.peakTension[r] = std::max(x.peakTension[r], ropes_[r]->tension(stage));
+    powerState_ = &x;
+    powerTime_ = t + dt;
+    power_ = p1;
     return;
   }
   // (non-finite state) => the first body whose joint went bad
@@ -183,6 +254,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
+  powerState_ = nullptr;  // set-points change the forces
   for (const SetPoint& s : setpoint.values()) {
     switch (s.kind) {
       case SetPoint::Kind::JointTarget: {
@@ -191,7 +263,20 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
                                       "' names '" + s.element + "', which is not a 1-dof joint here");
         const double q = x.q[mech_.model.idxQ[i]];
-        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor};
+        const bool wasPrescribed = x.drives[i].active && x.drives[i].prescribed;
+        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor, s.prescribed};
+        if (s.prescribed && mech_.model.nc > 0)
+          throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" + s.actor +
+                                      "' on '" + s.element + "' needs a system without loop closures; "
+                                      "use mode: servo");
+        if (s.prescribed || wasPrescribed) {
+          // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
+          const int iv = mech_.model.idxV[i];
+          accelScratch_.setZero();
+          if (s.prescribed) accelScratch_[iv] = (s.target >= q ? 1.0 : -1.0) * std::abs(s.speed) - x.v[iv];
+          if (s.prescribed && s.target == q) accelScratch_[iv] = -x.v[iv];
+          prescribedVelocityStep(x, accelScratch_);
+        }
         break;
       }
       case SetPoint::Kind::BodyLoad: {
@@ -228,10 +313,24 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
   devs::Time next = devs::kInfinity;
   for (const auto& w : x.winches)
     if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  for (const auto& d : x.drives)
+    if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
   return next;
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
+  powerState_ = nullptr;
+  // (prescribed ramps ending now) => locked exactly at their targets
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    JointDrive& d = x.drives[i];
+    if (!d.active || !d.prescribed || d.reported || d.tEnd() > t) continue;
+    const int iq = mech_.model.idxQ[i], iv = mech_.model.idxV[i];
+    x.q[iq] = d.target;
+    accelScratch_.setZero();
+    accelScratch_[iv] = -x.v[iv];
+    prescribedVelocityStep(x, accelScratch_);
+    d.reported = true;
+  }
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -245,7 +344,7 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   g[0] = -1.0;
   for (int i = 1; i < mech_.model.nbodies; ++i) {
     const JointDrive& d = x.drives[i];
-    if (!d.active || d.reported) {
+    if (!d.active || d.reported || d.prescribed) {
       g[i] = -1.0;
       continue;
     }
@@ -264,10 +363,16 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
   const int nb = mech_.model.nbodies;
-  if (r.timeEvent)
+  if (r.timeEvent) {
     for (std::size_t k = 0; k < x.winches.size(); ++k)
       if (x.winches[k].active && x.winches[k].tEnd <= t)
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
+    for (int i = 1; i < nb; ++i) {
+      const JointDrive& d = x.drives[i];
+      if (d.active && d.prescribed && !d.reported && d.tEnd() <= t)
+        event.add({mech_.jointNames[i], d.actor, "reached", d.target});
+    }
+  }
   if (r.stateEvent <= 0) return;
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);
@@ -281,6 +386,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
+  powerState_ = nullptr;
   if (e > 0 && e < mech_.model.nbodies)
     x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }
@@ -304,6 +410,22 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
     accelTime_ = s.tx;
   }
   return accel_;
+}
+
+const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
+  // (committed state, its accelerations, every force) => RNEA's joint forces, cached by time
+  const auto& s = state();
+  if (reactionTime_ != s.tx) {
+    const Eigen::VectorXd& a = acceleration();
+    current_ = &s.x;
+    spForces_.clear();
+    spTau_.setZero();
+    dynamics::forwardKinematics(mech_.model, scratch_, s.x.q, s.x.v);
+    forces_(s.tx, s.x.q, s.x.v, scratch_, spForces_, spTau_);
+    dynamics::rnea(mech_.model, reaction_, s.x.q, s.x.v, a, &spForces_);
+    reactionTime_ = s.tx;
+  }
+  return reaction_.F_W;
 }
 
 double MultibodyModel::energy() const {
@@ -330,6 +452,8 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       out.push_back({j + ".a" + suffix, linear ? "m/s^2" : "rad/s^2",
                      [this, iv] { return acceleration()[iv]; }});
     }
+    if (m.nc == 0 && m.jointNv[i] < 6)  // (joint) => magnitude of the force it transmits
+      out.push_back({j + ".reaction", "N", [this, i] { return jointForces()[i].tail<3>().norm(); }});
     const std::string& b = m.names[i];
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k)
@@ -350,6 +474,7 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back({n + ".length", "m", [this, r, stage] { return ropes_[r]->length(stage()); }});
     out.push_back({n + ".unstretched_length", "m",
                    [this, r] { return ropes_[r]->unstretchedLength(state().tx); }});
+    out.push_back({n + ".peak_tension", "N", [this, r] { return state().x.peakTension[r]; }});
   }
   for (std::size_t k = 0; k < equalizers_.size(); ++k) {
     const forces::Equalizer& e = *equalizers_[k];

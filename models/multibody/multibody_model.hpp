@@ -4,6 +4,8 @@
 // fixed-step integrator at step dt; joint drives and body loads set by actors through the
 // `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
 // reaches its target is a located state event, reported on the `event` port.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -23,12 +25,16 @@
 
 namespace yardsim::models {
 
-// A joint driven towards a target by a bounded servo following a ramp at a given speed.
+// A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
+// motion prescribed (the ramp exactly; the joint is locked at the target afterwards).
 struct JointDrive {
   bool active = false;
   bool reported = false;  // the "reached" event was sent
   double start = 0.0, target = 0.0, speed = 0.0, t0 = 0.0;
   std::string actor;
+  bool prescribed = false;
+  // (ramp) => when a prescribed ramp ends
+  double tEnd() const { return t0 + std::max(std::abs(target - start) / speed, 1e-9); }
 };
 
 // A winch job on a rope: paying out (or hauling in) until tEnd.
@@ -49,6 +55,7 @@ struct MultibodyState {
   std::vector<BodyLoad> loads;     // per body index
   std::vector<WinchJob> winches;   // per rope
   double work = 0.0;               // J: integral of the power of non-conservative forces
+  std::vector<double> peakTension; // N per rope part: the largest tension at any step so far
 };
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
@@ -59,6 +66,7 @@ struct MultibodyOptions {
   double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
+  bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
 };
 
@@ -81,6 +89,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
+  // (committed state) => per body, the spatial force its joint transmits to it (world frame,
+  // moment about the world origin first), by RNEA with the accelerations and all forces; trees
+  const std::vector<dynamics::Force>& jointForces() const;
   const MultibodyOptions& options() const { return opt_; }
   void replayBodies(Replay& out) const override;
   void replayFrame(Replay& out, std::size_t firstBody) const override;
@@ -104,6 +115,12 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (rope name) => index, or -1
   int ropeIndex(const std::string& name) const;
+  // (initial state) => static equilibrium, or a NumericalError saying why not
+  void settle();
+  // (x's drives) => which dofs have prescribed motion; true when any
+  bool prescribedDofs(const MultibodyState& x) const;
+  // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
+  void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -114,6 +131,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* current_ = nullptr;  // the state being advanced
   mutable dynamics::Data view_;                      // kinematics for channels
   mutable dynamics::Data feedforward_;               // bias forces for the drives
+  mutable dynamics::Data reaction_;                  // RNEA for the joint forces
+  mutable double reactionTime_ = -1.0;
+  dynamics::MultibodySystem::ForceCallback forces_;  // every force, as evaluated in a stage
   mutable Eigen::VectorXd accel_;                    // accelerations for channels
   mutable double accelTime_ = -1.0;
   mutable double viewTime_ = -1.0;
@@ -123,6 +143,12 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;
+  // the power at the end of the last step, reused at the start of the next one
+  mutable double powerTime_ = -1.0, power_ = 0.0;
+  mutable std::vector<char> prescribedMask_;  // per dof
+  mutable Eigen::VectorXd prescribedAcc_;     // zero: constant-speed ramps and locks
+  mutable Eigen::VectorXd accelScratch_;
+  mutable const MultibodyState* powerState_ = nullptr;
 };
 
 }  // namespace yardsim::models

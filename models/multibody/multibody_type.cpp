@@ -7,8 +7,15 @@ namespace yardsim::models {
 namespace {
 
 MultibodyOptions options(const Params& p) {
-  return {p.number("dt"), p.string("method"), p.number("drive_bandwidth"),
-          p.number("drive_max_effort"), p.number("drive_tolerance"), p.boolean("project_loops")};
+  MultibodyOptions o;
+  o.dt = p.number("dt");
+  o.method = p.string("method");
+  o.driveBandwidth = p.number("drive_bandwidth");
+  o.driveMaxEffort = p.number("drive_max_effort");
+  o.driveTolerance = p.number("drive_tolerance");
+  o.projectLoops = p.boolean("project_loops");
+  o.equilibrium = p.boolean("equilibrium");
+  return o;
 }
 
 // (params) => spec; the first problem thrown (used after validation, so it never throws)
@@ -48,6 +55,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "a drive has reached its target within this"},
             {"project_loops", ParamKind::Boolean, false, "true", "",
              "project q and v onto the loop constraints after every step"},
+            {"equilibrium", ParamKind::Boolean, false, "false", "",
+             "start from static equilibrium (v = 0) found from the given initial state"},
         },
     .ports = [](const Params&) {
       return std::vector<PortSpec>{{"setpoint", "setpoint", true, true},

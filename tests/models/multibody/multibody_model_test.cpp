@@ -209,3 +209,94 @@ ropes:
   CHECK(std::stod(v.substr(v.find("over_mbl ") + 9)) == Approx(8829.0).epsilon(1e-3));
   (void)mb;
 }
+
+TEST_CASE("a held joint stays where it starts until an actor drives it, a free one falls") {
+  std::string held = kRod;
+  held.replace(held.find("q0_deg: 90}"), 11, "q0_deg: 90, hold: true}");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  devs::Coupled top("top");
+  top.addComponent(std::make_unique<MultibodyModel>("brake", build(held), opt));
+  top.addComponent(std::make_unique<MultibodyModel>("loose", build(kRod), opt));
+  devs::Simulator sim(top);
+  sim.runUntil(1.0);
+  const auto& b = static_cast<const MultibodyModel&>(*top.findComponent("brake"));
+  const auto& l = static_cast<const MultibodyModel&>(*top.findComponent("loose"));
+  CHECK(b.state().x.q[0] == Approx(M_PI / 2).margin(1e-9));  // the servo's feedforward holds gravity
+  CHECK(l.state().x.q[0] < M_PI / 2 - 0.5);                  // horizontal rod: falls freely
+}
+
+TEST_CASE("hold on a joint with more than one degree of freedom is refused") {
+  std::string bad = kRod;
+  bad.replace(bad.find("type: revolute, axis: [0, 1, 0], q0_deg: 90}"), 44, "type: spherical, hold: true}");
+  std::vector<std::string> messages;
+  models::parseMechanics(params(bad), [&](const std::string& param, const YAML::Node&, const std::string& key,
+                                         const std::string& msg) { messages.push_back(param + "." + key + ": " + msg); });
+  REQUIRE(messages.size() == 1);
+  CHECK_THAT(messages[0], Catch::Contains("rod.joint.hold") && Catch::Contains("only a 1-dof joint"));
+}
+
+TEST_CASE("a prescribed joint follows its ramp exactly, drags the free link, and locks at the target") {
+  // a double pendulum: the upper hinge prescribed from 90 deg to 0 at 0.5 rad/s, the lower free
+  const std::string yaml = std::string(kRod) + R"(  link:
+    parent: rod
+    joint: {name: elbow, type: revolute, axis: [0, 1, 0]}
+    placement: {xyz: [0, 0, -1]}
+    mass: 1.0
+    com: [0, 0, -0.5]
+    inertia: [0.0833333333333333, 0.0833333333333333, 0.001]
+)";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  auto& mb = root.add<MultibodyModel>("pendulum", build(yaml), opt);
+  struct Driver final : devs::Atomic<bool> {
+    Driver() : devs::Atomic<bool>("driver", false) {}
+    devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
+    devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : 0.0; }
+    void output(const bool&) const override {
+      models::SetPoint s;
+      s.element = "hinge";
+      s.actor = "driver";
+      s.target = 0.0;
+      s.speed = 0.5;
+      s.prescribed = true;
+      out.add(s);
+    }
+    void internalTransition(bool& sent) const override { sent = true; }
+    void externalTransition(bool&, devs::Time) const override {}
+  };
+  auto& driver = root.add<Driver>();
+  root.couple(driver.out, mb.setpoint);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  std::vector<models::Channel> channels;
+  mb.channels(channels);
+  auto read = [&](const std::string& n) {
+    for (const auto& c : channels)
+      if (c.name == n) return c.read();
+    FAIL("no channel " << n);
+    return 0.0;
+  };
+  const double balance0 = read("energy_balance");  // at rest, level, before the set-point
+  // (during the ramp) => the hinge angle is the ramp, to round-off; the elbow swings freely
+  sim.runUntil(1.7);
+  const double t1 = mb.state().tx;
+  CHECK(mb.state().x.q[0] == Approx(M_PI / 2 - 0.5 * t1).margin(1e-12));
+  CHECK(mb.state().x.v[0] == Approx(-0.5).margin(1e-12));
+  CHECK(std::abs(mb.state().x.v[1]) > 0.01);
+  sim.runUntil(6.0);
+  // (ramp end) => "reached" exactly when the ramp ends, a time event; locked at 0 afterwards
+  std::vector<testing::Record> reached;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "event") reached.push_back(r);
+  REQUIRE(reached.size() == 1);
+  CHECK(reached[0].t == Approx((M_PI / 2) / 0.5).epsilon(1e-12));
+  CHECK(mb.state().x.q[0] == 0.0);
+  CHECK(mb.state().x.v[0] == 0.0);
+  // (energy) => kinetic + potential - work of the enforcing effort and the impulses is constant
+  // (to the trapezoidal rule's error on the work; the energies are about 10 J)
+  CHECK(std::abs(read("energy_balance") - balance0) < 1e-4);
+  CHECK(std::abs(read("work")) > 1.0);  // the effort did work
+}

@@ -15,7 +15,7 @@ function header(data, tEnd, root) {
   const run = data.run || {};
   root.append(el('h1', {}, `yardsim report: ${run.scene || data.meta.scene || '(unknown scene)'}`));
   const systems = (run.systems || []).map(s => `${s.method}, dt = ${fmt(s.dt)} s (${s.model})`);
-  if (run.integrator && run.integrator !== 'none') systems.unshift(`${run.integrator}, dt = ${fmt(run.step)} s`);
+  if (!systems.length && run.integrator && run.integrator !== 'none') systems.push(`${run.integrator}, dt = ${fmt(run.step)} s`);
   const facts = el('table', { class: 'run-facts' });
   const row = (k, v, cls = '') => facts.append(el('tr', {}, el('th', {}, k), el('td', { class: cls }, v)));
   row('scene file', run.file || data.meta.scene || '–');

@@ -45,14 +45,24 @@ export function makePlots(series, time, staticLevels, container, onTime) {
           ctx.setLineDash([6, 4]);
           ctx.lineWidth = 1.5 * devicePixelRatio;
           ctx.font = `${11 * devicePixelRatio}px sans-serif`;
+          ctx.textAlign = 'left';
+          ctx.textBaseline = 'bottom';
+          const labelled = new Map();  // value => channels at that level (one label each)
           for (const l of levels) {
             const y = u.valToPos(l.value, 'y', true);
-            ctx.strokeStyle = ctx.fillStyle = l.color;
+            ctx.strokeStyle = l.color;
             ctx.beginPath();
             ctx.moveTo(u.bbox.left, y);
             ctx.lineTo(u.bbox.left + u.bbox.width, y);
             ctx.stroke();
-            ctx.fillText(`static ${l.name} = ${fmt(l.value)}`, u.bbox.left + 4 * devicePixelRatio, y - 3 * devicePixelRatio);
+            if (!labelled.has(l.value)) labelled.set(l.value, []);
+            labelled.get(l.value).push(l);
+          }
+          for (const [value, ls] of labelled) {
+            const y = u.valToPos(value, 'y', true);
+            ctx.fillStyle = ls[0].color;
+            const who = ls.length === 1 ? ls[0].name : `${ls.length} channels`;
+            ctx.fillText(`static ${fmt(value)} (${who})`, u.bbox.left + 4 * devicePixelRatio, y - 3 * devicePixelRatio);
           }
           ctx.restore();
         }],

@@ -90,7 +90,9 @@ function build(gltf, container) {
   const size = bounds.getSize(new Vector3());
   const centre = bounds.getCenter(new Vector3());
   const radius = Math.max(size.length() / 2, 0.5);
-  const grid = new GridHelper(Math.pow(10, Math.ceil(Math.log10(radius * 4))), 20, 0x9aa5b1, 0xc5ccd3);
+  // (extent) => a ground grid about four radii wide, in round metres, 20 divisions
+  const decade = Math.pow(10, Math.floor(Math.log10(radius * 4)));
+  const grid = new GridHelper(Math.ceil((radius * 4) / decade) * decade, 20, 0x9aa5b1, 0xc5ccd3);
   grid.position.set(centre.x, Math.min(0, bounds.min.y), centre.z);
   scene.add(grid);
   const camera = new PerspectiveCamera(40, 1, radius / 100, radius * 100);

@@ -1,6 +1,6 @@
 // Opens a report.html in Debian's chromium (puppeteer-core, headless, no GPU, fresh profile)
 // and checks what a person would: no console errors, no network requests, plots drawn, one
-// mesh per body, the slider moves the most-travelled body and the plot cursor (and the plot
+// mesh per body, the slider moves the block (or the most-travelled body) and the plot cursor (and the plot
 // cursor moves the slider), one timeline row per actor; saves a screenshot.
 //   node test/browser_test.mjs OUTDIR/report.html SCREENSHOT.png [--chromium /usr/bin/chromium]
 import { mkdtempSync, readFileSync, rmSync, existsSync } from 'node:fs';
@@ -149,7 +149,8 @@ async function checkReport(page) {
     check('no bodies, no replay', meshes === null && data.glb === null);
 
   // (slider clicked at 3/4) => the time, the most-travelled body and the plot cursors follow
-  const block = bodies.reduce((a, b) => (b.travel > a.travel ? b : a), bodies[0] || null);
+  // the block (a body named block) when there is one, else the body that travels most
+  const block = bodies.find(b => /(^|\.)block$/.test(b.name)) || bodies.reduce((a, b) => (b.travel > a.travel ? b : a), bodies[0] || null);
   const probe = () => page.evaluate(name => {
     const y = window.yardsim;
     const b = name && y.replay.bodies.find(o => o.userData.body === name);

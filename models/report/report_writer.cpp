@@ -46,6 +46,19 @@ std::vector<RopePeak> ropePeaks(const Timeseries& ts,
         p.time = ts.columns[0].values[i];
       }
     if (!std::isfinite(p.peak)) p.peak = 0.0;
+    // (the rope's running maximum over every step, when recorded) => the peak between samples too,
+    // dated by the first sample that holds it
+    const std::string running = col.name.substr(0, col.name.size() - suffix.size()) + ".peak_tension";
+    for (const auto& other : ts.columns)
+      if (other.name == running && !other.values.empty() && std::isfinite(other.values.back()) &&
+          other.values.back() > p.peak) {
+        p.peak = other.values.back();
+        for (std::size_t i = 0; i < other.values.size(); ++i)
+          if (other.values[i] >= p.peak) {
+            p.time = ts.columns[0].values[i];
+            break;
+          }
+      }
     for (const auto& [name, value] : staticLevels)
       if (name == col.name) p.staticValue = value;
     out.push_back(p);

@@ -20,7 +20,8 @@ struct RopePeak {
 };
 
 // (time series, static levels) => the peak of every tension channel (name ending in
-// ".tension") and its ratio to the static value where one is given
+// ".tension") and its ratio to the static value where one is given; where the rope's running
+// maximum "<rope>.peak_tension" is recorded too, its final value (the peak over every step)
 std::vector<RopePeak> ropePeaks(const Timeseries& ts,
                                 const std::vector<std::pair<std::string, double>>& staticLevels);
 

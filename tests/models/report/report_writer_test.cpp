@@ -57,6 +57,16 @@ TEST_CASE("the peak of every tension channel and its ratio to the static value")
   CHECK_FALSE(peaks[1].staticValue);
 }
 
+TEST_CASE("a rope's running maximum over every step gives the peak between samples") {
+  models::Timeseries ts;
+  ts.columns = {{"time", "s", {0, 1, 2, 3}}, {"c.hoist.tension", "N", {10, 12, 11, 10}},
+                {"c.hoist.peak_tension", "N", {10, 12, 13.5, 13.5}}};
+  const auto peaks = models::ropePeaks(ts, {});
+  REQUIRE(peaks.size() == 1);
+  CHECK(peaks[0].peak == 13.5);
+  CHECK(peaks[0].time == 2.0);  // the first sample after the step that reached it
+}
+
 TEST_CASE("actor spans come from the started and finished outputs of the trace") {
   testing::SceneDir dir;
   const auto trace = dir.write("trace.jsonl", R"({"t":0,"seq":1,"model":"a","kind":"state","value":"waiting"}
@@ -124,7 +134,8 @@ until: 2
   // (plots globs) => the hoist channels; the glob that matches nothing is a note
   std::vector<std::string> plotted;
   for (const auto& i : d["plots"]) plotted.push_back(d["series"][i.as<int>()]["name"].as<std::string>());
-  CHECK(plotted == std::vector<std::string>{"m.hoist.tension", "m.hoist.length", "m.hoist.unstretched_length"});
+  CHECK(plotted == std::vector<std::string>{"m.hoist.tension", "m.hoist.length", "m.hoist.unstretched_length",
+                                           "m.hoist.peak_tension"});
   CHECK_THAT(d["notes"][0].as<std::string>(), Catch::Contains("'m.nothing*' matches no recorded channel"));
   // (time series) => float32 base64 of the recorded values
   const std::string t = unbase64(d["time"].as<std::string>());

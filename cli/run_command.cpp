@@ -19,6 +19,11 @@ int runCommand(const RunArgs& a) {
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
   opt.trace = a.traceGiven ? a.trace : scene->trace;
+  if (a.report && !(scene->record.interval > 0)) {
+    std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
+                         "docs/report.md)\n", a.scene.c_str());
+    return kInvalidInput;
+  }
   if (a.report && std::find(opt.trace.begin(), opt.trace.end(), "jsonl") == opt.trace.end())
     opt.trace.push_back("jsonl");  // the report's actor timeline reads it
   for (const auto& t : opt.trace)

@@ -1,6 +1,8 @@
 // The yardsim command, run as a process: every subcommand and every exit status.
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sys/wait.h>
 
 #include "support/csv_file.hpp"
@@ -160,4 +162,27 @@ TEST_CASE("yardsim run --report and yardsim report write report.html, and refuse
   r = runYardsim("report " + dir.file("empty"));
   CHECK(r.status == 1);
   CHECK_THAT(r.out, Catch::Contains("has no timeseries.csv"));
+}
+
+TEST_CASE("yardsim run --report: a run that blows up still gets its report, and no record block is refused") {
+  yardsim::testing::SceneDir dir;
+  const auto blow = dir.write("blow.yaml", R"(schema_version: 1
+components:
+  s: {type: spring_mass, params: {mass: 1, stiffness: 1, x0: 1, dt: 3.0, blowup_limit: 100}}
+record: {interval: 3.0}
+until: 1000
+)");
+  auto r = runYardsim("run " + blow.string() + " -o " + dir.file("out") + " --quiet --report");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK(std::filesystem::exists(dir.path() / "out/report.html"));
+  std::ifstream run(dir.path() / "out/run.json");
+  const std::string json((std::istreambuf_iterator<char>(run)), std::istreambuf_iterator<char>());
+  CHECK_THAT(json, Catch::Contains("\"status\":\"failed\"") && Catch::Contains("spring_mass 's'"));
+  const auto quiet = dir.write("norecord.yaml", "schema_version: 1\ncomponents:\n  s: {type: spring_mass, "
+                                                "params: {mass: 1, stiffness: 1, x0: 1, dt: 0.1}}\nuntil: 1\n");
+  r = runYardsim("run " + quiet.string() + " -o " + dir.file("out2") + " --quiet --report");
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("--report needs a `record:` block"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "out2"));  // nothing simulated
 }

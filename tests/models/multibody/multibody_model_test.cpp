@@ -42,6 +42,41 @@ const char* kRod = R"(bodies:
     inertia: [0.0833333333333333, 0.0833333333333333, 0.001]
 )";
 
+// A test actor: one set-point at time `at`.
+struct Sender final : devs::Atomic<bool> {
+  Sender(models::SetPoint s, devs::Time at) : devs::Atomic<bool>("driver", false), setPoint(std::move(s)), at_(at) {}
+  devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
+  devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : at_; }
+  void output(const bool&) const override { out.add(setPoint); }
+  void internalTransition(bool& sent) const override { sent = true; }
+  void externalTransition(bool&, devs::Time) const override {}
+  models::SetPoint setPoint;
+
+ private:
+  devs::Time at_;
+};
+
+// (hinge set-point) => drive the joint `hinge` to `target` at `speed`, from `driver`
+models::SetPoint driveHinge(double target, double speed, bool prescribed) {
+  models::SetPoint s;
+  s.element = "hinge";
+  s.actor = "driver";
+  s.target = target;
+  s.speed = speed;
+  s.prescribed = prescribed;
+  return s;
+}
+
+// (model, channel name) => its current value
+double channel(const MultibodyModel& mb, const std::string& name) {
+  std::vector<models::Channel> channels;
+  mb.channels(channels);
+  for (const auto& c : channels)
+    if (c.name == name) return c.read();
+  FAIL("no channel " << name);
+  return 0.0;
+}
+
 }  // namespace
 
 TEST_CASE("a free compound pendulum keeps its energy and swings at the closed-form period") {
@@ -72,23 +107,8 @@ TEST_CASE("a joint drive follows its ramp and reports the target as a located st
   opt.dt = 1e-3;
   opt.driveTolerance = 1e-4;
   auto& mb = root.add<MultibodyModel>("pendulum", build(kRod), opt);
-  // a test actor: one set-point at t = 0, while the rod is still level
-  struct Driver final : devs::Atomic<bool> {
-    Driver() : devs::Atomic<bool>("driver", false) {}
-    devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
-    devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : 0.0; }
-    void output(const bool&) const override {
-      models::SetPoint s;
-      s.element = "hinge";
-      s.actor = "driver";
-      s.target = 0.0;   // from 90 deg down to 0 at 0.5 rad/s
-      s.speed = 0.5;
-      out.add(s);
-    }
-    void internalTransition(bool& sent) const override { sent = true; }
-    void externalTransition(bool&, devs::Time) const override {}
-  };
-  auto& driver = root.add<Driver>();
+  // one set-point at t = 0, while the rod is still level: from 90 deg down to 0 at 0.5 rad/s
+  auto& driver = root.add<Sender>(driveHinge(0.0, 0.5, false), 0.0);
   root.couple(driver.out, mb.setpoint);
   devs::Simulator sim(root);
   testing::RecordCollector rec(false);
@@ -162,14 +182,7 @@ TEST_CASE("a block on an equalizer rests where both branches carry m g l / (2 h)
   devs::Simulator sim(root);
   sim.runUntil(2.0);
   CHECK(mb.state().x.q[0] == Approx(-h).margin(1e-9));
-  std::vector<models::Channel> channels;
-  mb.channels(channels);
-  auto read = [&](const std::string& name) {
-    for (const auto& c : channels)
-      if (c.name == name) return c.read();
-    FAIL("no channel " << name);
-    return 0.0;
-  };
+  auto read = [&](const std::string& name) { return channel(mb, name); };
   CHECK(read("eq.tension") == Approx(T).epsilon(1e-9));
   CHECK(read("eq.branch0.length") == Approx(l).epsilon(1e-9));
   CHECK(read("eq.length") == Approx(L).epsilon(1e-9));
@@ -252,35 +265,12 @@ TEST_CASE("a prescribed joint follows its ramp exactly, drags the free link, and
   models::MultibodyOptions opt;
   opt.dt = 1e-3;
   auto& mb = root.add<MultibodyModel>("pendulum", build(yaml), opt);
-  struct Driver final : devs::Atomic<bool> {
-    Driver() : devs::Atomic<bool>("driver", false) {}
-    devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
-    devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : 0.0; }
-    void output(const bool&) const override {
-      models::SetPoint s;
-      s.element = "hinge";
-      s.actor = "driver";
-      s.target = 0.0;
-      s.speed = 0.5;
-      s.prescribed = true;
-      out.add(s);
-    }
-    void internalTransition(bool& sent) const override { sent = true; }
-    void externalTransition(bool&, devs::Time) const override {}
-  };
-  auto& driver = root.add<Driver>();
+  auto& driver = root.add<Sender>(driveHinge(0.0, 0.5, true), 0.0);
   root.couple(driver.out, mb.setpoint);
   devs::Simulator sim(root);
   testing::RecordCollector rec(false);
   sim.addListener(rec);
-  std::vector<models::Channel> channels;
-  mb.channels(channels);
-  auto read = [&](const std::string& n) {
-    for (const auto& c : channels)
-      if (c.name == n) return c.read();
-    FAIL("no channel " << n);
-    return 0.0;
-  };
+  auto read = [&](const std::string& n) { return channel(mb, n); };
   const double balance0 = read("energy_balance");  // at rest, level, before the set-point
   // (during the ramp) => the hinge angle is the ramp, to round-off; the elbow swings freely
   sim.runUntil(1.7);
@@ -316,14 +306,7 @@ loads:
   models::MultibodyOptions opt;
   opt.dt = 0.01;
   auto& mb = root.add<MultibodyModel>("m", build(yaml), opt);
-  std::vector<models::Channel> channels;
-  mb.channels(channels);
-  auto read = [&](const std::string& n) {
-    for (const auto& c : channels)
-      if (c.name == n) return c.read();
-    FAIL("no channel " << n);
-    return 0.0;
-  };
+  auto read = [&](const std::string& n) { return channel(mb, n); };
   devs::Simulator sim(root);
   sim.runUntil(0.5);
   CHECK(read("push.fx") == Approx(4.0));

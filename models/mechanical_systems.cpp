@@ -39,7 +39,7 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
   if (inst.atomic()) return;
   if (inst.mechanics.IsDefined()) {
     Params p;
-    for (const char* key : {"bodies", "ropes", "equalizers", "loops"})
+    for (const char* key : {"bodies", "ropes", "equalizers", "loops", "loads", "watch"})
       p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Map),
             inst.mechanicsWhere);
     p.set("gravity", inst.mechanics["gravity"] ? inst.mechanics["gravity"] : YAML::Load("[0, 0, -9.81]"),
@@ -70,7 +70,9 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
                                                const std::string& key, const std::string& msg) {
       if (key.rfind("__none__", 0) == 0) return;
       // parent, rope and loop bodies outside the fragment are resolved later, globally
-      if (msg.rfind("unknown parent body", 0) == 0 || msg.rfind("unknown body", 0) == 0) return;
+      if (msg.rfind("unknown parent body", 0) == 0 || msg.rfind("unknown body", 0) == 0 ||
+          msg.rfind("unknown element", 0) == 0)
+        return;
       report(param, at, key, msg);
     });
     std::erase_if(spec.bodies, [](const auto& b) { return b.name == "__none__"; });
@@ -162,6 +164,11 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
         }
       all.equalizers.push_back(std::move(e));
     }
+    for (auto l : f.spec.loads) {
+      l.name = prefixed(path, l.name);
+      l.body = resolve(f, l.body, "load '" + l.name + "'");
+      all.loads.push_back(std::move(l));
+    }
     for (auto l : f.spec.loops) {
       l.name = prefixed(path, l.name);
       l.bodyA = resolve(f, l.bodyA, "loop '" + l.name + "'");
@@ -171,6 +178,26 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       all.loops.push_back(std::move(l));
     }
   }
+  // (watches) => their elements resolved among every fragment's bodies, joints and ropes
+  std::vector<std::string> elements;
+  for (const auto& b : all.bodies) elements.insert(elements.end(), {b.name, b.jointName});
+  for (const auto& r : all.ropes) elements.push_back(r.name);
+  for (const auto& f : fragments)
+    for (auto w : f.spec.watches) {
+      const std::string full = resolveName(f.owner->path, w.element, elements);
+      if (full.empty()) {
+        // (names as the fragment would write them) => the suggestion
+        std::vector<std::string> seen;
+        const std::string own = f.owner->path.empty() ? "" : f.owner->path + ".";
+        for (const auto& e : elements) seen.push_back(!own.empty() && e.starts_with(own) ? e.substr(own.size()) : e);
+        diags.error(f.owner->mechanicsWhere, joinKey(joinKey(f.owner->keyPath, "mechanics"), "watch." + w.name),
+                    "unknown element '" + w.element + "'", didYouMean(w.element, seen));
+        continue;
+      }
+      w.name = prefixed(f.owner->path, w.name);
+      w.element = full;
+      all.watches.push_back(std::move(w));
+    }
   if (diags.hasErrors()) return {};
 
   // (joints, loops, ropes, equalizers) => connected components of the bodies (the world joins nothing)
@@ -201,6 +228,14 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     eqAt.push_back(join(bodies));
   }
   for (const auto& l : all.loops) loopAt.push_back(join({l.bodyA, l.bodyB}));
+  // (a watch) => the system of its element's body (a joint's or a rope's first body)
+  auto elementBody = [&](const std::string& e) -> int {
+    for (const auto& b : all.bodies)
+      if (b.name == e || b.jointName == e) return index.at(b.name);
+    for (std::size_t r = 0; r < all.ropes.size(); ++r)
+      if (all.ropes[r].name == e) return ropeAt[r];
+    return -1;
+  };
   for (std::size_t i = 0; i < all.ropes.size(); ++i)
     if (ropeAt[i] < 0)
       diags.error(scene.root.where, "mechanics", "rope '" + all.ropes[i].name + "' is attached to no body");
@@ -231,6 +266,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     systemOf(eqAt[i])->spec.equalizers.push_back(all.equalizers[i]);
   for (std::size_t i = 0; i < all.loops.size(); ++i)
     if (loopAt[i] >= 0) systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
+  for (const auto& l : all.loads)
+    if (l.body != "world") systemOf(index.at(l.body))->spec.loads.push_back(l);
+  for (const auto& w : all.watches)
+    if (const int b = elementBody(w.element); b >= 0) systemOf(b)->spec.watches.push_back(w);
 
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {

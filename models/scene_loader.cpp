@@ -166,7 +166,7 @@ class Loader {
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
         inst.mechanicsWhere = markOf(mech, f);
-        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity", "drive_bandwidth",
+        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "gravity", "drive_bandwidth",
                          "drive_max_effort", "drive_tolerance", "equilibrium"}, f,
                   joinKey(kp, "mechanics"), d_);
       }

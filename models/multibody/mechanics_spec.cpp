@@ -1,6 +1,8 @@
 #include "models/multibody/mechanics_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "dynamics/model_builder.hpp"
@@ -382,6 +384,91 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   } else if (eqs.IsDefined() && !eqs.IsNull()) {
     er.fail(eqs, "", "expected a mapping of equalizers");
   }
+
+  // (loads: name: {body, point, frame, series}) => body loads
+  const YAML::Node loads = p.has("loads") ? p.node("loads") : YAML::Node();
+  const Reader ldr{report, "loads"};
+  if (loads.IsMap()) {
+    for (auto it = loads.begin(); it != loads.end(); ++it) {
+      MechanicsSpec::Load l;
+      l.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      if (!ldr.keys(n, {"body", "point", "frame", "series"}, l.name)) continue;
+      l.body = n["body"] && n["body"].IsScalar() ? n["body"].Scalar() : "";
+      if (l.body.empty()) ldr.fail(n, l.name, "missing required key 'body'");
+      else if (!names.count(l.body) || l.body == "world")
+        ldr.fail(n["body"], l.name + ".body", "unknown body '" + l.body + "'");
+      l.point = ldr.vec3(n["point"], l.name + ".point", Vector3::Zero());
+      const std::string frame = n["frame"] && n["frame"].IsScalar() ? n["frame"].Scalar() : "world";
+      if (frame != "world" && frame != "body")
+        ldr.fail(n["frame"], l.name + ".frame", "expected world or body, got '" + frame + "'");
+      l.bodyFrame = frame == "body";
+      const YAML::Node series = n["series"];
+      if (!series.IsSequence() || series.size() == 0) {
+        ldr.fail(series, l.name + ".series", "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
+        continue;
+      }
+      double last = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < series.size(); ++i) {
+        const std::string k = l.name + ".series[" + std::to_string(i) + "]";
+        const auto row = ldr.numbers(series[i], k, 7);
+        std::array<double, 7> sample{};
+        std::copy(row.begin(), row.end(), sample.begin());
+        if (sample[0] < last) ldr.fail(series[i], k, "times must not decrease");
+        last = sample[0];
+        l.series.push_back(sample);
+      }
+      spec.loads.push_back(std::move(l));
+    }
+  } else if (loads.IsDefined() && !loads.IsNull()) {
+    ldr.fail(loads, "", "expected a mapping of body loads");
+  }
+
+  // (watch: name: {channel, above | below}) => watched quantities
+  const YAML::Node watch = p.has("watch") ? p.node("watch") : YAML::Node();
+  const Reader wr{report, "watch"};
+  if (watch.IsMap()) {
+    const std::vector<std::string> quantities{"q", "v", "x", "y", "z", "roll", "pitch", "yaw", "tension", "length"};
+    for (auto it = watch.begin(); it != watch.end(); ++it) {
+      MechanicsSpec::Watch w;
+      w.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      if (!wr.keys(n, {"channel", "above", "below"}, w.name)) continue;
+      const std::string channel = n["channel"] && n["channel"].IsScalar() ? n["channel"].Scalar() : "";
+      const auto dot = channel.rfind('.');
+      if (dot == std::string::npos || dot == 0) {
+        wr.fail(n["channel"], w.name + ".channel",
+                "expected <element>.<quantity>, e.g. block.roll or hoist.tension, got '" + channel + "'");
+        continue;
+      }
+      w.element = channel.substr(0, dot);
+      w.quantity = channel.substr(dot + 1);
+      if (std::find(quantities.begin(), quantities.end(), w.quantity) == quantities.end()) {
+        const std::string hint = didYouMean(w.quantity, quantities);
+        wr.fail(n["channel"], w.name + ".channel",
+                "cannot watch '" + w.quantity + "'; expected q, v (joints), x, y, z, roll, pitch, yaw "
+                "(bodies), tension, length (ropes)" + (hint.empty() ? "" : " (" + hint + ")"));
+      }
+      if (bool(n["above"]) == bool(n["below"])) {
+        wr.fail(n, w.name, "give exactly one of above and below (the threshold, in the quantity's SI unit)");
+        continue;
+      }
+      w.above = bool(n["above"]);
+      w.threshold = wr.number(w.above ? n["above"] : n["below"], w.name + (w.above ? ".above" : ".below"), 0.0);
+      // (element) => one of this spec's joints, bodies or ropes (a fragment resolves it later)
+      std::vector<std::string> elements;
+      for (const auto& b : spec.bodies) elements.insert(elements.end(), {b.name, b.jointName});
+      for (const auto& rope : spec.ropes) elements.push_back(rope.name);
+      if (std::find(elements.begin(), elements.end(), w.element) == elements.end()) {
+        const std::string hint = didYouMean(w.element, elements);
+        wr.fail(n["channel"], w.name + ".channel",
+                "unknown element '" + w.element + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+      }
+      spec.watches.push_back(std::move(w));
+    }
+  } else if (watch.IsDefined() && !watch.IsNull()) {
+    wr.fail(watch, "", "expected a mapping of watched quantities");
+  }
   return spec;
 }
 
@@ -392,7 +479,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, {}};
+  BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, spec.loads, spec.watches};
   const auto& m = out.model;
   out.visuals.resize(static_cast<std::size_t>(m.nbodies));
   out.q0 = Eigen::VectorXd::Zero(m.nq);

@@ -3,6 +3,7 @@
 // inertia about the centre of mass), the joint attaching each to its parent and where, loop
 // closures, initial state, gravity, step — parsed and checked with positions, then built into
 // an immutable dynamics::Model with its initial q and v.
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -67,8 +68,25 @@ struct MechanicsSpec {
     double driveTolerance = 1e-3; // rad or m
     bool equilibrium = false;     // start from static equilibrium instead of the given q0
   };
+  // A force and moment history on a body (forces/body_load.hpp): rows [t, fx, fy, fz, mx, my, mz]
+  // in the world or the body frame, at a point fixed on the body; linear between rows.
+  struct Load {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();  // body frame
+    bool bodyFrame = false;
+    std::vector<std::array<double, 7>> series;
+  };
+  // A quantity watched for a threshold crossing, reported as a located state event `crossed`:
+  // `<joint>.q|v`, `<body>.x|y|z|roll|pitch|yaw`, `<rope>.tension|length`.
+  struct Watch {
+    std::string name, element, quantity;
+    double threshold = 0.0;
+    bool above = true;  // fires when the quantity rises above (or falls below) the threshold
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;
+  std::vector<Load> loads;
+  std::vector<Watch> watches;
   std::vector<Body> bodies;
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
@@ -80,9 +98,9 @@ using MechanicsReport =
     std::function<void(const std::string& param, const YAML::Node& at, const std::string& key,
                        const std::string& message)>;
 
-// (params gravity, bodies, loops, ropes, equalizers and, when present, the settings
-// drive_bandwidth, drive_max_effort, drive_tolerance, equilibrium) => spec; every problem
-// reported with its node
+// (params gravity, bodies, loops, ropes, equalizers and, when present, loads, watch and the
+// settings drive_bandwidth, drive_max_effort, drive_tolerance, equilibrium) => spec; every
+// problem reported with its node
 MechanicsSpec parseMechanics(const Params& params, const MechanicsReport& report);
 
 struct BuiltMechanics {
@@ -92,7 +110,9 @@ struct BuiltMechanics {
   std::vector<char> hold;               // per body index: the joint starts held (brake)
   std::vector<MechanicsSpec::Rope> ropes;
   std::vector<MechanicsSpec::Equalizer> equalizers;
-  std::vector<MechanicsSpec::Visual> visuals;  // per body index (0: world)
+  std::vector<MechanicsSpec::Load> loads;
+  std::vector<MechanicsSpec::Watch> watches;
+  std::vector<MechanicsSpec::Visual> visuals = {};  // per body index (0: world); last, defaulted
 };
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body

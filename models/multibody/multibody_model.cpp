@@ -42,7 +42,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size(),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size() + mech_.watches.size(),
                   dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
@@ -82,6 +82,29 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     equalizers_.push_back(std::make_unique<forces::Equalizer>(
         e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
   }
+  for (const auto& l : mech_.loads) {
+    loads_.push_back(std::make_unique<forces::BodyLoad>(l.name, mech_.model, mech_.model.bodyIndex(l.body), l.point,
+                                                        l.bodyFrame ? forces::LoadFrame::Body : forces::LoadFrame::World));
+    loads_.back()->setTable(l.series);
+  }
+  // (watches) => what each reads
+  for (const auto& w : mech_.watches) {
+    using K = WatchRef::Kind;
+    WatchRef ref{K::Q, -1, 0};
+    const int joint = jointBody(w.element), body = mech_.model.bodyIndex(w.element), rope = ropeIndex(w.element);
+    const std::string& q = w.quantity;
+    if (joint > 0 && (q == "q" || q == "v"))
+      ref = {q == "q" ? K::Q : K::V, q == "q" ? mech_.model.idxQ[joint] : mech_.model.idxV[joint], 0};
+    else if (body > 0 && (q == "x" || q == "y" || q == "z"))
+      ref = {K::Position, body, q == "x" ? 0 : q == "y" ? 1 : 2};
+    else if (body > 0 && (q == "roll" || q == "pitch" || q == "yaw"))
+      ref = {K::Angle, body, q == "roll" ? 0 : q == "pitch" ? 1 : 2};
+    else if (rope >= 0 && (q == "tension" || q == "length"))
+      ref = {q == "tension" ? K::Tension : K::Length, rope, 0};
+    else
+      throw std::invalid_argument("watch '" + w.name + "': '" + w.element + "' has no quantity '" + q + "'");
+    watchRefs_.push_back(ref);
+  }
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
   else
@@ -100,6 +123,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
+    for (auto& l : loads_) l->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
   };
   system_.setForces(forces_);
@@ -195,6 +219,7 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   double p = 0.0;
   for (const auto& r : ropes_) p += r->power(stage);
   for (const auto& e : equalizers_) p += e->power(stage);
+  for (const auto& l : loads_) p += l->power(stage);
   // (drives, loads) => their forces at this state, and the power they deliver
   const MultibodyState* saved = current_;
   current_ = &x;
@@ -214,6 +239,7 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
 void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
   // (power at both ends of the step) => the work of non-conservative forces, trapezoidal; the
   // power at the start is the one computed at the end of the previous step when nothing changed
+  for (auto& l : loads_) l->setStepStart(t);
   const double p0 = powerState_ == &x && powerTime_ == t ? power_ : nonConservativePower(x, t);
   powerState_ = nullptr;
   current_ = &x;
@@ -315,6 +341,7 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
     if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
   for (const auto& d : x.drives)
     if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
+  for (const auto& l : loads_) next = std::min(next, l->nextBreak(t));  // kinks and jumps
   return next;
 }
 
@@ -352,13 +379,36 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
     g[i] = dir * (x.q[mech_.model.idxQ[i]] - d.target) + opt_.driveTolerance;
   }
   // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
-  if (ropes_.empty()) return;
+  if (ropes_.empty() && watchRefs_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+  const auto nb = static_cast<std::size_t>(mech_.model.nbodies);
   for (std::size_t r = 0; r < ropes_.size(); ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
-    g[static_cast<std::size_t>(mech_.model.nbodies) + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
   }
+  // (watches) => > 0 once the quantity is past its threshold in the watched direction
+  for (std::size_t w = 0; w < watchRefs_.size(); ++w) {
+    const auto& spec = mech_.watches[w];
+    const double value = watched(w, x, t);
+    g[nb + ropes_.size() + w] = spec.above ? value - spec.threshold : spec.threshold - value;
+  }
+}
+
+double MultibodyModel::watched(std::size_t w, const MultibodyState& x, double t) const {
+  const WatchRef& r = watchRefs_[w];
+  using K = WatchRef::Kind;
+  switch (r.kind) {
+    case K::Q: return x.q[r.index];
+    case K::V: return x.v[r.index];
+    case K::Position: return scratch_.X_WB[static_cast<std::size_t>(r.index)].p[r.axis];
+    case K::Angle: return dynamics::bodyEulerAngles(scratch_, r.index)[r.axis];
+    case K::Tension:
+      return ropes_[static_cast<std::size_t>(r.index)]->tension({t, mech_.model, scratch_, x.q, x.v});
+    case K::Length:
+      return ropes_[static_cast<std::size_t>(r.index)]->length({t, mech_.model, scratch_, x.q, x.v});
+  }
+  return 0.0;
 }
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
@@ -374,6 +424,12 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
     }
   }
   if (r.stateEvent <= 0) return;
+  if (r.stateEvent >= nb + static_cast<int>(ropes_.size())) {  // a watched quantity crossed
+    const auto w = static_cast<std::size_t>(r.stateEvent - nb) - ropes_.size();
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    event.add({mech_.watches[w].name, "", "crossed", watched(w, x, t)});
+    return;
+  }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
@@ -487,6 +543,15 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     for (int j = 0; j < e.branchCount(); ++j)
       out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
                      [&e, stage, j] { return e.branchLength(stage(), j); }});
+  }
+  for (std::size_t k = 0; k < loads_.size(); ++k) {
+    const forces::BodyLoad& l = *loads_[k];
+    const char* comps[6] = {"fx", "fy", "fz", "mx", "my", "mz"};
+    for (int c = 0; c < 6; ++c)
+      out.push_back({l.name() + "." + comps[c], c < 3 ? "N" : "N m", [this, &l, c] {
+                       const auto s = l.at(state().tx);
+                       return c < 3 ? s.force[c] : s.moment[c - 3];
+                     }});
   }
   // (system-wide quantities) => under the model's own name when element names are paths
   const std::string own = opt_.elementPaths ? path() + "." : "";

@@ -16,6 +16,7 @@
 #include "dtss/atomic.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/body_load.hpp"
 #include "forces/equalizer.hpp"
 #include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
@@ -140,6 +141,15 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* viewState_ = nullptr;
   mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
   mutable std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
+  mutable std::vector<std::unique_ptr<forces::BodyLoad>> loads_;
+  // (watch) => the quantity it reads: kind and index (dof, body or rope)
+  struct WatchRef {
+    enum class Kind { Q, V, Position, Angle, Tension, Length } kind;
+    int index, axis;
+  };
+  std::vector<WatchRef> watchRefs_;
+  // (x, t, scratch_ holding x's kinematics) => the watched quantity
+  double watched(std::size_t w, const MultibodyState& x, double t) const;
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;

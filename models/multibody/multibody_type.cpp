@@ -44,6 +44,10 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             {"equalizers", ParamKind::Any, false, "{}", "",
              "name: {sheave: {body, point}, branches: [[{body, point}, ...], ...], EA, L0, damping, "
              "min_length, mbl}"},
+            {"loads", ParamKind::Any, false, "{}", "",
+             "name: {body, point, frame: world|body, series: [[t, fx, fy, fz, mx, my, mz], ...]}"},
+            {"watch", ParamKind::Any, false, "{}", "",
+             "name: {channel: <element>.<quantity>, above | below: threshold} (a `crossed` event)"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
             {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},
@@ -92,6 +96,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
           for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
+          for (const auto& w : spec.watches) out.push_back({"watch", w.name, ""});
           return out;
         }});
 

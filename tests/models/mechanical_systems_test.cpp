@@ -179,3 +179,31 @@ TEST_CASE("an action list: start rules couple the named actors, unknown names ar
                                            Catch::Contains("no actor 'crane2.hoist_actr'") &&
                                            Catch::Contains("did you mean 'crane2.hoist_actor'?"));
 }
+
+TEST_CASE("watches and loads in fragments resolve like other names, unknown elements are refused") {
+  testing::SceneDir dir;
+  std::string crane = kCrane;
+  crane += R"(  watch:
+    taut: {channel: hoist.tension, above: 1.0e5}
+  loads:
+    gust: {body: block, series: [[0, 0, 0, 0, 0, 0, 0]]}
+)";
+  dir.write("crane.yaml", crane);
+  const auto r = models::loadScene(dir.write("s.yaml", scene()));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  const auto& spec = r.scene->systems[0]->spec;
+  REQUIRE(spec.watches.size() == 2);  // one per crane instance
+  CHECK(spec.watches[0].name == "crane1.taut");
+  CHECK(spec.watches[0].element == "crane1.hoist");
+  REQUIRE(spec.loads.size() == 2);
+  CHECK(spec.loads[1].name == "crane2.gust");
+  CHECK(spec.loads[1].body == "block");
+
+  crane.replace(crane.find("hoist.tension"), 13, "hoits.tension");
+  dir.write("crane.yaml", crane);
+  const auto bad = models::loadScene(dir.write("s.yaml", scene()));
+  REQUIRE_FALSE(bad.scene);
+  CHECK_THAT(bad.diagnostics.report(), Catch::Contains("watch.taut") && Catch::Contains("unknown element 'hoits'") &&
+                                           Catch::Contains("did you mean 'hoist'?"));
+}

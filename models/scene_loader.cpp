@@ -19,7 +19,7 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
                                          "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace"};
+const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace", "wp"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
@@ -463,6 +463,16 @@ class Loader {
       } else {
         s.integrator = n["method"].Scalar();
         if (const YAML::Node dt = n["dt"]) number(dt, "integrator.dt", s.dt, true);
+        s.integratorWhere = markOf(n, f);
+        if (const YAML::Node c = n["stiffness_check"]) {
+          static const std::vector<std::string> kChecks{"warn", "refuse", "off"};
+          const std::string v = c.IsScalar() ? c.Scalar() : "";
+          if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
+            d_.error(markOf(c, f), "integrator.stiffness_check",
+                     "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
+          else
+            s.stiffnessCheck = v;
+        }
       }
     }
     if (const YAML::Node r = doc["record"]) {

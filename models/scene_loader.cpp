@@ -7,6 +7,7 @@
 
 #include "models/coupling_graph.hpp"
 #include "models/mechanical_systems.hpp"
+#include "models/stiffness_guard.hpp"
 #include "models/port_types.hpp"
 #include "models/sha256.hpp"
 #include "models/yaml_source.hpp"
@@ -528,6 +529,7 @@ LoadResult loadScene(const fs::path& file) {
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

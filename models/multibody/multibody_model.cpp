@@ -10,6 +10,7 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
+#include "models/multibody/providers.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
@@ -42,33 +43,9 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       spForces_(mech_.model),
       spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
   // (rope and equalizer specs) => providers, evaluated at every stage
-  auto attach = [&](const MechanicsSpec::Point& p) {
-    return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
-  };
-  auto properties = [](const MechanicsSpec::Material& m) {
-    forces::RopeProperties props;
-    props.ea = m.ea;
-    props.l0 = m.l0;
-    props.damping = m.damping;
-    props.minLength = m.minLength;
-    if (m.mbl > 0) props.breakingLoad = m.mbl;
-    return props;
-  };
-  for (const auto& r : mech_.ropes) {
-    std::vector<forces::Attachment> path;
-    for (const auto& p : r.path) path.push_back(attach(p));
-    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path,
-                                                        properties(r.material), r.parts));
-  }
-  for (const auto& e : mech_.equalizers) {
-    std::vector<std::vector<forces::Attachment>> branches;
-    for (const auto& b : e.branches) {
-      branches.emplace_back();
-      for (const auto& p : b) branches.back().push_back(attach(p));
-    }
-    equalizers_.push_back(std::make_unique<forces::Equalizer>(
-        e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
-  }
+  Providers providers = makeProviders(mech_, mech_.model);
+  ropes_ = std::move(providers.ropes);
+  equalizers_ = std::move(providers.equalizers);
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
   else
@@ -81,6 +58,9 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   servoInertia_.assign(static_cast<std::size_t>(mech_.model.nbodies), 0.0);
   for (int i = 1; i < mech_.model.nbodies; ++i)
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
+  // (initial state) => the energy balance and the bound on its rise (multibody_blowup.cpp)
+  balance0_ = energyOf(state().x, 0.0, scratch_);
+  energyBound_ = opt_.energyGrowthLimit * energyScale();
   system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const dynamics::Data& d, dynamics::ExternalForces& f,
                            Eigen::VectorXd& tau) {
@@ -162,23 +142,9 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
     throw NumericalError("multibody '" + path() + "'", t, e.what(),
                          "a smaller dt, softer drives (bandwidth), or an implicit integrator");
   }
-  if (x.q.allFinite() && x.v.allFinite()) {
+  if (x.q.allFinite() && x.v.allFinite())
     x.work += 0.5 * dt * (p0 + nonConservativePower(x, t + dt));
-    return;
-  }
-  // (non-finite state) => the first body whose joint went bad
-  const auto& m = mech_.model;
-  int bad = 1;
-  for (int i = 1; i < m.nbodies; ++i)
-    if (!x.q.segment(m.idxQ[i], m.jointNq[i]).allFinite() ||
-        !x.v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
-      bad = i;
-      break;
-    }
-  throw NumericalError("multibody '" + path() + "', body '" + m.names[bad] + "' (joint '" +
-                           mech_.jointNames[bad] + "')",
-                       t + dt, "its state became NaN or infinite",
-                       "a smaller dt, softer drives (bandwidth), or an implicit integrator");
+  checkBlowUp(x, t + dt);
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
@@ -305,12 +271,13 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
   return accel_;
 }
 
-double MultibodyModel::energy() const {
-  const auto& s = state();
-  const auto& x = s.x;
-  double e = dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
-             dynamics::potentialEnergy(mech_.model, view_, x.q);
-  const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
+double MultibodyModel::energy() const { return energyOf(state().x, state().tx, view_); }
+
+double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Data& d) const {
+  double e = dynamics::kineticEnergy(mech_.model, d, x.q, x.v) +
+             dynamics::potentialEnergy(mech_.model, d, x.q);
+  dynamics::forwardKinematics(mech_.model, d, x.q, x.v);
+  const forces::Stage stage{t, mech_.model, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
   return e;

@@ -59,6 +59,11 @@ struct MultibodyOptions {
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
+  // blow-up bounds (docs/numerics.md): the energy balance may rise by at most this fraction of
+  // the system's energy scale (total weight x its size, plus its initial kinetic and strain
+  // energy); a loop residual may reach at most this, m (or rad)
+  double energyGrowthLimit = 1.0;
+  double loopResidualLimit = 1e-3;
 };
 
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
@@ -72,6 +77,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   bool channelNamesArePaths() const override { return opt_.elementPaths; }
   // (committed state) => kinetic + gravity potential + stored (rope) energy, J
   double energy() const;
+  // (state, time, workspace) => its kinetic + gravity potential + stored energy, J
+  double energyOf(const MultibodyState& x, double t, dynamics::Data& d) const;
   // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
@@ -100,6 +107,13 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (rope name) => index, or -1
   int ropeIndex(const std::string& name) const;
+  // (state after a step to t) => throws NumericalError when it is not finite, its energy balance
+  // grew beyond the bound or a loop opened (multibody_blowup.cpp)
+  void checkBlowUp(const MultibodyState& x, double t) const;
+  // () => the likely cause of a blow-up: omega_max dt against the method's stability limit
+  std::string likelyCause() const;
+  // () => the energy scale of the blow-up bound, J
+  double energyScale() const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -119,6 +133,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;
+  double energyBound_ = 0.0;  // J: largest rise of the energy balance before it is a blow-up
+  double balance0_ = 0.0;     // J: the energy balance at the start
 };
 
 }  // namespace yardsim::models

@@ -64,6 +64,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const dynamics::Data& d, dynamics::ExternalForces& f,
                            Eigen::VectorXd& tau) {
+    ++counters_.fEvals;
     const forces::Stage stage{t, mech_.model, d, q, v};
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
@@ -136,6 +137,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   double time = t;
   try {
     integrator_->step(system_, time, x.q, x.v, dt);
+    ++counters_.steps;
   } catch (const devs::SimulationError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis

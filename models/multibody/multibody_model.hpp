@@ -66,6 +66,12 @@ struct MultibodyOptions {
   double loopResidualLimit = 1e-3;
 };
 
+// Work done by the integrator since construction (for `yardsim wp`).
+struct MultibodyCounters {
+  std::uint64_t steps = 0;   // accepted steps
+  std::uint64_t fEvals = 0;  // right-hand-side evaluations: forces + ABA
+};
+
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
  public:
   MultibodyModel(std::string name, BuiltMechanics mechanics, const MultibodyOptions& options);
@@ -87,6 +93,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
+  const MultibodyCounters& counters() const { return counters_; }
+  const BuiltMechanics& builtMechanics() const { return mech_; }
 
  protected:
   void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;
@@ -135,6 +143,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable Eigen::VectorXd spTau_;
   double energyBound_ = 0.0;  // J: largest rise of the energy balance before it is a blow-up
   double balance0_ = 0.0;     // J: the energy balance at the start
+  mutable MultibodyCounters counters_;
 };
 
 }  // namespace yardsim::models

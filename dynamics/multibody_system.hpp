@@ -14,12 +14,6 @@
 
 namespace yardsim::dynamics {
 
-/// Thrown when the state or the accelerations stop being finite; the message names the body.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 class MultibodySystem final : public AccelerationSource {
  public:
   /// (t, q, v, data after forward kinematics(q, v)) => forces to add, and tau (zeroed before the call).
@@ -40,6 +34,12 @@ class MultibodySystem final : public AccelerationSource {
   /// not finite.
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
+  int constraintRows() const override { return model_.nc; }
+  /// (t, q, v) => ABA on the tree with the same forces, without the loops' forces.
+  void unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                 Eigen::VectorXd& a) override;
+  void constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd& g, Eigen::MatrixXd& J,
+                       Eigen::MatrixXd& MinvJt) override;
 
   const Model& model() const { return model_; }
   Data& data() { return data_; }
@@ -52,6 +52,8 @@ class MultibodySystem final : public AccelerationSource {
   ExternalForces forces_;
   Eigen::VectorXd tau_, tauStage_;
   ForceCallback callback_;
+  // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
+  const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;
   bool project_ = false;
   double projectTol_ = 1e-12;

@@ -3,18 +3,15 @@
 #include <cmath>
 #include <sstream>
 
+#include "dynamics/integrators/factory.hpp"
 #include "models/mechanical_systems.hpp"
 
 namespace yardsim::models {
 
 double stabilityLimit(std::string_view method) {
-  // intersections of each method's stability region with the imaginary axis
-  if (method == "rk4") return 2.0 * std::sqrt(2.0);
-  if (method == "semi_implicit_euler") return 2.0;  // symplectic Euler: |omega dt| < 2
-  if (method == "ab3") return 0.72;
-  if (method == "ab4") return 0.43;
-  if (method == "explicit_euler" || method == "euler" || method == "ab2") return 0.0;
-  return kNoStabilityLimit;  // implicit (HHT, generalized-alpha) and adaptive methods
+  // (method table) => the intersection of its stability region with the imaginary axis
+  if (const dynamics::MethodInfo* m = dynamics::findMethod(method)) return m->imagStabilityLimit;
+  return kNoStabilityLimit;  // unknown here: the scene check reports the name
 }
 
 StepVerdict judgeStep(const StiffnessEstimate& e, std::string_view method, double dt) {
@@ -49,7 +46,17 @@ StepVerdict judgeStep(const StiffnessEstimate& e, std::string_view method, doubl
 }
 
 void checkStiffness(const Scene& scene, Diagnostics& diags) {
-  if (scene.stiffnessCheck == "off" || !(scene.dt > 0)) return;
+  if (scene.systems.empty() || !(scene.dt > 0)) return;
+  // (step, end time) => a step longer than the whole run integrates nothing
+  if (scene.dt > scene.until) {
+    std::ostringstream s;
+    s << "the step " << scene.dt << " s is longer than the whole run (until: " << scene.until
+      << " s): nothing would be integrated";
+    std::ostringstream hint;
+    hint << "use dt <= until, e.g. dt: " << scene.until / 100.0;
+    diags.error(scene.integratorWhere, "integrator.dt", s.str(), hint.str());
+  }
+  if (scene.stiffnessCheck == "off") return;
   for (const auto& system : scene.systems) {
     // (system) => its estimate and the verdict on the scene's step
     StiffnessEstimate e;

@@ -35,8 +35,9 @@ struct StepVerdict {
 // (estimate, method, step) => whether the step is inside the method's stability limit
 StepVerdict judgeStep(const StiffnessEstimate& e, std::string_view method, double dt);
 
-// (scene with its mechanical systems) => per system, a warning or an error (per
-// scene.stiffnessCheck) when its step is beyond the method's stability limit
+// (scene with its mechanical systems) => an error when the step is longer than the run; per
+// system, a warning or an error (per scene.stiffnessCheck) when its step is beyond the
+// method's stability limit
 void checkStiffness(const Scene& scene, Diagnostics& diags);
 
 }  // namespace yardsim::models

@@ -64,6 +64,10 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
   };
   spec.reference = single(wp["reference"], "wp.reference");
   spec.check = single(wp["check"], "wp.check");
+  if (!spec.check.method.empty() && spec.check.method == spec.reference.method)
+    d.error(markOf(wp["check"], f), "wp.check",
+            "the check must use a different method than the reference (" + spec.reference.method +
+                "), so that it is an independent confirmation");
   const YAML::Node ms = wp["methods"];
   if (!ms || !ms.IsSequence() || ms.size() == 0) {
     d.error(markOf(ms ? ms : wp, f), "wp.methods", "expected a list of {method, dt0, levels} or {method, rtol: [hi, lo]}");

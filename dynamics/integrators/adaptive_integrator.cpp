@@ -21,11 +21,14 @@ AdaptiveIntegrator::AdaptiveIntegrator(const Model& model, const IntegratorSpec&
       vOut_(model.nv) {
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNDIALS: cannot create a context");
   y_ = N_VNew_Serial(chart_.size(), ctx_);
+  atol_ = N_VNew_Serial(chart_.size(), ctx_);
+  N_VConst(spec.atol, atol_);
 }
 
 AdaptiveIntegrator::~AdaptiveIntegrator() {
   if (LS_ != nullptr) SUNLinSolFree(LS_);
   if (A_ != nullptr) SUNMatDestroy(A_);
+  if (atol_ != nullptr) N_VDestroy(atol_);
   if (y_ != nullptr) N_VDestroy(y_);
   if (ctx_ != nullptr) SUNContext_Free(&ctx_);
 }
@@ -65,7 +68,7 @@ int AdaptiveIntegrator::rightHandSide(double t, N_Vector y, N_Vector ydot, Part 
 int AdaptiveIntegrator::rootFunctions(double t, N_Vector y, double* g) {
   try {
     chart_.scatter(N_VGetArrayPointer(y), q_, v_);
-    source_->eventFunctions(t, q_, v_, std::span<double>(g, static_cast<std::size_t>(roots_)));
+    source_->eventFunctions(t, q_, v_, std::span<double>(g, static_cast<std::size_t>(nroots_)));
     return 0;
   } catch (...) {
     thrown_ = std::current_exception();
@@ -79,13 +82,19 @@ void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::Vect
   // (t, q, v) => continue the solver's history, or re-initialise it at this state
   const double tol = 1e-9 * std::max(1.0, std::abs(t));
   const int roots = roots_ ? system.eventCount() : 0;
-  const bool continues = initialised_ && source_ == &system && roots == roots_ && std::abs(t - tLast_) <= tol &&
+  const bool continues = initialised_ && source_ == &system && roots == nroots_ && std::abs(t - tLast_) <= tol &&
                          q == qLast_ && v == vLast_ && chart_.rotationExtent(N_VGetArrayPointer(y_)) < 1.0;
   source_ = &system;
   if (!continues) {
-    roots_ = roots;
+    nroots_ = roots;
     found_.assign(static_cast<std::size_t>(roots), 0);
     chart_.gather(q, v, N_VGetArrayPointer(y_));
+    // (chart origin) => atol + rtol |q*| on the chart coordinates of plain joint coordinates
+    double* atol = N_VGetArrayPointer(atol_);
+    for (int i = 1; i < model_.nbodies; ++i)
+      if (model_.jointNq[i] == model_.jointNv[i])
+        for (int k = 0; k < model_.jointNv[i]; ++k)
+          atol[model_.idxV[i] + k] = spec_.atol + spec_.rtol * std::abs(q[model_.idxQ[i] + k]);
     init(t, roots);
     initialised_ = true;
   }
@@ -117,7 +126,7 @@ void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::Vect
   t = tret;
   if (rootReturn(flag)) {
     rootInfo(found_.data());
-    for (int j = 0; j < roots_; ++j)
+    for (int j = 0; j < nroots_; ++j)
       if (found_[static_cast<std::size_t>(j)] != 0) {
         lastEvent_ = j;
         break;

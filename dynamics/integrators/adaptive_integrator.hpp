@@ -6,6 +6,7 @@
 // being located by re-advancing, the post-step projection moved the state, or the chart has
 // rotated more than 1 rad) the solver is re-initialised there. Each step stops exactly at t + h
 // (a stop time), so set-points changing between steps are never integrated across.
+// Tolerances: atol (m, rad, m/s, rad/s) and rtol act on positions and velocities; see atol_.
 
 #include <exception>
 #include <string>
@@ -58,6 +59,9 @@ class AdaptiveIntegrator : public Integrator {
   IntegratorSpec spec_;
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
+  /// Absolute tolerance per component: atol, plus rtol |q*| for the chart coordinate of a joint
+  /// whose q is a plain coordinate, so that rtol acts on positions, not on displacements from q*.
+  N_Vector atol_ = nullptr;
   SUNMatrix A_ = nullptr;
   SUNLinearSolver LS_ = nullptr;
   void* mem_ = nullptr;
@@ -67,7 +71,7 @@ class AdaptiveIntegrator : public Integrator {
   ChartState chart_;
   AccelerationSource* source_ = nullptr;
   bool initialised_ = false;
-  int roots_ = 0;
+  int nroots_ = 0;  // event functions the solver was initialised with
   std::exception_ptr thrown_;
   double tLast_ = 0.0;
   Eigen::VectorXd q_, v_, a_, qLast_, vLast_, qOut_, vOut_;

@@ -55,7 +55,6 @@ void Arkode::init(double t, int nroots) {
     mem_ = ARKStepCreate(fe, fi, t, y_, ctx_);
     ARKStepSetUserData(mem_, this);
     ARKStepSetErrHandlerFn(mem_, onError, this);
-    ARKStepSStolerances(mem_, spec_.rtol, spec_.atol);
     ARKStepSetOrder(mem_, 4);
     if (kind_ != Kind::Erk) {
       makeLinearSolver();
@@ -66,6 +65,7 @@ void Arkode::init(double t, int nroots) {
   } else {
     ARKStepReInit(mem_, fe, fi, t, y_);
   }
+  ARKStepSVtolerances(mem_, spec_.rtol, atol_);
   ARKStepRootInit(mem_, nroots, nroots > 0 ? roots : nullptr);
 }
 

@@ -30,7 +30,6 @@ void Cvode::init(double t, int nroots) {
     CVodeInit(mem_, rhs, t, y_);
     CVodeSetUserData(mem_, this);
     CVodeSetErrHandlerFn(mem_, onError, this);
-    CVodeSStolerances(mem_, spec_.rtol, spec_.atol);
     makeLinearSolver();
     CVodeSetLinearSolver(mem_, LS_, A_);
     if (spec_.maxOrder > 0) CVodeSetMaxOrd(mem_, spec_.maxOrder);
@@ -39,6 +38,7 @@ void Cvode::init(double t, int nroots) {
   } else {
     CVodeReInit(mem_, t, y_);
   }
+  CVodeSVtolerances(mem_, spec_.rtol, atol_);
   CVodeRootInit(mem_, nroots, nroots > 0 ? roots : nullptr);
 }
 

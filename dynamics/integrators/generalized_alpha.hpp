@@ -1,20 +1,23 @@
 #pragma once
 // The generalized-alpha method (Chung & Hulbert 1993) in the form of Arnold & Bruls (2007) for
 // constrained systems on the configuration manifold, with HHT-alpha as a parameter choice:
-//   q_{n+1} = q_n (+) h (v_n + h (1/2 - beta) a_n + h beta a_{n+1})
+//   q_{n+1} = q_n (+) h (v_n + h b_n / 2 + h (1/2 - beta) a_n + h beta a_{n+1})
 //   v_{n+1} = v_n + h ((1 - gamma) a_n + gamma a_{n+1})
 //   (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) ddq_{n+1} + alpha_f ddq_n
 //   ddq_{n+1} = f(t_{n+1}, q_{n+1}, v_{n+1}) + M^-1 J^T lambda_{n+1},   g(q_{n+1}) = 0   (index 3)
-// where f is the tree's forward dynamics without the loops. The unknowns (ddq_{n+1}, lambda) are
-// solved by Newton with an iteration matrix [I - beta' h^2 f_q - gamma' h f_v, -M^-1 J^T; J, 0]
-// (f_q, f_v by finite differences) that is factorised once and reused over steps until Newton
-// slows down. The algorithmic acceleration starts at a_0 = ddq(t_0 + (alpha_m - alpha_f) h),
-// from an RK4 sub-step, which keeps second order for alpha != 0 (Arnold & Bruls 2007, sec. 4).
+// where f is the tree's forward dynamics without the loops and b_n the second derivative of the
+// chart coordinate at q_n beyond the acceleration (w x v for a free joint's translation, whose
+// velocity is in the body frame; zero for the other joints), which keeps second order on the
+// configuration manifold. The unknowns (ddq_{n+1}, lambda) are
+// solved by Newton with an iteration matrix [I - beta' h^2 F_q - gamma' h F_v, -M^-1 J^T; J, 0]
+// (F = f + M^-1 J^T lambda, its derivatives by finite differences) that is factorised once and reused over steps until Newton
+// slows down. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
+// ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
+// Bruls 2007); dddq_0 comes from one extra evaluation (a forward difference along (v, ddq)).
 
 #include <Eigen/LU>
 
 #include "dynamics/integrators/integrator.hpp"
-#include "dynamics/integrators/rk4.hpp"
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
@@ -43,6 +46,8 @@ class GeneralizedAlpha final : public Integrator {
   void start(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
   // (ddq) => a_{n+1}, qNew_, vNew_ from the state at the start of the step
   void update(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
+  // (v_n) => bias_, the chart's own second derivative at q_n
+  void chartBias(const Eigen::VectorXd& v);
   // (state at the end of the step) => f_q, f_v by finite differences; factorised for h
   void jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h);
   void factorise(double h);
@@ -54,11 +59,10 @@ class GeneralizedAlpha final : public Integrator {
   std::string_view name_;
   double newtonTol_;
   int maxNewton_;
-  Rk4 starter_;
   bool started_ = false, fresh_ = false, stale_ = true;
   int nc_ = -1;
   double hFactor_ = 0.0, tLast_ = 0.0;
-  Eigen::VectorXd aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_, qLast_, vLast_;
+  Eigen::VectorXd bias_, aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_, qLast_, vLast_;
   Eigen::VectorXd qp_, vp_, deltaP_;
   Eigen::MatrixXd Fq_, Fv_, A_;
   Eigen::PartialPivLU<Eigen::MatrixXd> luA_;

@@ -34,7 +34,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size(),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + 2 * mech_.ropes.size(),
                   dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
@@ -42,6 +42,9 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       scratch_(mech_.model),
       spForces_(mech_.model),
       spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+  // (ropes) => their slack/taut transitions are events both ways (after the MBL watches)
+  std::fill(directions_.end() - static_cast<std::ptrdiff_t>(mech_.ropes.size()), directions_.end(),
+            dtss::Crossing::Both);
   // (rope and equalizer specs) => providers, evaluated at every stage
   Providers providers = makeProviders(mech_, mech_.model);
   ropes_ = std::move(providers.ropes);
@@ -223,9 +226,12 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   if (ropes_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+  const auto nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
-    g[static_cast<std::size_t>(mech_.model.nbodies) + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    // (rope) => > 0 while taut: a sign change is a slack/taut transition
+    g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
 }
 
@@ -236,6 +242,16 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
       if (x.winches[k].active && x.winches[k].tEnd <= t)
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
   if (r.stateEvent <= 0) return;
+  const int nr = static_cast<int>(ropes_.size());
+  if (r.stateEvent >= nb + nr) {  // a rope went slack or snapped taut: its length then
+    const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+    const double rate = ropes_[k]->lengthRate(stage) - ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", rate > 0 ? "taut" : "slack",
+               ropes_[k]->length(stage)});
+    return;
+  }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "devs/simulator.hpp"
 #include "models/assembler.hpp"
 #include "models/mechanical_systems.hpp"
 #include "models/multibody/stiffness_estimate.hpp"
@@ -14,6 +15,7 @@
 #include "models/stiffness_guard.hpp"
 #include "models/work_precision.hpp"
 #include "support/csv_file.hpp"
+#include "support/record_collector.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
@@ -211,4 +213,32 @@ TEST_CASE("one hour of simulated time: semi-implicit Euler's energy error stays 
   INFO("first 10 min " << first << " J, last 10 min " << last << " J");
   CHECK(last < 3.0 * first);  // a symplectic method oscillates; it does not drift
   CHECK(last < 1e6);          // against ~1.3e5 J of motion and 1.9e8 J of potential energy
+}
+
+TEST_CASE("slack and snap: the transitions are located events at the closed-form times") {
+  // free fall over h: taut at sqrt(2 h / g); then s(t) = ds + R sin(w t - phi) with ds = m g / k,
+  // R = sqrt(ds^2 + (v0 / w)^2), sin phi = ds / R: slack again after (pi + 2 phi) / w; the block
+  // rises back to where it started and falls again over 2 v0 / g
+  const double m = 1e4, g = 9.81, k = 2e8 / 20.0, h = 0.5, w = std::sqrt(k / m);
+  const double v0 = std::sqrt(2 * g * h), ds = m * g / k, R = std::hypot(ds, v0 / w), phi = std::asin(ds / R);
+  const double taut1 = std::sqrt(2 * h / g), slack1 = taut1 + (M_PI + 2 * phi) / w;
+  const double taut2 = slack1 + 2 * v0 / g, slack2 = taut2 + (M_PI + 2 * phi) / w;
+  auto scene = models::loadSceneOrThrow(example("slack_snap"));
+  auto root = models::assemble(*scene);
+  devs::Simulator sim(*root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(1.5);
+  std::vector<std::pair<double, std::string>> events;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "event") events.emplace_back(r.t, r.value);
+  REQUIRE(events.size() == 4);
+  const double expected[4] = {taut1, slack1, taut2, slack2};
+  const char* what[4] = {"taut", "slack", "taut", "slack"};
+  for (int i = 0; i < 4; ++i) {
+    INFO(events[i].second << " at " << events[i].first << ", expected " << what[i] << " at " << expected[i]);
+    CHECK_THAT(events[i].second, Catch::Contains(std::string("rope ") + what[i]) ||
+                                     Catch::Contains(std::string(what[i])));
+    CHECK(events[i].first == Approx(expected[i]).margin(1e-5));
+  }
 }

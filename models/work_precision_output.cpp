@@ -52,7 +52,7 @@ std::string wpSummary(const WpResult& r, const WpSpec& spec) {
   for (const auto& c : spec.channels) s << " `" << c << "`";
   s << "; reference " << spec.reference.label << " " << spec.reference.param() << ", checked by "
     << spec.check.label << " " << spec.check.param() << ": E_rms " << r.referenceCheck.rms << " m, E_max "
-    << r.referenceCheck.max << " m.\n\n";
+    << r.referenceCheck.max << " m (errors below that are measured against the reference alone).\n\n";
   s << "| method | time to E_rms <= 1e-3 m | time to E_rms <= 1e-6 m | blow-ups |\n|---|---|---|---|\n";
   for (const auto& m : methods(r)) {
     // (runs of this method) => the cheapest reaching each tolerance, and the ones that blew up

@@ -292,10 +292,14 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
 double MultibodyModel::energy() const { return energyOf(state().x, state().tx, view_); }
 
 double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Data& d) const {
-  double e = dynamics::kineticEnergy(mech_.model, d, x.q, x.v) +
-             dynamics::potentialEnergy(mech_.model, d, x.q);
-  dynamics::forwardKinematics(mech_.model, d, x.q, x.v);
-  const forces::Stage stage{t, mech_.model, d, x.q, x.v};
+  // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
+  const auto& m = mech_.model;
+  dynamics::forwardKinematics(m, d, x.q, x.v);
+  double e = 0.0;
+  for (int i = 1; i < m.nbodies; ++i)
+    e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
+         m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+  const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
   return e;

@@ -18,6 +18,13 @@ int runCommand(const RunArgs& a);
 // (OUTDIR) => OUTDIR/report.html from what the run left there
 int reportCommand(const std::string& outdir, bool quiet);
 
+struct WpArgs {
+  std::string scene, outdir = "out";
+  int repeats = 0;  // 0: the scene's wp.repeats
+  bool quiet = false;
+};
+int wpCommand(const WpArgs& a);
+
 int validateCommand(const std::string& scene, bool printResolved);
 
 struct TraceArgs {

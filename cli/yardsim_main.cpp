@@ -30,6 +30,13 @@ int yardsimMain(int argc, char** argv) {
   reportCmd->add_option("outdir", reportDir, "output folder of a run")->required();
   reportCmd->add_flag("--quiet", reportQuiet, "no summary");
 
+  WpArgs wp;
+  auto* wpCmd = app.add_subcommand("wp", "error against run time: run the scene's `wp:` sweep of integrators");
+  wpCmd->add_option("scene", wp.scene, "scene file (YAML) with a wp: block")->required();
+  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.svg, summary.md)")->capture_default_str();
+  wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)");
+  wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
+
   std::string validateScene;
   bool printResolved = false;
   auto* validate = app.add_subcommand("validate", "check a scene without running it");
@@ -62,6 +69,7 @@ int yardsimMain(int argc, char** argv) {
       return runCommand(run);
     }
     if (reportCmd->parsed()) return reportCommand(reportDir, reportQuiet);
+    if (wpCmd->parsed()) return wpCommand(wp);
     if (validate->parsed()) return validateCommand(validateScene, printResolved);
     if (traceCmd->parsed()) return traceCommand(trace);
     if (channels->parsed()) return listChannelsCommand(channelsScene);

@@ -15,12 +15,6 @@
 
 namespace yardsim::dynamics {
 
-/// Thrown when the state or the accelerations stop being finite; the message names the body.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 class MultibodySystem final : public AccelerationSource {
  public:
   /// (t, q, v, data after forward kinematics(q, v)) => forces to add, and tau (zeroed before the call).
@@ -41,6 +35,12 @@ class MultibodySystem final : public AccelerationSource {
   /// not finite.
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
+  int constraintRows() const override { return model_.nc; }
+  /// (t, q, v) => ABA on the tree with the same forces, without the loops' forces.
+  void unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                 Eigen::VectorXd& a) override;
+  void constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd& g, Eigen::MatrixXd& J,
+                       Eigen::MatrixXd& MinvJt) override;
 
   /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
   /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
@@ -62,6 +62,8 @@ class MultibodySystem final : public AccelerationSource {
   HybridDynamics hybrid_;
   Eigen::VectorXd aPrescribed_, effort_;
   ForceCallback callback_;
+  // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
+  const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;
   bool project_ = false;
   double projectTol_ = 1e-12;

@@ -75,6 +75,10 @@ struct Scene {
   long long seed = 0;
   std::string integrator = "none";  // method named by the scene (metadata until physics)
   double dt = 0.0;
+  // integrator.stiffness_check: what to do when omega_max dt exceeds the method's stability
+  // limit before the run (docs/numerics.md): warn, refuse (an error) or off
+  std::string stiffnessCheck = "warn";
+  SourceMark integratorWhere;  // the `integrator:` block, for diagnostics about the step
   RecordSpec record;
   ReportSpec report;
   std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv

@@ -28,7 +28,7 @@ struct SetPoint {
 struct MechanicsEvent {
   std::string element;
   std::string actor;  // the actor whose set-point it answers ("" for watches)
-  std::string what;   // "reached", "done", "crossed"
+  std::string what;   // "reached", "done", "over_mbl", "taut", "slack" (a rope's transitions)
   double value = 0.0;
 };
 

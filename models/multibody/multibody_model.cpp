@@ -12,6 +12,7 @@
 #include "dynamics/rnea.hpp"
 #include "dynamics/rotation.hpp"
 #include "dynamics/static_equilibrium.hpp"
+#include "models/multibody/providers.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
@@ -42,7 +43,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size() + mech_.watches.size(),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + 2 * mech_.ropes.size() + mech_.watches.size(),
                   dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
@@ -54,34 +55,13 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       prescribedMask_(static_cast<std::size_t>(mech_.model.nv), 0),
       prescribedAcc_(Eigen::VectorXd::Zero(mech_.model.nv)),
       accelScratch_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+  // (ropes) => their slack/taut transitions are events both ways (after the MBL watches)
+  const auto slack = directions_.begin() + mech_.model.nbodies + static_cast<std::ptrdiff_t>(mech_.ropes.size());
+  std::fill(slack, slack + static_cast<std::ptrdiff_t>(mech_.ropes.size()), dtss::Crossing::Both);
   // (rope and equalizer specs) => providers, evaluated at every stage
-  auto attach = [&](const MechanicsSpec::Point& p) {
-    return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
-  };
-  auto properties = [](const MechanicsSpec::Material& m) {
-    forces::RopeProperties props;
-    props.ea = m.ea;
-    props.l0 = m.l0;
-    props.damping = m.damping;
-    props.minLength = m.minLength;
-    if (m.mbl > 0) props.breakingLoad = m.mbl;
-    return props;
-  };
-  for (const auto& r : mech_.ropes) {
-    std::vector<forces::Attachment> path;
-    for (const auto& p : r.path) path.push_back(attach(p));
-    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path,
-                                                        properties(r.material), r.parts));
-  }
-  for (const auto& e : mech_.equalizers) {
-    std::vector<std::vector<forces::Attachment>> branches;
-    for (const auto& b : e.branches) {
-      branches.emplace_back();
-      for (const auto& p : b) branches.back().push_back(attach(p));
-    }
-    equalizers_.push_back(std::make_unique<forces::Equalizer>(
-        e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
-  }
+  Providers providers = makeProviders(mech_, mech_.model);
+  ropes_ = std::move(providers.ropes);
+  equalizers_ = std::move(providers.equalizers);
   for (const auto& l : mech_.loads) {
     loads_.push_back(std::make_unique<forces::BodyLoad>(l.name, mech_.model, mech_.model.bodyIndex(l.body), l.point,
                                                         l.bodyFrame ? forces::LoadFrame::Body : forces::LoadFrame::World));
@@ -119,6 +99,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
   forces_ = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                    const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+    ++counters_.fEvals;
     const forces::Stage stage{t, mech_.model, d, q, v};
     if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
@@ -133,6 +114,9 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   dynamics::forwardKinematics(mech_.model, scratch_, x0.q, x0.v);
   const forces::Stage stage{0.0, mech_.model, scratch_, x0.q, x0.v};
   for (std::size_t r = 0; r < ropes_.size(); ++r) x0.peakTension[r] = ropes_[r]->tension(stage);
+  // (initial state) => the energy balance and the bound on its rise (multibody_blowup.cpp)
+  balance0_ = energyOf(state().x, 0.0, scratch_);
+  energyBound_ = opt_.energyGrowthLimit * energyScale();
 }
 
 void MultibodyModel::settle() {
@@ -246,6 +230,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   double time = t;
   try {
     integrator_->step(system_, time, x.q, x.v, dt);
+    ++counters_.steps;
   } catch (const devs::SimulationError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
@@ -262,21 +247,8 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
     powerState_ = &x;
     powerTime_ = t + dt;
     power_ = p1;
-    return;
   }
-  // (non-finite state) => the first body whose joint went bad
-  const auto& m = mech_.model;
-  int bad = 1;
-  for (int i = 1; i < m.nbodies; ++i)
-    if (!x.q.segment(m.idxQ[i], m.jointNq[i]).allFinite() ||
-        !x.v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
-      bad = i;
-      break;
-    }
-  throw NumericalError("multibody '" + path() + "', body '" + m.names[bad] + "' (joint '" +
-                           mech_.jointNames[bad] + "')",
-                       t + dt, "its state became NaN or infinite",
-                       "a smaller dt, softer drives (bandwidth), or an implicit integrator");
+  checkBlowUp(x, t + dt);
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
@@ -382,16 +354,18 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   if (ropes_.empty() && watchRefs_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  const auto nb = static_cast<std::size_t>(mech_.model.nbodies);
-  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+  const auto nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
     g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    // (rope) => > 0 while taut: a sign change is a slack/taut transition
+    g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
   // (watches) => > 0 once the quantity is past its threshold in the watched direction
   for (std::size_t w = 0; w < watchRefs_.size(); ++w) {
     const auto& spec = mech_.watches[w];
     const double value = watched(w, x, t);
-    g[nb + ropes_.size() + w] = spec.above ? value - spec.threshold : spec.threshold - value;
+    g[nb + 2 * ropes_.size() + w] = spec.above ? value - spec.threshold : spec.threshold - value;
   }
 }
 
@@ -424,10 +398,20 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
     }
   }
   if (r.stateEvent <= 0) return;
-  if (r.stateEvent >= nb + static_cast<int>(ropes_.size())) {  // a watched quantity crossed
-    const auto w = static_cast<std::size_t>(r.stateEvent - nb) - ropes_.size();
+  const int nr = static_cast<int>(ropes_.size());
+  if (r.stateEvent >= nb + 2 * nr) {  // a watched quantity crossed
+    const auto w = static_cast<std::size_t>(r.stateEvent - nb - 2 * nr);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
     event.add({mech_.watches[w].name, "", "crossed", watched(w, x, t)});
+    return;
+  }
+  if (r.stateEvent >= nb + nr) {  // a rope went slack or snapped taut: its length then
+    const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+    const double rate = ropes_[k]->lengthRate(stage) - ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", rate > 0 ? "taut" : "slack",
+               ropes_[k]->length(stage)});
     return;
   }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
@@ -484,12 +468,17 @@ const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
   return reaction_.F_W;
 }
 
-double MultibodyModel::energy() const {
-  const auto& s = state();
-  const auto& x = s.x;
-  double e = dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
-             dynamics::potentialEnergy(mech_.model, view_, x.q);
-  const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
+double MultibodyModel::energy() const { return energyOf(state().x, state().tx, view_); }
+
+double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Data& d) const {
+  // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
+  const auto& m = mech_.model;
+  dynamics::forwardKinematics(m, d, x.q, x.v);
+  double e = 0.0;
+  for (int i = 1; i < m.nbodies; ++i)
+    e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
+         m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+  const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
   return e;

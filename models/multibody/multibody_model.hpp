@@ -69,6 +69,17 @@ struct MultibodyOptions {
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
   bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
+  // blow-up bounds (docs/numerics.md): the energy balance may rise by at most this fraction of
+  // the system's energy scale (total weight x its size, plus its initial kinetic and strain
+  // energy); a loop residual may reach at most this, m (or rad)
+  double energyGrowthLimit = 1.0;
+  double loopResidualLimit = 1e-3;
+};
+
+// Work done by the integrator since construction (for `yardsim wp`).
+struct MultibodyCounters {
+  std::uint64_t steps = 0;   // accepted steps
+  std::uint64_t fEvals = 0;  // right-hand-side evaluations: forces + ABA
 };
 
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable, public Replayable {
@@ -82,6 +93,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   bool channelNamesArePaths() const override { return opt_.elementPaths; }
   // (committed state) => kinetic + gravity potential + stored (rope) energy, J
   double energy() const;
+  // (state, time, workspace) => its kinetic + gravity potential + stored energy, J
+  double energyOf(const MultibodyState& x, double t, dynamics::Data& d) const;
   // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
@@ -93,6 +106,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   // (committed state) => per body, the spatial force its joint transmits to it (world frame,
   // moment about the world origin first), by RNEA with the accelerations and all forces; trees
   const std::vector<dynamics::Force>& jointForces() const;
+  const MultibodyCounters& counters() const { return counters_; }
+  const BuiltMechanics& builtMechanics() const { return mech_; }
   const MultibodyOptions& options() const { return opt_; }
   void replayBodies(Replay& out) const override;
   void replayFrame(Replay& out, std::size_t firstBody) const override;
@@ -122,6 +137,13 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   bool prescribedDofs(const MultibodyState& x) const;
   // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
   void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
+  // (state after a step to t) => throws NumericalError when it is not finite, its energy balance
+  // grew beyond the bound or a loop opened (multibody_blowup.cpp)
+  void checkBlowUp(const MultibodyState& x, double t) const;
+  // () => the likely cause of a blow-up: omega_max dt against the method's stability limit
+  std::string likelyCause() const;
+  // () => the energy scale of the blow-up bound, J
+  double energyScale() const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -159,6 +181,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable Eigen::VectorXd prescribedAcc_;     // zero: constant-speed ramps and locks
   mutable Eigen::VectorXd accelScratch_;
   mutable const MultibodyState* powerState_ = nullptr;
+  double energyBound_ = 0.0;  // J: largest rise of the energy balance before it is a blow-up
+  double balance0_ = 0.0;     // J: the energy balance at the start
+  mutable MultibodyCounters counters_;
 };
 
 }  // namespace yardsim::models

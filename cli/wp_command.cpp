@@ -23,7 +23,7 @@ int wpCommand(const WpArgs& a) {
     const models::WpResult r = models::workPrecision(*scene, spec, log);
     models::writeWp(r, spec, a.outdir);
     std::fputs(models::wpSummary(r, spec).c_str(), stdout);
-    std::printf("\nwritten: %s/wp.csv, wp.svg, summary.md\n", a.outdir.c_str());
+    std::printf("\nwritten: %s/wp.csv, wp.html, summary.md\n", a.outdir.c_str());
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "%s: %s\n", a.scene.c_str(), e.what());
     return kInvalidInput;

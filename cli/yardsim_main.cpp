@@ -33,7 +33,7 @@ int yardsimMain(int argc, char** argv) {
   WpArgs wp;
   auto* wpCmd = app.add_subcommand("wp", "error against run time: run the scene's `wp:` sweep of integrators");
   wpCmd->add_option("scene", wp.scene, "scene file (YAML) with a wp: block")->required();
-  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.svg, summary.md)")->capture_default_str();
+  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.html, summary.md)")->capture_default_str();
   wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)");
   wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
 

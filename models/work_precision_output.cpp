@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "models/svg_plot.hpp"
+#include "models/report/loglog_page.hpp"
 #include "models/timeseries_writer.hpp"
 
 namespace yardsim::models {
@@ -80,25 +80,46 @@ std::string wpSummary(const WpResult& r, const WpSpec& spec) {
   return s.str();
 }
 
+LogLogPage wpPage(const WpResult& r, const WpSpec& spec) {
+  std::ostringstream omega;
+  omega.precision(3);
+  omega << r.omegaMax << " rad/s";
+  std::string channels;
+  for (const auto& c : spec.channels) channels += (channels.empty() ? "" : ", ") + c;
+  LogLogPage page{"work-precision: " + r.scene,
+                  {{"scene", r.scene}, {"omega_max", omega.str()}, {"error channels", channels},
+                   {"reference", spec.reference.label + " " + spec.reference.param()},
+                   {"checked by", spec.check.label + " " + spec.check.param()}},
+                  {},
+                  {}};
+  // (rows per method) => two plots: error against wall time, and against ABA evaluations
+  LogLogPlot byTime{"E_rms against wall time", "wall time (median) [s]", "E_rms [m]", {}};
+  LogLogPlot byEvals{"E_rms against ABA evaluations", "right-hand-side (ABA) evaluations", "E_rms [m]", {}};
+  std::size_t blown = 0;
+  for (const auto& m : methods(r)) {
+    LogLogCurve t{m, {}, {}}, f{m, {}, {}};
+    for (const auto& row : r.rows) {
+      if (row.run.label != m) continue;
+      if (row.status != "ok") {
+        ++blown;
+        continue;
+      }
+      t.x.push_back(row.wallMedian), t.y.push_back(row.error.rms);
+      f.x.push_back(static_cast<double>(row.series.fEvals)), f.y.push_back(row.error.rms);
+    }
+    byTime.curves.push_back(t);
+    byEvals.curves.push_back(f);
+  }
+  page.plots = {byTime, byEvals};
+  if (blown) page.notes.push_back(std::to_string(blown) + " run(s) blew up and are not drawn (wp.csv, summary.md)");
+  return page;
+}
+
 void writeWp(const WpResult& r, const WpSpec& spec, const std::filesystem::path& outdir) {
   std::filesystem::create_directories(outdir);
   writeFile(outdir / "wp.csv", wpCsv(r));
   writeFile(outdir / "summary.md", wpSummary(r, spec));
-  // (rows per method) => two panels: error against wall time, and against ABA evaluations
-  PlotPanel byTime{r.scene + ": E_rms against wall time", "wall time (median), s", "E_rms, m", {}};
-  PlotPanel byEvals{r.scene + ": E_rms against ABA evaluations", "right-hand-side (ABA) evaluations",
-                    "E_rms, m", {}};
-  for (const auto& m : methods(r)) {
-    PlotSeries t{m, {}}, f{m, {}};
-    for (const auto& row : r.rows)
-      if (row.run.label == m && row.status == "ok") {
-        t.points.emplace_back(row.wallMedian, row.error.rms);
-        f.points.emplace_back(static_cast<double>(row.series.fEvals), row.error.rms);
-      }
-    byTime.series.push_back(t);
-    byEvals.series.push_back(f);
-  }
-  writeFile(outdir / "wp.svg", logLogSvg({byTime, byEvals}));
+  writeLogLogPage(outdir / "wp.html", wpPage(r, spec));
 }
 
 }  // namespace yardsim::models

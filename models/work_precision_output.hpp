@@ -1,11 +1,13 @@
 #pragma once
 // What `yardsim wp` writes (docs/numerics.md): OUTDIR/wp.csv (one row per run, the columns
-// below), OUTDIR/wp.svg (log-log: error against wall time and against ABA evaluations) and
+// below), OUTDIR/wp.html (log-log: error against wall time and against ABA evaluations, drawn
+// by the report bundle, docs/report.md) and
 // OUTDIR/summary.md (per method, the time to reach E_rms <= 1e-3 m and <= 1e-6 m; the
 // reference's own accuracy).
 #include <filesystem>
 #include <string>
 
+#include "models/report/loglog_page.hpp"
 #include "models/work_precision.hpp"
 
 namespace yardsim::models {
@@ -18,7 +20,10 @@ inline constexpr const char* kWpColumns =
 std::string wpCsv(const WpResult& r);
 // (result) => the summary as a Markdown table, one row per method
 std::string wpSummary(const WpResult& r, const WpSpec& spec);
-// (result, folder) => wp.csv, wp.svg and summary.md written; throws std::runtime_error naming
+// (result, spec) => the page of wp.html: per method, E_rms against wall time and against ABA
+// evaluations (runs that blew up left out, and counted in a note)
+LogLogPage wpPage(const WpResult& r, const WpSpec& spec);
+// (result, folder) => wp.csv, wp.html and summary.md written; throws std::runtime_error naming
 // a file that cannot be written
 void writeWp(const WpResult& r, const WpSpec& spec, const std::filesystem::path& outdir);
 

@@ -187,7 +187,7 @@ until: 1000
   CHECK_FALSE(std::filesystem::exists(dir.path() / "out2"));  // nothing simulated
 }
 
-TEST_CASE("yardsim wp writes wp.csv, wp.svg and summary.md, and refuses a scene without wp: (exit 1)") {
+TEST_CASE("yardsim wp writes wp.csv, wp.html and summary.md, and refuses a scene without wp: (exit 1)") {
   yardsim::testing::SceneDir dir;
   const std::string head = R"(schema_version: 1
 name: bounce
@@ -221,7 +221,7 @@ until: 1
   int rows = 0;
   while (std::getline(csv, line)) rows += line.rfind("bounce,", 0) == 0;
   CHECK(rows == 5);
-  CHECK(std::filesystem::exists(dir.path() / "wp" / "wp.svg"));
+  CHECK(std::filesystem::exists(dir.path() / "wp" / "wp.html"));
   CHECK(std::filesystem::exists(dir.path() / "wp" / "summary.md"));
   const auto none = runYardsim("wp " + dir.write("plain.yaml", head).string() + " -o " + dir.file("wp2"));
   CHECK(none.status == 1);

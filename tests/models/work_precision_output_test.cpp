@@ -1,6 +1,6 @@
 // What `yardsim wp` writes: the CSV columns exactly as the issue names them, one row per run;
-// the summary picks the cheapest run reaching each tolerance and lists the blow-ups; the plot
-// has one line per method in each panel.
+// the summary picks the cheapest run reaching each tolerance and lists the blow-ups; wp.html
+// has one curve per method in each plot, without the blow-ups.
 #include "models/work_precision_output.hpp"
 
 #include <catch2/catch.hpp>
@@ -25,14 +25,9 @@ models::WpRow row(const std::string& method, double dt, double rms, double wall,
   r.series.fEvals = 4 * r.series.steps;
   return r;
 }
-std::size_t count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
-  return n;
-}
 }  // namespace
 
-TEST_CASE("wp.csv, summary.md and wp.svg") {
+TEST_CASE("wp.csv, summary.md and wp.html") {
   models::WpResult r;
   r.scene = "s";
   r.omegaMax = 100;
@@ -58,10 +53,22 @@ TEST_CASE("wp.csv, summary.md and wp.svg") {
   INFO(summary);
   CHECK_THAT(summary, Catch::Contains("| rk4 | 0.004 s (dt=0.025) | not reached | dt=0.1 |"));
   CHECK_THAT(summary, Catch::Contains("| euler | 0.003 s (dt=0.01) | not reached | none |"));
-  std::ifstream svgIn(dir.path() / "wp.svg");
-  std::stringstream svg;
-  svg << svgIn.rdbuf();
-  CHECK(svg.str().rfind("<svg", 0) == 0);
-  CHECK(count(svg.str(), "<polyline") == 4);  // two methods in two panels
-  CHECK(count(svg.str(), "<circle") == 2 * 4);  // the blow-up is not plotted
+  // (page) => two plots, a curve per method, the blow-up left out and noted
+  const models::LogLogPage page = models::wpPage(r, spec);
+  REQUIRE(page.plots.size() == 2);
+  for (const auto& plot : page.plots) {
+    REQUIRE(plot.curves.size() == 2);
+    CHECK(plot.curves[0].label == "rk4");
+    CHECK(plot.curves[0].x.size() == 3);
+    CHECK(plot.curves[1].x.size() == 1);
+  }
+  CHECK(page.plots[0].curves[0].x == std::vector<double>{0.002, 0.004, 0.008});
+  CHECK(page.plots[1].curves[0].x == std::vector<double>{80, 160, 320});
+  CHECK(page.plots[1].curves[0].y == std::vector<double>{2e-3, 5e-4, 3e-5});
+  CHECK_THAT(page.notes.at(0), Catch::Contains("1 run(s) blew up"));
+  std::ifstream htmlIn(dir.path() / "wp.html");
+  std::stringstream html;
+  html << htmlIn.rdbuf();
+  CHECK(html.str().rfind("<!doctype html>", 0) == 0);
+  CHECK_THAT(html.str(), Catch::Contains("\"kind\":\"loglog\""));
 }

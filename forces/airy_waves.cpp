@@ -40,8 +40,8 @@ double waveNumber(double omega, double depth, double g) {
 
 AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> components) : water_(water) {
   if (!(water_.density > 0) || !(water_.gravity > 0) || !(water_.depth > 0) || !std::isfinite(water_.level) ||
-      !(water_.ramp >= 0) || !std::isfinite(water_.ramp))
-    throw std::invalid_argument("water: density, gravity and depth must be > 0, level finite, ramp >= 0");
+      !(water_.ramp >= 0) || !std::isfinite(water_.ramp) || !std::isfinite(water_.start))
+    throw std::invalid_argument("water: density, gravity and depth must be > 0, level and start finite, ramp >= 0");
   for (std::size_t i = 0; i < components.size(); ++i) {
     const WaveComponent& c = components[i];
     const std::string which = "wave " + std::to_string(i) + ": ";
@@ -59,9 +59,10 @@ AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> co
 }
 
 double AiryWaves::ramp(double t) const {
-  if (water_.ramp <= 0.0 || t >= water_.ramp) return 1.0;
-  if (t <= 0.0) return 0.0;
-  return 0.5 * (1.0 - std::cos(M_PI * t / water_.ramp));
+  const double tau = t - water_.start;
+  if (tau < 0.0) return 0.0;
+  if (water_.ramp <= 0.0 || tau >= water_.ramp) return 1.0;
+  return 0.5 * (1.0 - std::cos(M_PI * tau / water_.ramp));
 }
 
 double AiryWaves::stretched(double z, double eta) const {

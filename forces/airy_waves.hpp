@@ -26,7 +26,8 @@ struct WaterProperties {
   double gravity = 9.81;    // m/s^2
   double level = 0.0;       // m, z of the still-water level
   double depth = std::numeric_limits<double>::infinity();  // m below the level; inf: deep water
-  double ramp = 0.0;        // s: the wave amplitudes grow as (1 - cos(pi t/ramp))/2 until ramp
+  double ramp = 0.0;        // s: the wave amplitudes grow as (1 - cos(pi tau/ramp))/2, tau = t - start
+  double start = 0.0;       // s: calm water before this time, then the ramp
 };
 
 class AiryWaves {

@@ -23,7 +23,19 @@ struct Reader {
   std::string param;
 
   void fail(const YAML::Node& at, const std::string& key, const std::string& msg) const {
-    report(param, at, key, msg);
+    report(param, marked(at), key, msg);
+  }
+  // (node) => itself when it knows its place in the file, else its first element or key that
+  // does (collections rebuilt while resolving $references lose their marks)
+  static YAML::Node marked(const YAML::Node& n) {
+    if (!n.IsDefined() || !n.Mark().is_null()) return n;
+    if (n.IsSequence())
+      for (std::size_t i = 0; i < n.size(); ++i)
+        if (const YAML::Node m = marked(n[i]); !m.Mark().is_null()) return m;
+    if (n.IsMap())
+      for (auto it = n.begin(); it != n.end(); ++it)
+        if (const YAML::Node m = marked(it->second); !m.Mark().is_null()) return m;
+    return n;
   }
   bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
             const std::string& key) const {
@@ -36,7 +48,7 @@ struct Reader {
       const auto k = it->first.as<std::string>();
       if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
       const std::string hint = didYouMean(k, allowed);
-      fail(it->first, key.empty() ? k : key + "." + k,
+      fail(it->first.Mark().is_null() ? it->second : it->first, key.empty() ? k : key + "." + k,
            "unknown key '" + k + "'" + (hint.empty() ? "" : " (" + hint + ")"));
       ok = false;
     }

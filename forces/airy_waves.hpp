@@ -58,6 +58,7 @@ class AiryWaves {
   struct Wave {
     WaveComponent c;
     double a, k, omega, cosb, sinb;
+    double coshScale;  // 1 / (1 + e^{-2kh}): cosh k(z'+h) / cosh kh = e^{kz'} (1 + e^{-2k(z'+h)}) coshScale
   };
   // (t) => the ramp factor in [0, 1]
   double ramp(double t) const;

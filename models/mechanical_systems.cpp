@@ -102,6 +102,10 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
   }
   for (const auto& r : s.spec.ropes) out.push_back({"rope", r.name, ""});
   for (const auto& e : s.spec.equalizers) out.push_back({"equalizer", e.name, ""});
+  for (const auto& h : s.spec.hulls) out.push_back({"hydrostatics", h.name, ""});
+  for (const auto& w : s.spec.windLoads) out.push_back({"wind_load", w.name, ""});
+  for (const auto& c : s.spec.currentLoads) out.push_back({"current_load", c.name, ""});
+  for (const auto& d : s.spec.dampers) out.push_back({"damping", d.name, ""});
   return out;
 }
 

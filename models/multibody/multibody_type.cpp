@@ -101,6 +101,10 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
           for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
+          for (const auto& h : spec.hulls) out.push_back({"hydrostatics", h.name, ""});
+          for (const auto& w : spec.windLoads) out.push_back({"wind_load", w.name, ""});
+          for (const auto& c : spec.currentLoads) out.push_back({"current_load", c.name, ""});
+          for (const auto& d : spec.dampers) out.push_back({"damping", d.name, ""});
           return out;
         }});
 

@@ -13,7 +13,7 @@
 
 using namespace yardsim;
 
-TEST_CASE("floating barge: draft, trim, wind heel and roll period of the hand formulas; waves roll it") {
+TEST_CASE("floating barge: draft, trim, wind heel and roll period of the hand formulas, and waves roll it") {
   auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/floating_barge/scene.yaml");
   auto root = models::assemble(*scene);
   testing::SceneDir out;

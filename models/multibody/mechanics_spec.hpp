@@ -5,6 +5,8 @@
 // an immutable dynamics::Model with its initial q and v.
 #include <array>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include "dynamics/model.hpp"
+#include "forces/airy_waves.hpp"
+#include "forces/current_profile.hpp"
+#include "forces/flow_load.hpp"
+#include "forces/geometry/triangle_mesh.hpp"
+#include "forces/linear_quadratic_damping.hpp"
+#include "forces/wind_profile.hpp"
 #include "models/params.hpp"
 
 namespace yardsim::models {
@@ -83,6 +91,23 @@ struct MechanicsSpec {
     double threshold = 0.0;
     bool above = true;  // fires when the quantity rises above (or falls below) the threshold
   };
+  // hydrostatics on a body: its hull mesh, read, checked and placed in the body frame
+  struct Hull {
+    std::string name, body;
+    std::shared_ptr<const forces::TriangleMesh> mesh;
+  };
+  // a wind or current load on a body (OCIMF style)
+  struct Flow {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();
+    forces::FlowAreas areas;
+    forces::FlowCoefficients coefficients;
+  };
+  struct Damper {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();
+    forces::DampingCoefficients coefficients;
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;
   std::vector<Load> loads;
@@ -91,6 +116,15 @@ struct MechanicsSpec {
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
   std::vector<Equalizer> equalizers;
+  // the environment (scene root only): the sea with its waves and current, the wind
+  bool hasWater = false;  // `water:` declared (hydrostatics without it use the defaults)
+  forces::WaterProperties water;
+  std::vector<forces::WaveComponent> waves;
+  std::optional<forces::CurrentProperties> current;
+  std::optional<forces::WindProperties> wind;
+  std::vector<Hull> hulls;
+  std::vector<Flow> windLoads, currentLoads;
+  std::vector<Damper> dampers;
 };
 
 // Where parsing reports a problem: (node, key path below the parameter, message, hint).
@@ -112,8 +146,13 @@ struct BuiltMechanics {
   std::vector<MechanicsSpec::Equalizer> equalizers;
   std::vector<MechanicsSpec::Load> loads;
   std::vector<MechanicsSpec::Watch> watches;
+  MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
   std::vector<MechanicsSpec::Visual> visuals = {};  // per body index (0: world); last, defaulted
 };
+
+// (spec) => "" or what is missing for its loads: a wind load without `wind:`, a current load
+// without `water: {current}`
+std::string missingEnvironment(const MechanicsSpec& spec);
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body
 BuiltMechanics buildMechanics(const MechanicsSpec& spec);

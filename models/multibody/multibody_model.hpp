@@ -18,6 +18,9 @@
 #include "dynamics/multibody_system.hpp"
 #include "forces/body_load.hpp"
 #include "forces/equalizer.hpp"
+#include "forces/flow_load.hpp"
+#include "forces/hydrostatics.hpp"
+#include "forces/linear_quadratic_damping.hpp"
 #include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
 #include "models/multibody/mechanics_spec.hpp"
@@ -99,6 +102,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
   const forces::Equalizer& equalizer(std::size_t i) const { return *equalizers_[i]; }
+  const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return hydros_; }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
@@ -163,7 +167,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* viewState_ = nullptr;
   mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
   mutable std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
-  mutable std::vector<std::unique_ptr<forces::BodyLoad>> loads_;
+  mutable std::vector<std::unique_ptr<forces::BodyLoad>> bodyLoads_;  // time series from YAML
   // (watch) => the quantity it reads: kind and index (dof, body or rope)
   struct WatchRef {
     enum class Kind { Q, V, Position, Angle, Tension, Length } kind;
@@ -172,6 +176,15 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   std::vector<WatchRef> watchRefs_;
   // (x, t, scratch_ holding x's kinematics) => the watched quantity
   double watched(std::size_t w, const MultibodyState& x, double t) const;
+  // floating bodies: hydrostatics, wind and current loads, damping; `loads_` lists them all
+  mutable std::vector<std::unique_ptr<forces::Hydrostatics>> hydros_;
+  mutable std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
+  mutable std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;
+  std::vector<forces::ForceProvider*> loads_;
+  // (committed state) => the stage providers see there, for channels
+  forces::Stage committedStage() const;
+  // (floating providers) => their channels
+  void floatingChannels(std::vector<Channel>& out) const;
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <set>
 
 #include "dynamics/model_builder.hpp"
+#include "forces/geometry/mesh_io.hpp"
 #include "dynamics/rotation.hpp"
 #include "models/diagnostics.hpp"
 #include "models/multibody/floating_spec.hpp"
@@ -92,7 +94,8 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
 }
 
 // ({box | cylinder | sphere | mesh, pose}) => what the replay draws for the body
-MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::string& key) {
+MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::string& key,
+                             const std::filesystem::path& dir) {
   using Shape = MechanicsSpec::Visual::Shape;
   MechanicsSpec::Visual v;
   const char* expected = "expected one of {box: [lx, ly, lz]}, {cylinder: {radius, length}}, "
@@ -130,7 +133,12 @@ MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::st
     v.shape = Shape::Mesh;
     const YAML::Node m = n["mesh"];
     v.file = m.IsScalar() ? m.Scalar() : "";
-    r.fail(m, key + ".mesh", "mesh geometry is not supported yet; use box, cylinder or sphere");
+    try {
+      if (v.file.empty()) throw forces::MeshError("expected a file name (OBJ or STL, relative to this YAML file)");
+      v.mesh = std::make_shared<const forces::TriangleMesh>(forces::readMesh((dir / v.file).lexically_normal().string()));
+    } catch (const forces::MeshError& e) {
+      r.fail(m, key + ".mesh", e.what());
+    }
   }
   if (n["pose"]) {
     v.posed = true;
@@ -200,7 +208,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
                         "Ixz, Iyz] about the centre of mass, kg m^2)");
     }
     if (const YAML::Node g = n["geometry"]) {
-      b.visual = visual(r, g, b.name + ".geometry");
+      b.visual = visual(r, g, b.name + ".geometry", std::filesystem::path(p.mark("bodies").file).parent_path());
       YAML::Emitter e;
       e.SetMapFormat(YAML::Flow);
       e.SetSeqFormat(YAML::Flow);

@@ -26,13 +26,15 @@ namespace yardsim::models {
 
 struct MechanicsSpec {
   // What the report's 3D replay draws for a body; not used by the dynamics. Shape Auto is the
-  // uniform box with the body's mass and principal moments of inertia.
+  // uniform box with the body's mass and principal moments of inertia; a mesh (OBJ or STL,
+  // relative to the YAML file) is in the body frame unless posed.
   struct Visual {
     enum class Shape { Auto, Box, Cylinder, Sphere, Mesh };
     Shape shape = Shape::Auto;
     dynamics::Vector3 size = dynamics::Vector3::Zero();  // box: lx, ly, lz; cylinder: radius,
                                                          // length (along z); sphere: radius
-    std::string file;                                    // mesh
+    std::string file;                                    // mesh: the file as written
+    std::shared_ptr<const forces::TriangleMesh> mesh;    // mesh: read at the door, body frame
     bool posed = false;  // false: centred on the centre of mass, along the body axes
     dynamics::Transform X_BG = dynamics::Transform::identity();  // shape frame in the body frame
   };

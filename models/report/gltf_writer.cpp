@@ -94,10 +94,23 @@ void sphere(Mesh& m, double r, int rings = 12, int segments = 24) {
     }
 }
 
+// (triangle mesh) => its triangles with flat normals (three vertices each)
+void triangles(Mesh& m, const forces::TriangleMesh& t) {
+  for (const auto& f : t.triangles) {
+    const dynamics::Vector3 &a = t.vertices[f[0]], &b = t.vertices[f[1]], &c = t.vertices[f[2]];
+    dynamics::Vector3 n = (b - a).cross(c - a);
+    n = n.norm() > 0 ? n.normalized() : dynamics::Vector3::UnitZ();
+    const std::uint32_t o = m.size();
+    for (const auto* v : {&a, &b, &c}) m.vertex(*v, n);
+    m.index.insert(m.index.end(), {o, o + 1, o + 2});
+  }
+}
+
 // (body) => its shape's mesh in the body frame
 Mesh shapeMesh(const ReplayBody& b) {
   Mesh m;
-  switch (b.shape) {
+  if (b.shape == Shape::Mesh && b.mesh) triangles(m, *b.mesh);
+  else switch (b.shape) {
     case Shape::Cylinder: cylinder(m, b.size[0], b.size[1]); break;
     case Shape::Sphere: sphere(m, b.size[0]); break;
     default: box(m, 0.5 * b.size); break;

@@ -12,6 +12,12 @@ ReplayBody replayShape(const MechanicsSpec::Visual& visual, double mass,
   using Shape = MechanicsSpec::Visual::Shape;
   ReplayBody b;
   b.X_BG = visual.posed ? visual.X_BG : dynamics::Transform::translation(com);
+  if (visual.shape == Shape::Mesh && visual.mesh) {  // in the body frame unless posed
+    b.shape = Shape::Mesh;
+    b.mesh = visual.mesh;
+    b.X_BG = visual.posed ? visual.X_BG : dynamics::Transform::identity();
+    return b;
+  }
   if (visual.shape != Shape::Auto && visual.shape != Shape::Mesh) {
     b.shape = visual.shape;
     b.size = visual.size;

@@ -4,6 +4,7 @@
 // through points fixed on bodies (or the world). Models that have bodies implement Replayable;
 // the replay recorder samples them on the record grid.
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,7 @@ struct ReplayBody {
   MechanicsSpec::Visual::Shape shape = MechanicsSpec::Visual::Shape::Box;
   dynamics::Vector3 size = dynamics::Vector3::Ones();  // as MechanicsSpec::Visual::size
   dynamics::Transform X_BG;                             // shape frame in the body frame
+  std::shared_ptr<const forces::TriangleMesh> mesh;     // shape Mesh: its triangles
   // per frame: position of the body origin in the world (m) and orientation as a unit
   // quaternion in glTF order x, y, z, w
   std::vector<std::array<float, 3>> translation;

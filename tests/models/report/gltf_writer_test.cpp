@@ -146,3 +146,42 @@ TEST_CASE("a replay whose bodies miss poses is refused") {
   replay.bodies[0].name = "b";
   CHECK_THROWS_WITH(models::glbBytes(replay), Catch::Contains("'b' has 0 poses for 2 frames"));
 }
+
+TEST_CASE("a mesh geometry (OBJ, relative to the scene file) becomes the body's glTF mesh in the body frame") {
+  testing::SceneDir dir;
+  // a tetrahedron spanning [0, 2] x [0, 3] x [0, 4] in the body frame
+  dir.write("meshes/tet.obj", "v 0 0 0\nv 2 0 0\nv 0 3 0\nv 0 0 4\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const auto file = dir.write("s.yaml", R"(schema_version: 1
+components:
+  m:
+    type: multibody
+    params:
+      dt: 0.01
+      bodies:
+        tet: {parent: world, joint: {type: fixed}, mass: 1, inertia: [1, 1, 1], geometry: {mesh: meshes/tet.obj}}
+record: {interval: 0.1}
+until: 0.2
+)");
+  auto scene = models::loadSceneOrThrow(file);
+  auto root = models::assemble(*scene);
+  models::runScene(*scene, *root, {dir.path() / "out", 0.2, {}, {}, 0.1, 2000});
+  const testing::GlbFile g((dir.path() / "out/replay.glb").string());
+  const int pos = g.json["meshes"][0]["primitives"][0]["attributes"]["POSITION"].as<int>();
+  CHECK(g.json["accessors"][pos]["min"].as<std::vector<double>>() == std::vector<double>{0, 0, 0});
+  CHECK(g.json["accessors"][pos]["max"].as<std::vector<double>>() == std::vector<double>{2, 3, 4});
+  CHECK(g.json["accessors"][pos]["count"].as<int>() == 12);  // 4 triangles, flat normals
+
+  const auto bad = dir.write("bad.yaml", R"(schema_version: 1
+components:
+  m:
+    type: multibody
+    params:
+      dt: 0.01
+      bodies:
+        tet: {parent: world, joint: {type: fixed}, mass: 1, inertia: [1, 1, 1], geometry: {mesh: nowhere.obj}}
+)");
+  const auto r = models::loadScene(bad);
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  CHECK(r.diagnostics.all()[0].keyPath == "components.m.params.bodies.tet.geometry.mesh");
+  CHECK_THAT(r.diagnostics.all()[0].message, Catch::Contains("nowhere.obj"));
+}

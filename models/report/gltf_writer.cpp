@@ -138,7 +138,7 @@ struct Builder {
   int view(const void* data, std::size_t bytes, int target) {
     const std::size_t offset = bin.size();
     bin.resize(offset + bytes);
-    std::memcpy(bin.data() + offset, data, bytes);
+    if (bytes) std::memcpy(bin.data() + offset, data, bytes);  // (never with a null source)
     bin.resize((bin.size() + 3) / 4 * 4, 0);
     if (nViews) views += ',';
     views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) +

@@ -34,6 +34,6 @@ std::vector<Panel> buildPanels(const PanelMesh& mesh);
 
 /// A quad is refused when a vertex lies farther than this fraction of the panel diameter from
 /// the mean plane (a warped quad should be split into two triangles).
-inline constexpr double kMaxQuadWarp = 0.2;
+inline constexpr double kMaxQuadWarp = 0.05;
 
 }  // namespace yardsim::forces::hydro

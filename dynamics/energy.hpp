@@ -8,13 +8,14 @@
 
 namespace yardsim::dynamics {
 
-/// (q, v) => T = 1/2 sum V_i . I_i V_i (runs forward kinematics).
+/// (q, v) => T = 1/2 sum V_i . (I_i + A_i) V_i, A_i the added mass (body and fluid; runs forward kinematics).
 double kineticEnergy(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
 /// (q) => U = - sum m_i g . c_i (gravity potential, zero at the world origin; runs forward kinematics).
 double potentialEnergy(const Model& model, Data& data, const Eigen::VectorXd& q);
 /// (q) => centre of mass of all bodies in the world frame (runs forward kinematics).
 Vector3 centerOfMass(const Model& model, Data& data, const Eigen::VectorXd& q);
-/// (q, v) => spatial momentum in the world frame: [angular momentum about the world origin; linear momentum].
+/// (q, v) => spatial momentum in the world frame: [angular momentum about the world origin; linear momentum],
+/// including the fluid's impulse A_i V_i of bodies with added mass.
 Force momentum(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
 
 }  // namespace yardsim::dynamics

@@ -11,6 +11,11 @@
 #include "forces/equalizer.hpp"
 #include "forces/gravity.hpp"
 #include "forces/wire_rope.hpp"
+#include "forces/current_load.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
+#include "forces/hydrostatics.hpp"
+#include "forces/linear_quadratic_damping.hpp"
+#include "forces/wind_load.hpp"
 
 using yardsim::testing::allocationCount;
 
@@ -64,5 +69,52 @@ TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at 
   CHECK(allocationCount() > after);
   CHECK(wire.lastTension() > 0.0);
   CHECK(eq.lastTension() > 0.0);
+  CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(3e5, Vector3(20, 8, 4)));
+  const dynamics::Model m = b.build();
+  const WaterProperties water{1025.0, 9.81, 0.0, 50.0, 5.0};
+  Hydrostatics calm("calm", m, 1, boxMesh(Vector3(20, 8, 4), 4, 2, 2), std::make_shared<const AiryWaves>(water));
+  Hydrostatics waves("waves", m, 1, boxMesh(Vector3(20, 8, 4), 4, 2, 2),
+                     std::make_shared<const AiryWaves>(water, std::vector<WaveComponent>{{2.0, 8.0, 1.0, 0.0}}));
+  DampingCoefficients c;
+  c.linear.fill(1e4);
+  c.quadratic.fill(1e3);
+  LinearQuadraticDamping damping("damping", m, 1, Vector3(0, 0, 1), c);
+  WindProperties wp;
+  wp.speed = 20.0;
+  wp.profile = WindProfileKind::Npd;
+  WindLoad wind("wind", m, 1, Vector3(0, 0, 8), {50, 200, 20},
+                FlowCoefficients({0, M_PI / 2, M_PI}, {-1, 0, 1}, {0, -1, 0}, {0, 0.1, 0}),
+                std::make_shared<const WindField>(wp));
+  CurrentProperties cp;
+  cp.speed = 1.0;
+  cp.profile = {{-10.0, 0.5}, {0.0, 1.0}};
+  CurrentLoad current("current", m, 1, Vector3(0, 0, -1), {30, 80, 20}, FlowCoefficients(),
+                      std::make_shared<const CurrentField>(cp));
+  Rig r(m, {&calm, &waves, &damping, &wind, &current});
+  r.q << 0.0, 0.0, 0.5, std::cos(0.1), std::sin(0.1), 0.0, 0.0;
+  r.v.setConstant(0.1);
+  r.t = 3.0;
+  r.step(1e-3);
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  calm.report(s);  // sizes the report's copy of q
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&calm, &waves, &damping, &wind, &current}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += calm.report(s).draft + waves.report(s).gmTransverse + wind.load(s).speed + current.load(s).speed;
+  sink += damping.load(s)[0] + waves.last().volume;
+  CHECK(allocationCount() == before);
+  CHECK(waves.last().volume > 0.0);
   CHECK(std::isfinite(sink));
 }

@@ -1,0 +1,134 @@
+#include "forces/airy_waves.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace yardsim::forces {
+
+using dynamics::Vector3;
+
+namespace {
+// (k, z' <= 0, depth) => cosh(k(z'+h))/cosh(kh), sinh(k(z'+h))/sinh(kh), cosh(k(z'+h))/sinh(kh),
+// in forms that neither overflow for large kh nor lose the deep-water limit e^{kz'}
+struct Decay {
+  double cc, ss, cs;
+};
+Decay decay(double k, double z, double h) {
+  const double e = std::exp(k * z);
+  if (!std::isfinite(h)) return {e, e, e};
+  const double a = std::exp(-2.0 * k * (z + h)), b = std::exp(-2.0 * k * h);
+  return {e * (1.0 + a) / (1.0 + b), e * (1.0 - a) / (1.0 - b), e * (1.0 + a) / (1.0 - b)};
+}
+}  // namespace
+
+double waveNumber(double omega, double depth, double g) {
+  const double deep = omega * omega / g;
+  if (!std::isfinite(depth)) return deep;
+  // (Newton on f(k) = g k tanh(kh) - w^2 from the larger of the deep and shallow guesses) => k
+  double k = std::max(deep, omega / std::sqrt(g * depth));
+  for (int i = 0; i < 50; ++i) {
+    const double t = std::tanh(k * depth);
+    const double f = g * k * t - omega * omega;
+    const double df = g * t + g * k * depth * (1.0 - t * t);
+    const double step = f / df;
+    k -= step;
+    if (std::abs(step) < 1e-15 * k) break;
+  }
+  return k;
+}
+
+AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> components) : water_(water) {
+  if (!(water_.density > 0) || !(water_.gravity > 0) || !(water_.depth > 0) || !std::isfinite(water_.level) ||
+      !(water_.ramp >= 0) || !std::isfinite(water_.ramp))
+    throw std::invalid_argument("water: density, gravity and depth must be > 0, level finite, ramp >= 0");
+  for (std::size_t i = 0; i < components.size(); ++i) {
+    const WaveComponent& c = components[i];
+    const std::string which = "wave " + std::to_string(i) + ": ";
+    if (!(c.height > 0) || !(c.period > 0) || !std::isfinite(c.height) || !std::isfinite(c.period) ||
+        !std::isfinite(c.direction) || !std::isfinite(c.phase))
+      throw std::invalid_argument(which + "height and period must be finite and > 0");
+    const double omega = 2.0 * M_PI / c.period;
+    const double k = waveNumber(omega, water_.depth, water_.gravity);
+    const double steepness = c.height * k / (2.0 * M_PI);
+    if (steepness > 1.0 / 7.0)
+      throw std::invalid_argument(which + "H/L = " + std::to_string(steepness) +
+                                  " is above the breaking limit 1/7; lower the height or lengthen the period");
+    waves_.push_back({c, 0.5 * c.height, k, omega, std::cos(c.direction), std::sin(c.direction)});
+  }
+}
+
+double AiryWaves::ramp(double t) const {
+  if (water_.ramp <= 0.0 || t >= water_.ramp) return 1.0;
+  if (t <= 0.0) return 0.0;
+  return 0.5 * (1.0 - std::cos(M_PI * t / water_.ramp));
+}
+
+double AiryWaves::stretched(double z, double eta) const {
+  // (z, surface eta) => Wheeler: z' = h (z - eta) / (h + eta) below the level (deep: z - eta)
+  const double zr = z - water_.level, er = eta - water_.level, h = water_.depth;
+  if (!std::isfinite(h)) return zr - er;
+  return h * (zr - er) / (h + er);
+}
+
+double AiryWaves::elevation(double x, double y, double t) const {
+  double eta = 0.0;
+  for (const Wave& w : waves_) eta += w.a * std::cos(w.k * (x * w.cosb + y * w.sinb) - w.omega * t + w.c.phase);
+  return water_.level + ramp(t) * eta;
+}
+
+Vector3 AiryWaves::velocity(const Vector3& p, double t) const {
+  const double eta = elevation(p.x(), p.y(), t);
+  if (waves_.empty() || p.z() > eta) return Vector3::Zero();
+  const double zs = stretched(p.z(), eta), r = ramp(t);
+  Vector3 u = Vector3::Zero();
+  for (const Wave& w : waves_) {
+    // (a w cosh/sinh cos th along the direction, a w sinh/sinh sin th up)
+    const double th = w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase;
+    const Decay d = decay(w.k, zs, water_.depth);
+    const double uh = w.a * w.omega * d.cs * std::cos(th);
+    u += Vector3(uh * w.cosb, uh * w.sinb, w.a * w.omega * d.ss * std::sin(th));
+  }
+  return r * u;
+}
+
+Vector3 AiryWaves::acceleration(const Vector3& p, double t) const {
+  const double eta = elevation(p.x(), p.y(), t);
+  if (waves_.empty() || p.z() > eta) return Vector3::Zero();
+  const double zs = stretched(p.z(), eta), r = ramp(t);
+  Vector3 a = Vector3::Zero();
+  for (const Wave& w : waves_) {
+    // (d/dt of the velocity at a fixed point, linear theory)
+    const double th = w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase;
+    const Decay d = decay(w.k, zs, water_.depth);
+    const double ah = w.a * w.omega * w.omega * d.cs * std::sin(th);
+    a += Vector3(ah * w.cosb, ah * w.sinb, -w.a * w.omega * w.omega * d.ss * std::cos(th));
+  }
+  return r * a;
+}
+
+double AiryWaves::dynamicPressure(const Vector3& p, double t) const {
+  if (waves_.empty()) return 0.0;
+  const double eta = elevation(p.x(), p.y(), t);
+  return p.z() > eta ? 0.0 : dynamicPressureBelow(p, t, eta);
+}
+
+double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) const {
+  const double zs = stretched(p.z(), eta);
+  double pd = 0.0;
+  for (const Wave& w : waves_) {
+    const double th = w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase;
+    pd += w.a * decay(w.k, zs, water_.depth).cc * std::cos(th);
+  }
+  return water_.density * water_.gravity * ramp(t) * pd;
+}
+
+double AiryWaves::pressure(const Vector3& p, double t) const {
+  const double rg = water_.density * water_.gravity;
+  if (waves_.empty()) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
+  const double eta = elevation(p.x(), p.y(), t);
+  if (p.z() > eta) return 0.0;
+  return rg * (water_.level - p.z()) + dynamicPressureBelow(p, t, eta);
+}
+
+}  // namespace yardsim::forces

@@ -1,0 +1,78 @@
+#include "forces/geometry/submerged_mesh.hpp"
+
+namespace yardsim::forces {
+
+using dynamics::Vector3;
+
+SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
+                                       const AiryWaves& sea, double t, SubmergedWorkspace& ws,
+                                       bool keepWet) {
+  // (X_WB, surface) => corners in the world and their depth below the surface
+  const std::size_t nv = mesh.vertices.size();
+  for (std::size_t i = 0; i < nv; ++i) {
+    const Vector3 p = X_WB.actPoint(mesh.vertices[i]);
+    ws.vertices[i] = p;
+    ws.depth[i] = (sea.calm() ? sea.water().level : sea.elevation(p.x(), p.y(), t)) - p.z();
+  }
+  // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
+  // where the waterplane's own tetrahedra vanish)
+  const Vector3 o(X_WB.p.x(), X_WB.p.y(),
+                  sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
+  SubmergedProperties r;
+  double vol6 = 0.0, wpA = 0.0, wpX = 0.0, wpY = 0.0, wpXX = 0.0, wpYY = 0.0, wpXY = 0.0;
+  Vector3 first = Vector3::Zero(), F = Vector3::Zero(), M = Vector3::Zero();
+  for (const auto& tri : mesh.triangles) {
+    // (corner depths) => the wetted polygon (Sutherland-Hodgman against depth > 0), <= 4 corners
+    Vector3 poly[4];
+    int n = 0;
+    for (int e = 0; e < 3; ++e) {
+      const auto i = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
+      const auto j = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
+      const double di = ws.depth[i], dj = ws.depth[j];
+      if (di > 0.0) poly[n++] = ws.vertices[i];
+      if ((di > 0.0) != (dj > 0.0)) poly[n++] = ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]);
+    }
+    for (int k = 1; k + 1 < n; ++k) {
+      // (wetted piece a, b, c) => its share of every integral
+      const Vector3& a = poly[0];
+      const Vector3& b = poly[k];
+      const Vector3& c = poly[k + 1];
+      const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
+      const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+      const Vector3 ao = a - o, bo = b - o, co = c - o;
+      const double d6 = ao.dot(bo.cross(co));
+      vol6 += d6;
+      first += d6 * (ao + bo + co);  // / 24 later
+      // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
+      for (const Vector3& q : m) {
+        const double w = -S.z() / 3.0;
+        wpA += w;
+        wpX += w * q.x();
+        wpY += w * q.y();
+        wpXX += w * q.x() * q.x();
+        wpYY += w * q.y() * q.y();
+        wpXY += w * q.x() * q.y();
+        const double p = sea.pressure(q, t);
+        F -= p / 3.0 * S;
+        M -= p / 3.0 * q.cross(S);
+      }
+      r.wettedArea += S.norm();
+      if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
+    }
+  }
+  r.volume = vol6 / 6.0;
+  r.centreOfBuoyancy = r.volume > 0.0 ? Vector3(o + first / (4.0 * vol6)) : o;
+  r.waterplaneArea = wpA;
+  if (wpA > 0.0) {
+    const double xc = wpX / wpA, yc = wpY / wpA;
+    r.waterplaneCentroid = Eigen::Vector2d(xc, yc);
+    r.waterplaneInertia << wpXX - wpA * xc * xc, wpXY - wpA * xc * yc, wpXY - wpA * xc * yc, wpYY - wpA * yc * yc;
+  } else {
+    r.waterplaneCentroid = o.head<2>();
+  }
+  r.force = F;
+  r.moment = M;
+  return r;
+}
+
+}  // namespace yardsim::forces

@@ -1,0 +1,48 @@
+#pragma once
+// The part of a closed hull below the water surface, at a given pose and time: each triangle is
+// clipped at the surface (the depth eta(x, y, t) - z is linear along an edge between corners),
+// and the wetted pieces give, by signed tetrahedra from a point on the surface (Ku et al. 2014),
+// the submerged volume and centre of buoyancy, and by the divergence theorem the waterplane
+// area, centroid and second moments; the incident pressure integrated over the wetted pieces
+// (three-point edge-midpoint rule, exact for the linear pressure of calm water) gives the force
+// and moment. In calm water everything is exact for the polyhedron. Allocation-free.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "forces/airy_waves.hpp"
+#include "forces/geometry/triangle_mesh.hpp"
+
+namespace yardsim::forces {
+
+struct SubmergedProperties {
+  double volume = 0.0;  // m^3 below the surface (waves: see docs/hydrostatics.md)
+  dynamics::Vector3 centreOfBuoyancy = dynamics::Vector3::Zero();  // world, m
+  double waterplaneArea = 0.0;                                     // m^2, projected on the horizontal
+  Eigen::Vector2d waterplaneCentroid = Eigen::Vector2d::Zero();    // world x, y, m
+  // world-axis second moments of the waterplane about its centroid, m^4:
+  // [[int (x-xc)^2, int (x-xc)(y-yc)], [., int (y-yc)^2]]
+  Eigen::Matrix2d waterplaneInertia = Eigen::Matrix2d::Zero();
+  double wettedArea = 0.0;                              // m^2
+  dynamics::Vector3 force = dynamics::Vector3::Zero();   // N, world: -int p n dS
+  dynamics::Vector3 moment = dynamics::Vector3::Zero();  // N m, world, about the world origin
+  int wetTriangles = 0;  // pieces stored in the workspace (when asked for)
+};
+
+// Buffers sized for one mesh: its vertices in the world, their depths, the wetted pieces.
+struct SubmergedWorkspace {
+  explicit SubmergedWorkspace(const TriangleMesh& mesh)
+      : vertices(mesh.vertices.size()), depth(mesh.vertices.size()), wet(2 * mesh.triangles.size()) {}
+  std::vector<dynamics::Vector3> vertices;  // world, m
+  std::vector<double> depth;                // eta(x, y, t) - z, m (> 0: wet)
+  std::vector<std::array<dynamics::Vector3, 3>> wet;  // wetted pieces, world, outward (first wetTriangles)
+};
+
+// (mesh in the body frame, X_WB, sea, t, workspace built for this mesh, keep the wetted pieces)
+// => submerged properties and the pressure force of the sea on the wetted surface
+SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
+                                       const AiryWaves& sea, double t, SubmergedWorkspace& ws,
+                                       bool keepWet = false);
+
+}  // namespace yardsim::forces

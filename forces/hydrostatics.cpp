@@ -1,0 +1,106 @@
+#include "forces/hydrostatics.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "dynamics/kinematics.hpp"
+#include "dynamics/rotation.hpp"
+
+namespace yardsim::forces {
+
+using dynamics::Vector3;
+
+Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int body, TriangleMesh hull,
+                           std::shared_ptr<const AiryWaves> sea)
+    : ForceProvider(std::move(name)),
+      body_(body),
+      hull_(std::move(hull)),
+      sea_(std::move(sea)),
+      calm_(sea_ ? sea_->water() : WaterProperties{}),
+      ws_(hull_),
+      reportQ_(Eigen::VectorXd::Zero(model.nq)) {
+  if (body_ < 1 || body_ >= model.nbodies)
+    throw std::invalid_argument("hydrostatics '" + this->name() + "': body " + std::to_string(body_) +
+                                " is the world or outside the model's " + std::to_string(model.nbodies) +
+                                " bodies");
+  if (!sea_) throw std::invalid_argument("hydrostatics '" + this->name() + "': no sea given");
+  try {
+    checkClosedMesh(hull_);
+  } catch (const MeshError& e) {
+    throw std::invalid_argument("hydrostatics '" + this->name() + "': " + e.what());
+  }
+  solid_ = solidProperties(hull_);
+  double zMin = hull_.vertices.front().z();
+  for (const Vector3& v : hull_.vertices) zMin = std::min(zMin, v.z());
+  keel_B_ = Vector3(solid_.centroid.x(), solid_.centroid.y(), zMin);
+  // (tree) => the body and every body below it (parent[i] < i)
+  std::vector<bool> in(static_cast<std::size_t>(model.nbodies), false);
+  in[static_cast<std::size_t>(body_)] = true;
+  for (int i = body_; i < model.nbodies; ++i)
+    if (i == body_ || in[static_cast<std::size_t>(model.parent[i])]) {
+      in[static_cast<std::size_t>(i)] = true;
+      subtree_.push_back(i);
+    }
+}
+
+void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+  // (X_WB, sea, t) => clipped hull, pressure force and moment about the world origin
+  last_ = integrateSubmerged(hull_, s.data.X_WB[body_], *sea_, s.t, ws_);
+  dynamics::Force F_W;
+  F_W << last_.moment, last_.force;
+  f.addWorldFrame(body_, F_W);
+}
+
+double Hydrostatics::doPotentialEnergy(const Stage& s) const {
+  const SubmergedProperties c = integrateSubmerged(hull_, s.data.X_WB[body_], calm_, s.t, ws_);
+  const WaterProperties& w = calm_.water();
+  return w.density * w.gravity * c.volume * (w.level - c.centreOfBuoyancy.z());
+}
+
+double Hydrostatics::doPower(const Stage& s) const {
+  if (sea_->calm()) return 0.0;
+  const dynamics::Transform& X = s.data.X_WB[body_];
+  const SubmergedProperties c = integrateSubmerged(hull_, X, calm_, s.t, ws_);
+  const SubmergedProperties w = integrateSubmerged(hull_, X, *sea_, s.t, ws_);
+  const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
+  return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());
+}
+
+const HydrostaticReport& Hydrostatics::report(const Stage& s) const {
+  if (s.t == reportTime_ && s.q.size() == reportQ_.size() && s.q == reportQ_) return report_;
+  reportTime_ = s.t;
+  if (s.q.size() == reportQ_.size()) reportQ_ = s.q;
+  const dynamics::Transform& X = s.data.X_WB[body_];
+  HydrostaticReport& r = report_;
+  r.submerged = integrateSubmerged(hull_, X, *sea_, s.t, ws_);
+  const WaterProperties& w = sea_->water();
+  r.displacement = w.density * r.submerged.volume;
+  r.draft = w.level - X.actPoint(keel_B_).z();
+  const Vector3 rpy = dynamics::eulerAngles(X.R);
+  r.heel = rpy.x();
+  r.trim = rpy.y();
+  // (centre of mass of the body and its subtree, waterplane inertia about the heading axes) => GM
+  double m = 0.0, mz = 0.0;
+  for (int i : subtree_) {
+    const dynamics::SpatialInertia& I = s.model.inertias[i];
+    m += I.mass;
+    mz += I.mass * s.data.X_WB[i].actPoint(I.com).z();
+  }
+  const double zG = m > 0 ? mz / m : X.p.z();
+  const double V = r.submerged.volume;
+  if (V > 0.0) {
+    const Eigen::Vector2d e(X.R(0, 0), X.R(1, 0));  // the body's x axis, horizontal
+    const Eigen::Vector2d ex = e.norm() > 1e-12 ? Eigen::Vector2d(e.normalized()) : Eigen::Vector2d(1, 0);
+    const Eigen::Vector2d ey(-ex.y(), ex.x());
+    const Eigen::Matrix2d& J = r.submerged.waterplaneInertia;
+    // transverse (rolling about the longitudinal axis): int (distance across)^2 = ey^T J ey
+    const double base = r.submerged.centreOfBuoyancy.z() - zG;
+    r.gmTransverse = base + ey.dot(J * ey) / V;
+    r.gmLongitudinal = base + ex.dot(J * ex) / V;
+  } else {
+    r.gmTransverse = r.gmLongitudinal = 0.0;
+  }
+  return r;
+}
+
+}  // namespace yardsim::forces

@@ -1,0 +1,72 @@
+#pragma once
+// Nonlinear hydrostatics (and the simplest nonlinear Froude-Krylov force in waves) on one body:
+// at every stage the hull mesh is clipped at the instantaneous water surface (calm plane or the
+// incident wave elevation) and the incident pressure is integrated over the wetted surface
+// (forces/geometry/submerged_mesh.hpp). Large heel, trim, capsize, a fully submerged or a dry
+// hull all work. Calm water: the force is rho g V up through the centre of buoyancy and is
+// conservative with potential energy rho g V (level - z_B). In waves the potential reported is
+// the same calm-water one, and power() is the power of the difference between the wave and the
+// calm-water forces, so the energy balance closes in waves too. Allocation-free after
+// construction. Not thread-safe (one workspace).
+#include <memory>
+#include <string>
+
+#include "forces/airy_waves.hpp"
+#include "forces/force_provider.hpp"
+#include "forces/geometry/submerged_mesh.hpp"
+#include "forces/geometry/triangle_mesh.hpp"
+
+namespace yardsim::forces {
+
+// What a naval architect reads off a floating body at one instant.
+struct HydrostaticReport {
+  SubmergedProperties submerged;  // volume, centre of buoyancy, waterplane, force, moment (world)
+  double displacement = 0.0;      // kg: rho V
+  double draft = 0.0;   // m: still-water level minus z of the keel point (docs/hydrostatics.md)
+  double heel = 0.0;    // rad: roll of the body about its x axis
+  double trim = 0.0;    // rad: pitch of the body about its y axis (bow down > 0)
+  double gmTransverse = 0.0;    // m: z_B - z_G + I_T / V (0 when dry)
+  double gmLongitudinal = 0.0;  // m: z_B - z_G + I_L / V
+};
+
+class Hydrostatics final : public ForceProvider {
+ public:
+  // (name, model, body >= 1, hull in the body frame, the sea) => the provider. The hull is
+  // checked (checkClosedMesh); throws std::invalid_argument naming the provider and the
+  // mesh's own complaint, or a body outside the model.
+  Hydrostatics(std::string name, const dynamics::Model& model, int body, TriangleMesh hull,
+               std::shared_ptr<const AiryWaves> sea);
+
+  int body() const { return body_; }
+  const TriangleMesh& hull() const { return hull_; }
+  const AiryWaves& sea() const { return *sea_; }
+  // (hull) => its solid's volume, centroid, inertia (body frame; computed once)
+  const SolidProperties& solid() const { return solid_; }
+  // the properties of the last evaluate() (the integrator's last stage)
+  const SubmergedProperties& last() const { return last_; }
+  // (stage) => the report there; the same stage twice (time and q) is computed once
+  const HydrostaticReport& report(const Stage& s) const;
+
+ protected:
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  // rho g V_calm (level - z_B,calm): the calm-water restoring potential
+  double doPotentialEnergy(const Stage& s) const override;
+  // waves: (F, M)_waves - (F, M)_calm against the body's velocity; calm water: 0
+  double doPower(const Stage& s) const override;
+
+ private:
+  int body_;
+  TriangleMesh hull_;
+  SolidProperties solid_;
+  dynamics::Vector3 keel_B_;  // the keel point: solid centroid x, y at the lowest z of the hull
+  std::shared_ptr<const AiryWaves> sea_;
+  AiryWaves calm_;             // the same water without waves
+  std::vector<int> subtree_;   // body and its descendants: G for GM
+  mutable SubmergedWorkspace ws_;
+  SubmergedProperties last_;
+  mutable HydrostaticReport report_;
+  mutable double reportTime_ = std::numeric_limits<double>::quiet_NaN();
+  mutable Eigen::VectorXd reportQ_;
+};
+
+}  // namespace yardsim::forces

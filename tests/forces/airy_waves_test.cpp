@@ -1,0 +1,81 @@
+// Airy waves: the dispersion relation and its limits, the surface, the kinematic and dynamic
+// conditions, continuity, the acceleration as the time derivative of the velocity, the pressure
+// vanishing on the surface, the ramp and the refused inputs.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "forces/airy_waves.hpp"
+
+using namespace yardsim::forces;
+using yardsim::dynamics::Vector3;
+
+TEST_CASE("the wave number solves the dispersion relation, with its deep and shallow limits") {
+  const double g = 9.81;
+  for (double T : {4.0, 8.0, 15.0})
+    for (double h : {2.0, 20.0, 200.0}) {
+      const double w = 2 * M_PI / T, k = waveNumber(w, h, g);
+      CHECK(g * k * std::tanh(k * h) == Approx(w * w).epsilon(1e-13));
+    }
+  CHECK(waveNumber(1.0, INFINITY, g) == Approx(1.0 / g));
+  CHECK(waveNumber(2 * M_PI / 8, 1e4, g) == Approx(std::pow(2 * M_PI / 8, 2) / g).epsilon(1e-12));
+  // shallow: w = k sqrt(g h) when kh -> 0
+  CHECK(waveNumber(0.01, 5.0, g) == Approx(0.01 / std::sqrt(g * 5.0)).epsilon(1e-4));
+}
+
+TEST_CASE("surface, kinematics and pressure of a finite-depth oblique wave") {
+  const WaterProperties water{1025.0, 9.81, 1.5, 30.0, 0.0};
+  const AiryWaves sea(water, {{2.0, 9.0, 0.6, 0.3}});
+  const double k = sea.wavenumber(0), w = sea.frequency(0);
+  const Vector3 dir(std::cos(0.6), std::sin(0.6), 0.0);
+  const double x = 7.0, y = -3.0, t = 2.2;
+  const double th = k * (x * dir.x() + y * dir.y()) - w * t + 0.3;
+  CHECK(sea.elevation(x, y, t) == Approx(1.5 + std::cos(th)));
+  // (linear kinematic condition) => d eta/dt = w at the surface (stretched point z' = 0)
+  const double h = 1e-5;
+  const double detadt = (sea.elevation(x, y, t + h) - sea.elevation(x, y, t - h)) / (2 * h);
+  const Vector3 surf(x, y, sea.elevation(x, y, t));
+  CHECK(sea.velocity(surf, t).z() == Approx(detadt).epsilon(1e-6));
+  // the horizontal velocity is along the direction of travel
+  const Vector3 u = sea.velocity(Vector3(x, y, -5.0), t);
+  CHECK(std::abs(u.x() * dir.y() - u.y() * dir.x()) < 1e-12);
+  // (pressure) => zero on the surface, hydrostatic + dynamic below, nothing above
+  CHECK(std::abs(sea.pressure(surf, t)) < 1e-9);
+  CHECK(sea.pressure(surf + Vector3(0, 0, 0.1), t) == 0.0);
+  CHECK(sea.velocity(surf + Vector3(0, 0, 0.1), t).norm() == 0.0);
+  // the bottom: no vertical velocity
+  CHECK(std::abs(sea.velocity(Vector3(x, y, 1.5 - 30.0), t).z()) < 1e-12);
+}
+
+TEST_CASE("small-amplitude deep-water kinematics: continuity and d u/dt") {
+  const AiryWaves sea(WaterProperties{1025.0, 9.81, 0.0}, {{0.02, 8.0, 0.0, 0.0}});
+  const Vector3 p(3.0, 1.0, -4.0);
+  const double t = 1.3, h = 1e-4;
+  // div u = 0
+  double div = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    Vector3 e = Vector3::Zero();
+    e[i] = h;
+    div += (sea.velocity(p + e, t)[i] - sea.velocity(p - e, t)[i]) / (2 * h);
+  }
+  const double scale = sea.velocity(p, t).norm() * sea.wavenumber(0);
+  CHECK(std::abs(div) < 1e-3 * scale);
+  const Vector3 dudt = (sea.velocity(p, t + h) - sea.velocity(p, t - h)) / (2 * h);
+  CHECK((sea.acceleration(p, t) - dudt).norm() < 1e-3 * dudt.norm());
+  // deep water: amplitude of u is a w e^{kz} (Wheeler stretching: e^{k(z - eta)}, k eta ~ 1e-3)
+  const double a = 0.01, w = sea.frequency(0), k = sea.wavenumber(0);
+  double umax = 0.0;
+  for (int i = 0; i < 200; ++i) umax = std::max(umax, sea.velocity(p, i * 0.04).norm());
+  CHECK(umax == Approx(a * w * std::exp(k * p.z())).epsilon(2e-3));
+}
+
+TEST_CASE("the ramp grows the waves from calm; bad inputs are refused") {
+  const AiryWaves sea(WaterProperties{1025.0, 9.81, 0.0, INFINITY, 10.0}, {{2.0, 8.0, 0.0, 0.0}});
+  CHECK(sea.elevation(0, 0, 0.0) == 0.0);
+  CHECK(sea.elevation(0, 0, 5.0) == Approx(0.5 * std::cos(-2 * M_PI / 8 * 5.0)));
+  CHECK(sea.elevation(0, 0, 16.0) == Approx(std::cos(-2 * M_PI / 8 * 16.0)));
+  CHECK_THROWS_AS(AiryWaves(WaterProperties{}, {{20.0, 3.0, 0.0, 0.0}}), std::invalid_argument);  // breaking
+  CHECK_THROWS_AS(AiryWaves(WaterProperties{-1.0}), std::invalid_argument);
+  CHECK_THROWS_AS(AiryWaves(WaterProperties{}, {{1.0, 0.0, 0.0, 0.0}}), std::invalid_argument);
+  CHECK(AiryWaves(WaterProperties{}).calm());
+}

@@ -1,0 +1,185 @@
+// The clipped hull against closed forms: a box barge and a vertical cylinder at several drafts
+// (exact for the polyhedra, second-order convergence to the round cylinder), a box heeled by 5
+// and 20 degrees against the wall-sided formula, sphere caps, fully submerged and dry hulls, and
+// the Froude-Krylov heave force of a small box in a long wave (Smith effect e^{-kT}).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "dynamics/rotation.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
+#include "forces/geometry/submerged_mesh.hpp"
+
+using namespace yardsim;
+using namespace yardsim::forces;
+using dynamics::Transform;
+using dynamics::Vector3;
+
+namespace {
+constexpr double kRho = 1025.0, kG = 9.81;
+const AiryWaves calmSea{WaterProperties{kRho, kG, 0.0}};
+double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+}  // namespace
+
+TEST_CASE("box barge at several drafts: volume, buoyancy, waterplane exact to round-off") {
+  const double L = 60.0, B = 20.0, D = 6.0;
+  const TriangleMesh hull = boxMesh(Vector3(L, B, D), 6, 4, 3);  // body origin at mid-depth
+  SubmergedWorkspace ws(hull);
+  for (double T : {0.5, 2.0, 3.7, 5.5}) {
+    for (double yaw : {0.0, 0.7}) {
+      INFO("draft " << T << " yaw " << yaw);
+      const Vector3 at(13.0, -4.0, D / 2 - T);
+      const Transform X{dynamics::axisRotation(Vector3::UnitZ(), yaw), at};
+      const SubmergedProperties p = integrateSubmerged(hull, X, calmSea, 0.0, ws, true);
+      const double V = L * B * T;
+      CHECK(rel(p.volume, V) < 1e-13);
+      CHECK((p.centreOfBuoyancy - Vector3(at.x(), at.y(), -T / 2)).norm() < 1e-12 * L);
+      CHECK(rel(p.waterplaneArea, L * B) < 1e-13);
+      CHECK((p.waterplaneCentroid - at.head<2>()).norm() < 1e-12 * L);
+      // second moments in the body axes: I_L = B L^3/12 along x, I_T = L B^3/12 across
+      const Eigen::Matrix2d R = X.R.topLeftCorner<2, 2>();
+      const Eigen::Matrix2d J_B = R.transpose() * p.waterplaneInertia * R;
+      CHECK(rel(J_B(0, 0), B * L * L * L / 12) < 1e-12);
+      CHECK(rel(J_B(1, 1), L * B * B * B / 12) < 1e-12);
+      CHECK(std::abs(J_B(0, 1)) < 1e-12 * J_B(0, 0));
+      CHECK(rel(p.wettedArea, L * B + 2 * (L + B) * T) < 1e-13);
+      CHECK((p.force - Vector3(0, 0, kRho * kG * V)).norm() < 1e-12 * kRho * kG * V);
+      CHECK((p.moment - p.centreOfBuoyancy.cross(p.force)).norm() < 1e-12 * kRho * kG * V * L);
+      // the wetted pieces kept: their area adds up
+      double area = 0.0;
+      for (int i = 0; i < p.wetTriangles; ++i) {
+        const auto& t = ws.wet[static_cast<std::size_t>(i)];
+        area += 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm();
+        for (const Vector3& c : t) CHECK(c.z() <= 1e-12);
+      }
+      CHECK(rel(area, p.wettedArea) < 1e-13);
+    }
+  }
+}
+
+TEST_CASE("vertical cylinder: exact for the polygon, second order towards the circle") {
+  const double R = 5.0, T = 3.0;
+  double prevV = 0.0, prevI = 0.0, prevB = 0.0;
+  for (int n : {24, 48, 96}) {
+    const TriangleMesh hull = cylinderMesh(R, -8.0, 4.0, n, 3);
+    SubmergedWorkspace ws(hull);
+    for (double draft : {1.0, T, 7.5}) {
+      const SubmergedProperties p = integrateSubmerged(hull, Transform::translation(Vector3(0, 0, 8.0 - draft)),
+                                                       calmSea, 0.0, ws);
+      // (regular n-gon of circumradius R) => area n R^2 sin(2 pi/n)/2, I = n R^4 sin(2pi/n)(2 + cos(2pi/n))/24
+      const double s = std::sin(2 * M_PI / n), c = std::cos(2 * M_PI / n);
+      const double A = 0.5 * n * R * R * s, I = n * std::pow(R, 4) * s * (2 + c) / 24;
+      CHECK(rel(p.volume, A * draft) < 1e-13);
+      CHECK(std::abs(p.centreOfBuoyancy.z() + draft / 2) < 1e-12);
+      CHECK(rel(p.waterplaneArea, A) < 1e-13);
+      CHECK(rel(p.waterplaneInertia(0, 0), I) < 1e-12);
+      CHECK(rel(p.waterplaneInertia(1, 1), I) < 1e-12);
+      CHECK(rel(p.force.z(), kRho * kG * A * draft) < 1e-13);
+    }
+    const SubmergedProperties p = integrateSubmerged(hull, Transform::translation(Vector3(0, 0, 8.0 - T)),
+                                                     calmSea, 0.0, ws);
+    const double eV = std::abs(p.volume - M_PI * R * R * T);
+    const double eI = std::abs(p.waterplaneInertia(0, 0) - M_PI * std::pow(R, 4) / 4);
+    const double eB = std::abs(p.force.z() - kRho * kG * M_PI * R * R * T);
+    if (prevV > 0) {
+      CHECK(std::log2(prevV / eV) == Approx(2.0).margin(0.02));
+      CHECK(std::log2(prevI / eI) == Approx(2.0).margin(0.02));
+      CHECK(std::log2(prevB / eB) == Approx(2.0).margin(0.02));
+    }
+    prevV = eV;
+    prevI = eI;
+    prevB = eB;
+  }
+}
+
+TEST_CASE("box heeled by 5 and 20 degrees: righting arm of the wall-sided formula") {
+  // heeled about the longitudinal axis through the waterplane centre: the emerged and immersed
+  // wedges are equal, V = L B T; while neither the deck edge nor the bilge crosses the water,
+  // GZ = sin(phi) (GM + BM tan^2(phi) / 2), GM = KB + BM - KG, BM = B^2 / (12 T)
+  const double L = 40.0, B = 12.0, D = 8.0, T = 4.0, KG = 5.0;
+  const TriangleMesh hull = boxMesh(Vector3(L, B, D), 4, 3, 2);  // origin at mid-depth
+  SubmergedWorkspace ws(hull);
+  const double BM = B * B / (12 * T), GM = T / 2 + BM - KG;
+  for (double deg : {5.0, 20.0}) {
+    INFO(deg << " deg");
+    const double phi = deg * M_PI / 180;
+    REQUIRE(B / 2 * std::tan(phi) < std::min(T, D - T));  // wall-sided range
+    // body point (0, 0, -D/2 + T) (the waterline centre) stays at the origin
+    const dynamics::Matrix3 Rx = dynamics::axisRotation(Vector3::UnitX(), phi);
+    const Transform X{Rx, -(Rx * Vector3(0, 0, -D / 2 + T))};
+    const SubmergedProperties p = integrateSubmerged(hull, X, calmSea, 0.0, ws);
+    CHECK(rel(p.volume, L * B * T) < 1e-12);
+    const Vector3 G = X.actPoint(Vector3(0, 0, -D / 2 + KG));
+    const Vector3 M_G = p.moment - G.cross(p.force);  // about G
+    const double GZ = -M_G.x() / p.force.z();          // righting arm (> 0 restores)
+    CHECK(rel(GZ, std::sin(phi) * (GM + 0.5 * BM * std::tan(phi) * std::tan(phi))) < 1e-11);
+    CHECK(GZ > 0.0);
+  }
+}
+
+TEST_CASE("sphere at several immersions: spherical-cap volume, second order in the mesh") {
+  const double R = 3.0;
+  for (double h : {0.8, 3.0, 4.5}) {
+    INFO("immersion " << h);
+    const double Vcap = M_PI * h * h * (3 * R - h) / 3, Awp = M_PI * (2 * R * h - h * h);
+    double firstV = 0.0, firstA = 0.0, eV = 0.0, eA = 0.0;
+    for (int n : {32, 64, 128}) {
+      const TriangleMesh hull = sphereMesh(R, n, 2 * n);
+      SubmergedWorkspace ws(hull);
+      const SubmergedProperties p =
+          integrateSubmerged(hull, Transform::translation(Vector3(0, 0, R - h)), calmSea, 0.0, ws);
+      eV = std::abs(p.volume - Vcap);
+      eA = std::abs(p.waterplaneArea - Awp);
+      CHECK(eV < 0.01 * Vcap);
+      if (n == 32) {
+        firstV = eV;
+        firstA = eA;
+      }
+      // centre of buoyancy of a cap: 3 (2R - h)^2 / (4 (3R - h)) below the sphere's centre
+      const double zc = -3 * (2 * R - h) * (2 * R - h) / (4 * (3 * R - h));
+      CHECK(p.centreOfBuoyancy.z() - (R - h) == Approx(zc).margin(0.01 * R));
+    }
+    // (32 -> 128 bands: the mesh size / 4) => errors / 16 (the waterline crossing the rings makes
+    // single halvings noisy)
+    CHECK(std::log2(firstV / eV) / 2 == Approx(2.0).margin(0.2));
+    CHECK(std::log2(firstA / eA) / 2 == Approx(2.0).margin(0.2));
+  }
+}
+
+TEST_CASE("fully submerged, dry and upside-down hulls") {
+  const TriangleMesh hull = boxMesh(Vector3(4, 2, 1), 2, 2, 2);
+  SubmergedWorkspace ws(hull);
+  const SubmergedProperties under = integrateSubmerged(hull, Transform::translation(Vector3(1, 2, -10)), calmSea, 0, ws);
+  CHECK(rel(under.volume, 8.0) < 1e-13);
+  CHECK(std::abs(under.waterplaneArea) < 1e-12);
+  CHECK(rel(under.force.z(), kRho * kG * 8.0) < 1e-12);
+  CHECK(std::abs(under.force.x()) + std::abs(under.force.y()) < 1e-8);
+  CHECK((under.centreOfBuoyancy - Vector3(1, 2, -10)).norm() < 1e-12);
+  const SubmergedProperties dry = integrateSubmerged(hull, Transform::translation(Vector3(0, 0, 0.5)), calmSea, 0, ws);
+  CHECK(dry.volume == 0.0);
+  CHECK(dry.force.norm() == 0.0);
+  CHECK(dry.wettedArea == 0.0);
+  // capsized: turned over about x, the same draft gives the same volume and force
+  const Transform flipped{dynamics::axisRotation(Vector3::UnitX(), M_PI), Vector3(0, 0, 0.2)};
+  const SubmergedProperties up = integrateSubmerged(hull, Transform::translation(Vector3(0, 0, 0.2)), calmSea, 0, ws);
+  const SubmergedProperties over = integrateSubmerged(hull, flipped, calmSea, 0, ws);
+  CHECK(rel(over.volume, up.volume) < 1e-12);
+  CHECK(rel(over.force.z(), up.force.z()) < 1e-12);
+}
+
+TEST_CASE("a small box in a long wave feels the Froude-Krylov heave force rho g A (T + a e^{-kT} cos)") {
+  const double a = 0.5, T = 2.0;
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0}, {{2 * a, 12.0, 0.0, 0.0}});
+  const double k = sea.wavenumber(0);
+  const TriangleMesh hull = boxMesh(Vector3(0.5, 0.5, 6.0), 1, 1, 4);  // tiny against L = 225 m
+  SubmergedWorkspace ws(hull);
+  const double A = 0.25;
+  for (double t : {0.0, 2.0, 3.0, 5.0, 7.5}) {
+    INFO("t = " << t);
+    const SubmergedProperties p = integrateSubmerged(hull, Transform::translation(Vector3(0, 0, 3.0 - T)), sea, t, ws);
+    const double wave = a * std::exp(-k * T) * std::cos(-2 * M_PI / 12.0 * t);
+    // second-order (stretching) terms are O(k a) of the wave part
+    CHECK(p.force.z() == Approx(kRho * kG * A * (T + wave)).margin(kRho * kG * A * a * 0.05));
+    CHECK(std::abs(p.force.z() - kRho * kG * A * T) > 0.5 * kRho * kG * A * std::abs(wave) - 1e-9);
+  }
+}

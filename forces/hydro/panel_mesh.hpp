@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "forces/geometry/triangle_mesh.hpp"
+
 namespace yardsim::forces::hydro {
 
 using Vector3 = Eigen::Vector3d;
@@ -23,5 +25,14 @@ struct PanelMesh {
   void addTriangle(int a, int b, int c) { panels.push_back({a, b, c, -1}); }
   void addQuad(int a, int b, int c, int d) { panels.push_back({a, b, c, d}); }
 };
+
+/// (triangle mesh, outward counter-clockwise triangles) => the same surface as triangle panels.
+inline PanelMesh panelMesh(const TriangleMesh& mesh) {
+  PanelMesh p;
+  p.vertices = mesh.vertices;
+  p.panels.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) p.addTriangle(t[0], t[1], t[2]);
+  return p;
+}
 
 }  // namespace yardsim::forces::hydro

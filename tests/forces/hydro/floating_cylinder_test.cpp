@@ -1,0 +1,108 @@
+// The added mass on the kernel's left-hand side, end to end: the infinite-frequency heave added
+// mass A33 of a floating vertical cylinder from the panel solver, given to the body, with the
+// real hydrostatics provider (hull clipped at the water surface) and model gravity. Released
+// from a heave offset in still water, the body oscillates about its floating position with the
+// period 2 pi sqrt((M + A33) / C33), C33 = rho g A_wp (a wall-sided hull: exactly linear).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "forces/hydro/panel_geometry.hpp"
+
+#include "dynamics/added_mass.hpp"
+#include "forces/force_rig.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
+#include "forces/hydro/added_mass.hpp"
+#include "forces/hydro/hull_shapes.hpp"
+#include "forces/hydro/wetted_surface.hpp"
+#include "forces/hydrostatics.hpp"
+
+using namespace yardsim;
+using namespace yardsim::forces;
+using namespace yardsim::forces::testing;
+
+namespace {
+
+constexpr double kRho = 1025.0, kG = 9.81;
+constexpr double kR = 5.0, kT = 4.0, kF = 2.0;  // radius, draft, freeboard; body origin on the waterline
+constexpr int kSides = 32;
+
+// (hull) => infinite-frequency 6x6 added mass about the body origin, naval order
+hydro::Matrix6 cylinderAddedMass(const hydro::PanelMesh& hull) {
+  hydro::AddedMassOptions o;
+  o.rho = kRho;
+  o.solver.freeSurface = hydro::FreeSurface::NegativeImage;
+  return hydro::addedMass(hydro::wettedSurface(hull), o);
+}
+
+struct Heave {
+  double period = 0.0;
+  double mean = 0.0;
+};
+
+// (A33 given to the body or not) => period from the upward zero crossings of the heave, and the
+// mean heave over those whole periods
+Heave releasedHeave(const hydro::Matrix6& A, bool withAddedMass) {
+  const double awp = 0.5 * kSides * kR * kR * std::sin(2.0 * std::numbers::pi / kSides);  // polygon
+  const double mass = kRho * awp * kT;
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3(0.0, 0.0, -kG));
+  b.addBody("spar", "world", dynamics::Joint::prismatic(Vector3::UnitZ()), dynamics::Transform::identity(),
+            dynamics::makeInertia(mass, Vector3(0.0, 0.0, -1.0), mass * Eigen::Matrix3d::Identity()));
+  if (withAddedMass) b.setAddedMass("spar", dynamics::addedMassAboutOrigin(A, Vector3::Zero()));
+  const dynamics::Model model = b.build();
+  Hydrostatics hull("hull", model, 1, cylinderMesh(kR, -kT, kF, kSides, 3),
+                    std::make_shared<const AiryWaves>(WaterProperties{kRho, kG, 0.0}));
+  Rig r(model, {&hull});
+  r.q[0] = 0.3;
+  const double h = 0.005;
+  std::vector<double> up;
+  double prev = r.q[0], sum = 0.0, first = 0.0;
+  for (int i = 0; i < 8000; ++i) {
+    r.step(h);
+    const double z = r.q[0];
+    if (prev < 0.0 && z >= 0.0) {
+      up.push_back(r.t - h * z / (z - prev));
+      if (up.size() == 1) first = sum;
+    }
+    sum += z;
+    prev = z;
+    if (up.size() == 7) break;
+  }
+  REQUIRE(up.size() == 7);
+  Heave out;
+  out.period = (up.back() - up.front()) / 6.0;
+  out.mean = (sum - first) * h / (up.back() - up.front());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a floating cylinder heaves with the period 2 pi sqrt((M + A33) / C33)") {
+  const hydro::Matrix6 A = cylinderAddedMass(hydro::verticalCylinder(kR, -kT, kF, kSides, 6, 6));
+  const double awp = 0.5 * kSides * kR * kR * std::sin(2.0 * std::numbers::pi / kSides);
+  const double M = kRho * awp * kT, C33 = kRho * kG * awp;
+  INFO("A33 / M = " << A(2, 2) / M);
+  REQUIRE(A(2, 2) > 0.1 * M);
+  const Heave with = releasedHeave(A, true);
+  CHECK(with.period == Approx(2.0 * std::numbers::pi * std::sqrt((M + A(2, 2)) / C33)).epsilon(1e-3));
+  // it oscillates about its floating position: gravity does not pull on the added mass
+  CHECK(std::abs(with.mean) < 2e-3);
+  // without the added mass the period is the dry-mass one, measurably shorter
+  const Heave without = releasedHeave(A, false);
+  CHECK(without.period == Approx(2.0 * std::numbers::pi * std::sqrt(M / C33)).epsilon(1e-3));
+  CHECK(with.period / without.period > 1.05);
+}
+
+TEST_CASE("the hull's own triangle mesh goes through the panel solver") {
+  // the hydrostatics' triangle mesh (fans on the end caps) as panels: consistently oriented, and
+  // its wetted part has the side and bottom areas of the 32-gon prism below the waterline
+  const hydro::PanelMesh wet = hydro::wettedSurface(hydro::panelMesh(cylinderMesh(kR, -kT, kF, kSides, 3)));
+  const std::vector<hydro::Panel> panels = hydro::buildPanels(wet);
+  double area = 0.0;
+  for (const hydro::Panel& p : panels) area += p.area;
+  const double side = 2.0 * kR * std::sin(std::numbers::pi / kSides);
+  CHECK(area == Approx(kSides * side * kT + 0.5 * kSides * kR * kR * std::sin(2.0 * std::numbers::pi / kSides)));
+}

@@ -9,13 +9,12 @@
 #include <numbers>
 #include <vector>
 
-#include "forces/hydro/panel_geometry.hpp"
-
 #include "dynamics/added_mass.hpp"
 #include "forces/force_rig.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydro/added_mass.hpp"
 #include "forces/hydro/hull_shapes.hpp"
+#include "forces/hydro/panel_geometry.hpp"
 #include "forces/hydro/wetted_surface.hpp"
 #include "forces/hydrostatics.hpp"
 

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "forces/hydro/wetted_surface.hpp"
+
 namespace yardsim::forces::hydro {
 
 Eigen::MatrixXd modeNormals(const std::vector<Panel>& panels, const Vector3& reference) {
@@ -29,6 +31,26 @@ Matrix6 addedMass(const PotentialSolver& solver, const Vector3& reference, doubl
 Matrix6 addedMass(const PanelMesh& wetted, const AddedMassOptions& options) {
   const PotentialSolver solver(buildPanels(wetted), options.solver);
   return addedMass(solver, options.reference, options.rho);
+}
+
+Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho,
+                          LinearSolver linearSolver) {
+  // (hull in B, X_WB) => hull in the world, then its part below the mean water plane
+  PanelMesh hull_W = hull_B;
+  for (Vector3& v : hull_W.vertices) v = X_WB.actPoint(v);
+  const PanelMesh wet = wettedSurface(hull_W);
+  if (wet.panelCount() == 0) throw PanelError("the hull is dry at its mean position (nothing below z = 0)");
+  // (wetted surface) => A about the body origin in world axes, then in body axes: R^T A_blk R
+  AddedMassOptions o;
+  o.rho = rho;
+  o.reference = X_WB.p;
+  o.solver.freeSurface = FreeSurface::NegativeImage;
+  o.solver.linearSolver = linearSolver;
+  const Matrix6 A_W = addedMass(wet, o);
+  Matrix6 R = Matrix6::Zero();
+  R.topLeftCorner<3, 3>() = X_WB.R;
+  R.bottomRightCorner<3, 3>() = X_WB.R;
+  return R.transpose() * A_W * R;
 }
 
 }  // namespace yardsim::forces::hydro

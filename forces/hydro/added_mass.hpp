@@ -10,6 +10,7 @@
 // wetted surface in z <= 0); with FreeSurface::None that of a body in unbounded fluid.
 #include <Eigen/Core>
 
+#include "dynamics/spatial.hpp"
 #include "forces/hydro/potential_solver.hpp"
 
 namespace yardsim::forces::hydro {
@@ -30,5 +31,12 @@ struct AddedMassOptions {
 
 /// (wetted panel mesh, options) => the 6x6 added mass; throws PanelError for a bad mesh.
 Matrix6 addedMass(const PanelMesh& wetted, const AddedMassOptions& options);
+
+/// (hull in the body frame B, its mean pose X_WB, rho, linear solver) => the infinite-frequency
+/// 6x6 added mass of the floating body: the hull placed in the world, clipped at the mean water
+/// plane z = 0 (wettedSurface), solved with the negative image; returned about the body origin
+/// in body axes, naval order. Throws PanelError for a bad mesh or a dry hull.
+Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho,
+                          LinearSolver linearSolver = LinearSolver::DenseLU);
 
 }  // namespace yardsim::forces::hydro

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "dynamics/spatial.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydro/added_mass.hpp"
 #include "forces/hydro/hull_shapes.hpp"
 #include "forces/hydro/wetted_surface.hpp"
@@ -89,6 +90,31 @@ TEST_CASE("floating hemisphere at infinite frequency: heave 0.5 rho (2/3) pi a^3
   // different, so the image is really there
   o.solver.freeSurface = FreeSurface::None;
   CHECK(std::abs(addedMass(wet, o)(2, 2) / exact - 1.0) > 0.05);
+}
+
+TEST_CASE("a floating hull's added mass in body axes does not depend on its yaw") {
+  // a box barge 20 x 8 x 4 m, body origin at mid-depth, floating at 2 m draft: the wetted
+  // surface is the same in the body frame whatever the heading, so A in body axes is too
+  const PanelMesh hull = yardsim::forces::hydro::panelMesh(yardsim::forces::boxMesh(Vector3(20.0, 8.0, 4.0), 10, 4, 2));
+  yardsim::dynamics::Transform X_WB;
+  const Matrix6 ahead = floatingAddedMass(hull, X_WB, kRho);
+  X_WB.R = Eigen::AngleAxisd(1.1, Vector3::UnitZ()).toRotationMatrix();
+  X_WB.p = Vector3(30.0, -7.0, 0.0);
+  const Matrix6 turned = floatingAddedMass(hull, X_WB, kRho);
+  // (not to round-off: a panel pair at exactly the far-field distance may switch rule)
+  CHECK((turned - ahead).cwiseAbs().maxCoeff() < 1e-5 * ahead.cwiseAbs().maxCoeff());
+  // a long box: sway added mass well above surge, heave the largest translation
+  CHECK(ahead(1, 1) > 2.0 * ahead(0, 0));
+  CHECK(ahead(2, 2) > ahead(1, 1));
+  // sharp edges and skewed triangles: symmetric to discretisation accuracy only, improving with
+  // finer panels
+  const Matrix6 finer = floatingAddedMass(
+      yardsim::forces::hydro::panelMesh(yardsim::forces::boxMesh(Vector3(20.0, 8.0, 4.0), 20, 8, 4)), {}, kRho);
+  CHECK(asymmetry(ahead) < 1e-3);
+  CHECK(asymmetry(finer) < 0.5 * asymmetry(ahead));
+  // lifted out of the water it is refused
+  X_WB.p.z() = 5.0;
+  CHECK_THROWS_WITH(floatingAddedMass(hull, X_WB, kRho), Catch::Matchers::Contains("dry"));
 }
 
 TEST_CASE("a bad density is refused") {

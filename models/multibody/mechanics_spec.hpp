@@ -4,6 +4,8 @@
 // closures, initial state, gravity, step — parsed and checked with positions, then built into
 // an immutable dynamics::Model with its initial q and v.
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "dynamics/model.hpp"
+#include "forces/geometry/triangle_mesh.hpp"
 #include "models/params.hpp"
 
 namespace yardsim::models {
@@ -24,6 +27,12 @@ struct MechanicsSpec {
     dynamics::Vector3 com = dynamics::Vector3::Zero();
     dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
     std::vector<double> q0, v0;  // empty: neutral / at rest
+    // added mass (models/multibody/added_mass_spec.hpp): given in the naval order about
+    // addedMassAbout (body frame), or computed from addedMassHull at the initial position
+    std::optional<dynamics::Matrix6> addedMass;
+    dynamics::Vector3 addedMassAbout = dynamics::Vector3::Zero();
+    std::shared_ptr<const forces::TriangleMesh> addedMassHull;
+    double addedMassRho = 1025.0;
   };
   struct Loop {
     std::string name, bodyA, bodyB;

@@ -22,8 +22,11 @@ PotentialSolver::PotentialSolver(std::vector<Panel> panels, const SolverOptions&
 }
 
 Eigen::MatrixXd PotentialSolver::solve(const Eigen::MatrixXd& normalVelocity) const {
-  // (dphi/dn) => right-hand side -S dphi/dn
-  const Eigen::MatrixXd rhs = -(source_ * normalVelocity);
+  // (dphi/dn) => right-hand side -S dphi/dn, then K phi = rhs
+  return solveSystem(-(source_ * normalVelocity));
+}
+
+Eigen::MatrixXd PotentialSolver::solveSystem(const Eigen::MatrixXd& rhs) const {
   if (options_.linearSolver == LinearSolver::DenseLU) {
     lastIterations_ = 0;
     return lu_->solve(rhs);

@@ -51,6 +51,8 @@ class PotentialSolver {
   /// (dphi/dn, N x m: one column per case) => phi at the collocation points, N x m. Throws
   /// SolverError when GMRES does not converge.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& normalVelocity) const;
+  /// (b, N x m) => phi with K phi = b: the LU's back-substitution, or GMRES column by column.
+  Eigen::MatrixXd solveSystem(const Eigen::MatrixXd& b) const;
 
   const std::vector<Panel>& panels() const { return panels_; }
   const SolverOptions& options() const { return options_; }

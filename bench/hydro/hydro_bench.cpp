@@ -58,3 +58,5 @@ BENCHMARK(benchAssembly)->Name("Assembly")->Arg(384)->Arg(1536)->Arg(4056)->Unit
 BENCHMARK(benchLu)->Name("LU")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(benchSolve<LinearSolver::DenseLU>)->Name("BackSub")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(benchSolve<LinearSolver::Gmres>)->Name("Gmres")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_MAIN();

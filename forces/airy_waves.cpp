@@ -40,8 +40,8 @@ double waveNumber(double omega, double depth, double g) {
 
 AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> components) : water_(water) {
   if (!(water_.density > 0) || !(water_.gravity > 0) || !(water_.depth > 0) || !std::isfinite(water_.level) ||
-      !(water_.ramp >= 0) || !std::isfinite(water_.ramp))
-    throw std::invalid_argument("water: density, gravity and depth must be > 0, level finite, ramp >= 0");
+      !(water_.ramp >= 0) || !std::isfinite(water_.ramp) || !std::isfinite(water_.start))
+    throw std::invalid_argument("water: density, gravity and depth must be > 0, level and start finite, ramp >= 0");
   for (std::size_t i = 0; i < components.size(); ++i) {
     const WaveComponent& c = components[i];
     const std::string which = "wave " + std::to_string(i) + ": ";
@@ -54,14 +54,16 @@ AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> co
     if (steepness > 1.0 / 7.0)
       throw std::invalid_argument(which + "H/L = " + std::to_string(steepness) +
                                   " is above the breaking limit 1/7; lower the height or lengthen the period");
-    waves_.push_back({c, 0.5 * c.height, k, omega, std::cos(c.direction), std::sin(c.direction)});
+    const double coshScale = std::isfinite(water_.depth) ? 1.0 / (1.0 + std::exp(-2.0 * k * water_.depth)) : 1.0;
+    waves_.push_back({c, 0.5 * c.height, k, omega, std::cos(c.direction), std::sin(c.direction), coshScale});
   }
 }
 
 double AiryWaves::ramp(double t) const {
-  if (water_.ramp <= 0.0 || t >= water_.ramp) return 1.0;
-  if (t <= 0.0) return 0.0;
-  return 0.5 * (1.0 - std::cos(M_PI * t / water_.ramp));
+  const double tau = t - water_.start;
+  if (tau < 0.0) return 0.0;
+  if (water_.ramp <= 0.0 || tau >= water_.ramp) return 1.0;
+  return 0.5 * (1.0 - std::cos(M_PI * tau / water_.ramp));
 }
 
 double AiryWaves::stretched(double z, double eta) const {
@@ -126,9 +128,29 @@ double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) c
 double AiryWaves::pressure(const Vector3& p, double t) const {
   const double rg = water_.density * water_.gravity;
   if (waves_.empty()) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
-  const double eta = elevation(p.x(), p.y(), t);
+  // (few components) => each cos(theta) once, for the surface and for the pressure
+  constexpr std::size_t kCached = 8;
+  if (waves_.size() > kCached) {
+    const double eta = elevation(p.x(), p.y(), t);
+    return p.z() > eta ? 0.0 : rg * (water_.level - p.z()) + dynamicPressureBelow(p, t, eta);
+  }
+  double c[kCached];
+  double sum = 0.0;
+  for (std::size_t i = 0; i < waves_.size(); ++i) {
+    const Wave& w = waves_[i];
+    c[i] = w.a * std::cos(w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase);
+    sum += c[i];
+  }
+  const double r = ramp(t), eta = water_.level + r * sum;
   if (p.z() > eta) return 0.0;
-  return rg * (water_.level - p.z()) + dynamicPressureBelow(p, t, eta);
+  const double zs = stretched(p.z(), eta), h = water_.depth;
+  double pd = 0.0;
+  for (std::size_t i = 0; i < waves_.size(); ++i) {
+    const Wave& w = waves_[i];
+    const double e = std::exp(w.k * zs);
+    pd += c[i] * (std::isfinite(h) ? e * (1.0 + std::exp(-2.0 * w.k * (zs + h))) * w.coshScale : e);
+  }
+  return rg * (water_.level - p.z() + r * pd);
 }
 
 }  // namespace yardsim::forces

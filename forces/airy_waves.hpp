@@ -26,7 +26,8 @@ struct WaterProperties {
   double gravity = 9.81;    // m/s^2
   double level = 0.0;       // m, z of the still-water level
   double depth = std::numeric_limits<double>::infinity();  // m below the level; inf: deep water
-  double ramp = 0.0;        // s: the wave amplitudes grow as (1 - cos(pi t/ramp))/2 until ramp
+  double ramp = 0.0;        // s: the wave amplitudes grow as (1 - cos(pi tau/ramp))/2, tau = t - start
+  double start = 0.0;       // s: calm water before this time, then the ramp
 };
 
 class AiryWaves {
@@ -57,6 +58,7 @@ class AiryWaves {
   struct Wave {
     WaveComponent c;
     double a, k, omega, cosb, sinb;
+    double coshScale;  // 1 / (1 + e^{-2kh}): cosh k(z'+h) / cosh kh = e^{kz'} (1 + e^{-2k(z'+h)}) coshScale
   };
   // (t) => the ramp factor in [0, 1]
   double ramp(double t) const;

@@ -39,9 +39,18 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
   if (inst.atomic()) return;
   if (inst.mechanics.IsDefined()) {
     Params p;
-    for (const char* key : {"bodies", "ropes", "equalizers", "loops"})
+    for (const char* key : {"bodies", "ropes", "equalizers", "loops", "hydrostatics", "wind_loads",
+                            "current_loads", "damping"})
       p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Map),
             inst.mechanicsWhere);
+    // (the environment) => the root's only: one sea and one wind per scene
+    for (const char* key : {"water", "wind"}) {
+      p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Null), inst.mechanicsWhere);
+      if (inst.mechanics[key] && !inst.path.empty())
+        diags.error(inst.mechanicsWhere, joinKey(inst.keyPath, "mechanics") + "." + key,
+                    std::string("only the scene root declares the ") + key +
+                        " (one environment per scene); move it to the root file's mechanics");
+    }
     p.set("gravity", inst.mechanics["gravity"] ? inst.mechanics["gravity"] : YAML::Load("[0, 0, -9.81]"),
           inst.mechanicsWhere);
     const std::string base = joinKey(inst.keyPath, "mechanics");
@@ -93,6 +102,10 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
   }
   for (const auto& r : s.spec.ropes) out.push_back({"rope", r.name, ""});
   for (const auto& e : s.spec.equalizers) out.push_back({"equalizer", e.name, ""});
+  for (const auto& h : s.spec.hulls) out.push_back({"hydrostatics", h.name, ""});
+  for (const auto& w : s.spec.windLoads) out.push_back({"wind_load", w.name, ""});
+  for (const auto& c : s.spec.currentLoads) out.push_back({"current_load", c.name, ""});
+  for (const auto& d : s.spec.dampers) out.push_back({"damping", d.name, ""});
   return out;
 }
 
@@ -108,6 +121,14 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     for (const auto& b : f.spec.bodies) names.push_back(prefixed(f.owner->path, b.name));
   MechanicsSpec all;
   all.gravity = fragments.front().owner == &scene.root ? fragments.front().spec.gravity : all.gravity;
+  if (fragments.front().owner == &scene.root) {  // the environment: the root's
+    const MechanicsSpec& r = fragments.front().spec;
+    all.hasWater = r.hasWater;
+    all.water = r.water;
+    all.waves = r.waves;
+    all.current = r.current;
+    all.wind = r.wind;
+  }
   auto resolve = [&](const Fragment& f, const std::string& name, const std::string& what) {
     const std::string full = resolveName(f.owner->path, name, names);
     if (full.empty()) {
@@ -149,6 +170,16 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
         }
       all.equalizers.push_back(std::move(e));
     }
+    // (floating providers) => full names, bodies resolved
+    auto provider = [&](auto p, const char* what) {
+      p.name = prefixed(path, p.name);
+      p.body = resolve(f, p.body, std::string(what) + " '" + p.name + "'");
+      return p;
+    };
+    for (const auto& h : f.spec.hulls) all.hulls.push_back(provider(h, "hydrostatics"));
+    for (const auto& w : f.spec.windLoads) all.windLoads.push_back(provider(w, "wind load"));
+    for (const auto& c : f.spec.currentLoads) all.currentLoads.push_back(provider(c, "current load"));
+    for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping"));
     for (auto l : f.spec.loops) {
       l.name = prefixed(path, l.name);
       l.bodyA = resolve(f, l.bodyA, "loop '" + l.name + "'");
@@ -195,6 +226,8 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     if (eqAt[i] < 0)
       diags.error(scene.root.where, "mechanics",
                   "equalizer '" + all.equalizers[i].name + "' is attached to no body");
+  if (const std::string missing = missingEnvironment(all); !missing.empty())
+    diags.error(scene.root.where, "mechanics", missing);
   if (diags.hasErrors()) return {};
   std::vector<int> component(all.bodies.size());
   const auto count = static_cast<std::size_t>(boost::connected_components(g, component.data()));
@@ -209,6 +242,11 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     s = std::make_shared<MechanicalSystem>();
     s->name = count == 1 ? "mechanics" : "mechanics" + std::to_string(k + 1);
     s->spec.gravity = all.gravity;
+    s->spec.hasWater = all.hasWater;
+    s->spec.water = all.water;
+    s->spec.waves = all.waves;
+    s->spec.current = all.current;
+    s->spec.wind = all.wind;
   }
   auto systemOf = [&](int body) { return systems[static_cast<std::size_t>(component[static_cast<std::size_t>(body)])]; };
   for (std::size_t i = 0; i < all.bodies.size(); ++i) systemOf(static_cast<int>(i))->spec.bodies.push_back(all.bodies[i]);
@@ -217,6 +255,12 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     systemOf(eqAt[i])->spec.equalizers.push_back(all.equalizers[i]);
   for (std::size_t i = 0; i < all.loops.size(); ++i)
     if (loopAt[i] >= 0) systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
+  // (floating providers) => the system of their body (a world body was reported above)
+  auto on = [&](const std::string& body) { return systemOf(index.count(body) ? index.at(body) : 0); };
+  for (const auto& h : all.hulls) on(h.body)->spec.hulls.push_back(h);
+  for (const auto& w : all.windLoads) on(w.body)->spec.windLoads.push_back(w);
+  for (const auto& c : all.currentLoads) on(c.body)->spec.currentLoads.push_back(c);
+  for (const auto& d : all.dampers) on(d.body)->spec.dampers.push_back(d);
 
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {

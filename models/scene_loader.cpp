@@ -162,11 +162,13 @@ class Loader {
     if (const YAML::Node mech = def["mechanics"]) {
       if (!mech.IsMap()) {
         d_.error(markOf(mech, f), joinKey(kp, "mechanics"),
-                 "expected a mapping with bodies, ropes, equalizers, loops, gravity");
+                 "expected a mapping with bodies, ropes, equalizers, loops, gravity, water, wind, "
+                 "hydrostatics, wind_loads, current_loads, damping");
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
         inst.mechanicsWhere = markOf(mech, f);
-        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity"}, f,
+        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity", "water", "wind", "hydrostatics",
+                         "wind_loads", "current_loads", "damping"}, f,
                   joinKey(kp, "mechanics"), d_);
       }
     }

@@ -1,6 +1,7 @@
 #include "forces/hydro/added_mass.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include "forces/hydro/wetted_surface.hpp"
 
@@ -33,17 +34,20 @@ Matrix6 addedMass(const PanelMesh& wetted, const AddedMassOptions& options) {
   return addedMass(solver, options.reference, options.rho);
 }
 
-Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho,
+Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho, double waterLevel,
                           LinearSolver linearSolver) {
-  // (hull in B, X_WB) => hull in the world, then its part below the mean water plane
+  // (hull in B, X_WB) => hull in world axes with z measured from the water level, then its part
+  // below the mean water plane
+  const Vector3 level(0.0, 0.0, waterLevel);
   PanelMesh hull_W = hull_B;
-  for (Vector3& v : hull_W.vertices) v = X_WB.actPoint(v);
+  for (Vector3& v : hull_W.vertices) v = X_WB.actPoint(v) - level;
   const PanelMesh wet = wettedSurface(hull_W);
-  if (wet.panelCount() == 0) throw PanelError("the hull is dry at its mean position (nothing below z = 0)");
+  if (wet.panelCount() == 0)
+    throw PanelError("the hull is dry at its mean position (nothing below the water level z = " + std::to_string(waterLevel) + " m)");
   // (wetted surface) => A about the body origin in world axes, then in body axes: R^T A_blk R
   AddedMassOptions o;
   o.rho = rho;
-  o.reference = X_WB.p;
+  o.reference = X_WB.p - level;
   o.solver.freeSurface = FreeSurface::NegativeImage;
   o.solver.linearSolver = linearSolver;
   const Matrix6 A_W = addedMass(wet, o);

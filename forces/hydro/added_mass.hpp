@@ -32,11 +32,11 @@ struct AddedMassOptions {
 /// (wetted panel mesh, options) => the 6x6 added mass; throws PanelError for a bad mesh.
 Matrix6 addedMass(const PanelMesh& wetted, const AddedMassOptions& options);
 
-/// (hull in the body frame B, its mean pose X_WB, rho, linear solver) => the infinite-frequency
-/// 6x6 added mass of the floating body: the hull placed in the world, clipped at the mean water
-/// plane z = 0 (wettedSurface), solved with the negative image; returned about the body origin
-/// in body axes, naval order. Throws PanelError for a bad mesh or a dry hull.
-Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho,
+/// (hull in the body frame B, its mean pose X_WB, rho, z of the still-water level, linear solver)
+/// => the infinite-frequency 6x6 added mass of the floating body: the hull placed in the world,
+/// clipped at the mean water plane (wettedSurface), solved with the negative image; returned
+/// about the body origin in body axes, naval order. Throws PanelError for a bad mesh or a dry hull.
+Matrix6 floatingAddedMass(const PanelMesh& hull_B, const dynamics::Transform& X_WB, double rho, double waterLevel = 0.0,
                           LinearSolver linearSolver = LinearSolver::DenseLU);
 
 }  // namespace yardsim::forces::hydro

@@ -7,73 +7,15 @@
 #include "dynamics/rotation.hpp"
 #include "models/diagnostics.hpp"
 #include "models/multibody/added_mass_spec.hpp"
+#include "models/multibody/floating_spec.hpp"
+#include "models/multibody/spec_reader.hpp"
 
 namespace yardsim::models {
 namespace {
 
 using dynamics::Vector3;
-
-constexpr double kDeg = M_PI / 180.0;
-
-struct Reader {
-  const MechanicsReport& report;
-  std::string param;
-
-  void fail(const YAML::Node& at, const std::string& key, const std::string& msg) const {
-    report(param, at, key, msg);
-  }
-  bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
-            const std::string& key) const {
-    if (!map.IsMap()) {
-      fail(map, key, "expected a mapping");
-      return false;
-    }
-    bool ok = true;
-    for (auto it = map.begin(); it != map.end(); ++it) {
-      const auto k = it->first.as<std::string>();
-      if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
-      const std::string hint = didYouMean(k, allowed);
-      fail(it->first, key.empty() ? k : key + "." + k,
-           "unknown key '" + k + "'" + (hint.empty() ? "" : " (" + hint + ")"));
-      ok = false;
-    }
-    return ok;
-  }
-  double number(const YAML::Node& n, const std::string& key, double fallback,
-                bool required = false) const {
-    if (!n) {
-      if (required) fail(n, key, "missing required key '" + key + "' (a number)");
-      return fallback;
-    }
-    double v = 0;
-    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v)) {
-      fail(n, key, "expected a number, got " + (n.IsScalar() ? "'" + n.Scalar() + "'" : std::string("a collection")));
-      return fallback;
-    }
-    return v;
-  }
-  std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t size) const {
-    std::vector<double> out;
-    if (!n.IsSequence() || (size && n.size() != size)) {
-      fail(n, key, "expected a list of " + (size ? std::to_string(size) + " " : std::string()) + "numbers");
-      return std::vector<double>(size, 0.0);
-    }
-    for (std::size_t i = 0; i < n.size(); ++i) out.push_back(number(n[i], key, 0.0));
-    return out;
-  }
-  Vector3 vec3(const YAML::Node& n, const std::string& key, const Vector3& fallback) const {
-    if (!n) return fallback;
-    const auto v = numbers(n, key, 3);
-    return {v[0], v[1], v[2]};
-  }
-  // ({xyz, rpy_deg}) => transform
-  dynamics::Transform pose(const YAML::Node& n, const std::string& key) const {
-    if (!n) return dynamics::Transform::identity();
-    if (!keys(n, {"xyz", "rpy_deg"}, key)) return dynamics::Transform::identity();
-    const Vector3 rpy = vec3(n["rpy_deg"], key + ".rpy_deg", Vector3::Zero()) * kDeg;
-    return {dynamics::eulerToMatrix(rpy), vec3(n["xyz"], key + ".xyz", Vector3::Zero())};
-  }
-};
+using spec::kDeg;
+using spec::Reader;
 
 // (joint mapping) => joint type, axes, initial state
 void joint(const Reader& r, const YAML::Node& n, const std::string& key, MechanicsSpec::Body& b) {
@@ -194,8 +136,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       b.geometry = e.c_str();
     }
     if (const YAML::Node am = n["added_mass"]) {
-      parseAddedMass(am, b.name + ".added_mass", p.mark("bodies").file,
-                     [&](const YAML::Node& at, const std::string& key, const std::string& msg) { r.fail(at, key, msg); }, b);
+      parseAddedMass(r, am, b.name + ".added_mass", p.mark("bodies").file, b);
     }
     spec.bodies.push_back(std::move(b));
   }
@@ -316,6 +257,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   } else if (eqs.IsDefined() && !eqs.IsNull()) {
     er.fail(eqs, "", "expected a mapping of equalizers");
   }
+  parseFloating(p, report, names, spec);
   return spec;
 }
 
@@ -327,7 +269,11 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
   setGivenAddedMass(spec.bodies, builder);
-  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers};
+  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers, spec};
+  out.environment.bodies.clear();
+  out.environment.loops.clear();
+  out.environment.ropes.clear();
+  out.environment.equalizers.clear();
   const auto& m = out.model;
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);
@@ -341,7 +287,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
   }
   // (hull meshes, pose at q0) => added mass by the panel solver, then the model again with it
   if (needsHullAddedMass(spec.bodies)) {
-    setHullAddedMass(out.model, out.q0, spec.bodies, builder);
+    setHullAddedMass(out.model, out.q0, spec, builder);
     out.model = builder.build();
   }
   return out;

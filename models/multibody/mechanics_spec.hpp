@@ -13,7 +13,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include "dynamics/model.hpp"
+#include "forces/airy_waves.hpp"
+#include "forces/current_profile.hpp"
+#include "forces/flow_load.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
+#include "forces/linear_quadratic_damping.hpp"
+#include "forces/wind_profile.hpp"
 #include "models/params.hpp"
 
 namespace yardsim::models {
@@ -32,7 +37,7 @@ struct MechanicsSpec {
     std::optional<dynamics::Matrix6> addedMass;
     dynamics::Vector3 addedMassAbout = dynamics::Vector3::Zero();
     std::shared_ptr<const forces::TriangleMesh> addedMassHull;
-    double addedMassRho = 1025.0;
+    double addedMassRho = 0.0;  // kg/m^3; 0: the scene's water density
   };
   struct Loop {
     std::string name, bodyA, bodyB;
@@ -56,11 +61,37 @@ struct MechanicsSpec {
     std::vector<std::vector<Point>> branches;  // per branch: sheaves..., end
     Material material;                         // l0: all branches together
   };
+  // hydrostatics on a body: its hull mesh, read, checked and placed in the body frame
+  struct Hull {
+    std::string name, body;
+    std::shared_ptr<const forces::TriangleMesh> mesh;
+  };
+  // a wind or current load on a body (OCIMF style)
+  struct Flow {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();
+    forces::FlowAreas areas;
+    forces::FlowCoefficients coefficients;
+  };
+  struct Damper {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();
+    forces::DampingCoefficients coefficients;
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   std::vector<Body> bodies;
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
   std::vector<Equalizer> equalizers;
+  // the environment (scene root only): the sea with its waves and current, the wind
+  bool hasWater = false;  // `water:` declared (hydrostatics without it use the defaults)
+  forces::WaterProperties water;
+  std::vector<forces::WaveComponent> waves;
+  std::optional<forces::CurrentProperties> current;
+  std::optional<forces::WindProperties> wind;
+  std::vector<Hull> hulls;
+  std::vector<Flow> windLoads, currentLoads;
+  std::vector<Damper> dampers;
 };
 
 // Where parsing reports a problem: (node, key path below the parameter, message, hint).
@@ -77,7 +108,12 @@ struct BuiltMechanics {
   std::vector<std::string> jointNames;  // per body index (0: world, "")
   std::vector<MechanicsSpec::Rope> ropes;
   std::vector<MechanicsSpec::Equalizer> equalizers;
+  MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
 };
+
+// (spec) => "" or what is missing for its loads: a wind load without `wind:`, a current load
+// without `water: {current}`
+std::string missingEnvironment(const MechanicsSpec& spec);
 
 // (spec) => model and initial state; throws dynamics::ModelError naming the body
 BuiltMechanics buildMechanics(const MechanicsSpec& spec);

@@ -10,6 +10,8 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
+#include "forces/current_load.hpp"
+#include "forces/wind_load.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
@@ -69,6 +71,34 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     equalizers_.push_back(std::make_unique<forces::Equalizer>(
         e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
   }
+  // (floating-body specs) => hydrostatics on one sea, wind and current loads, damping
+  const MechanicsSpec& env = mech_.environment;
+  if (const std::string missing = missingEnvironment(env); !missing.empty())
+    throw std::invalid_argument("multibody '" + this->name() + "': " + missing);
+  forces::WaterProperties water = env.water;
+  if (-mech_.model.gravity.z() > 0 && !env.hasWater) water.gravity = -mech_.model.gravity.z();
+  const auto sea = std::make_shared<const forces::AiryWaves>(water, env.waves);
+  auto bodyOf = [&](const std::string& n) { return mech_.model.bodyIndex(n); };
+  for (const auto& h : env.hulls)
+    hydros_.push_back(std::make_unique<forces::Hydrostatics>(h.name, mech_.model, bodyOf(h.body), *h.mesh, sea));
+  if (env.wind) {
+    const auto wind = std::make_shared<const forces::WindField>(*env.wind);
+    for (const auto& w : env.windLoads)
+      flows_.push_back(std::make_unique<forces::WindLoad>(w.name, mech_.model, bodyOf(w.body), w.point, w.areas,
+                                                          w.coefficients, wind));
+  }
+  if (env.current) {
+    const auto current = std::make_shared<const forces::CurrentField>(*env.current);
+    for (const auto& c : env.currentLoads)
+      flows_.push_back(std::make_unique<forces::CurrentLoad>(c.name, mech_.model, bodyOf(c.body), c.point, c.areas,
+                                                             c.coefficients, current, water.density));
+  }
+  for (const auto& d : env.dampers)
+    dampers_.push_back(std::make_unique<forces::LinearQuadraticDamping>(d.name, mech_.model, bodyOf(d.body),
+                                                                        d.point, d.coefficients));
+  for (auto& h : hydros_) loads_.push_back(h.get());
+  for (auto& f : flows_) loads_.push_back(f.get());
+  for (auto& d : dampers_) loads_.push_back(d.get());
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
   else
@@ -87,6 +117,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     const forces::Stage stage{t, mech_.model, d, q, v};
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
+    for (forces::ForceProvider* l : loads_) l->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
   });
 }
@@ -137,6 +168,7 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   double p = 0.0;
   for (const auto& r : ropes_) p += r->power(stage);
   for (const auto& e : equalizers_) p += e->power(stage);
+  for (const forces::ForceProvider* l : loads_) p += l->power(stage);
   // (drives, loads) => their forces at this state, and the power they deliver
   const MultibodyState* saved = current_;
   current_ = &x;
@@ -313,6 +345,7 @@ double MultibodyModel::energy() const {
   const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
+  for (const forces::ForceProvider* l : loads_) e += l->potentialEnergy(stage);
   return e;
 }
 
@@ -362,6 +395,7 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
                      [&e, stage, j] { return e.branchLength(stage(), j); }});
   }
+  floatingChannels(out);
   // (system-wide quantities) => under the model's own name when element names are paths
   const std::string own = opt_.elementPaths ? path() + "." : "";
   out.push_back({own + "energy", "J", [this] { return energy(); }});
@@ -371,6 +405,59 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back({own + "loop_residual", "m", [this] {
                      return dynamics::loopResidualNorm(mech_.model, view_, state().x.q);
                    }});
+}
+
+forces::Stage MultibodyModel::committedStage() const {
+  const auto& s = state();
+  return forces::Stage{s.tx, mech_.model, kinematicsOf(s.x), s.x.q, s.x.v};
+}
+
+void MultibodyModel::floatingChannels(std::vector<Channel>& out) const {
+  const char* xyz[3] = {"x", "y", "z"};
+  for (const auto& hp : hydros_) {
+    const forces::Hydrostatics* h = hp.get();
+    const std::string& n = h->name();
+    auto rep = [this, h]() -> const forces::HydrostaticReport& { return h->report(committedStage()); };
+    out.push_back({n + ".draft", "m", [rep] { return rep().draft; }});
+    out.push_back({n + ".heel", "rad", [rep] { return rep().heel; }});
+    out.push_back({n + ".trim", "rad", [rep] { return rep().trim; }});
+    out.push_back({n + ".displacement", "kg", [rep] { return rep().displacement; }});
+    out.push_back({n + ".volume", "m^3", [rep] { return rep().submerged.volume; }});
+    out.push_back({n + ".waterplane_area", "m^2", [rep] { return rep().submerged.waterplaneArea; }});
+    out.push_back({n + ".gm_t", "m", [rep] { return rep().gmTransverse; }});
+    out.push_back({n + ".gm_l", "m", [rep] { return rep().gmLongitudinal; }});
+    // (force, moment about the world origin) => world axes, moment about the body's centre of mass
+    const int b = h->body();
+    for (int k = 0; k < 3; ++k)
+      out.push_back({n + ".f" + xyz[k], "N", [rep, k] { return rep().submerged.force[k]; }});
+    for (int k = 0; k < 3; ++k)
+      out.push_back({n + ".m" + xyz[k], "N m", [this, rep, b, k] {
+                       const auto& r = rep().submerged;
+                       const auto& I = mech_.model.inertias[b];
+                       const dynamics::Vector3 G = kinematicsOf(state().x).X_WB[b].actPoint(I.com);
+                       return (r.moment - G.cross(r.force))[k];
+                     }});
+    out.push_back({n + ".wave_elevation", "m", [this, h, b] {
+                     const dynamics::Vector3 p = kinematicsOf(state().x).X_WB[b].p;
+                     return h->sea().elevation(p.x(), p.y(), state().tx);
+                   }});
+  }
+  for (const auto& fp : flows_) {
+    const forces::FlowLoad* f = fp.get();
+    auto load = [this, f] { return f->load(committedStage()); };
+    out.push_back({f->name() + ".fx", "N", [load] { return load().force.x(); }});
+    out.push_back({f->name() + ".fy", "N", [load] { return load().force.y(); }});
+    out.push_back({f->name() + ".mz", "N m", [load] { return load().yawMoment; }});
+    out.push_back({f->name() + ".speed", "m/s", [load] { return load().speed; }});
+    out.push_back({f->name() + ".angle", "rad", [load] { return load().angle; }});
+  }
+  const char* dof[6] = {"fx", "fy", "fz", "mx", "my", "mz"};
+  for (const auto& dp : dampers_) {
+    const forces::LinearQuadraticDamping* d = dp.get();
+    for (std::size_t k = 0; k < 6; ++k)
+      out.push_back({d->name() + "." + dof[k], k < 3 ? "N" : "N m",
+                     [this, d, k] { return d->load(committedStage())[k]; }});
+  }
 }
 
 }  // namespace yardsim::models

@@ -15,6 +15,9 @@
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/multibody_system.hpp"
 #include "forces/equalizer.hpp"
+#include "forces/flow_load.hpp"
+#include "forces/hydrostatics.hpp"
+#include "forces/linear_quadratic_damping.hpp"
 #include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
 #include "models/multibody/mechanics_spec.hpp"
@@ -76,6 +79,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
   const forces::Equalizer& equalizer(std::size_t i) const { return *equalizers_[i]; }
+  const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return hydros_; }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
@@ -116,6 +120,15 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* viewState_ = nullptr;
   mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
   mutable std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
+  // floating bodies: hydrostatics, wind and current loads, damping; `loads_` lists them all
+  mutable std::vector<std::unique_ptr<forces::Hydrostatics>> hydros_;
+  mutable std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
+  mutable std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;
+  std::vector<forces::ForceProvider*> loads_;
+  // (committed state) => the stage providers see there, for channels
+  forces::Stage committedStage() const;
+  // (floating providers) => their channels
+  void floatingChannels(std::vector<Channel>& out) const;
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;

@@ -38,6 +38,20 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "name: {sheave: {body, point}, branches: [[{body, point}, ...], ...], EA, L0, damping, "
              "min_length, mbl}"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
+            {"water", ParamKind::Any, false, "~", "",
+             "{density, level, depth, waves: [{height, period, direction_deg, phase_deg}], wave_start, wave_ramp, "
+             "current: {speed, direction_deg, profile: [[z, factor], ...]}}"},
+            {"wind", ParamKind::Any, false, "~", "",
+             "{speed, direction_deg, reference_height, profile: uniform|power_law|npd, exponent, "
+             "averaging_time, air_density}"},
+            {"hydrostatics", ParamKind::Any, false, "{}", "",
+             "name: {body, mesh: file.obj|.stl, placement: {xyz, rpy_deg}, scale}"},
+            {"wind_loads", ParamKind::Any, false, "{}", "",
+             "name: {body, point, frontal_area, lateral_area, length, coefficients: {angle_deg, cx, cy, cmz}}"},
+            {"current_loads", ParamKind::Any, false, "{}", "",
+             "name: {body, point, frontal_area, lateral_area, length, coefficients: {angle_deg, cx, cy, cmz}}"},
+            {"damping", ParamKind::Any, false, "{}", "",
+             "name: {body, point, linear: [6], quadratic: [6]} (surge, sway, heave, roll, pitch, yaw)"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
             {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},
             {"drive_bandwidth", ParamKind::Number, false, "0", "rad/s",
@@ -66,6 +80,10 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
               p, [&](const std::string& param, const YAML::Node& at, const std::string& key,
                      const std::string& msg) { c.errorAt(param, at, key, msg); });
           if (c.failed()) return;
+          if (const std::string missing = missingEnvironment(spec); !missing.empty()) {
+            c.error(spec.wind ? "current_loads" : "wind_loads", missing);
+            return;
+          }
           try {
             buildMechanics(spec);
           } catch (const dynamics::ModelError& e) {
@@ -83,6 +101,10 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
           for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
+          for (const auto& h : spec.hulls) out.push_back({"hydrostatics", h.name, ""});
+          for (const auto& w : spec.windLoads) out.push_back({"wind_load", w.name, ""});
+          for (const auto& c : spec.currentLoads) out.push_back({"current_load", c.name, ""});
+          for (const auto& d : spec.dampers) out.push_back({"damping", d.name, ""});
           return out;
         }});
 

@@ -69,7 +69,7 @@ TEST_CASE("small-amplitude deep-water kinematics: continuity and d u/dt") {
   CHECK(umax == Approx(a * w * std::exp(k * p.z())).epsilon(2e-3));
 }
 
-TEST_CASE("the ramp grows the waves from calm; bad inputs are refused") {
+TEST_CASE("the ramp grows the waves from calm, and bad inputs are refused") {
   const AiryWaves sea(WaterProperties{1025.0, 9.81, 0.0, INFINITY, 10.0}, {{2.0, 8.0, 0.0, 0.0}});
   CHECK(sea.elevation(0, 0, 0.0) == 0.0);
   CHECK(sea.elevation(0, 0, 5.0) == Approx(0.5 * std::cos(-2 * M_PI / 8 * 5.0)));
@@ -78,4 +78,9 @@ TEST_CASE("the ramp grows the waves from calm; bad inputs are refused") {
   CHECK_THROWS_AS(AiryWaves(WaterProperties{-1.0}), std::invalid_argument);
   CHECK_THROWS_AS(AiryWaves(WaterProperties{}, {{1.0, 0.0, 0.0, 0.0}}), std::invalid_argument);
   CHECK(AiryWaves(WaterProperties{}).calm());
+  // (start) => calm until then, the ramp after it
+  const AiryWaves later(WaterProperties{1025.0, 9.81, 0.0, INFINITY, 10.0, 60.0}, {{2.0, 8.0, 0.0, 0.0}});
+  CHECK(later.elevation(0, 0, 59.0) == 0.0);
+  CHECK(later.elevation(0, 0, 65.0) == Approx(0.5 * std::cos(-2 * M_PI / 8 * 65.0)));
+  CHECK(later.elevation(0, 0, 75.0) == Approx(std::cos(-2 * M_PI / 8 * 75.0)));
 }

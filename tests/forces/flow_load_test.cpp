@@ -25,7 +25,7 @@ dynamics::Model freeBody() {
 }
 }  // namespace
 
-TEST_CASE("coefficient tables: linear, mirrored past 180 deg, or full circle; the default") {
+TEST_CASE("coefficient tables: linear, mirrored past 180 deg, or full circle, and the default") {
   const FlowCoefficients half({0, 90 * kDeg, 180 * kDeg}, {-0.8, 0.0, 0.6}, {0.0, -0.9, 0.0}, {0.0, 0.1, 0.0});
   auto c = half.at(45 * kDeg);
   CHECK(c[0] == Approx(-0.4));

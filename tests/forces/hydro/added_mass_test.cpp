@@ -112,6 +112,11 @@ TEST_CASE("a floating hull's added mass in body axes does not depend on its yaw"
       yardsim::forces::hydro::panelMesh(yardsim::forces::boxMesh(Vector3(20.0, 8.0, 4.0), 20, 8, 4)), {}, kRho);
   CHECK(asymmetry(ahead) < 1e-3);
   CHECK(asymmetry(finer) < 0.5 * asymmetry(ahead));
+  // the same pose relative to a still-water level at z = 2 m gives the same matrix
+  yardsim::dynamics::Transform X_raised;
+  X_raised.p.z() = 2.0;
+  const Matrix6 raised = floatingAddedMass(hull, X_raised, kRho, 2.0);
+  CHECK((raised - ahead).cwiseAbs().maxCoeff() < 1e-9 * ahead.cwiseAbs().maxCoeff());
   // lifted out of the water it is refused
   X_WB.p.z() = 5.0;
   CHECK_THROWS_WITH(floatingAddedMass(hull, X_WB, kRho), Catch::Matchers::Contains("dry"));

@@ -54,9 +54,9 @@ void benchSolve(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(benchAssembly)->Name("Assembly")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(benchLu)->Name("LU")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(benchSolve<LinearSolver::DenseLU>)->Name("BackSub")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(benchSolve<LinearSolver::Gmres>)->Name("Gmres")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(benchAssembly)->Name("Assembly")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond);
+BENCHMARK(benchLu)->Name("LU")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond);
+BENCHMARK(benchSolve<LinearSolver::DenseLU>)->Name("BackSub")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond);
+BENCHMARK(benchSolve<LinearSolver::Gmres>)->Name("Gmres")->Arg(384)->Arg(1536)->Arg(4056)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

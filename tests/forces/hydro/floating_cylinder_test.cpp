@@ -56,10 +56,10 @@ Heave releasedHeave(const hydro::Matrix6& A, bool withAddedMass) {
                     std::make_shared<const AiryWaves>(WaterProperties{kRho, kG, 0.0}));
   Rig r(model, {&hull});
   r.q[0] = 0.3;
-  const double h = 0.005;
+  const double h = 0.01;  // about 400 RK4 steps per period
   std::vector<double> up;
   double prev = r.q[0], sum = 0.0, first = 0.0;
-  for (int i = 0; i < 8000; ++i) {
+  for (int i = 0; i < 4000; ++i) {
     r.step(h);
     const double z = r.q[0];
     if (prev < 0.0 && z >= 0.0) {

@@ -108,7 +108,7 @@ TEST_CASE("a bad added mass is rejected naming the body") {
   CHECK_THROWS_WITH(build("hull", A), Contains("body 'hull'") && Contains("non-finite"));
 }
 
-TEST_CASE("added mass given in the naval order about a point moves to [angular; linear] about the origin") {
+TEST_CASE("added mass given in the naval order about a point moves to [angular, linear] about the origin") {
   // a pure heave added mass a at R = (2, 0, -1): heave at the origin with a pitch lever arm
   Matrix6 naval = Matrix6::Zero();
   naval(2, 2) = 5.0;

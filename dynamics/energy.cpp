@@ -7,10 +7,7 @@ namespace yardsim::dynamics {
 double kineticEnergy(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   forwardKinematics(m, d, q, v);
   double T = 0.0;
-  for (int i = 1; i < m.nbodies; ++i) {
-    T += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i]));
-    if (m.hasAddedMass[i]) T += 0.5 * d.V[i].dot(m.addedMass[i] * d.V[i]);  // the fluid's share
-  }
+  for (int i = 1; i < m.nbodies; ++i) T += bodyKineticEnergy(m, i, d.V[i]);
   return T;
 }
 

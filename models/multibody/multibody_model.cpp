@@ -505,9 +505,11 @@ double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Dat
   const auto& m = mech_.model;
   dynamics::forwardKinematics(m, d, x.q, x.v);
   double e = 0.0;
-  for (int i = 1; i < m.nbodies; ++i)
+  for (int i = 1; i < m.nbodies; ++i) {
     e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
          m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+    if (m.hasAddedMass[i]) e += 0.5 * d.V[i].dot(m.addedMass[i] * d.V[i]);  // the fluid's kinetic energy
+  }
   const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);

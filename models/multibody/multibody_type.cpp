@@ -36,7 +36,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
         {
             {"bodies", ParamKind::Map, true, "", "",
              "name: {parent, joint: {type, axis, q0|q0_deg, v0}, placement: {xyz, rpy_deg}, mass, "
-             "com, inertia, geometry}"},
+             "com, inertia, geometry, added_mass: {matrix, about} or {hull, rho}}"},
             {"loops", ParamKind::Any, false, "{}", "",
              "name: {body_a, frame_a, body_b, frame_b, constrain: point|axis|weld}"},
             {"ropes", ParamKind::Any, false, "{}", "",

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "models/coupling_graph.hpp"
+#include "models/integrator_spec.hpp"
 #include "models/mechanical_systems.hpp"
 #include "models/port_types.hpp"
 #include "models/sha256.hpp"
@@ -458,12 +459,11 @@ class Loader {
       else d_.error(markOf(n, f), "seed", "expected an integer, got " + shown(n));
     }
     if (const YAML::Node n = doc["integrator"]) {
-      if (!n.IsMap() || !n["method"] || !n["method"].IsScalar()) {
-        d_.error(markOf(n, f), "integrator", "expected {method: name, dt: seconds, ...}");
-      } else {
-        s.integrator = n["method"].Scalar();
+      s.integratorSpec = parseIntegratorSpec(n, f, d_);
+      s.integrator = s.integratorSpec.method;
+      if (n.IsMap())
         if (const YAML::Node dt = n["dt"]) number(dt, "integrator.dt", s.dt, true);
-      }
+      s.integratorSpec.dt = s.dt;
     }
     if (const YAML::Node r = doc["record"]) {
       if (!r.IsMap()) {

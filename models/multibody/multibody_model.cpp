@@ -5,8 +5,6 @@
 
 #include "dynamics/crba.hpp"
 #include "dynamics/energy.hpp"
-#include "dynamics/integrators/rk4.hpp"
-#include "dynamics/integrators/semi_implicit_euler.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
@@ -69,11 +67,12 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     equalizers_.push_back(std::make_unique<forces::Equalizer>(
         e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
   }
-  if (opt_.method == "semi_implicit_euler")
-    integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
-  else
-    integrator_ = std::make_unique<dynamics::Rk4>(mech_.model);
-  if (mech_.model.nc > 0 && opt_.projectLoops) system_.setProjection(true);
+  // (options) => the integrator at step dt; loops kept closed as its spec says
+  opt_.integrator.dt = opt_.dt;
+  if (!opt_.projectLoops && opt_.integrator.loops == dynamics::LoopStabilization::Projection)
+    opt_.integrator.loops = dynamics::LoopStabilization::None;
+  integrator_ = dynamics::makeIntegrator(opt_.integrator, mech_.model);
+  if (mech_.model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, system_);
   if (opt_.driveBandwidth <= 0.0) opt_.driveBandwidth = std::min(10.0, 0.1 / opt_.dt);
   // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
   dynamics::Data data(mech_.model);
@@ -182,6 +181,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
+  integrator_->reset();  // the forces change here: no history across it
   for (const SetPoint& s : setpoint.values()) {
     switch (s.kind) {
       case SetPoint::Kind::JointTarget: {
@@ -231,6 +231,7 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
+  integrator_->reset();
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -280,6 +281,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
+  integrator_->reset();
   if (e > 0 && e < mech_.model.nbodies)
     x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }

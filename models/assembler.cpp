@@ -79,7 +79,7 @@ std::unique_ptr<devs::Coupled> assemble(const Scene& scene) {
   for (const auto& system : scene.systems) {
     MultibodyOptions opt;
     opt.dt = scene.dt;
-    opt.method = scene.integrator;
+    opt.integrator = scene.integratorSpec;
     opt.elementPaths = true;
     root->addComponent(std::make_unique<MultibodyModel>(system->name, buildMechanics(system->spec), opt));
   }

@@ -5,8 +5,6 @@
 
 #include "dynamics/crba.hpp"
 #include "dynamics/energy.hpp"
-#include "dynamics/integrators/rk4.hpp"
-#include "dynamics/integrators/semi_implicit_euler.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
@@ -49,11 +47,12 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   Providers providers = makeProviders(mech_, mech_.model);
   ropes_ = std::move(providers.ropes);
   equalizers_ = std::move(providers.equalizers);
-  if (opt_.method == "semi_implicit_euler")
-    integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
-  else
-    integrator_ = std::make_unique<dynamics::Rk4>(mech_.model);
-  if (mech_.model.nc > 0 && opt_.projectLoops) system_.setProjection(true);
+  // (options) => the integrator at step dt; loops kept closed as its spec says
+  opt_.integrator.dt = opt_.dt;
+  if (!opt_.projectLoops && opt_.integrator.loops == dynamics::LoopStabilization::Projection)
+    opt_.integrator.loops = dynamics::LoopStabilization::None;
+  integrator_ = dynamics::makeIntegrator(opt_.integrator, mech_.model);
+  if (mech_.model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, system_);
   if (opt_.driveBandwidth <= 0.0) opt_.driveBandwidth = std::min(10.0, 0.1 / opt_.dt);
   // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
   dynamics::Data data(mech_.model);
@@ -67,7 +66,6 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const dynamics::Data& d, dynamics::ExternalForces& f,
                            Eigen::VectorXd& tau) {
-    ++counters_.fEvals;
     const forces::Stage stage{t, mech_.model, d, q, v};
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
@@ -140,7 +138,6 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   double time = t;
   try {
     integrator_->step(system_, time, x.q, x.v, dt);
-    ++counters_.steps;
   } catch (const devs::SimulationError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
@@ -153,6 +150,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
+  integrator_->reset();  // the forces change here: no history across it
   for (const SetPoint& s : setpoint.values()) {
     switch (s.kind) {
       case SetPoint::Kind::JointTarget: {
@@ -202,6 +200,7 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
+  integrator_->reset();
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -264,6 +263,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
+  integrator_->reset();
   if (e > 0 && e < mech_.model.nbodies)
     x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }

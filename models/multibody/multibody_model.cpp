@@ -31,7 +31,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size(),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + 2 * mech_.ropes.size(),
                   dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
@@ -67,6 +67,9 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     equalizers_.push_back(std::make_unique<forces::Equalizer>(
         e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
   }
+  // (ropes) => their slack/taut functions cross either way
+  std::fill(directions_.end() - static_cast<std::ptrdiff_t>(mech_.ropes.size()), directions_.end(),
+            dtss::Crossing::Both);
   // (options) => the integrator at step dt; loops kept closed as its spec says
   opt_.integrator.dt = opt_.dt;
   if (!opt_.projectLoops && opt_.integrator.loops == dynamics::LoopStabilization::Projection)
@@ -256,9 +259,12 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   if (ropes_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+  const std::size_t nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
-    g[static_cast<std::size_t>(mech_.model.nbodies) + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    // (rope) => its stretch: > 0 taut, < 0 slack
+    g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
 }
 
@@ -269,6 +275,16 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
       if (x.winches[k].active && x.winches[k].tEnd <= t)
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
   if (r.stateEvent <= 0) return;
+  const int nr = static_cast<int>(ropes_.size());
+  if (r.stateEvent >= nb + nr) {  // a rope went taut or slack: its length at that time
+    const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+    // (direction of the crossing) => lengthening through L0: taut; shortening: slack
+    const bool taut = ropes_[k]->lengthRate(stage) >= ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", taut ? "taut" : "slack", ropes_[k]->length(stage)});
+    return;
+  }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);

@@ -40,13 +40,13 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
       scratch_(mech_.model),
       spForces_(mech_.model),
       spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
-  // (ropes) => their slack/taut transitions are events both ways (after the MBL watches)
-  std::fill(directions_.end() - static_cast<std::ptrdiff_t>(mech_.ropes.size()), directions_.end(),
-            dtss::Crossing::Both);
   // (rope and equalizer specs) => providers, evaluated at every stage
   Providers providers = makeProviders(mech_, mech_.model);
   ropes_ = std::move(providers.ropes);
   equalizers_ = std::move(providers.equalizers);
+  // (ropes) => their slack/taut functions cross either way
+  std::fill(directions_.end() - static_cast<std::ptrdiff_t>(mech_.ropes.size()), directions_.end(),
+            dtss::Crossing::Both);
   // (options) => the integrator at step dt; loops kept closed as its spec says
   opt_.integrator.dt = opt_.dt;
   if (!opt_.projectLoops && opt_.integrator.loops == dynamics::LoopStabilization::Projection)
@@ -225,11 +225,11 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   if (ropes_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  const auto nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  const std::size_t nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
   for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
     g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
-    // (rope) => > 0 while taut: a sign change is a slack/taut transition
+    // (rope) => its stretch: > 0 taut, < 0 slack
     g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
 }
@@ -242,13 +242,13 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
   if (r.stateEvent <= 0) return;
   const int nr = static_cast<int>(ropes_.size());
-  if (r.stateEvent >= nb + nr) {  // a rope went slack or snapped taut: its length then
+  if (r.stateEvent >= nb + nr) {  // a rope went taut or slack: its length at that time
     const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
     const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-    const double rate = ropes_[k]->lengthRate(stage) - ropes_[k]->payoutRate(t);
-    event.add({ropes_[k]->name(), "", rate > 0 ? "taut" : "slack",
-               ropes_[k]->length(stage)});
+    // (direction of the crossing) => lengthening through L0: taut; shortening: slack
+    const bool taut = ropes_[k]->lengthRate(stage) >= ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", taut ? "taut" : "slack", ropes_[k]->length(stage)});
     return;
   }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event

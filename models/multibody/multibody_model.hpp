@@ -5,7 +5,8 @@
 // its own steps inside each); the integrator restarts its history whenever the state or the
 // set-points change between steps; joint drives and body loads set by actors through the
 // `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
-// reaches its target is a located state event, reported on the `event` port.
+// reaches its target, a rope passing its breaking load, and a rope going taut or slack are
+// located state events, reported on the `event` port.
 #include <memory>
 #include <ostream>
 #include <string>

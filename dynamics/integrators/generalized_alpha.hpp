@@ -37,7 +37,7 @@ GeneralizedAlphaParameters chungHulbert(double rhoInf);
 class GeneralizedAlpha final : public Integrator {
  public:
   GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
-                   double newtonTol = 1e-10, int maxNewton = 8);
+                   double newtonTol = 1e-8, int maxNewton = 8);
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
   std::string_view name() const override { return name_; }
   void reset() override { started_ = false; }

@@ -56,7 +56,10 @@ void GeneralizedAlpha::start(AccelerationSource& system, double t, const Eigen::
     integrate(model_, q, v, eps, qp_);
     vp_ = v + eps * ddqOld_;
     evaluate(system, t + eps, qp_, vp_, aNew_);
-    aAlg_ += (shift / eps) * (aNew_ - ddqOld_);
+    // (correction) => dropped when larger than ddq_0 itself: the difference then straddles a force
+    // that jumps (a damped rope going taut), not a smooth dddq
+    aNew_ = (shift / eps) * (aNew_ - ddqOld_);
+    if (aNew_.lpNorm<Eigen::Infinity>() <= std::max(1.0, ddqOld_.lpNorm<Eigen::Infinity>())) aAlg_ += aNew_;
   }
   lambda_.setZero();
   started_ = true;

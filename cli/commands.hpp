@@ -14,6 +14,13 @@ struct RunArgs {
 };
 int runCommand(const RunArgs& a);
 
+struct WpArgs {
+  std::string scene, outdir = "out";
+  int repeats = 0;  // 0: the scene's wp.repeats
+  bool quiet = false;
+};
+int wpCommand(const WpArgs& a);
+
 int validateCommand(const std::string& scene, bool printResolved);
 
 struct TraceArgs {

@@ -23,6 +23,13 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
 
+  WpArgs wp;
+  auto* wpCmd = app.add_subcommand("wp", "error against run time: run the scene's `wp:` sweep of integrators");
+  wpCmd->add_option("scene", wp.scene, "scene file (YAML) with a wp: block")->required();
+  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.svg, summary.md)")->capture_default_str();
+  wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)");
+  wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
+
   std::string validateScene;
   bool printResolved = false;
   auto* validate = app.add_subcommand("validate", "check a scene without running it");
@@ -54,6 +61,7 @@ int yardsimMain(int argc, char** argv) {
       run.traceGiven = runCmd->count("--trace") > 0;
       return runCommand(run);
     }
+    if (wpCmd->parsed()) return wpCommand(wp);
     if (validate->parsed()) return validateCommand(validateScene, printResolved);
     if (traceCmd->parsed()) return traceCommand(trace);
     if (channels->parsed()) return listChannelsCommand(channelsScene);

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "dynamics/aba.hpp"
+#include "dynamics/crba.hpp"
+#include "dynamics/loop_constraints.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/projection.hpp"
 
@@ -15,7 +17,15 @@ MultibodySystem::MultibodySystem(const Model& model)
       scratch_(model),
       forces_(model),
       tau_(Eigen::VectorXd::Zero(model.nv)),
-      tauStage_(Eigen::VectorXd::Zero(model.nv)) {}
+      tauStage_(Eigen::VectorXd::Zero(model.nv)),
+      hybrid_(model),
+      aPrescribed_(Eigen::VectorXd::Zero(model.nv)),
+      effort_(Eigen::VectorXd::Zero(model.nv)) {}
+
+void MultibodySystem::prescribe(const std::vector<char>& mask, const Eigen::VectorXd& aPrescribed) {
+  hybrid_.setPrescribed(mask);
+  aPrescribed_ = aPrescribed;
+}
 
 namespace {
 // (what, body, t) => a diagnosis naming the body, with a suggestion
@@ -34,7 +44,7 @@ int firstNonFinite(const Eigen::VectorXd& x) {
 }
 }  // namespace
 
-void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) {
+const ExternalForces* MultibodySystem::stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   // (q, v) => refuse a state that has already diverged
   if (!q.allFinite() || !v.allFinite()) {
     for (int i = 1; i < model_.nbodies; ++i) {
@@ -49,15 +59,46 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
     forwardKinematics(model_, scratch_, q, v);
     callback_(t, q, v, scratch_, forces_, tauStage_);
   }
-  const ExternalForces* f = forces_.empty() ? nullptr : &forces_;
-  // (q, v, tau, f) => ddq by ABA (tree) or with loop multipliers
-  if (model_.nc == 0) {
+  return forces_.empty() ? nullptr : &forces_;
+}
+
+void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) {
+  const ExternalForces* f = stageForces(t, q, v);
+  // (q, v, tau, f) => ddq by hybrid dynamics (prescribed dofs), ABA (tree) or with loop multipliers
+  if (hybrid_.any()) {
+    if (model_.nc > 0) throw SimulationError("yardsim::dynamics: prescribed motion needs a tree (no loop closures)");
+    a = aPrescribed_;
+    hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
+  } else if (model_.nc == 0) {
     a = aba(model_, data_, q, v, tauStage_, f);
   } else {
     a = constrainedForwardDynamics(model_, data_, q, v, tauStage_, f, stab_);
   }
   // (a) => the body whose acceleration is not finite, if any
   if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
+}
+
+void MultibodySystem::unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                                Eigen::VectorXd& a) {
+  const ExternalForces* f = stageForces(t, q, v);
+  if (hybrid_.any()) {  // (prescribed dofs) => hybrid dynamics, as in acceleration()
+    a = aPrescribed_;
+    hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
+  } else {
+    a = aba(model_, data_, q, v, tauStage_, f);
+  }
+  if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
+}
+
+void MultibodySystem::constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd& g, Eigen::MatrixXd& J,
+                                      Eigen::MatrixXd& MinvJt) {
+  // (q) => g(q), J(q), M^-1 J^T by CRBA + Cholesky
+  g = loopResidual(model_, data_, q);
+  J = loopJacobian(model_, data_, q);
+  crba(model_, data_, q);
+  choleskyFactor(model_, data_);
+  MinvJt = J.transpose();
+  data_.llt.solveInPlace(MinvJt);
 }
 
 void MultibodySystem::afterStep(double, Eigen::VectorXd& q, Eigen::VectorXd& v) {

@@ -9,16 +9,11 @@
 #include "dynamics/constrained_dynamics.hpp"
 #include "dynamics/data.hpp"
 #include "dynamics/external_forces.hpp"
+#include "dynamics/hybrid_dynamics.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
-
-/// Thrown when the state or the accelerations stop being finite; the message names the body.
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class MultibodySystem final : public AccelerationSource {
  public:
@@ -40,6 +35,19 @@ class MultibodySystem final : public AccelerationSource {
   /// not finite.
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
+  int constraintRows() const override { return model_.nc; }
+  /// (t, q, v) => ABA on the tree with the same forces, without the loops' forces.
+  void unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                 Eigen::VectorXd& a) override;
+  void constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd& g, Eigen::MatrixXd& J,
+                       Eigen::MatrixXd& MinvJt) override;
+
+  /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
+  /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
+  /// this at every stage. The joint forces that enforce them: prescribedEffort().
+  void prescribe(const std::vector<char>& mask, const Eigen::VectorXd& aPrescribed);
+  const Eigen::VectorXd& prescribedEffort() const { return effort_; }
+  HybridDynamics& hybrid() { return hybrid_; }
 
   const Model& model() const { return model_; }
   Data& data() { return data_; }
@@ -51,7 +59,11 @@ class MultibodySystem final : public AccelerationSource {
   Data scratch_;
   ExternalForces forces_;
   Eigen::VectorXd tau_, tauStage_;
+  HybridDynamics hybrid_;
+  Eigen::VectorXd aPrescribed_, effort_;
   ForceCallback callback_;
+  // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
+  const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;
   bool project_ = false;
   double projectTol_ = 1e-12;

@@ -59,22 +59,30 @@ void BodyLoad::set(double t, const Vector3& force, const Vector3& moment) {
   samples_.push_back({t, force, moment});
 }
 
-LoadSample BodyLoad::at(double t) const {
-  // (t) => linear between the samples around t; held outside
-  if (samples_.empty()) return {t, Vector3::Zero(), Vector3::Zero()};
+double BodyLoad::nextBreak(double t) const {
   const auto next = std::upper_bound(samples_.begin(), samples_.end(), t,
                                      [](double x, const LoadSample& s) { return x < s.t; });
+  return next == samples_.end() ? std::numeric_limits<double>::infinity() : next->t;
+}
+
+LoadSample BodyLoad::at(double t, bool leftLimit) const {
+  // (t) => linear between the samples around t; held outside
+  if (samples_.empty()) return {t, Vector3::Zero(), Vector3::Zero()};
+  const auto next = leftLimit ? std::lower_bound(samples_.begin(), samples_.end(), t,
+                                                 [](const LoadSample& s, double x) { return s.t < x; })
+                              : std::upper_bound(samples_.begin(), samples_.end(), t,
+                                                 [](double x, const LoadSample& s) { return x < s.t; });
   if (next == samples_.begin()) return {t, samples_.front().force, samples_.front().moment};
   if (next == samples_.end()) return {t, samples_.back().force, samples_.back().moment};
   const LoadSample& a = *(next - 1);
   const LoadSample& b = *next;
-  const double w = (t - a.t) / (b.t - a.t);  // b.t > t >= a.t
+  const double w = (t - a.t) / (b.t - a.t);  // b.t > t >= a.t (left limit: b.t >= t > a.t)
   return {t, (1.0 - w) * a.force + w * b.force, (1.0 - w) * a.moment + w * b.moment};
 }
 
 void BodyLoad::worldLoad(const Stage& s, Vector3& f_W, Vector3& m_W) const {
   // (t, frame, R_WB) => F and M in the world
-  const LoadSample x = at(s.t);
+  const LoadSample x = at(s.t, s.t > stepStart_);
   if (frame_ == LoadFrame::World) {
     f_W = x.force;
     m_W = x.moment;

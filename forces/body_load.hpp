@@ -4,6 +4,7 @@
 // at exact times (wind or wave loads applied by actors until the dedicated providers exist).
 // Not conservative: power = F . v_point + M . omega.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,14 @@ class BodyLoad final : public ForceProvider {
   // std::invalid_argument when t, F or M is not finite.
   void set(double t, const dynamics::Vector3& force, const dynamics::Vector3& moment);
 
-  // (t) => F and M in the load's frame at t (right-continuous at steps)
-  LoadSample at(double t) const;
+  // (t) => F and M in the load's frame at t: right-continuous at steps, or the value just before
+  // a step with leftLimit
+  LoadSample at(double t, bool leftLimit = false) const;
+  // (start of the integrator step being taken) => stages later than it see the left limit at a
+  // step, so a step that ends exactly on a jump integrates the value before it
+  void setStepStart(double t) { stepStart_ = t; }
+  // (t) => the first sample time after t (a kink or a jump, to be landed on), or +inf
+  double nextBreak(double t) const;
   int body() const { return body_; }
   const dynamics::Vector3& point() const { return p_B_; }
   LoadFrame frame() const { return frame_; }
@@ -59,6 +66,7 @@ class BodyLoad final : public ForceProvider {
   dynamics::Vector3 p_B_;
   LoadFrame frame_;
   std::vector<LoadSample> samples_;  // empty: zero load
+  double stepStart_ = std::numeric_limits<double>::infinity();  // none: right-continuous
 };
 
 }  // namespace yardsim::forces

@@ -54,15 +54,19 @@ devs::Model& modelAt(devs::Coupled& root, const std::string& path) {
   return *m;
 }
 
-// (instance tree) => actors bound to a scene mechanical system, coupled to it directly
+// (instance tree) => actors bound to a scene mechanical system, coupled to it directly, and
+// actors listening to the actors their start rules name
 void bindActors(const Instance& inst, devs::Coupled& root) {
   for (const auto& child : inst.children) {
     if (!child->atomic()) {
       bindActors(*child, root);
       continue;
     }
-    if (child->boundSystem.empty()) continue;
     devs::Model& actor = modelAt(root, child->path);
+    // (start rule resolved by bindStartRules) => the named actors' `finished` into `trigger`
+    for (const auto& from : child->listensTo)
+      root.coupleDirect(*modelAt(root, from).findPort("finished"), *actor.findPort("trigger"));
+    if (child->boundSystem.empty()) continue;
     devs::Model& mb = *root.findComponent(child->boundSystem);
     root.coupleDirect(*actor.findPort("setpoint"), *mb.findPort("setpoint"));
     root.coupleDirect(*mb.findPort("event"), *actor.findPort("event"));
@@ -81,6 +85,11 @@ std::unique_ptr<devs::Coupled> assemble(const Scene& scene) {
     opt.dt = scene.dt;
     opt.method = scene.integrator;
     opt.elementPaths = true;
+    const auto& set = system->spec.settings;
+    opt.driveBandwidth = set.driveBandwidth;
+    opt.driveMaxEffort = set.driveMaxEffort;
+    opt.driveTolerance = set.driveTolerance;
+    opt.equilibrium = set.equilibrium;
     root->addComponent(std::make_unique<MultibodyModel>(system->name, buildMechanics(system->spec), opt));
   }
   bindActors(scene.root, *root);

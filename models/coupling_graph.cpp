@@ -1,5 +1,6 @@
 #include "models/coupling_graph.hpp"
 
+#include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/strong_components.hpp>
 #include <map>
@@ -174,6 +175,48 @@ void checkElementReferences(Scene& scene, Diagnostics& diags) {
                     "'" + t->path + "' has no " + ref.kind + " '" + ref.name + "'",
                     didYouMean(ref.name, names));
       }
+  }
+}
+
+}  // namespace yardsim::models
+
+namespace yardsim::models {
+
+void bindStartRules(Scene& scene, Diagnostics& diags) {
+  const CouplingIndex index(scene.root);
+  // (couplings) => fed trigger ports, and the atomics that announce `finished`
+  std::set<CouplingIndex::PortKey> fed;
+  std::vector<std::string> actors;
+  for (const Instance* a : index.atomics())
+    for (const auto& p : a->ports) {
+      if (p.input) continue;
+      if (p.name == "finished") actors.push_back(a->path);
+      for (const auto& dst : index.reach(a, p.name)) fed.insert(dst);
+    }
+  for (const Instance* ac : index.atomics()) {
+    auto* a = const_cast<Instance*>(ac);  // the index only reads; start rules are rewritten here
+    const bool hasTrigger = std::any_of(a->ports.begin(), a->ports.end(),
+                                        [](const PortSpec& p) { return p.input && p.name == "trigger"; });
+    if (!hasTrigger || fed.count({ac, "trigger"})) continue;
+    for (const char* rule : {"after_all", "after_any"}) {
+      if (!a->params.has(rule) || a->params.node(rule).IsNull()) continue;
+      const auto dot = a->path.rfind('.');
+      const std::string from = dot == std::string::npos ? "" : a->path.substr(0, dot);
+      YAML::Node rewritten(YAML::NodeType::Sequence);
+      for (const std::string& name : a->params.strings(rule)) {
+        const std::string full = resolveName(from, name, actors);
+        if (full.empty()) {
+          diags.error(a->params.mark(rule), a->keyPath + ".params." + rule,
+                      "no actor '" + name + "' (seen from '" +
+                          (from.empty() ? std::string("the scene root") : from) + "')",
+                      didYouMean(name, actors));
+          continue;
+        }
+        a->listensTo.push_back(full);
+        rewritten.push_back(full);
+      }
+      a->params.set(rule, rewritten, a->params.mark(rule));
+    }
   }
 }
 

@@ -38,4 +38,10 @@ void checkCouplingGraph(const Instance& root, Diagnostics& diags);
 // the element's full path). Errors with "did you mean" for names that exist nowhere.
 void checkElementReferences(Scene& scene, Diagnostics& diags);
 
+// (scene) => every actor whose `trigger` port is not coupled listens to the actors its start
+// rule names (`after_all` / `after_any`), resolved from where it sits like element names (a
+// sibling first, then the enclosing models, then the root); the names are rewritten to full paths
+// and the assembler couples their `finished` ports to its `trigger`. Unknown names are errors.
+void bindStartRules(Scene& scene, Diagnostics& diags);
+
 }  // namespace yardsim::models

@@ -39,7 +39,7 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
   if (inst.atomic()) return;
   if (inst.mechanics.IsDefined()) {
     Params p;
-    for (const char* key : {"bodies", "ropes", "equalizers", "loops", "hydrostatics", "wind_loads",
+    for (const char* key : {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "hydrostatics", "wind_loads",
                             "current_loads", "damping"})
       p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Map),
             inst.mechanicsWhere);
@@ -54,6 +54,16 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
     p.set("gravity", inst.mechanics["gravity"] ? inst.mechanics["gravity"] : YAML::Load("[0, 0, -9.81]"),
           inst.mechanicsWhere);
     const std::string base = joinKey(inst.keyPath, "mechanics");
+    // (system-wide settings) => read at the scene root only
+    for (const char* key : {"drive_bandwidth", "drive_max_effort", "drive_tolerance", "equilibrium"}) {
+      const YAML::Node n = inst.mechanics[key];
+      if (!n) continue;
+      if (inst.path.empty())
+        p.set(key, n, inst.mechanicsWhere);
+      else
+        diags.error(markOf(n, inst.mechanicsWhere.file), joinKey(base, key),
+                    "a system-wide setting: give it in the scene root's mechanics");
+    }
     auto report = [&](const std::string& param, const YAML::Node& at, const std::string& key,
                       const std::string& msg) {
       SourceMark where = inst.mechanicsWhere;
@@ -69,7 +79,9 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
                                                const std::string& key, const std::string& msg) {
       if (key.rfind("__none__", 0) == 0) return;
       // parent, rope and loop bodies outside the fragment are resolved later, globally
-      if (msg.rfind("unknown parent body", 0) == 0 || msg.rfind("unknown body", 0) == 0) return;
+      if (msg.rfind("unknown parent body", 0) == 0 || msg.rfind("unknown body", 0) == 0 ||
+          msg.rfind("unknown element", 0) == 0)
+        return;
       report(param, at, key, msg);
     });
     std::erase_if(spec.bodies, [](const auto& b) { return b.name == "__none__"; });
@@ -120,8 +132,9 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& f : fragments)
     for (const auto& b : f.spec.bodies) names.push_back(prefixed(f.owner->path, b.name));
   MechanicsSpec all;
-  all.gravity = fragments.front().owner == &scene.root ? fragments.front().spec.gravity : all.gravity;
-  if (fragments.front().owner == &scene.root) {  // the environment: the root's
+  if (fragments.front().owner == &scene.root) {  // the settings and the environment: the root's
+    all.gravity = fragments.front().spec.gravity;
+    all.settings = fragments.front().spec.settings;
     const MechanicsSpec& r = fragments.front().spec;
     all.hasWater = r.hasWater;
     all.water = r.water;
@@ -170,6 +183,11 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
         }
       all.equalizers.push_back(std::move(e));
     }
+    for (auto l : f.spec.loads) {
+      l.name = prefixed(path, l.name);
+      l.body = resolve(f, l.body, "load '" + l.name + "'");
+      all.loads.push_back(std::move(l));
+    }
     // (floating providers) => full names, bodies resolved
     auto provider = [&](auto p, const char* what) {
       p.name = prefixed(path, p.name);
@@ -189,6 +207,26 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       all.loops.push_back(std::move(l));
     }
   }
+  // (watches) => their elements resolved among every fragment's bodies, joints and ropes
+  std::vector<std::string> elements;
+  for (const auto& b : all.bodies) elements.insert(elements.end(), {b.name, b.jointName});
+  for (const auto& r : all.ropes) elements.push_back(r.name);
+  for (const auto& f : fragments)
+    for (auto w : f.spec.watches) {
+      const std::string full = resolveName(f.owner->path, w.element, elements);
+      if (full.empty()) {
+        // (names as the fragment would write them) => the suggestion
+        std::vector<std::string> seen;
+        const std::string own = f.owner->path.empty() ? "" : f.owner->path + ".";
+        for (const auto& e : elements) seen.push_back(!own.empty() && e.starts_with(own) ? e.substr(own.size()) : e);
+        diags.error(f.owner->mechanicsWhere, joinKey(joinKey(f.owner->keyPath, "mechanics"), "watch." + w.name),
+                    "unknown element '" + w.element + "'", didYouMean(w.element, seen));
+        continue;
+      }
+      w.name = prefixed(f.owner->path, w.name);
+      w.element = full;
+      all.watches.push_back(std::move(w));
+    }
   if (diags.hasErrors()) return {};
 
   // (joints, loops, ropes, equalizers) => connected components of the bodies (the world joins nothing)
@@ -219,6 +257,14 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     eqAt.push_back(join(bodies));
   }
   for (const auto& l : all.loops) loopAt.push_back(join({l.bodyA, l.bodyB}));
+  // (a watch) => the system of its element's body (a joint's or a rope's first body)
+  auto elementBody = [&](const std::string& e) -> int {
+    for (const auto& b : all.bodies)
+      if (b.name == e || b.jointName == e) return index.at(b.name);
+    for (std::size_t r = 0; r < all.ropes.size(); ++r)
+      if (all.ropes[r].name == e) return ropeAt[r];
+    return -1;
+  };
   for (std::size_t i = 0; i < all.ropes.size(); ++i)
     if (ropeAt[i] < 0)
       diags.error(scene.root.where, "mechanics", "rope '" + all.ropes[i].name + "' is attached to no body");
@@ -242,6 +288,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     s = std::make_shared<MechanicalSystem>();
     s->name = count == 1 ? "mechanics" : "mechanics" + std::to_string(k + 1);
     s->spec.gravity = all.gravity;
+    s->spec.settings = all.settings;
     s->spec.hasWater = all.hasWater;
     s->spec.water = all.water;
     s->spec.waves = all.waves;
@@ -255,6 +302,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     systemOf(eqAt[i])->spec.equalizers.push_back(all.equalizers[i]);
   for (std::size_t i = 0; i < all.loops.size(); ++i)
     if (loopAt[i] >= 0) systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
+  for (const auto& l : all.loads)
+    if (l.body != "world") systemOf(index.at(l.body))->spec.loads.push_back(l);
+  for (const auto& w : all.watches)
+    if (const int b = elementBody(w.element); b >= 0) systemOf(b)->spec.watches.push_back(w);
   // (floating providers) => the system of their body (a world body was reported above)
   auto on = [&](const std::string& body) { return systemOf(index.count(body) ? index.at(body) : 0); };
   for (const auto& h : all.hulls) on(h.body)->spec.hulls.push_back(h);

@@ -19,6 +19,17 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   auto wall = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   std::filesystem::create_directories(opt.outdir);
 
+  // (record block) => the recorder, only when the scene asks for one
+  std::unique_ptr<TimeseriesWriter> recorder;
+  const double interval = scene.record.interval;
+  if (interval > 0.0)
+    recorder = std::make_unique<TimeseriesWriter>(
+        opt.outdir / "timeseries.csv", scene,
+        selectChannels(collectChannels(root), scene.record.channels));
+  // (initial state) => the first row, on disk before the simulator computes its first step (a
+  // step that fails at once still leaves it)
+  if (recorder) recorder->sample(0.0);
+
   devs::Simulator sim(root);
   // (trace names) => sinks, only those asked for
   std::vector<std::unique_ptr<devs::Listener>> sinks;
@@ -33,14 +44,6 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       throw std::invalid_argument("unknown trace sink '" + name + "' (expected jsonl, chrome or csv)");
     sim.addListener(*sinks.back());
   }
-  // (record block) => the recorder, only when the scene asks for one
-  std::unique_ptr<TimeseriesWriter> recorder;
-  const double interval = scene.record.interval;
-  if (interval > 0.0)
-    recorder = std::make_unique<TimeseriesWriter>(
-        opt.outdir / "timeseries.csv", scene,
-        selectChannels(collectChannels(root), scene.record.channels));
-
   RunResult result;
   double lastReport = 0.0;
   auto report = [&](double t) {
@@ -50,7 +53,6 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     lastReport = w;
     opt.progress({t, opt.until, w});
   };
-  if (recorder) recorder->sample(0.0);
   for (std::int64_t k = 1;; ++k) {
     // (events up to the next sample time) => executed, then one row
     const double next = recorder ? std::min(dtss::gridOffset(interval, k), opt.until) : opt.until;

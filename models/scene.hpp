@@ -36,6 +36,7 @@ struct Instance {
   Params params;
   bool feedthrough = false;  // from the type, for these params
   std::string boundSystem;   // an actor acting on a scene mechanical system (set-points routed there)
+  std::vector<std::string> listensTo;  // actors whose `finished` the assembler couples to `trigger`
   // both: ports (for an atomic, from its type)
   std::vector<PortSpec> ports;
   // coupled
@@ -67,6 +68,10 @@ struct Scene {
   long long seed = 0;
   std::string integrator = "none";  // method named by the scene (metadata until physics)
   double dt = 0.0;
+  // integrator.stiffness_check: what to do when omega_max dt exceeds the method's stability
+  // limit before the run (docs/numerics.md): warn, refuse (an error) or off
+  std::string stiffnessCheck = "warn";
+  SourceMark integratorWhere;  // the `integrator:` block, for diagnostics about the step
   RecordSpec record;
   std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv
   Instance root;

@@ -7,6 +7,7 @@
 
 #include "models/coupling_graph.hpp"
 #include "models/mechanical_systems.hpp"
+#include "models/stiffness_guard.hpp"
 #include "models/port_types.hpp"
 #include "models/sha256.hpp"
 #include "models/yaml_source.hpp"
@@ -19,7 +20,7 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
                                          "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace"};
+const std::vector<std::string> kRootKeys{"record", "until", "seed", "integrator", "trace", "wp"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
@@ -167,8 +168,9 @@ class Loader {
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
         inst.mechanicsWhere = markOf(mech, f);
-        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "gravity", "water", "wind", "hydrostatics",
-                         "wind_loads", "current_loads", "damping"}, f,
+        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "gravity", "water", "wind",
+                         "hydrostatics", "wind_loads", "current_loads", "damping", "drive_bandwidth",
+                         "drive_max_effort", "drive_tolerance", "equilibrium"}, f,
                   joinKey(kp, "mechanics"), d_);
       }
     }
@@ -465,6 +467,16 @@ class Loader {
       } else {
         s.integrator = n["method"].Scalar();
         if (const YAML::Node dt = n["dt"]) number(dt, "integrator.dt", s.dt, true);
+        s.integratorWhere = markOf(n, f);
+        if (const YAML::Node c = n["stiffness_check"]) {
+          static const std::vector<std::string> kChecks{"warn", "refuse", "off"};
+          const std::string v = c.IsScalar() ? c.Scalar() : "";
+          if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
+            d_.error(markOf(c, f), "integrator.stiffness_check",
+                     "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
+          else
+            s.stiffnessCheck = v;
+        }
       }
     }
     if (const YAML::Node r = doc["record"]) {
@@ -520,6 +532,8 @@ LoadResult loadScene(const fs::path& file) {
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

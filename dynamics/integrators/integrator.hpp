@@ -1,11 +1,22 @@
 #pragma once
-// The small interface between a second-order system on the configuration manifold and a
-// fixed-step integrator. The state is (q, v); dq/dt follows v through the joints' integrate().
+// The interface between a second-order system on the configuration manifold and an integrator.
+// The state is (q, v); dq/dt follows v through the joints' integrate() (configuration.hpp), so
+// quaternions stay unit length whatever the method. Index-3 methods (HHT, generalized-alpha) also
+// use the loop-constraint terms; adaptive methods (SUNDIALS) may locate state events.
 
 #include <Eigen/Core>
+#include <span>
+#include <stdexcept>
 #include <string_view>
 
 namespace yardsim::dynamics {
+
+/// Thrown when the state or the accelerations stop being finite (the message names the body), or
+/// an implicit method's Newton iteration fails.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// dv/dt = a(t, q, v), plus an optional hook after every accepted step (projection, events).
 class AccelerationSource {
@@ -15,14 +26,66 @@ class AccelerationSource {
   virtual void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) = 0;
   /// Called with the new state after each step; may change it (e.g. constraint projection).
   virtual void afterStep(double /*t*/, Eigen::VectorXd& /*q*/, Eigen::VectorXd& /*v*/) {}
+
+  /// Number of loop-constraint rows g(q) = 0 (0: an ODE, the default).
+  virtual int constraintRows() const { return 0; }
+  /// (t, q, v) => the accelerations of the tree without the loop constraints' forces (size nv).
+  virtual void unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                         Eigen::VectorXd& a) {
+    acceleration(t, q, v, a);
+  }
+  /// (q) => g(q) (rows), J = dg/dq (rows x nv) and M^-1 J^T (nv x rows); only when rows > 0.
+  virtual void constraintTerms(const Eigen::VectorXd& /*q*/, Eigen::VectorXd& /*g*/, Eigen::MatrixXd& /*J*/,
+                               Eigen::MatrixXd& /*MinvJt*/) {}
+
+  /// Number of state-event functions located by integrators that find roots (0: none).
+  virtual int eventCount() const { return 0; }
+  /// (t, q, v) => g_j for every event function; an event is a sign change of g_j.
+  virtual void eventFunctions(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/,
+                              std::span<double> /*g*/) {}
+};
+
+/// Work counters of an integrator since construction or resetStats().
+struct IntegratorStats {
+  long steps = 0;       ///< accepted steps (internal steps for adaptive methods)
+  long f_evals = 0;     ///< acceleration (ABA / forward dynamics) evaluations
+  long jac_evals = 0;   ///< Jacobian (iteration matrix) evaluations
+  long newton_its = 0;  ///< Newton (nonlinear solver) iterations
+  long err_fails = 0;   ///< error-test failures (adaptive) or rejected Newton solves
 };
 
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// (t, q, v) => (t + h, q, v) after one step of size h. No allocation.
+  /// (t, q, v) => (t + h, q, v) after one step of size h. No allocation after the first step.
+  /// An adaptive method takes as many internal steps as its tolerances need. With findRoots(true)
+  /// and a source that has event functions, a root finder stops earlier: t is then the located
+  /// time and lastEvent() the function's index.
   virtual void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) = 0;
   virtual std::string_view name() const = 0;
+  /// Forget the history (multistep values, algorithmic accelerations, adaptive step): the next
+  /// step starts afresh. Methods also restart by themselves when a step does not begin where
+  /// the previous one ended (an external event changed the state, or a step is re-taken).
+  virtual void reset() {}
+  /// Whether step() can stop at state events (root finding; the SUNDIALS methods).
+  virtual bool canFindRoots() const { return false; }
+  void findRoots(bool on) { roots_ = on && canFindRoots(); }
+  /// Index of the event function whose root ended the last step, or -1.
+  int lastEvent() const { return lastEvent_; }
+
+  const IntegratorStats& stats() const { return stats_; }
+  void resetStats() { stats_ = {}; }
+
+ protected:
+  /// (t, q, v) => a through the source, counted in stats().f_evals.
+  void evaluate(AccelerationSource& s, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                Eigen::VectorXd& a) {
+    ++stats_.f_evals;
+    s.acceleration(t, q, v, a);
+  }
+  IntegratorStats stats_;
+  bool roots_ = false;
+  int lastEvent_ = -1;
 };
 
 }  // namespace yardsim::dynamics

@@ -20,7 +20,7 @@ void Rk4::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen:
   q0_ = q;
   v0_ = v;
   // stage 1: (t, q0, v0) => a1; theta rate = v0
-  system.acceleration(t, q0_, v0_, a_);
+  evaluate(system, t, q0_, v0_, a_);
   sumTheta_ = v0_;
   sumA_ = a_;
   static constexpr double kC[3] = {0.5, 0.5, 1.0};
@@ -30,7 +30,7 @@ void Rk4::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen:
     theta_ = (kC[s] * h) * (s == 0 ? v0_ : kTheta_);
     integrate(model_, q0_, theta_, 1.0, qs_);
     vs_ = v0_ + (kC[s] * h) * a_;
-    system.acceleration(t + kC[s] * h, qs_, vs_, a_);
+    evaluate(system, t + kC[s] * h, qs_, vs_, a_);
     chartRate(model_, theta_, vs_, kTheta_);
     sumTheta_ += kW[s] * kTheta_;
     sumA_ += kW[s] * a_;
@@ -40,6 +40,7 @@ void Rk4::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen:
   integrate(model_, q0_, theta_, 1.0, q);
   v = v0_ + (h / 6.0) * sumA_;
   t += h;
+  ++stats_.steps;
   system.afterStep(t, q, v);
 }
 

@@ -8,10 +8,11 @@ SemiImplicitEuler::SemiImplicitEuler(const Model& model) : model_(model), a_(mod
 
 void SemiImplicitEuler::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) {
   // (t, q, v) => a; v += h a; q = q (+) h v
-  system.acceleration(t, q, v, a_);
+  evaluate(system, t, q, v, a_);
   v += h * a_;
   integrate(model_, q, v, h, q);
   t += h;
+  ++stats_.steps;
   system.afterStep(t, q, v);
 }
 

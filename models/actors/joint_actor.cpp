@@ -1,6 +1,8 @@
 // Scene type `joint_actor`: drives one joint of a multibody model to a target position at a
-// speed (a bounded servo following a ramp, see multibody_model.hpp); finishes when the model
-// reports the target reached within its tolerance (a located state event).
+// speed, by a bounded servo following a ramp (`mode: servo`, finishing when the model reports
+// the target reached within its tolerance, a located state event) or by prescribing the ramp
+// exactly (`mode: prescribed`, finishing when the ramp ends, a time event); see
+// multibody_model.hpp.
 #include <cmath>
 
 #include "models/actors/actor.hpp"
@@ -10,8 +12,12 @@ namespace {
 
 class JointActor final : public Actor {
  public:
-  JointActor(std::string name, StartRule rule, std::string joint, double target, double speed)
-      : Actor(std::move(name), std::move(rule)), joint_(std::move(joint)), target_(target), speed_(speed) {}
+  JointActor(std::string name, StartRule rule, std::string joint, double target, double speed, bool prescribed)
+      : Actor(std::move(name), std::move(rule)),
+        joint_(std::move(joint)),
+        target_(target),
+        speed_(speed),
+        prescribed_(prescribed) {}
 
  protected:
   void onStart(std::vector<SetPoint>& out) const override {
@@ -20,6 +26,7 @@ class JointActor final : public Actor {
     s.element = joint_;
     s.target = target_;
     s.speed = speed_;
+    s.prescribed = prescribed_;
     out.push_back(s);
   }
   bool finishesOn(const MechanicsEvent& e) const override {
@@ -29,6 +36,7 @@ class JointActor final : public Actor {
  private:
   std::string joint_;
   double target_, speed_;
+  bool prescribed_;
 };
 
 constexpr double kDeg = M_PI / 180.0;
@@ -51,17 +59,22 @@ YARDSIM_REGISTER_TYPE(jointActor, TypeInfo{
           p.push_back({"target_deg", ParamKind::Number, false, "~", "deg", "target angle"});
           p.push_back({"speed", ParamKind::Number, false, "~", "rad/s or m/s", "ramp speed"});
           p.push_back({"speed_deg", ParamKind::Number, false, "~", "deg/s", "ramp speed"});
+          p.push_back({"mode", ParamKind::String, false, "servo", "",
+                       "servo (a bounded controller follows the ramp) or prescribed (the ramp exactly)"});
           return p;
         }(),
     .ports = [](const Params&) { return actorPorts(); },
     .create = [](const std::string& n, const Params& p) -> std::unique_ptr<devs::AtomicBase> {
       return std::make_unique<JointActor>(n, startRule(p), p.string("joint"),
                                           angleOrLength(p, "target", "target_deg"),
-                                          angleOrLength(p, "speed", "speed_deg"));
+                                          angleOrLength(p, "speed", "speed_deg"),
+                                          p.string("mode") == "prescribed");
     },
     .check =
         [](const Params& p, ParamCheck& c) {
           checkStart(p, c);
+          if (p.string("mode") != "servo" && p.string("mode") != "prescribed")
+            c.error("mode", "expected servo or prescribed, got '" + p.string("mode") + "'");
           if (p.node("target").IsNull() == p.node("target_deg").IsNull())
             c.error("target", "give exactly one of target (rad or m) and target_deg");
           if (p.node("speed").IsNull() == p.node("speed_deg").IsNull())

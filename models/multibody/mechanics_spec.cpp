@@ -1,6 +1,8 @@
 #include "models/multibody/mechanics_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "dynamics/model_builder.hpp"
@@ -24,7 +26,7 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
                    "spherical|planar|fixed|free, ...})");
     return;
   }
-  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg"}, key)) return;
+  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg", "hold"}, key)) return;
   if (n["name"]) b.jointName = n["name"].as<std::string>();
   const std::string type = n["type"] && n["type"].IsScalar() ? n["type"].Scalar() : "";
   const Vector3 axis = r.vec3(n["axis"], key + ".axis", Vector3::UnitZ());
@@ -46,6 +48,12 @@ void joint(const Reader& r, const YAML::Node& n, const std::string& key, Mechani
            "unknown joint type '" + type + "'; expected one of fixed, revolute, prismatic, "
            "cylindrical, universal, spherical, planar, free" + (hint.empty() ? "" : " (" + hint + ")"));
     return;
+  }
+  if (const YAML::Node h = n["hold"]) {
+    if (!h.IsScalar() || !YAML::convert<bool>::decode(h, b.hold))
+      r.fail(h, key + ".hold", "expected true or false, got '" + (h.IsScalar() ? h.Scalar() : "a collection") + "'");
+    else if (b.hold && b.joint.nv() != 1)
+      r.fail(h, key + ".hold", "only a 1-dof joint (revolute, prismatic) can be held");
   }
   if ((n["axis"] && axis.norm() < 1e-12) || (n["axis2"] && axis2.norm() < 1e-12))
     r.fail(n["axis"], key + ".axis", "a joint axis must not be zero");
@@ -89,6 +97,22 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   MechanicsSpec spec;
   const Reader top{report, "gravity"};
   spec.gravity = top.vec3(p.node("gravity"), "", spec.gravity);
+  // (optional system-wide settings) => spec.settings
+  auto setting = [&](const char* key, double& value, bool positive) {
+    if (!p.has(key)) return;
+    const Reader sr{report, key};
+    value = sr.number(p.node(key), "", value);
+    if (positive ? !(value > 0) : value < 0)
+      sr.fail(p.node(key), "", positive ? "must be > 0" : "must be >= 0");
+  };
+  setting("drive_bandwidth", spec.settings.driveBandwidth, false);
+  setting("drive_max_effort", spec.settings.driveMaxEffort, false);
+  setting("drive_tolerance", spec.settings.driveTolerance, true);
+  if (p.has("equilibrium")) {
+    const YAML::Node e = p.node("equilibrium");
+    if (!e.IsScalar() || !YAML::convert<bool>::decode(e, spec.settings.equilibrium))
+      Reader{report, "equilibrium"}.fail(e, "", "expected true or false");
+  }
 
   const Reader r{report, "bodies"};
   const YAML::Node bodies = p.node("bodies");
@@ -253,6 +277,91 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   } else if (eqs.IsDefined() && !eqs.IsNull()) {
     er.fail(eqs, "", "expected a mapping of equalizers");
   }
+
+  // (loads: name: {body, point, frame, series}) => body loads
+  const YAML::Node loads = p.has("loads") ? p.node("loads") : YAML::Node();
+  const Reader ldr{report, "loads"};
+  if (loads.IsMap()) {
+    for (auto it = loads.begin(); it != loads.end(); ++it) {
+      MechanicsSpec::Load l;
+      l.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      if (!ldr.keys(n, {"body", "point", "frame", "series"}, l.name)) continue;
+      l.body = n["body"] && n["body"].IsScalar() ? n["body"].Scalar() : "";
+      if (l.body.empty()) ldr.fail(n, l.name, "missing required key 'body'");
+      else if (!names.count(l.body) || l.body == "world")
+        ldr.fail(n["body"], l.name + ".body", "unknown body '" + l.body + "'");
+      l.point = ldr.vec3(n["point"], l.name + ".point", Vector3::Zero());
+      const std::string frame = n["frame"] && n["frame"].IsScalar() ? n["frame"].Scalar() : "world";
+      if (frame != "world" && frame != "body")
+        ldr.fail(n["frame"], l.name + ".frame", "expected world or body, got '" + frame + "'");
+      l.bodyFrame = frame == "body";
+      const YAML::Node series = n["series"];
+      if (!series.IsSequence() || series.size() == 0) {
+        ldr.fail(series, l.name + ".series", "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
+        continue;
+      }
+      double last = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < series.size(); ++i) {
+        const std::string k = l.name + ".series[" + std::to_string(i) + "]";
+        const auto row = ldr.numbers(series[i], k, 7);
+        std::array<double, 7> sample{};
+        std::copy(row.begin(), row.end(), sample.begin());
+        if (sample[0] < last) ldr.fail(series[i], k, "times must not decrease");
+        last = sample[0];
+        l.series.push_back(sample);
+      }
+      spec.loads.push_back(std::move(l));
+    }
+  } else if (loads.IsDefined() && !loads.IsNull()) {
+    ldr.fail(loads, "", "expected a mapping of body loads");
+  }
+
+  // (watch: name: {channel, above | below}) => watched quantities
+  const YAML::Node watch = p.has("watch") ? p.node("watch") : YAML::Node();
+  const Reader wr{report, "watch"};
+  if (watch.IsMap()) {
+    const std::vector<std::string> quantities{"q", "v", "x", "y", "z", "roll", "pitch", "yaw", "tension", "length"};
+    for (auto it = watch.begin(); it != watch.end(); ++it) {
+      MechanicsSpec::Watch w;
+      w.name = it->first.as<std::string>();
+      const YAML::Node n = it->second;
+      if (!wr.keys(n, {"channel", "above", "below"}, w.name)) continue;
+      const std::string channel = n["channel"] && n["channel"].IsScalar() ? n["channel"].Scalar() : "";
+      const auto dot = channel.rfind('.');
+      if (dot == std::string::npos || dot == 0) {
+        wr.fail(n["channel"], w.name + ".channel",
+                "expected <element>.<quantity>, e.g. block.roll or hoist.tension, got '" + channel + "'");
+        continue;
+      }
+      w.element = channel.substr(0, dot);
+      w.quantity = channel.substr(dot + 1);
+      if (std::find(quantities.begin(), quantities.end(), w.quantity) == quantities.end()) {
+        const std::string hint = didYouMean(w.quantity, quantities);
+        wr.fail(n["channel"], w.name + ".channel",
+                "cannot watch '" + w.quantity + "'; expected q, v (joints), x, y, z, roll, pitch, yaw "
+                "(bodies), tension, length (ropes)" + (hint.empty() ? "" : " (" + hint + ")"));
+      }
+      if (bool(n["above"]) == bool(n["below"])) {
+        wr.fail(n, w.name, "give exactly one of above and below (the threshold, in the quantity's SI unit)");
+        continue;
+      }
+      w.above = bool(n["above"]);
+      w.threshold = wr.number(w.above ? n["above"] : n["below"], w.name + (w.above ? ".above" : ".below"), 0.0);
+      // (element) => one of this spec's joints, bodies or ropes (a fragment resolves it later)
+      std::vector<std::string> elements;
+      for (const auto& b : spec.bodies) elements.insert(elements.end(), {b.name, b.jointName});
+      for (const auto& rope : spec.ropes) elements.push_back(rope.name);
+      if (std::find(elements.begin(), elements.end(), w.element) == elements.end()) {
+        const std::string hint = didYouMean(w.element, elements);
+        wr.fail(n["channel"], w.name + ".channel",
+                "unknown element '" + w.element + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+      }
+      spec.watches.push_back(std::move(w));
+    }
+  } else if (watch.IsDefined() && !watch.IsNull()) {
+    wr.fail(watch, "", "expected a mapping of watched quantities");
+  }
   parseFloating(p, report, names, spec);
   return spec;
 }
@@ -264,19 +373,23 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
-  BuiltMechanics out{builder.build(), {}, {}, {}, spec.ropes, spec.equalizers, spec};
+  BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, spec.loads, spec.watches, spec};
   out.environment.bodies.clear();
   out.environment.loops.clear();
   out.environment.ropes.clear();
   out.environment.equalizers.clear();
+  out.environment.loads.clear();
+  out.environment.watches.clear();
   const auto& m = out.model;
   out.q0 = Eigen::VectorXd::Zero(m.nq);
   out.v0 = Eigen::VectorXd::Zero(m.nv);
   out.jointNames.assign(static_cast<std::size_t>(m.nbodies), "");
+  out.hold.assign(static_cast<std::size_t>(m.nbodies), 0);
   for (int i = 1; i < m.nbodies; ++i) dynamics::jointNeutral(m.joints[i], out.q0.data() + m.idxQ[i]);
   for (const auto& b : spec.bodies) {
     const int i = m.bodyIndex(b.name);
     out.jointNames[static_cast<std::size_t>(i)] = b.jointName;
+    out.hold[static_cast<std::size_t>(i)] = b.hold ? 1 : 0;
     for (std::size_t k = 0; k < b.q0.size(); ++k) out.q0[m.idxQ[i] + static_cast<int>(k)] = b.q0[k];
     for (std::size_t k = 0; k < b.v0.size(); ++k) out.v0[m.idxV[i] + static_cast<int>(k)] = b.v0[k];
   }

@@ -3,6 +3,7 @@
 // inertia about the centre of mass), the joint attaching each to its parent and where, loop
 // closures, initial state, gravity, step — parsed and checked with positions, then built into
 // an immutable dynamics::Model with its initial q and v.
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -32,6 +33,7 @@ struct MechanicsSpec {
     dynamics::Vector3 com = dynamics::Vector3::Zero();
     dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
     std::vector<double> q0, v0;  // empty: neutral / at rest
+    bool hold = false;           // a 1-dof joint's servo holds q0 until an actor drives it (brake)
   };
   struct Loop {
     std::string name, bodyA, bodyB;
@@ -55,6 +57,28 @@ struct MechanicsSpec {
     std::vector<std::vector<Point>> branches;  // per branch: sheaves..., end
     Material material;                         // l0: all branches together
   };
+  // System-wide settings: the `multibody` type's params, or the scene root's `mechanics:`
+  struct Settings {
+    double driveBandwidth = 0.0;  // rad/s; 0: min(10, 0.1/dt)
+    double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
+    double driveTolerance = 1e-3; // rad or m
+    bool equilibrium = false;     // start from static equilibrium instead of the given q0
+  };
+  // A force and moment history on a body (forces/body_load.hpp): rows [t, fx, fy, fz, mx, my, mz]
+  // in the world or the body frame, at a point fixed on the body; linear between rows.
+  struct Load {
+    std::string name, body;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();  // body frame
+    bool bodyFrame = false;
+    std::vector<std::array<double, 7>> series;
+  };
+  // A quantity watched for a threshold crossing, reported as a located state event `crossed`:
+  // `<joint>.q|v`, `<body>.x|y|z|roll|pitch|yaw`, `<rope>.tension|length`.
+  struct Watch {
+    std::string name, element, quantity;
+    double threshold = 0.0;
+    bool above = true;  // fires when the quantity rises above (or falls below) the threshold
+  };
   // hydrostatics on a body: its hull mesh, read, checked and placed in the body frame
   struct Hull {
     std::string name, body;
@@ -73,6 +97,9 @@ struct MechanicsSpec {
     forces::DampingCoefficients coefficients;
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
+  Settings settings;
+  std::vector<Load> loads;
+  std::vector<Watch> watches;
   std::vector<Body> bodies;
   std::vector<Loop> loops;
   std::vector<Rope> ropes;
@@ -93,15 +120,20 @@ using MechanicsReport =
     std::function<void(const std::string& param, const YAML::Node& at, const std::string& key,
                        const std::string& message)>;
 
-// (params gravity, bodies, loops) => spec; every problem reported with its node
+// (params gravity, bodies, loops, ropes, equalizers and, when present, loads, watch and the
+// settings drive_bandwidth, drive_max_effort, drive_tolerance, equilibrium) => spec; every
+// problem reported with its node
 MechanicsSpec parseMechanics(const Params& params, const MechanicsReport& report);
 
 struct BuiltMechanics {
   dynamics::Model model;
   Eigen::VectorXd q0, v0;
   std::vector<std::string> jointNames;  // per body index (0: world, "")
+  std::vector<char> hold;               // per body index: the joint starts held (brake)
   std::vector<MechanicsSpec::Rope> ropes;
   std::vector<MechanicsSpec::Equalizer> equalizers;
+  std::vector<MechanicsSpec::Load> loads;
+  std::vector<MechanicsSpec::Watch> watches;
   MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
 };
 

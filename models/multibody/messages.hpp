@@ -16,6 +16,9 @@ struct SetPoint {
   // JointTarget: drive the joint to `target` (rad or m) at `speed` (rad/s or m/s, > 0)
   // WinchPayout: change the rope's unstretched length by `amount` (m, < 0 hoists) at `speed`
   double target = 0.0, speed = 0.0, amount = 0.0;
+  // JointTarget: true: the joint's motion is prescribed (the ramp exactly, whatever it takes);
+  // false: a bounded servo follows the ramp
+  bool prescribed = false;
   // BodyLoad: force (N) and moment (N m) in the world frame at the body origin (zero: release)
   double force[3] = {0, 0, 0}, moment[3] = {0, 0, 0};
 };
@@ -25,7 +28,7 @@ struct SetPoint {
 struct MechanicsEvent {
   std::string element;
   std::string actor;  // the actor whose set-point it answers ("" for watches)
-  std::string what;   // "reached", "done", "crossed"
+  std::string what;   // "reached", "done", "over_mbl", "taut", "slack" (a rope's transitions)
   double value = 0.0;
 };
 

@@ -10,6 +10,8 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
+#include "dynamics/static_equilibrium.hpp"
+#include "models/multibody/providers.hpp"
 #include "forces/current_load.hpp"
 #include "forces/wind_load.hpp"
 #include "models/numerical_error.hpp"
@@ -23,10 +25,17 @@ std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
 }
 
 namespace {
+// (mechanics) => initial state; held joints (brakes) start with a drive holding q0
 MultibodyState initialState(const BuiltMechanics& m) {
   const auto n = static_cast<std::size_t>(m.model.nbodies);
-  return {m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n),
-          std::vector<WinchJob>(m.ropes.size()), 0.0};
+  MultibodyState x{m.q0, m.v0, std::vector<JointDrive>(n), std::vector<BodyLoad>(n),
+                   std::vector<WinchJob>(m.ropes.size()), 0.0, std::vector<double>(m.ropes.size(), 0.0)};
+  for (std::size_t i = 1; i < n; ++i)
+    if (m.hold[i]) {
+      const double q = m.q0[m.model.idxQ[i]];
+      x.drives[i] = JointDrive{true, true, q, q, 0.0, 0.0, "", false};
+    }
+  return x;
 }
 }  // namespace
 
@@ -35,41 +44,47 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       mech_(std::move(mechanics)),
       opt_(options),
-      directions_(static_cast<std::size_t>(mech_.model.nbodies) + mech_.ropes.size(),
+      directions_(static_cast<std::size_t>(mech_.model.nbodies) + 2 * mech_.ropes.size() + mech_.watches.size(),
                   dtss::Crossing::Rising),
       system_(mech_.model),
       view_(mech_.model),
       feedforward_(mech_.model),
+      reaction_(mech_.model),
       scratch_(mech_.model),
       spForces_(mech_.model),
-      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+      spTau_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      prescribedMask_(static_cast<std::size_t>(mech_.model.nv), 0),
+      prescribedAcc_(Eigen::VectorXd::Zero(mech_.model.nv)),
+      accelScratch_(Eigen::VectorXd::Zero(mech_.model.nv)) {
+  // (ropes) => their slack/taut transitions are events both ways (after the MBL watches)
+  const auto slack = directions_.begin() + mech_.model.nbodies + static_cast<std::ptrdiff_t>(mech_.ropes.size());
+  std::fill(slack, slack + static_cast<std::ptrdiff_t>(mech_.ropes.size()), dtss::Crossing::Both);
   // (rope and equalizer specs) => providers, evaluated at every stage
-  auto attach = [&](const MechanicsSpec::Point& p) {
-    return forces::Attachment{mech_.model.bodyIndex(p.first), p.second};
-  };
-  auto properties = [](const MechanicsSpec::Material& m) {
-    forces::RopeProperties props;
-    props.ea = m.ea;
-    props.l0 = m.l0;
-    props.damping = m.damping;
-    props.minLength = m.minLength;
-    if (m.mbl > 0) props.breakingLoad = m.mbl;
-    return props;
-  };
-  for (const auto& r : mech_.ropes) {
-    std::vector<forces::Attachment> path;
-    for (const auto& p : r.path) path.push_back(attach(p));
-    ropes_.push_back(std::make_unique<forces::WireRope>(r.name, mech_.model, path,
-                                                        properties(r.material), r.parts));
+  Providers providers = makeProviders(mech_, mech_.model);
+  ropes_ = std::move(providers.ropes);
+  equalizers_ = std::move(providers.equalizers);
+  for (const auto& l : mech_.loads) {
+    bodyLoads_.push_back(std::make_unique<forces::BodyLoad>(l.name, mech_.model, mech_.model.bodyIndex(l.body), l.point,
+                                                        l.bodyFrame ? forces::LoadFrame::Body : forces::LoadFrame::World));
+    bodyLoads_.back()->setTable(l.series);
   }
-  for (const auto& e : mech_.equalizers) {
-    std::vector<std::vector<forces::Attachment>> branches;
-    for (const auto& b : e.branches) {
-      branches.emplace_back();
-      for (const auto& p : b) branches.back().push_back(attach(p));
-    }
-    equalizers_.push_back(std::make_unique<forces::Equalizer>(
-        e.name, mech_.model, attach(e.sheave), branches, properties(e.material)));
+  // (watches) => what each reads
+  for (const auto& w : mech_.watches) {
+    using K = WatchRef::Kind;
+    WatchRef ref{K::Q, -1, 0};
+    const int joint = jointBody(w.element), body = mech_.model.bodyIndex(w.element), rope = ropeIndex(w.element);
+    const std::string& q = w.quantity;
+    if (joint > 0 && (q == "q" || q == "v"))
+      ref = {q == "q" ? K::Q : K::V, q == "q" ? mech_.model.idxQ[joint] : mech_.model.idxV[joint], 0};
+    else if (body > 0 && (q == "x" || q == "y" || q == "z"))
+      ref = {K::Position, body, q == "x" ? 0 : q == "y" ? 1 : 2};
+    else if (body > 0 && (q == "roll" || q == "pitch" || q == "yaw"))
+      ref = {K::Angle, body, q == "roll" ? 0 : q == "pitch" ? 1 : 2};
+    else if (rope >= 0 && (q == "tension" || q == "length"))
+      ref = {q == "tension" ? K::Tension : K::Length, rope, 0};
+    else
+      throw std::invalid_argument("watch '" + w.name + "': '" + w.element + "' has no quantity '" + q + "'");
+    watchRefs_.push_back(ref);
   }
   // (floating-body specs) => hydrostatics on one sea, wind and current loads, damping
   const MechanicsSpec& env = mech_.environment;
@@ -99,6 +114,7 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   for (auto& h : hydros_) loads_.push_back(h.get());
   for (auto& f : flows_) loads_.push_back(f.get());
   for (auto& d : dampers_) loads_.push_back(d.get());
+  for (auto& b : bodyLoads_) loads_.push_back(b.get());
   if (opt_.method == "semi_implicit_euler")
     integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
   else
@@ -111,15 +127,64 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   servoInertia_.assign(static_cast<std::size_t>(mech_.model.nbodies), 0.0);
   for (int i = 1; i < mech_.model.nbodies; ++i)
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
-  system_.setForces([this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           const dynamics::Data& d, dynamics::ExternalForces& f,
-                           Eigen::VectorXd& tau) {
+  forces_ = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                   const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+    ++counters_.fEvals;
     const forces::Stage stage{t, mech_.model, d, q, v};
+    if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
     for (auto& e : equalizers_) e->evaluate(stage, f, tau);
     for (forces::ForceProvider* l : loads_) l->evaluate(stage, f, tau);
     setPointForces(t, q, v, d, f, tau);
-  });
+  };
+  system_.setForces(forces_);
+  if (opt_.equilibrium) settle();
+  // (initial state) => the rope tensions it starts with are the first peaks
+  MultibodyState& x0 = mutableState().x;
+  dynamics::forwardKinematics(mech_.model, scratch_, x0.q, x0.v);
+  const forces::Stage stage{0.0, mech_.model, scratch_, x0.q, x0.v};
+  for (std::size_t r = 0; r < ropes_.size(); ++r) x0.peakTension[r] = ropes_[r]->tension(stage);
+  // (initial state) => the energy balance and the bound on its rise (multibody_blowup.cpp)
+  balance0_ = energyOf(state().x, 0.0, scratch_);
+  energyBound_ = opt_.energyGrowthLimit * energyScale();
+}
+
+void MultibodyModel::settle() {
+  // (q0, forces at rest) => q0 moved to static equilibrium; holds follow their joints
+  MultibodyState& x = mutableState().x;
+  current_ = &x;
+  const auto r = dynamics::solveStaticEquilibrium(mech_.model, system_, 0.0, x.q);
+  current_ = nullptr;
+  if (!r.converged)
+    throw NumericalError("multibody '" + path() + "'", 0.0,
+                         "no static equilibrium found from the given initial state (max |a| = " +
+                             std::to_string(r.residual) + " after " + std::to_string(r.iterations) +
+                             " Newton iterations)",
+                         "start closer to equilibrium, hold the joints that have no stiffness, or "
+                         "set equilibrium: false");
+  x.v.setZero();
+}
+
+bool MultibodyModel::prescribedDofs(const MultibodyState& x) const {
+  bool any = false;
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    const bool on = x.drives[i].active && x.drives[i].prescribed;
+    if (mech_.model.jointNv[i] == 1) prescribedMask_[static_cast<std::size_t>(mech_.model.idxV[i])] = on ? 1 : 0;
+    any = any || on;
+  }
+  return any;
+}
+
+void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const {
+  // (dv on the prescribed dofs) => every dof's velocity after the impulse; its work = the change
+  // of kinetic energy
+  const auto& m = mech_.model;
+  const double before = dynamics::kineticEnergy(m, scratch_, x.q, x.v);
+  prescribedDofs(x);
+  system_.hybrid().setPrescribed(prescribedMask_);
+  system_.hybrid().velocityStep(scratch_, x.q, x.v, dv);
+  x.work += dynamics::kineticEnergy(m, scratch_, x.q, x.v) - before;
+  powerState_ = nullptr;
 }
 
 int MultibodyModel::jointBody(const std::string& joint) const {
@@ -140,7 +205,7 @@ void MultibodyModel::setPointForces(double t, const Eigen::VectorXd& q, const Ei
   for (int i = 1; i < m.nbodies; ++i) {
     // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
     const JointDrive& d = x.drives[i];
-    if (d.active) {
+    if (d.active && !d.prescribed) {
       const int iq = m.idxQ[i], iv = m.idxV[i];
       const double dir = d.target >= d.start ? 1.0 : -1.0;
       const double travel = std::abs(d.target - d.start);
@@ -175,19 +240,27 @@ double MultibodyModel::nonConservativePower(const MultibodyState& x, double t) c
   spForces_.clear();
   spTau_.setZero();
   setPointForces(t, x.q, x.v, scratch_, spForces_, spTau_);
-  current_ = saved;
   p += spTau_.dot(x.v);
+  if (prescribedDofs(x)) {  // (prescribed dofs) => the power of the effort that enforces them
+    system_.acceleration(t, x.q, x.v, accelScratch_);
+    p += system_.prescribedEffort().dot(x.v);
+  }
+  current_ = saved;
   for (int b = 1; b < m.nbodies; ++b) p += spForces_.inBodyFrame(scratch_, b).dot(scratch_.V[b]);
   return p;
 }
 
 void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
-  // (power at both ends of the step) => the work of non-conservative forces, trapezoidal
-  const double p0 = nonConservativePower(x, t);
+  // (power at both ends of the step) => the work of non-conservative forces, trapezoidal; the
+  // power at the start is the one computed at the end of the previous step when nothing changed
+  for (auto& l : bodyLoads_) l->setStepStart(t);
+  const double p0 = powerState_ == &x && powerTime_ == t ? power_ : nonConservativePower(x, t);
+  powerState_ = nullptr;
   current_ = &x;
   double time = t;
   try {
     integrator_->step(system_, time, x.q, x.v, dt);
+    ++counters_.steps;
   } catch (const devs::SimulationError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
@@ -195,25 +268,21 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
                          "a smaller dt, softer drives (bandwidth), or an implicit integrator");
   }
   if (x.q.allFinite() && x.v.allFinite()) {
-    x.work += 0.5 * dt * (p0 + nonConservativePower(x, t + dt));
-    return;
+    const double p1 = nonConservativePower(x, t + dt);
+    x.work += 0.5 * dt * (p0 + p1);
+    // (end-of-step kinematics in scratch_) => running peak of every rope's tension
+    const forces::Stage stage{t + dt, mech_.model, scratch_, x.q, x.v};
+    for (std::size_t r = 0; r < ropes_.size(); ++r)
+      x.peakTension[r] = std::max(x.peakTension[r], ropes_[r]->tension(stage));
+    powerState_ = &x;
+    powerTime_ = t + dt;
+    power_ = p1;
   }
-  // (non-finite state) => the first body whose joint went bad
-  const auto& m = mech_.model;
-  int bad = 1;
-  for (int i = 1; i < m.nbodies; ++i)
-    if (!x.q.segment(m.idxQ[i], m.jointNq[i]).allFinite() ||
-        !x.v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
-      bad = i;
-      break;
-    }
-  throw NumericalError("multibody '" + path() + "', body '" + m.names[bad] + "' (joint '" +
-                           mech_.jointNames[bad] + "')",
-                       t + dt, "its state became NaN or infinite",
-                       "a smaller dt, softer drives (bandwidth), or an implicit integrator");
+  checkBlowUp(x, t + dt);
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
+  powerState_ = nullptr;  // set-points change the forces
   for (const SetPoint& s : setpoint.values()) {
     switch (s.kind) {
       case SetPoint::Kind::JointTarget: {
@@ -222,7 +291,20 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
                                       "' names '" + s.element + "', which is not a 1-dof joint here");
         const double q = x.q[mech_.model.idxQ[i]];
-        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor};
+        const bool wasPrescribed = x.drives[i].active && x.drives[i].prescribed;
+        x.drives[i] = JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor, s.prescribed};
+        if (s.prescribed && mech_.model.nc > 0)
+          throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" + s.actor +
+                                      "' on '" + s.element + "' needs a system without loop closures; "
+                                      "use mode: servo");
+        if (s.prescribed || wasPrescribed) {
+          // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
+          const int iv = mech_.model.idxV[i];
+          accelScratch_.setZero();
+          if (s.prescribed) accelScratch_[iv] = (s.target >= q ? 1.0 : -1.0) * std::abs(s.speed) - x.v[iv];
+          if (s.prescribed && s.target == q) accelScratch_[iv] = -x.v[iv];
+          prescribedVelocityStep(x, accelScratch_);
+        }
         break;
       }
       case SetPoint::Kind::BodyLoad: {
@@ -259,10 +341,25 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
   devs::Time next = devs::kInfinity;
   for (const auto& w : x.winches)
     if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  for (const auto& d : x.drives)
+    if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
+  for (const auto& l : bodyLoads_) next = std::min(next, l->nextBreak(t));  // kinks and jumps
   return next;
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
+  powerState_ = nullptr;
+  // (prescribed ramps ending now) => locked exactly at their targets
+  for (int i = 1; i < mech_.model.nbodies; ++i) {
+    JointDrive& d = x.drives[i];
+    if (!d.active || !d.prescribed || d.reported || d.tEnd() > t) continue;
+    const int iq = mech_.model.idxQ[i], iv = mech_.model.idxV[i];
+    x.q[iq] = d.target;
+    accelScratch_.setZero();
+    accelScratch_[iv] = -x.v[iv];
+    prescribedVelocityStep(x, accelScratch_);
+    d.reported = true;
+  }
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -276,7 +373,7 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   g[0] = -1.0;
   for (int i = 1; i < mech_.model.nbodies; ++i) {
     const JointDrive& d = x.drives[i];
-    if (!d.active || d.reported) {
+    if (!d.active || d.reported || d.prescribed) {
       g[i] = -1.0;
       continue;
     }
@@ -284,22 +381,69 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
     g[i] = dir * (x.q[mech_.model.idxQ[i]] - d.target) + opt_.driveTolerance;
   }
   // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
-  if (ropes_.empty()) return;
+  if (ropes_.empty() && watchRefs_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  for (std::size_t r = 0; r < ropes_.size(); ++r) {
+  const auto nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
-    g[static_cast<std::size_t>(mech_.model.nbodies) + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
+    // (rope) => > 0 while taut: a sign change is a slack/taut transition
+    g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
+  // (watches) => > 0 once the quantity is past its threshold in the watched direction
+  for (std::size_t w = 0; w < watchRefs_.size(); ++w) {
+    const auto& spec = mech_.watches[w];
+    const double value = watched(w, x, t);
+    g[nb + 2 * ropes_.size() + w] = spec.above ? value - spec.threshold : spec.threshold - value;
+  }
+}
+
+double MultibodyModel::watched(std::size_t w, const MultibodyState& x, double t) const {
+  const WatchRef& r = watchRefs_[w];
+  using K = WatchRef::Kind;
+  switch (r.kind) {
+    case K::Q: return x.q[r.index];
+    case K::V: return x.v[r.index];
+    case K::Position: return scratch_.X_WB[static_cast<std::size_t>(r.index)].p[r.axis];
+    case K::Angle: return dynamics::bodyEulerAngles(scratch_, r.index)[r.axis];
+    case K::Tension:
+      return ropes_[static_cast<std::size_t>(r.index)]->tension({t, mech_.model, scratch_, x.q, x.v});
+    case K::Length:
+      return ropes_[static_cast<std::size_t>(r.index)]->length({t, mech_.model, scratch_, x.q, x.v});
+  }
+  return 0.0;
 }
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
   const int nb = mech_.model.nbodies;
-  if (r.timeEvent)
+  if (r.timeEvent) {
     for (std::size_t k = 0; k < x.winches.size(); ++k)
       if (x.winches[k].active && x.winches[k].tEnd <= t)
         event.add({ropes_[k]->name(), x.winches[k].actor, "done", ropes_[k]->unstretchedLength(t)});
+    for (int i = 1; i < nb; ++i) {
+      const JointDrive& d = x.drives[i];
+      if (d.active && d.prescribed && !d.reported && d.tEnd() <= t)
+        event.add({mech_.jointNames[i], d.actor, "reached", d.target});
+    }
+  }
   if (r.stateEvent <= 0) return;
+  const int nr = static_cast<int>(ropes_.size());
+  if (r.stateEvent >= nb + 2 * nr) {  // a watched quantity crossed
+    const auto w = static_cast<std::size_t>(r.stateEvent - nb - 2 * nr);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    event.add({mech_.watches[w].name, "", "crossed", watched(w, x, t)});
+    return;
+  }
+  if (r.stateEvent >= nb + nr) {  // a rope went slack or snapped taut: its length then
+    const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
+    dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
+    const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
+    const double rate = ropes_[k]->lengthRate(stage) - ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", rate > 0 ? "taut" : "slack",
+               ropes_[k]->length(stage)});
+    return;
+  }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
     const auto k = static_cast<std::size_t>(r.stateEvent - nb);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
@@ -312,6 +456,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
+  powerState_ = nullptr;
   if (e > 0 && e < mech_.model.nbodies)
     x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }
@@ -337,12 +482,33 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
   return accel_;
 }
 
-double MultibodyModel::energy() const {
+const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
+  // (committed state, its accelerations, every force) => RNEA's joint forces, cached by time
   const auto& s = state();
-  const auto& x = s.x;
-  double e = dynamics::kineticEnergy(mech_.model, view_, x.q, x.v) +
-             dynamics::potentialEnergy(mech_.model, view_, x.q);
-  const forces::Stage stage{s.tx, mech_.model, view_, x.q, x.v};
+  if (reactionTime_ != s.tx) {
+    const Eigen::VectorXd& a = acceleration();
+    current_ = &s.x;
+    spForces_.clear();
+    spTau_.setZero();
+    dynamics::forwardKinematics(mech_.model, scratch_, s.x.q, s.x.v);
+    forces_(s.tx, s.x.q, s.x.v, scratch_, spForces_, spTau_);
+    dynamics::rnea(mech_.model, reaction_, s.x.q, s.x.v, a, &spForces_);
+    reactionTime_ = s.tx;
+  }
+  return reaction_.F_W;
+}
+
+double MultibodyModel::energy() const { return energyOf(state().x, state().tx, view_); }
+
+double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Data& d) const {
+  // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
+  const auto& m = mech_.model;
+  dynamics::forwardKinematics(m, d, x.q, x.v);
+  double e = 0.0;
+  for (int i = 1; i < m.nbodies; ++i)
+    e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
+         m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+  const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);
   for (const forces::ForceProvider* l : loads_) e += l->potentialEnergy(stage);
@@ -362,6 +528,8 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       out.push_back({j + ".a" + suffix, linear ? "m/s^2" : "rad/s^2",
                      [this, iv] { return acceleration()[iv]; }});
     }
+    if (m.nc == 0 && m.jointNv[i] < 6)  // (joint) => magnitude of the force it transmits
+      out.push_back({j + ".reaction", "N", [this, i] { return jointForces()[i].tail<3>().norm(); }});
     const std::string& b = m.names[i];
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k)
@@ -382,6 +550,7 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back({n + ".length", "m", [this, r, stage] { return ropes_[r]->length(stage()); }});
     out.push_back({n + ".unstretched_length", "m",
                    [this, r] { return ropes_[r]->unstretchedLength(state().tx); }});
+    out.push_back({n + ".peak_tension", "N", [this, r] { return state().x.peakTension[r]; }});
   }
   for (std::size_t k = 0; k < equalizers_.size(); ++k) {
     const forces::Equalizer& e = *equalizers_[k];
@@ -394,6 +563,15 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     for (int j = 0; j < e.branchCount(); ++j)
       out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
                      [&e, stage, j] { return e.branchLength(stage(), j); }});
+  }
+  for (std::size_t k = 0; k < bodyLoads_.size(); ++k) {
+    const forces::BodyLoad& l = *bodyLoads_[k];
+    const char* comps[6] = {"fx", "fy", "fz", "mx", "my", "mz"};
+    for (int c = 0; c < 6; ++c)
+      out.push_back({l.name() + "." + comps[c], c < 3 ? "N" : "N m", [this, &l, c] {
+                       const auto s = l.at(state().tx);
+                       return c < 3 ? s.force[c] : s.moment[c - 3];
+                     }});
   }
   floatingChannels(out);
   // (system-wide quantities) => under the model's own name when element names are paths

@@ -4,6 +4,8 @@
 // fixed-step integrator at step dt; joint drives and body loads set by actors through the
 // `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
 // reaches its target is a located state event, reported on the `event` port.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -14,6 +16,7 @@
 #include "dtss/atomic.hpp"
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/body_load.hpp"
 #include "forces/equalizer.hpp"
 #include "forces/flow_load.hpp"
 #include "forces/hydrostatics.hpp"
@@ -25,12 +28,16 @@
 
 namespace yardsim::models {
 
-// A joint driven towards a target by a bounded servo following a ramp at a given speed.
+// A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
+// motion prescribed (the ramp exactly; the joint is locked at the target afterwards).
 struct JointDrive {
   bool active = false;
   bool reported = false;  // the "reached" event was sent
   double start = 0.0, target = 0.0, speed = 0.0, t0 = 0.0;
   std::string actor;
+  bool prescribed = false;
+  // (ramp) => when a prescribed ramp ends
+  double tEnd() const { return t0 + std::max(std::abs(target - start) / speed, 1e-9); }
 };
 
 // A winch job on a rope: paying out (or hauling in) until tEnd.
@@ -51,6 +58,7 @@ struct MultibodyState {
   std::vector<BodyLoad> loads;     // per body index
   std::vector<WinchJob> winches;   // per rope
   double work = 0.0;               // J: integral of the power of non-conservative forces
+  std::vector<double> peakTension; // N per rope part: the largest tension at any step so far
 };
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
@@ -61,7 +69,19 @@ struct MultibodyOptions {
   double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
   bool projectLoops = true;     // project q and v onto the loop manifold after each step
+  bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
+  // blow-up bounds (docs/numerics.md): the energy balance may rise by at most this fraction of
+  // the system's energy scale (total weight x its size, plus its initial kinetic and strain
+  // energy); a loop residual may reach at most this, m (or rad)
+  double energyGrowthLimit = 1.0;
+  double loopResidualLimit = 1e-3;
+};
+
+// Work done by the integrator since construction (for `yardsim wp`).
+struct MultibodyCounters {
+  std::uint64_t steps = 0;   // accepted steps
+  std::uint64_t fEvals = 0;  // right-hand-side evaluations: forces + ABA
 };
 
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable {
@@ -75,6 +95,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   bool channelNamesArePaths() const override { return opt_.elementPaths; }
   // (committed state) => kinetic + gravity potential + stored (rope) energy, J
   double energy() const;
+  // (state, time, workspace) => its kinetic + gravity potential + stored energy, J
+  double energyOf(const MultibodyState& x, double t, dynamics::Data& d) const;
   // (state) => power of the non-conservative forces (rope damping and winches, drives, loads), W
   double nonConservativePower(const MultibodyState& x, double t) const;
   const forces::WireRope& rope(std::size_t i) const { return *ropes_[i]; }
@@ -84,6 +106,11 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1
   int jointBody(const std::string& joint) const;
+  // (committed state) => per body, the spatial force its joint transmits to it (world frame,
+  // moment about the world origin first), by RNEA with the accelerations and all forces; trees
+  const std::vector<dynamics::Force>& jointForces() const;
+  const MultibodyCounters& counters() const { return counters_; }
+  const BuiltMechanics& builtMechanics() const { return mech_; }
 
  protected:
   void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;
@@ -104,6 +131,19 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (rope name) => index, or -1
   int ropeIndex(const std::string& name) const;
+  // (initial state) => static equilibrium, or a NumericalError saying why not
+  void settle();
+  // (x's drives) => which dofs have prescribed motion; true when any
+  bool prescribedDofs(const MultibodyState& x) const;
+  // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
+  void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
+  // (state after a step to t) => throws NumericalError when it is not finite, its energy balance
+  // grew beyond the bound or a loop opened (multibody_blowup.cpp)
+  void checkBlowUp(const MultibodyState& x, double t) const;
+  // () => the likely cause of a blow-up: omega_max dt against the method's stability limit
+  std::string likelyCause() const;
+  // () => the energy scale of the blow-up bound, J
+  double energyScale() const;
 
   BuiltMechanics mech_;
   MultibodyOptions opt_;
@@ -114,12 +154,24 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* current_ = nullptr;  // the state being advanced
   mutable dynamics::Data view_;                      // kinematics for channels
   mutable dynamics::Data feedforward_;               // bias forces for the drives
+  mutable dynamics::Data reaction_;                  // RNEA for the joint forces
+  mutable double reactionTime_ = -1.0;
+  dynamics::MultibodySystem::ForceCallback forces_;  // every force, as evaluated in a stage
   mutable Eigen::VectorXd accel_;                    // accelerations for channels
   mutable double accelTime_ = -1.0;
   mutable double viewTime_ = -1.0;
   mutable const MultibodyState* viewState_ = nullptr;
   mutable std::vector<std::unique_ptr<forces::WireRope>> ropes_;
   mutable std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
+  mutable std::vector<std::unique_ptr<forces::BodyLoad>> bodyLoads_;  // time series from YAML
+  // (watch) => the quantity it reads: kind and index (dof, body or rope)
+  struct WatchRef {
+    enum class Kind { Q, V, Position, Angle, Tension, Length } kind;
+    int index, axis;
+  };
+  std::vector<WatchRef> watchRefs_;
+  // (x, t, scratch_ holding x's kinematics) => the watched quantity
+  double watched(std::size_t w, const MultibodyState& x, double t) const;
   // floating bodies: hydrostatics, wind and current loads, damping; `loads_` lists them all
   mutable std::vector<std::unique_ptr<forces::Hydrostatics>> hydros_;
   mutable std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
@@ -132,6 +184,15 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable dynamics::Data scratch_;         // kinematics for power and event functions
   mutable dynamics::ExternalForces spForces_;  // set-point forces, for their power
   mutable Eigen::VectorXd spTau_;
+  // the power at the end of the last step, reused at the start of the next one
+  mutable double powerTime_ = -1.0, power_ = 0.0;
+  mutable std::vector<char> prescribedMask_;  // per dof
+  mutable Eigen::VectorXd prescribedAcc_;     // zero: constant-speed ramps and locks
+  mutable Eigen::VectorXd accelScratch_;
+  mutable const MultibodyState* powerState_ = nullptr;
+  double energyBound_ = 0.0;  // J: largest rise of the energy balance before it is a blow-up
+  double balance0_ = 0.0;     // J: the energy balance at the start
+  mutable MultibodyCounters counters_;
 };
 
 }  // namespace yardsim::models

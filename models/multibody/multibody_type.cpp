@@ -7,8 +7,15 @@ namespace yardsim::models {
 namespace {
 
 MultibodyOptions options(const Params& p) {
-  return {p.number("dt"), p.string("method"), p.number("drive_bandwidth"),
-          p.number("drive_max_effort"), p.number("drive_tolerance"), p.boolean("project_loops")};
+  MultibodyOptions o;
+  o.dt = p.number("dt");
+  o.method = p.string("method");
+  o.driveBandwidth = p.number("drive_bandwidth");
+  o.driveMaxEffort = p.number("drive_max_effort");
+  o.driveTolerance = p.number("drive_tolerance");
+  o.projectLoops = p.boolean("project_loops");
+  o.equilibrium = p.boolean("equilibrium");
+  return o;
 }
 
 // (params) => spec; the first problem thrown (used after validation, so it never throws)
@@ -37,6 +44,10 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             {"equalizers", ParamKind::Any, false, "{}", "",
              "name: {sheave: {body, point}, branches: [[{body, point}, ...], ...], EA, L0, damping, "
              "min_length, mbl}"},
+            {"loads", ParamKind::Any, false, "{}", "",
+             "name: {body, point, frame: world|body, series: [[t, fx, fy, fz, mx, my, mz], ...]}"},
+            {"watch", ParamKind::Any, false, "{}", "",
+             "name: {channel: <element>.<quantity>, above | below: threshold} (a `crossed` event)"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"water", ParamKind::Any, false, "~", "",
              "{density, level, depth, waves: [{height, period, direction_deg, phase_deg}], wave_start, wave_ramp, "
@@ -62,6 +73,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "a drive has reached its target within this"},
             {"project_loops", ParamKind::Boolean, false, "true", "",
              "project q and v onto the loop constraints after every step"},
+            {"equilibrium", ParamKind::Boolean, false, "false", "",
+             "start from static equilibrium (v = 0) found from the given initial state"},
         },
     .ports = [](const Params&) {
       return std::vector<PortSpec>{{"setpoint", "setpoint", true, true},
@@ -101,6 +114,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
           for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
+          for (const auto& w : spec.watches) out.push_back({"watch", w.name, ""});
           for (const auto& h : spec.hulls) out.push_back({"hydrostatics", h.name, ""});
           for (const auto& w : spec.windLoads) out.push_back({"wind_load", w.name, ""});
           for (const auto& c : spec.currentLoads) out.push_back({"current_load", c.name, ""});

@@ -1,6 +1,7 @@
 // The yardsim command, run as a process: every subcommand and every exit status.
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <fstream>
 #include <sys/wait.h>
 
 #include "support/csv_file.hpp"
@@ -138,4 +139,45 @@ until: 10
   CHECK_THAT(r.out, Catch::Contains("numerical failure") && Catch::Contains("multibody 'mechanics'"));
   CHECK_THAT(r.out, Catch::Contains("block") && Catch::Contains("suggestion"));
   CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 1);
+}
+
+TEST_CASE("yardsim wp writes wp.csv, wp.svg and summary.md, and refuses a scene without wp: (exit 1)") {
+  yardsim::testing::SceneDir dir;
+  const std::string head = R"(schema_version: 1
+name: bounce
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  bodies:
+    block: {parent: world, joint: {type: prismatic, axis: [0, 0, 1], q0: -20.015}, mass: 1.0e4, inertia: [1, 1, 1]}
+  ropes:
+    rope: {path: [{body: world, point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], EA: 2.0e8, L0: 20.0}
+until: 1
+)";
+  const auto scene = dir.write("bounce.yaml", head + R"(wp:
+  channels: [block.z]
+  interval: 0.1
+  methods:
+    - {method: rk4, dt0: 0.1, levels: 3}
+    - {method: semi_implicit_euler, dt0: 0.01, levels: 2}
+  reference: {method: rk4, dt: 0.001}
+  check: {method: semi_implicit_euler, dt: 0.0001}
+)");
+  const auto r = runYardsim("wp " + scene.string() + " -o " + dir.file("wp") + " --repeats 1 --quiet");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.out, Catch::Contains("| rk4 |") && Catch::Contains("| semi_implicit_euler |"));
+  std::ifstream csv(dir.path() / "wp" / "wp.csv");
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line ==
+        "scene,method,param,omega_dt,steps,f_evals,jac_evals,newton_its,err_fails,E_final,E_rms,E_max,g_max,"
+        "wall_median_s,status");
+  int rows = 0;
+  while (std::getline(csv, line)) rows += line.rfind("bounce,", 0) == 0;
+  CHECK(rows == 5);
+  CHECK(std::filesystem::exists(dir.path() / "wp" / "wp.svg"));
+  CHECK(std::filesystem::exists(dir.path() / "wp" / "summary.md"));
+  const auto none = runYardsim("wp " + dir.write("plain.yaml", head).string() + " -o " + dir.file("wp2"));
+  CHECK(none.status == 1);
+  CHECK_THAT(none.out, Catch::Contains("no `wp:` block"));
 }

@@ -47,6 +47,15 @@ TEST_CASE("the time series is linear between samples and held outside with steps
   CHECK(load.at(10.0).force.isZero(0.0));  // right-continuous at the step
   CHECK((load.at(15.0).force - Vector3(0.0, 0.0, 5.0)).norm() < 1e-12);
   CHECK((load.at(99.0).force - Vector3(0.0, 0.0, 10.0)).norm() < 1e-12);
+  // the left limit at the step is the value before it; elsewhere both agree
+  CHECK((load.at(10.0, true).force - Vector3(100.0, -50.0, 0.0)).norm() < 1e-12);
+  CHECK(load.at(2.5, true).force == load.at(2.5).force);
+  CHECK(load.at(0.0, true).force.isZero(0.0));
+  // the breaks to land on: every sample time after t
+  CHECK(load.nextBreak(-1.0) == 0.0);
+  CHECK(load.nextBreak(0.0) == 10.0);
+  CHECK(load.nextBreak(10.0) == 20.0);
+  CHECK(std::isinf(load.nextBreak(20.0)));
 }
 
 TEST_CASE("an event sets the load from its exact time on and overrides the rest of the series") {

@@ -119,3 +119,91 @@ TEST_CASE("a scene with mechanics needs an integrator step") {
   const auto r = models::loadScene(dir.write("s.yaml", text));
   CHECK_THAT(r.diagnostics.report(), Catch::Contains("integrator: {method: rk4, dt: 0.01}"));
 }
+
+TEST_CASE("equilibrium: true at the root starts the block hanging still on its stretched ropes") {
+  testing::SceneDir dir;
+  dir.write("crane.yaml", kCrane);
+  std::string text = scene();
+  // start the block 0.3 m too high, where the ropes are slack, and ask for equilibrium
+  const std::string z = std::to_string(kZ);
+  text.replace(text.find(z), z.size(), std::to_string(kZ + 0.3));
+  text.replace(text.find("mechanics:\n  bodies:\n    block:"), 11, "mechanics:\n  equilibrium: true\n");
+  const auto r = models::loadScene(dir.write("s.yaml", text));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  auto root = models::assemble(*r.scene);
+  const auto channels = models::collectChannels(*root);
+  CHECK(channel(channels, "block.z") == Approx(kZ).margin(1e-9));
+  CHECK(channel(channels, "crane1.hoist.tension") == Approx(kT).epsilon(1e-9));
+  devs::Simulator sim(*root);
+  sim.runUntil(0.9);  // before the hoists start: nothing moves
+  CHECK(channel(channels, "block.z") == Approx(kZ).margin(1e-9));
+}
+
+TEST_CASE("system-wide mechanics settings are refused outside the scene root") {
+  testing::SceneDir dir;
+  std::string crane = kCrane;
+  crane.replace(crane.find("mechanics:\n"), 11, "mechanics:\n  equilibrium: true\n");
+  dir.write("crane.yaml", crane);
+  const auto r = models::loadScene(dir.write("s.yaml", scene()));
+  REQUIRE_FALSE(r.scene);
+  CHECK_THAT(r.diagnostics.report(), Catch::Contains("crane.yaml:6:") &&
+                                         Catch::Contains("mechanics.equilibrium") &&
+                                         Catch::Contains("give it in the scene root's mechanics"));
+}
+
+TEST_CASE("an action list: start rules couple the named actors, unknown names are refused") {
+  testing::SceneDir dir;
+  dir.write("crane.yaml", kCrane);
+  std::string text = scene();
+  // a third actor at the root starts when both cranes' hoists have finished (no couplings)
+  text.replace(text.find("  lab:"), 0,
+               "  lower: {type: wire_actor, params: {rope: crane1.hoist, payout: 0.2, speed: 0.1, "
+               "after_all: [crane1.hoist_actor, crane2.hoist_actor]}}\n");
+  const auto r = models::loadScene(dir.write("s.yaml", text));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  auto root = models::assemble(*r.scene);
+  const auto channels = models::collectChannels(*root);
+  devs::Simulator sim(*root);
+  sim.runUntil(5.9);  // the hoists run from 1 s to 6 s: the lowering has not started
+  CHECK(channel(channels, "crane1.hoist.unstretched_length") == Approx(10.0 - 0.49).margin(1e-9));
+  sim.runUntil(8.5);  // started at 6 s, paying out 0.2 m at 0.1 m/s until 8 s
+  CHECK(channel(channels, "crane1.hoist.unstretched_length") == Approx(10.0 - 0.5 + 0.2).margin(1e-9));
+  CHECK(channel(channels, "crane2.hoist.unstretched_length") == Approx(10.0 - 0.5).margin(1e-9));
+
+  text.replace(text.find("crane2.hoist_actor]"), 19, "crane2.hoist_actr]");
+  const auto bad = models::loadScene(dir.write("s.yaml", text));
+  REQUIRE_FALSE(bad.scene);
+  CHECK_THAT(bad.diagnostics.report(), Catch::Contains("components.lower.params.after_all") &&
+                                           Catch::Contains("no actor 'crane2.hoist_actr'") &&
+                                           Catch::Contains("did you mean 'crane2.hoist_actor'?"));
+}
+
+TEST_CASE("watches and loads in fragments resolve like other names, unknown elements are refused") {
+  testing::SceneDir dir;
+  std::string crane = kCrane;
+  crane += R"(  watch:
+    taut: {channel: hoist.tension, above: 1.0e5}
+  loads:
+    gust: {body: block, series: [[0, 0, 0, 0, 0, 0, 0]]}
+)";
+  dir.write("crane.yaml", crane);
+  const auto r = models::loadScene(dir.write("s.yaml", scene()));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  const auto& spec = r.scene->systems[0]->spec;
+  REQUIRE(spec.watches.size() == 2);  // one per crane instance
+  CHECK(spec.watches[0].name == "crane1.taut");
+  CHECK(spec.watches[0].element == "crane1.hoist");
+  REQUIRE(spec.loads.size() == 2);
+  CHECK(spec.loads[1].name == "crane2.gust");
+  CHECK(spec.loads[1].body == "block");
+
+  crane.replace(crane.find("hoist.tension"), 13, "hoits.tension");
+  dir.write("crane.yaml", crane);
+  const auto bad = models::loadScene(dir.write("s.yaml", scene()));
+  REQUIRE_FALSE(bad.scene);
+  CHECK_THAT(bad.diagnostics.report(), Catch::Contains("watch.taut") && Catch::Contains("unknown element 'hoits'") &&
+                                           Catch::Contains("did you mean 'hoist'?"));
+}

@@ -21,6 +21,8 @@ models::Params params(const std::string& yaml) {
   const YAML::Node n = YAML::Load(yaml);
   for (const char* key : {"bodies", "loops", "ropes", "equalizers", "gravity"})
     p.set(key, n[key] ? n[key] : YAML::Load(key == std::string("gravity") ? "[0, 0, -9.81]" : "{}"), {});
+  for (const char* key : {"loads", "watch"})
+    if (n[key]) p.set(key, n[key], {});
   return p;
 }
 
@@ -39,6 +41,41 @@ const char* kRod = R"(bodies:
     com: [0, 0, -0.5]
     inertia: [0.0833333333333333, 0.0833333333333333, 0.001]
 )";
+
+// A test actor: one set-point at time `at`.
+struct Sender final : devs::Atomic<bool> {
+  Sender(models::SetPoint s, devs::Time at) : devs::Atomic<bool>("driver", false), setPoint(std::move(s)), at_(at) {}
+  devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
+  devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : at_; }
+  void output(const bool&) const override { out.add(setPoint); }
+  void internalTransition(bool& sent) const override { sent = true; }
+  void externalTransition(bool&, devs::Time) const override {}
+  models::SetPoint setPoint;
+
+ private:
+  devs::Time at_;
+};
+
+// (hinge set-point) => drive the joint `hinge` to `target` at `speed`, from `driver`
+models::SetPoint driveHinge(double target, double speed, bool prescribed) {
+  models::SetPoint s;
+  s.element = "hinge";
+  s.actor = "driver";
+  s.target = target;
+  s.speed = speed;
+  s.prescribed = prescribed;
+  return s;
+}
+
+// (model, channel name) => its current value
+double channel(const MultibodyModel& mb, const std::string& name) {
+  std::vector<models::Channel> channels;
+  mb.channels(channels);
+  for (const auto& c : channels)
+    if (c.name == name) return c.read();
+  FAIL("no channel " << name);
+  return 0.0;
+}
 
 }  // namespace
 
@@ -70,23 +107,8 @@ TEST_CASE("a joint drive follows its ramp and reports the target as a located st
   opt.dt = 1e-3;
   opt.driveTolerance = 1e-4;
   auto& mb = root.add<MultibodyModel>("pendulum", build(kRod), opt);
-  // a test actor: one set-point at t = 0, while the rod is still level
-  struct Driver final : devs::Atomic<bool> {
-    Driver() : devs::Atomic<bool>("driver", false) {}
-    devs::OutPort<models::SetPoint>& out = addOutPort<models::SetPoint>("out");
-    devs::Time timeAdvance(const bool& sent) const override { return sent ? devs::kInfinity : 0.0; }
-    void output(const bool&) const override {
-      models::SetPoint s;
-      s.element = "hinge";
-      s.actor = "driver";
-      s.target = 0.0;   // from 90 deg down to 0 at 0.5 rad/s
-      s.speed = 0.5;
-      out.add(s);
-    }
-    void internalTransition(bool& sent) const override { sent = true; }
-    void externalTransition(bool&, devs::Time) const override {}
-  };
-  auto& driver = root.add<Driver>();
+  // one set-point at t = 0, while the rod is still level: from 90 deg down to 0 at 0.5 rad/s
+  auto& driver = root.add<Sender>(driveHinge(0.0, 0.5, false), 0.0);
   root.couple(driver.out, mb.setpoint);
   devs::Simulator sim(root);
   testing::RecordCollector rec(false);
@@ -160,14 +182,7 @@ TEST_CASE("a block on an equalizer rests where both branches carry m g l / (2 h)
   devs::Simulator sim(root);
   sim.runUntil(2.0);
   CHECK(mb.state().x.q[0] == Approx(-h).margin(1e-9));
-  std::vector<models::Channel> channels;
-  mb.channels(channels);
-  auto read = [&](const std::string& name) {
-    for (const auto& c : channels)
-      if (c.name == name) return c.read();
-    FAIL("no channel " << name);
-    return 0.0;
-  };
+  auto read = [&](const std::string& name) { return channel(mb, name); };
   CHECK(read("eq.tension") == Approx(T).epsilon(1e-9));
   CHECK(read("eq.branch0.length") == Approx(l).epsilon(1e-9));
   CHECK(read("eq.length") == Approx(L).epsilon(1e-9));
@@ -208,4 +223,126 @@ ropes:
   const std::string& v = warnings[0].value;
   CHECK(std::stod(v.substr(v.find("over_mbl ") + 9)) == Approx(8829.0).epsilon(1e-3));
   (void)mb;
+}
+
+TEST_CASE("a held joint stays where it starts until an actor drives it, a free one falls") {
+  std::string held = kRod;
+  held.replace(held.find("q0_deg: 90}"), 11, "q0_deg: 90, hold: true}");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  devs::Coupled top("top");
+  top.addComponent(std::make_unique<MultibodyModel>("brake", build(held), opt));
+  top.addComponent(std::make_unique<MultibodyModel>("loose", build(kRod), opt));
+  devs::Simulator sim(top);
+  sim.runUntil(1.0);
+  const auto& b = static_cast<const MultibodyModel&>(*top.findComponent("brake"));
+  const auto& l = static_cast<const MultibodyModel&>(*top.findComponent("loose"));
+  CHECK(b.state().x.q[0] == Approx(M_PI / 2).margin(1e-9));  // the servo's feedforward holds gravity
+  CHECK(l.state().x.q[0] < M_PI / 2 - 0.5);                  // horizontal rod: falls freely
+}
+
+TEST_CASE("hold on a joint with more than one degree of freedom is refused") {
+  std::string bad = kRod;
+  bad.replace(bad.find("type: revolute, axis: [0, 1, 0], q0_deg: 90}"), 44, "type: spherical, hold: true}");
+  std::vector<std::string> messages;
+  models::parseMechanics(params(bad), [&](const std::string& param, const YAML::Node&, const std::string& key,
+                                         const std::string& msg) { messages.push_back(param + "." + key + ": " + msg); });
+  REQUIRE(messages.size() == 1);
+  CHECK_THAT(messages[0], Catch::Contains("rod.joint.hold") && Catch::Contains("only a 1-dof joint"));
+}
+
+TEST_CASE("a prescribed joint follows its ramp exactly, drags the free link, and locks at the target") {
+  // a double pendulum: the upper hinge prescribed from 90 deg to 0 at 0.5 rad/s, the lower free
+  const std::string yaml = std::string(kRod) + R"(  link:
+    parent: rod
+    joint: {name: elbow, type: revolute, axis: [0, 1, 0]}
+    placement: {xyz: [0, 0, -1]}
+    mass: 1.0
+    com: [0, 0, -0.5]
+    inertia: [0.0833333333333333, 0.0833333333333333, 0.001]
+)";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 1e-3;
+  auto& mb = root.add<MultibodyModel>("pendulum", build(yaml), opt);
+  auto& driver = root.add<Sender>(driveHinge(0.0, 0.5, true), 0.0);
+  root.couple(driver.out, mb.setpoint);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  auto read = [&](const std::string& n) { return channel(mb, n); };
+  const double balance0 = read("energy_balance");  // at rest, level, before the set-point
+  // (during the ramp) => the hinge angle is the ramp, to round-off; the elbow swings freely
+  sim.runUntil(1.7);
+  const double t1 = mb.state().tx;
+  CHECK(mb.state().x.q[0] == Approx(M_PI / 2 - 0.5 * t1).margin(1e-12));
+  CHECK(mb.state().x.v[0] == Approx(-0.5).margin(1e-12));
+  CHECK(std::abs(mb.state().x.v[1]) > 0.01);
+  sim.runUntil(6.0);
+  // (ramp end) => "reached" exactly when the ramp ends, a time event; locked at 0 afterwards
+  std::vector<testing::Record> reached;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "event") reached.push_back(r);
+  REQUIRE(reached.size() == 1);
+  CHECK(reached[0].t == Approx((M_PI / 2) / 0.5).epsilon(1e-12));
+  CHECK(mb.state().x.q[0] == 0.0);
+  CHECK(mb.state().x.v[0] == 0.0);
+  // (energy) => kinetic + potential - work of the enforcing effort and the impulses is constant
+  // (to the trapezoidal rule's error on the work; the energies are about 10 J)
+  CHECK(std::abs(read("energy_balance") - balance0) < 1e-4);
+  CHECK(std::abs(read("work")) > 1.0);  // the effort did work
+}
+
+TEST_CASE("a body load from a YAML time series: the momentum is its integral, its channels read it") {
+  const char* yaml = R"(gravity: [0, 0, 0]
+bodies:
+  block: {parent: world, joint: {type: free}, mass: 4.0, inertia: [1, 2, 3]}
+loads:
+  push:                       # 0 -> 8 N over 1 s, held for 1 s, then off
+    body: block
+    series: [[0, 0, 0, 0, 0, 0, 0], [1, 8, 0, 0, 0, 0, 0], [2, 8, 0, 0, 0, 0, 0], [2, 0, 0, 0, 0, 0, 0]]
+)";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 0.01;
+  auto& mb = root.add<MultibodyModel>("m", build(yaml), opt);
+  auto read = [&](const std::string& n) { return channel(mb, n); };
+  devs::Simulator sim(root);
+  sim.runUntil(0.5);
+  CHECK(read("push.fx") == Approx(4.0));
+  sim.runUntil(3.0);
+  // impulse 0.5 * 8 * 1 + 8 * 1 = 12 N s on 4 kg; x(t) integrates v: 1/3 + 2 + 3 (RK4 is exact on
+  // these piecewise polynomials, whose kinks fall on grid points)
+  CHECK(mb.state().x.v[3] == Approx(3.0).epsilon(1e-12));
+  CHECK(mb.state().x.q[0] == Approx(16.0 / 3.0).epsilon(1e-12));
+  CHECK(read("push.fx") == 0.0);
+  // all of it became kinetic energy (to the trapezoidal rule the work is integrated with)
+  CHECK(read("work") == Approx(0.5 * 4.0 * 9.0).epsilon(1e-4));
+}
+
+TEST_CASE("a watched quantity crossing its threshold is a located state event, once per crossing") {
+  const std::string yaml = std::string(kRod) + R"(watch:
+  low: {channel: hinge.q, below: 1.0}
+)";
+  devs::Coupled root("root");
+  models::MultibodyOptions opt;
+  opt.dt = 0.01;
+  root.add<MultibodyModel>("pendulum", build(yaml), opt);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  // released level (90 deg), the rod swings through 1 rad on the way down, to -90 deg and back up
+  // past 1 rad (not watched: rising) and down again: within 3 s (period about 2.4 s) two crossings
+  sim.runUntil(3.0);
+  std::vector<testing::Record> crossed;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "event") crossed.push_back(r);
+  REQUIRE(crossed.size() == 2);
+  for (const auto& r : crossed) {
+    // "low crossed <value>" (6 digits): the angle at the located time is the threshold
+    const auto at = r.value.find("low crossed ");
+    REQUIRE(at != std::string::npos);
+    CHECK(std::stod(r.value.substr(at + 12)) == Approx(1.0).margin(1e-5));
+  }
+  CHECK(crossed[1].t - crossed[0].t > 1.5);
 }

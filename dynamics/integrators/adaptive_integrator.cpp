@@ -1,0 +1,145 @@
+#include "dynamics/integrators/adaptive_integrator.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+namespace yardsim::dynamics {
+
+AdaptiveIntegrator::AdaptiveIntegrator(const Model& model, const IntegratorSpec& spec)
+    : model_(model),
+      spec_(spec),
+      chart_(model),
+      q_(model.nq),
+      v_(model.nv),
+      a_(model.nv),
+      qLast_(model.nq),
+      vLast_(model.nv),
+      qOut_(model.nq),
+      vOut_(model.nv) {
+  if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNDIALS: cannot create a context");
+  y_ = N_VNew_Serial(chart_.size(), ctx_);
+  atol_ = N_VNew_Serial(chart_.size(), ctx_);
+  N_VConst(spec.atol, atol_);
+}
+
+AdaptiveIntegrator::~AdaptiveIntegrator() {
+  if (LS_ != nullptr) SUNLinSolFree(LS_);
+  if (A_ != nullptr) SUNMatDestroy(A_);
+  if (atol_ != nullptr) N_VDestroy(atol_);
+  if (y_ != nullptr) N_VDestroy(y_);
+  if (ctx_ != nullptr) SUNContext_Free(&ctx_);
+}
+
+void AdaptiveIntegrator::makeLinearSolver() {
+  if (A_ != nullptr) return;
+  A_ = SUNDenseMatrix(chart_.size(), chart_.size(), ctx_);
+  LS_ = SUNLinSol_Dense(y_, A_, ctx_);
+}
+
+void AdaptiveIntegrator::solverError(const char* module, const char* function, const char* message) {
+  error_ = std::string(module) + "::" + function + ": " + message;
+}
+
+int AdaptiveIntegrator::rightHandSide(double t, N_Vector y, N_Vector ydot, Part part) {
+  try {
+    const double* yv = N_VGetArrayPointer(y);
+    double* out = N_VGetArrayPointer(ydot);
+    // (y) => kinematic half chartRate(theta, v)
+    if (part == Part::Dynamic) std::fill(out, out + model_.nv, 0.0);
+    else chart_.kinematicRate(yv, out);
+    if (part == Part::Kinematic) {
+      std::fill(out + model_.nv, out + 2 * model_.nv, 0.0);
+      return 0;
+    }
+    // (y) => q, v => a(t, q, v), the dynamic half
+    chart_.scatter(yv, q_, v_);
+    evaluate(*source_, t, q_, v_, a_);
+    chart_.dynamicRate(a_, out);
+    return 0;
+  } catch (...) {
+    thrown_ = std::current_exception();
+    return -1;
+  }
+}
+
+int AdaptiveIntegrator::rootFunctions(double t, N_Vector y, double* g) {
+  try {
+    chart_.scatter(N_VGetArrayPointer(y), q_, v_);
+    source_->eventFunctions(t, q_, v_, std::span<double>(g, static_cast<std::size_t>(nroots_)));
+    return 0;
+  } catch (...) {
+    thrown_ = std::current_exception();
+    return -1;
+  }
+}
+
+void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                              double h) {
+  lastEvent_ = -1;
+  // (t, q, v) => continue the solver's history, or re-initialise it at this state
+  const double tol = 1e-9 * std::max(1.0, std::abs(t));
+  const int roots = roots_ ? system.eventCount() : 0;
+  const bool continues = initialised_ && source_ == &system && roots == nroots_ && std::abs(t - tLast_) <= tol &&
+                         q == qLast_ && v == vLast_ && chart_.rotationExtent(N_VGetArrayPointer(y_)) < 1.0;
+  source_ = &system;
+  if (!continues) {
+    nroots_ = roots;
+    found_.assign(static_cast<std::size_t>(roots), 0);
+    chart_.gather(q, v, N_VGetArrayPointer(y_));
+    // (chart origin) => atol + rtol |q*| on the chart coordinates of plain joint coordinates
+    double* atol = N_VGetArrayPointer(atol_);
+    for (int i = 1; i < model_.nbodies; ++i)
+      if (model_.jointNq[i] == model_.jointNv[i])
+        for (int k = 0; k < model_.jointNv[i]; ++k)
+          atol[model_.idxV[i] + k] = spec_.atol + spec_.rtol * std::abs(q[model_.idxQ[i] + k]);
+    init(t, roots);
+    initialised_ = true;
+  }
+  // (solver) => y at t + h, or at the first root before it
+  IntegratorStats c0, c1;
+  counters(c0);
+  double tret = t;
+  error_.clear();
+  const int flag = advance(t + h, tret);
+  counters(c1);
+  stats_.steps += c1.steps - c0.steps;
+  stats_.jac_evals += c1.jac_evals - c0.jac_evals;
+  stats_.newton_its += c1.newton_its - c0.newton_its;
+  stats_.err_fails += c1.err_fails - c0.err_fails;
+  if (thrown_) {
+    initialised_ = false;
+    std::exception_ptr e = thrown_;
+    thrown_ = nullptr;
+    std::rethrow_exception(e);
+  }
+  if (flag < 0) {
+    initialised_ = false;
+    std::ostringstream m;
+    m << name() << " failed at t = " << tret << " s (flag " << flag << ")" << (error_.empty() ? "" : ": ") << error_
+      << "; try looser tolerances, a smaller max_step, or an implicit method (cvode_bdf, arkode_dirk)";
+    throw SimulationError(m.str());
+  }
+  chart_.scatter(N_VGetArrayPointer(y_), q, v);
+  t = tret;
+  if (rootReturn(flag)) {
+    rootInfo(found_.data());
+    for (int j = 0; j < nroots_; ++j)
+      if (found_[static_cast<std::size_t>(j)] != 0) {
+        lastEvent_ = j;
+        break;
+      }
+  }
+  // (after-step hook) => if it moved the state, the solver restarts from the moved state
+  qOut_ = q;
+  vOut_ = v;
+  system.afterStep(t, q, v);
+  if (q != qOut_ || v != vOut_) initialised_ = false;
+  tLast_ = t;
+  qLast_ = q;
+  vLast_ = v;
+}
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,82 @@
+#pragma once
+// What the SUNDIALS integrators (cvode.hpp, arkode.hpp) share: the multibody state as a flat
+// N_Vector through ChartState, the right-hand side and root functions handed to the solver, and
+// the step logic. A step continues the solver's own history (order, step size) while it starts
+// where the previous one ended; otherwise (an external event changed the state, a state event is
+// being located by re-advancing, the post-step projection moved the state, or the chart has
+// rotated more than 1 rad) the solver is re-initialised there. Each step stops exactly at t + h
+// (a stop time), so set-points changing between steps are never integrated across.
+// Tolerances: atol (m, rad, m/s, rad/s) and rtol act on positions and velocities; see atol_.
+
+#include <exception>
+#include <string>
+
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include "dynamics/integrators/chart_state.hpp"
+#include "dynamics/integrators/factory.hpp"
+#include "dynamics/integrators/integrator.hpp"
+
+namespace yardsim::dynamics {
+
+class AdaptiveIntegrator : public Integrator {
+ public:
+  ~AdaptiveIntegrator() override;
+  AdaptiveIntegrator(const AdaptiveIntegrator&) = delete;
+  AdaptiveIntegrator& operator=(const AdaptiveIntegrator&) = delete;
+
+  void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) final;
+  bool canFindRoots() const final { return true; }
+  void reset() final { initialised_ = false; }
+
+  /// Which part of dy/dt a right-hand side returns (IMEX splits kinematics from dynamics).
+  enum class Part { All, Kinematic, Dynamic };
+  /// (t, y) => ydot (the part asked for); 0, or -1 after the source threw (kept for rethrow).
+  int rightHandSide(double t, N_Vector y, N_Vector ydot, Part part);
+  /// (t, y) => g_j; 0, or -1 after the source threw.
+  int rootFunctions(double t, N_Vector y, double* g);
+  /// The last error message of the solver (its error handler).
+  void solverError(const char* module, const char* function, const char* message);
+
+ protected:
+  AdaptiveIntegrator(const Model& model, const IntegratorSpec& spec);
+  /// (y_ at t) => solver created (first call) or re-initialised, tolerances and roots set.
+  virtual void init(double t, int roots) = 0;
+  /// (tout) => y_ at tret; the solver's flag (< 0: failure, root: rootReturn()).
+  virtual int advance(double tout, double& tret) = 0;
+  virtual bool rootReturn(int flag) const = 0;
+  /// (after a root return) => which function crossed (found[j] != 0).
+  virtual void rootInfo(int* found) = 0;
+  /// Cumulative counters of the solver since it was (re)initialised (f_evals is counted here).
+  virtual void counters(IntegratorStats& s) = 0;
+  /// A dense matrix and linear solver for y_, made on first use.
+  void makeLinearSolver();
+
+  const Model& model_;
+  IntegratorSpec spec_;
+  SUNContext ctx_ = nullptr;
+  N_Vector y_ = nullptr;
+  /// Absolute tolerance per component: atol, plus rtol |q*| for the chart coordinate of a joint
+  /// whose q is a plain coordinate, so that rtol acts on positions, not on displacements from q*.
+  N_Vector atol_ = nullptr;
+  SUNMatrix A_ = nullptr;
+  SUNLinearSolver LS_ = nullptr;
+  void* mem_ = nullptr;
+  std::string error_;
+
+ private:
+  ChartState chart_;
+  AccelerationSource* source_ = nullptr;
+  bool initialised_ = false;
+  int nroots_ = 0;  // event functions the solver was initialised with
+  std::exception_ptr thrown_;
+  double tLast_ = 0.0;
+  Eigen::VectorXd q_, v_, a_, qLast_, vLast_, qOut_, vOut_;
+  std::vector<int> found_;
+  std::vector<double> g_;
+};
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,68 @@
+#include "dynamics/integrators/cvode.hpp"
+
+#include <cvode/cvode.h>
+
+namespace yardsim::dynamics {
+
+namespace {
+int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
+  return static_cast<AdaptiveIntegrator*>(self)->rightHandSide(t, y, ydot, AdaptiveIntegrator::Part::All);
+}
+int roots(double t, N_Vector y, double* g, void* self) {
+  return static_cast<AdaptiveIntegrator*>(self)->rootFunctions(t, y, g);
+}
+void onError(int, const char* module, const char* function, char* message, void* self) {
+  static_cast<AdaptiveIntegrator*>(self)->solverError(module, function, message);
+}
+}  // namespace
+
+Cvode::Cvode(const Model& model, const IntegratorSpec& spec)
+    : AdaptiveIntegrator(model, spec), bdf_(spec.method != "cvode_adams") {}
+
+Cvode::~Cvode() {
+  if (mem_ != nullptr) CVodeFree(&mem_);
+}
+
+void Cvode::init(double t, int nroots) {
+  // (y at t) => CVODE created once (tolerances, dense Newton, order, step bound), then re-initialised
+  if (mem_ == nullptr) {
+    mem_ = CVodeCreate(bdf_ ? CV_BDF : CV_ADAMS, ctx_);
+    CVodeInit(mem_, rhs, t, y_);
+    CVodeSetUserData(mem_, this);
+    CVodeSetErrHandlerFn(mem_, onError, this);
+    makeLinearSolver();
+    CVodeSetLinearSolver(mem_, LS_, A_);
+    if (spec_.maxOrder > 0) CVodeSetMaxOrd(mem_, spec_.maxOrder);
+    if (spec_.maxStep > 0) CVodeSetMaxStep(mem_, spec_.maxStep);
+    CVodeSetMaxNumSteps(mem_, 1000000);
+  } else {
+    CVodeReInit(mem_, t, y_);
+  }
+  CVodeSVtolerances(mem_, spec_.rtol, atol_);
+  CVodeRootInit(mem_, nroots, nroots > 0 ? roots : nullptr);
+}
+
+int Cvode::advance(double tout, double& tret) {
+  CVodeSetStopTime(mem_, tout);
+  return CVode(mem_, tout, y_, &tret, CV_NORMAL);
+}
+
+bool Cvode::rootReturn(int flag) const { return flag == CV_ROOT_RETURN; }
+
+void Cvode::rootInfo(int* found) { CVodeGetRootInfo(mem_, found); }
+
+void Cvode::counters(IntegratorStats& s) {
+  long steps = 0, jac = 0, nni = 0, etf = 0;
+  if (mem_ != nullptr) {
+    CVodeGetNumSteps(mem_, &steps);
+    CVodeGetNumJacEvals(mem_, &jac);
+    CVodeGetNumNonlinSolvIters(mem_, &nni);
+    CVodeGetNumErrTestFails(mem_, &etf);
+  }
+  s.steps = steps;
+  s.jac_evals = jac;
+  s.newton_its = nni;
+  s.err_fails = etf;
+}
+
+}  // namespace yardsim::dynamics

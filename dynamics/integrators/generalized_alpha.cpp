@@ -1,0 +1,227 @@
+#include "dynamics/integrators/generalized_alpha.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "dynamics/configuration.hpp"
+
+namespace yardsim::dynamics {
+
+GeneralizedAlphaParameters chungHulbert(double rho) {
+  GeneralizedAlphaParameters p;
+  p.alphaM = (2.0 * rho - 1.0) / (rho + 1.0);
+  p.alphaF = rho / (rho + 1.0);
+  p.gamma = 0.5 + p.alphaF - p.alphaM;
+  p.beta = 0.25 * (p.gamma + 0.5) * (p.gamma + 0.5);
+  return p;
+}
+
+GeneralizedAlpha::GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
+                                   double newtonTol, int maxNewton)
+    : model_(model), p_(p), name_(name), newtonTol_(newtonTol), maxNewton_(maxNewton) {
+  const int n = model.nv;
+  for (Eigen::VectorXd* x : {&bias_, &aAlg_, &ddq_, &ddqOld_, &aNew_, &delta_, &vNew_, &f_, &fp_, &r_, &dx_, &vLast_,
+                             &vp_, &deltaP_})
+    x->setZero(n);
+  for (Eigen::VectorXd* x : {&qNew_, &qLast_, &qp_}) x->setZero(model.nq);
+  Fq_.setZero(n, n);
+  Fv_.setZero(n, n);
+  A_.setZero(n, n);
+  luA_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  resize(0);
+}
+
+void GeneralizedAlpha::resize(int nc) {
+  if (nc == nc_) return;
+  nc_ = nc;
+  const int n = model_.nv;
+  for (Eigen::VectorXd* x : {&g_, &lambda_, &lambdaStart_, &dlambda_, &rc_}) x->setZero(nc);
+  for (Eigen::MatrixXd* x : {&J_, &Jf_}) x->setZero(nc, n);
+  for (Eigen::MatrixXd* x : {&MinvJt_, &MinvJtf_, &AinvMinvJt_}) x->setZero(n, nc);
+  S_.setZero(nc, nc);
+  luS_ = Eigen::FullPivLU<Eigen::MatrixXd>(nc, nc);
+  luS_.setThreshold(1e-10);
+}
+
+void GeneralizedAlpha::start(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                             double h) {
+  // (t, q, v) => ddq_0 (with the loops' forces); a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0, the
+  // perturbed starting value of Arnold & Bruls, dddq_0 by a forward difference along (v, ddq_0)
+  evaluate(system, t, q, v, ddqOld_);
+  aAlg_ = ddqOld_;
+  const double shift = (p_.alphaM - p_.alphaF) * h;
+  if (shift != 0.0) {
+    const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) /
+                       std::max(1.0, std::max(v.lpNorm<Eigen::Infinity>(), ddqOld_.lpNorm<Eigen::Infinity>()));
+    integrate(model_, q, v, eps, qp_);
+    vp_ = v + eps * ddqOld_;
+    evaluate(system, t + eps, qp_, vp_, aNew_);
+    aAlg_ += (shift / eps) * (aNew_ - ddqOld_);
+  }
+  lambda_.setZero();
+  started_ = true;
+}
+
+void GeneralizedAlpha::chartBias(const Eigen::VectorXd& v) {
+  // (v) => b = d/dtheta chartRate(theta, v) v at theta = 0, by a central difference: the second
+  // derivative of the chart coordinate beyond a (w x v for the translation of a free joint)
+  if (model_.euclidean) return;
+  const double eps = 1e-4 / std::max(1.0, v.lpNorm<Eigen::Infinity>());
+  deltaP_ = eps * v;
+  chartRate(model_, deltaP_, v, bias_);
+  deltaP_ = -eps * v;
+  chartRate(model_, deltaP_, v, fp_);
+  bias_ = (bias_ - fp_) / (2.0 * eps);
+}
+
+void GeneralizedAlpha::update(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h) {
+  // (ddq_{n+1}, a_n, ddq_n) => a_{n+1}; (q_n, v_n) => q_{n+1}, v_{n+1}
+  aNew_ = ((1.0 - p_.alphaF) * ddq_ + p_.alphaF * ddqOld_ - p_.alphaM * aAlg_) / (1.0 - p_.alphaM);
+  delta_ = h * v + (0.5 * h * h) * bias_ + (h * h * (0.5 - p_.beta)) * aAlg_ + (h * h * p_.beta) * aNew_;
+  integrate(model_, q, delta_, 1.0, qNew_);
+  vNew_ = v + (h * (1.0 - p_.gamma)) * aAlg_ + (h * p_.gamma) * aNew_;
+}
+
+void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h) {
+  // (q_{n+1}, v_{n+1} of the predictor) => f, then f_q (through the chart at q_n) and f_v column by column
+  // (with loops, the constraint force M^-1 J^T lambda is part of f here: quadratic convergence)
+  ++stats_.jac_evals;
+  ++stats_.f_evals;
+  system.unconstrainedAcceleration(t + h, qNew_, vNew_, f_);
+  if (nc_ > 0) {
+    system.constraintTerms(qNew_, g_, Jf_, MinvJtf_);
+    f_.noalias() += MinvJtf_ * lambda_;
+  }
+  const double eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  for (int i = 0; i < model_.nv; ++i) {
+    const double dqi = eps * std::max(1.0, std::abs(delta_[i]));
+    deltaP_ = delta_;
+    deltaP_[i] += dqi;
+    integrate(model_, q, deltaP_, 1.0, qp_);
+    ++stats_.f_evals;
+    system.unconstrainedAcceleration(t + h, qp_, vNew_, fp_);
+    if (nc_ > 0) {
+      system.constraintTerms(qp_, g_, J_, MinvJt_);
+      fp_.noalias() += MinvJt_ * lambda_;
+    }
+    Fq_.col(i) = (fp_ - f_) / dqi;
+    const double dvi = eps * std::max(1.0, std::abs(vNew_[i]));
+    vp_ = vNew_;
+    vp_[i] += dvi;
+    ++stats_.f_evals;
+    system.unconstrainedAcceleration(t + h, qNew_, vp_, fp_);
+    if (nc_ > 0) fp_.noalias() += MinvJtf_ * lambda_;
+    Fv_.col(i) = (fp_ - f_) / dvi;
+  }
+  fresh_ = true;
+  stale_ = false;
+  factorise(h);
+}
+
+void GeneralizedAlpha::factorise(double h) {
+  // (f_q, f_v, h) => LU of A = I - beta' h^2 f_q - gamma' h f_v; Schur complement J A^-1 M^-1 J^T
+  const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
+  A_ = -(p_.beta * s * h * h) * Fq_ - (p_.gamma * s * h) * Fv_;
+  A_.diagonal().array() += 1.0;
+  luA_.compute(A_);
+  if (nc_ > 0) {
+    AinvMinvJt_ = luA_.solve(MinvJtf_);
+    S_.noalias() = Jf_ * AinvMinvJt_;
+    luS_.compute(S_);
+  }
+  hFactor_ = h;
+}
+
+bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                             double h) {
+  const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
+  const double scale = std::max(p_.beta * s * h * h, p_.gamma * s * h);
+  ddq_ = ddqOld_;
+  double errPrev = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < maxNewton_; ++it) {
+    // (ddq, lambda) => residual r = ddq - f - M^-1 J^T lambda, r_c = g / (beta' h^2)
+    update(q, v, h);
+    ++stats_.f_evals;
+    ++stats_.newton_its;
+    system.unconstrainedAcceleration(t + h, qNew_, vNew_, f_);
+    r_ = ddq_ - f_;
+    if (nc_ > 0) {
+      system.constraintTerms(qNew_, g_, J_, MinvJt_);
+      r_.noalias() -= MinvJt_ * lambda_;
+      rc_ = g_ / (p_.beta * s * h * h);
+    }
+    // (r, r_c) => corrections: S dlambda = -r_c + J A^-1 r, dx = A^-1 (-r + M^-1 J^T dlambda)
+    dx_ = luA_.solve(r_);
+    if (nc_ > 0) {
+      rc_.noalias() -= Jf_ * dx_;
+      dlambda_ = luS_.solve(rc_);
+      dlambda_ = -dlambda_;
+      dx_.noalias() -= AinvMinvJt_ * dlambda_;
+      lambda_ += dlambda_;
+    }
+    ddq_ -= dx_;
+    if (!ddq_.allFinite()) return false;
+    // (correction) => converged when it moves q_{n+1} and v_{n+1} less than the tolerance, relative
+    // to the terms of the update when they exceed 1 (their round-off bounds what can be reached)
+    const double err = scale * dx_.lpNorm<Eigen::Infinity>();
+    const double motion = std::max(1.0, h * v.lpNorm<Eigen::Infinity>() +
+                                            h * h * (aAlg_.lpNorm<Eigen::Infinity>() + aNew_.lpNorm<Eigen::Infinity>()));
+    if (err <= newtonTol_ * motion) {
+      if (it + 1 >= maxNewton_ - 2) stale_ = true;  // slow: a new iteration matrix for the next step
+      update(q, v, h);
+      return true;
+    }
+    if (err > 0.9 * errPrev) return false;
+    errPrev = err;
+  }
+  return false;
+}
+
+void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) {
+  resize(system.constraintRows());
+  // (t, q, v) => restart unless this step continues the previous one
+  const double tol = 1e-9 * std::max(1.0, std::abs(t));
+  if (!started_ || std::abs(t - tLast_) > tol || q != qLast_ || v != vLast_) start(system, t, q, v, h);
+  fresh_ = false;
+  chartBias(v);
+  // (iteration matrix) => refreshed when stale, refactorised when h changed
+  if (stale_) {
+    ddq_ = ddqOld_;
+    update(q, v, h);
+    jacobian(system, t, q, h);
+  } else if (h != hFactor_) {
+    factorise(h);
+  }
+  lambdaStart_ = lambda_;
+  bool ok = solve(system, t, q, v, h);
+  if (!ok && !fresh_) {
+    ++stats_.err_fails;
+    lambda_ = lambdaStart_;
+    ddq_ = ddqOld_;
+    update(q, v, h);
+    jacobian(system, t, q, h);
+    ok = solve(system, t, q, v, h);
+  }
+  if (!ok) {
+    ++stats_.err_fails;
+    started_ = false;
+    std::ostringstream m;
+    m << name_ << ": Newton did not converge at t = " << t << " s with dt = " << h
+      << " s; try a smaller dt (the motion is too fast or too nonlinear for one step)";
+    throw SimulationError(m.str());
+  }
+  // (converged) => new state and history
+  q = qNew_;
+  v = vNew_;
+  ddqOld_ = ddq_;
+  aAlg_ = aNew_;
+  t += h;
+  ++stats_.steps;
+  system.afterStep(t, q, v);
+  tLast_ = t;
+  qLast_ = q;
+  vLast_ = v;
+}
+
+}  // namespace yardsim::dynamics

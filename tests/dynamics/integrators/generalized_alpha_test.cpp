@@ -1,0 +1,102 @@
+// Generalized-alpha: second order for every rho_inf (alpha_m != alpha_f, so the starting procedure
+// matters), spectral radius rho_inf at high frequency, Newton on a reused factorisation, and the
+// index-3 form on the four-bar: g(q) held at the Newton tolerance and multipliers that converge
+// to the Schur-complement ones with the step.
+#include <catch2/catch.hpp>
+
+#include "dynamics/constrained_dynamics.hpp"
+#include "dynamics/energy.hpp"
+#include "dynamics/integrators/generalized_alpha.hpp"
+#include "dynamics/loop_constraints.hpp"
+#include "../test_mechanisms.hpp"
+#include "integrator_cases.hpp"
+
+using namespace yardsim::dynamics;
+using namespace yardsim::dynamics::testing;
+
+TEST_CASE("Chung-Hulbert parameters: gamma = 1/2 + alpha_f - alpha_m, rho_inf = 1 is the trapezoidal rule") {
+  const GeneralizedAlphaParameters p = chungHulbert(1.0);
+  CHECK(p.alphaM == Approx(0.5));
+  CHECK(p.alphaF == Approx(0.5));
+  CHECK(p.gamma == Approx(0.5));
+  CHECK(p.beta == Approx(0.25));
+  const GeneralizedAlphaParameters z = chungHulbert(0.0);
+  CHECK(z.alphaM == Approx(-1.0));
+  CHECK(z.alphaF == Approx(0.0));
+  CHECK(z.gamma == Approx(1.5));
+}
+
+TEST_CASE("generalized-alpha converges with order 2 on a tree with a free joint, for every rho_inf") {
+  const SmoothTree p;
+  for (double rho : {1.0, 0.8, 0.5, 0.0}) {
+    IntegratorSpec s = specOf("generalized_alpha");
+    s.rhoInf = rho;
+    INFO("rho_inf " << rho);
+    CHECK(p.observedOrder(s, 50) == Approx(2.0).margin(0.15));
+  }
+}
+
+TEST_CASE("generalized-alpha damps the highest frequencies by rho_inf per step and reuses its factorisation") {
+  for (double rho : {0.0, 0.5, 0.8}) {
+    IntegratorSpec s = specOf("generalized_alpha");
+    s.rhoInf = rho;
+    Oscillator osc(1e4);
+    // (double eigenvalue rho_inf at infinity: amplitude ~ n rho^n) => rho from steps 100 to 200
+    // at omega h = 1e4
+    const double a100 = osc.amplitude(s, 1.0, 100), a200 = osc.amplitude(s, 1.0, 200);
+    INFO("rho_inf " << rho << ": " << a100 << " -> " << a200);
+    if (rho == 0.0) CHECK(a100 < 1e-6);
+    else CHECK(std::pow(a200 / a100 / 2.0, 1.0 / 100) == Approx(rho).epsilon(0.003));
+  }
+  // (a linear problem) => one Jacobian for the whole run, Newton converging in 2 iterations
+  Oscillator osc(50.0);
+  GeneralizedAlpha ga(osc.model, chungHulbert(0.8), "generalized_alpha");
+  Eigen::VectorXd q = Eigen::VectorXd::Ones(1), v = Eigen::VectorXd::Zero(1);
+  double t = 0.0;
+  for (int k = 0; k < 100; ++k) ga.step(osc, t, q, v, 0.05);
+  CHECK(ga.stats().jac_evals == 1);
+  CHECK(ga.stats().newton_its <= 2 * 100);
+  CHECK(std::hypot(q[0], v[0] / 50.0) < 1.0);
+}
+
+TEST_CASE("generalized-alpha on the four-bar: g(q) = 0 at the Newton tolerance, energy kept, multipliers of order 2") {
+  const FourBar fb = makeFourBar(1.0, 2.0, 1.5, 2.0);
+  const Model& m = fb.model;
+  auto run = [&](double h, double T, double& worstResidual, double& energyError, Eigen::VectorXd& lambda) {
+    MultibodySystem sys(m);
+    IntegratorSpec s = specOf("generalized_alpha");
+    s.dt = h;
+    GeneralizedAlpha ga(m, chungHulbert(0.9), "generalized_alpha");
+    Eigen::VectorXd q = fb.closedConfiguration(0.3), v = Eigen::VectorXd::Zero(3);
+    Data d(m);
+    const double E0 = kineticEnergy(m, d, q, v) + potentialEnergy(m, d, q);
+    double t = 0.0;
+    worstResidual = energyError = 0.0;
+    const int n = static_cast<int>(std::lround(T / h));
+    for (int k = 0; k < n; ++k) {
+      ga.step(sys, t, q, v, h);
+      worstResidual = std::max(worstResidual, loopResidualNorm(m, d, q));
+      energyError = std::max(energyError, std::abs(kineticEnergy(m, d, q, v) + potentialEnergy(m, d, q) - E0));
+    }
+    lambda = ga.multipliers();
+    CHECK(ga.stats().jac_evals < n / 2);  // the iteration matrix is reused over steps
+    CHECK(ga.stats().newton_its < 7 * n);
+    // (end state) => multipliers of the index-1 forward dynamics, for comparison
+    Data dr(m);
+    constrainedForwardDynamics(m, dr, q, v, Eigen::VectorXd::Zero(3));
+    return Eigen::VectorXd(dr.lambda);
+  };
+  double res = 0, err1 = 0, err2 = 0;
+  Eigen::VectorXd l1, l2, l3;
+  const Eigen::VectorXd r1 = run(0.01, 1.0, res, err1, l1);
+  CHECK(res < 1e-9);
+  const Eigen::VectorXd r2 = run(0.005, 1.0, res, err2, l2);
+  INFO("residual " << res << ", energy errors " << err1 << " " << err2);
+  CHECK(res < 1e-9);
+  CHECK(err1 < 1e-3 * 9.81 * 2.0);  // 1e-3 of the potential energy range (masses of 1 kg, about 2 m of travel)
+  CHECK(err2 < err1 / 3.0);         // and of second order
+  const Eigen::VectorXd r3 = run(0.0025, 1.0, res, err1, l3);
+  const double e1 = (l1 - r1).norm(), e2 = (l2 - r2).norm(), e3 = (l3 - r3).norm();
+  INFO("multiplier errors " << e1 << " " << e2 << " " << e3);
+  CHECK(std::log2(e2 / e3) == Approx(2.0).margin(0.3));
+}

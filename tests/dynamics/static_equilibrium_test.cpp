@@ -1,0 +1,74 @@
+// Static equilibrium by Newton in the tangent space: checked against statics computed
+// independently (force and moment sums) and against the closed form of a mass on a spring.
+#include <catch2/catch.hpp>
+
+#include <array>
+
+#include "dynamics/kinematics.hpp"
+#include "dynamics/model_builder.hpp"
+#include "dynamics/multibody_system.hpp"
+#include "dynamics/static_equilibrium.hpp"
+
+using namespace yardsim::dynamics;
+
+namespace {
+// Three zero-length linear springs from world anchors to points on the body.
+struct Springs {
+  std::array<Vector3, 3> anchor_W{Vector3(-3, -1, 10), Vector3(4, -2, 11), Vector3(0.5, 3, 9)};
+  std::array<Vector3, 3> point_B{Vector3(-1, -0.5, 0.5), Vector3(1.2, -0.4, 0.5), Vector3(0, 0.8, 0.4)};
+  std::array<double, 3> k{2.0e5, 3.0e5, 1.5e5};
+  Vector3 point_W(const Transform& X_WB, int s) const { return X_WB.R * point_B[s] + X_WB.p; }
+  Vector3 force_W(const Transform& X_WB, int s) const { return -k[s] * (point_W(X_WB, s) - anchor_W[s]); }
+};
+}  // namespace
+
+TEST_CASE("a free body on three springs comes to rest where forces and moments balance") {
+  ModelBuilder b;
+  const double mass = 1000.0;
+  const Vector3 com(0.1, -0.05, 0.2);
+  b.addBody("block", "world", Joint::free(), Transform::identity(),
+            makeInertia(mass, com, Vector3(300, 500, 700).asDiagonal()));
+  const Model m = b.build();
+  const Springs s;
+  MultibodySystem sys(m);
+  sys.setForces([&](double, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data& d, ExternalForces& f,
+                    Eigen::VectorXd&) {
+    for (int k = 0; k < 3; ++k) f.addPointForceWorld(1, s.point_W(d.X_WB[1], k), s.force_W(d.X_WB[1], k));
+  });
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq);
+  q[2] = 5.0;  // start 5 m below the anchors, unrotated: far from equilibrium
+  q[3] = 1.0;  // quaternion (w, x, y, z)
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  REQUIRE(r.converged);
+  CHECK(r.iterations < 20);
+  CHECK(q.segment(3, 4).norm() == Approx(1.0).margin(1e-14));
+  // (equilibrium pose) => force and moment sums about the centre of mass, computed here
+  Data d(m);
+  forwardKinematics(m, d, q, Eigen::VectorXd::Zero(m.nv));
+  const Transform& X = d.X_WB[1];
+  const Vector3 c_W = X.R * com + X.p;
+  Vector3 force = Vector3(0, 0, -9.81 * mass), moment = Vector3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    force += s.force_W(X, k);
+    moment += (s.point_W(X, k) - c_W).cross(s.force_W(X, k));
+  }
+  CHECK(force.norm() < 1e-6 * 9.81 * mass);
+  CHECK(moment.norm() < 1e-6 * 9.81 * mass);
+}
+
+TEST_CASE("a mass on a vertical spring settles at z = -m g / k, and a free slide stays put") {
+  ModelBuilder b;
+  b.addBody("slide", "world", Joint::prismatic(Vector3::UnitX()), Transform::identity(), boxInertia(50.0, Vector3::Ones()));
+  b.addBody("mass", "slide", Joint::prismatic(Vector3::UnitZ()), Transform::identity(), boxInertia(200.0, Vector3::Ones()));
+  const Model m = b.build();
+  const double k = 4.0e4;
+  MultibodySystem sys(m);
+  sys.setForces([&](double, const Eigen::VectorXd& q, const Eigen::VectorXd&, const Data&, ExternalForces&,
+                    Eigen::VectorXd& tau) { tau[1] = -k * q[1]; });
+  Eigen::VectorXd q(2);
+  q << 0.7, 0.3;
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  REQUIRE(r.converged);
+  CHECK(q[1] == Approx(-200.0 * 9.81 / k).epsilon(1e-9));
+  CHECK(q[0] == Approx(0.7).margin(1e-12));  // no stiffness along the slide: not moved
+}

@@ -30,7 +30,15 @@ namespace yardsim::dynamics {
     d.V_W[i] = d.V_W[p] + vJ;
     d.C_W[i] += crossMotion(d.V_W[i], vJ);
     d.IA[i] = m.inertias[i].matrixIn(X);
-    d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]);
+    if (m.hasAddedMass[i]) {
+      // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
+      // not act on it: its share A_W (0, -g) goes back as an external force
+      const Matrix6 A_W = actInertia(X, m.addedMass[i]);
+      d.IA[i] += A_W;
+      d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
+    } else {
+      d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]);
+    }
     if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }
   // (IA, PA) => U = IA S, D^-1, u = tau - S^T PA; articulated inertia and bias added to the parent

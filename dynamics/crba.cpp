@@ -6,12 +6,13 @@ namespace yardsim::dynamics {
 
 // flatten: inline every Eigen helper (GCC otherwise leaves small products as calls)
 [[gnu::flatten]] const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
-  // (q) => X_WB, S_W, IC_W = X_WB^* I X_WB^-1
+  // (q) => X_WB, S_W, IC_W = X_WB^* (I + A) X_WB^-1 (A: added mass)
   for (int i = 1; i < m.nbodies; ++i) {
     updateJointPlacement(m, d, i, q);
     d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
     for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
     d.IC_W[i] = m.inertias[i].matrixIn(d.X_WB[i]);
+    if (m.hasAddedMass[i]) d.IC_W[i] += actInertia(d.X_WB[i], m.addedMass[i]);
   }
   // (IC_W) => composite inertias of subtrees
   for (int i = m.nbodies - 1; i >= 1; --i) {

@@ -7,7 +7,7 @@ namespace yardsim::dynamics {
 double kineticEnergy(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   forwardKinematics(m, d, q, v);
   double T = 0.0;
-  for (int i = 1; i < m.nbodies; ++i) T += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i]));
+  for (int i = 1; i < m.nbodies; ++i) T += bodyKineticEnergy(m, i, d.V[i]);
   return T;
 }
 
@@ -28,7 +28,11 @@ Vector3 centerOfMass(const Model& m, Data& d, const Eigen::VectorXd& q) {
 Force momentum(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   forwardKinematics(m, d, q, v);
   Force h = Force::Zero();
-  for (int i = 1; i < m.nbodies; ++i) h += d.X_WB[i].actForce(m.inertias[i].apply(d.V[i]));
+  for (int i = 1; i < m.nbodies; ++i) {
+    Force h_B = m.inertias[i].apply(d.V[i]);
+    if (m.hasAddedMass[i]) h_B += m.addedMass[i] * d.V[i];  // the fluid's impulse
+    h += d.X_WB[i].actForce(h_B);
+  }
   return h;
 }
 

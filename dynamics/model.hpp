@@ -59,6 +59,12 @@ struct Model {
   std::vector<Transform> X_PJ;        ///< pose of the joint frame in the parent body frame
   std::vector<SpatialInertia> inertias;
   std::vector<Matrix6> inertiaMatrices;  ///< 6x6 body inertia about the body origin, body frame
+  /// Constant added mass of a body in a fluid: a symmetric positive semidefinite 6x6 about the body
+  /// origin in the body frame, ordered [angular; linear] like every spatial matrix here (zero for
+  /// a body without one). It adds to the body inertia on the left-hand side (ABA, CRBA, RNEA,
+  /// kinetic energy, momentum) but not to its weight: gravity acts on the rigid mass only.
+  std::vector<Matrix6> addedMass;
+  std::vector<bool> hasAddedMass;  ///< addedMass[i] is not zero
   std::vector<std::string> geometry;  ///< optional geometry reference per body
   std::vector<int> idxQ;              ///< first configuration index of body i's joint
   std::vector<int> idxV;              ///< first velocity index of body i's joint

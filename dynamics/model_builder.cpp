@@ -45,6 +45,20 @@ void checkInertia(const std::string& body, const SpatialInertia& I) {
   }
 }
 
+void checkAddedMass(const std::string& body, const Matrix6& A) {
+  const std::string who = "body '" + body + "': added mass ";
+  if (!A.allFinite()) fail(who + "has a non-finite entry");
+  const double scale = A.cwiseAbs().maxCoeff();
+  if ((A - A.transpose()).cwiseAbs().maxCoeff() > 1e-6 * scale) fail(who + "is not symmetric");
+  const Eigen::SelfAdjointEigenSolver<Matrix6> eig(0.5 * (A + A.transpose()), Eigen::EigenvaluesOnly);
+  if (eig.eigenvalues()[0] < -1e-9 * scale) {
+    std::ostringstream s;
+    s << who << "is not positive semidefinite (eigenvalues " << eig.eigenvalues().transpose()
+      << "); a fluid's kinetic energy cannot be negative";
+    fail(s.str());
+  }
+}
+
 void checkJoint(const std::string& body, Joint& j) {
   const std::string who = "body '" + body + "': ";
   auto unit = [&](Vector3& a, const char* which) {
@@ -95,6 +109,11 @@ ModelBuilder& ModelBuilder::addBody(const std::string& name, const std::string& 
 ModelBuilder& ModelBuilder::addLoop(const std::string& name, const std::string& bodyA, const Transform& X_AF,
                                     const std::string& bodyB, const Transform& X_BG, std::uint8_t mask) {
   loops_.push_back({name, bodyA, bodyB, X_AF, X_BG, mask});
+  return *this;
+}
+
+ModelBuilder& ModelBuilder::setAddedMass(const std::string& name, const Matrix6& A_B) {
+  addedMass_.emplace_back(name, A_B);
   return *this;
 }
 
@@ -160,6 +179,8 @@ Model ModelBuilder::build() const {
   m.X_PJ = {Transform{}};
   m.inertias = {SpatialInertia{}};
   m.inertiaMatrices = {Matrix6::Zero()};
+  m.addedMass = {Matrix6::Zero()};
+  m.hasAddedMass = {false};
   m.geometry = {""};
   m.idxQ = {0};
   m.idxV = {0};
@@ -177,6 +198,8 @@ Model ModelBuilder::build() const {
     m.X_PJ.push_back(b.X_PJ);
     m.inertias.push_back(b.inertia);
     m.inertiaMatrices.push_back(b.inertia.matrix());
+    m.addedMass.push_back(Matrix6::Zero());
+    m.hasAddedMass.push_back(false);
     m.geometry.push_back(b.geometry);
     m.idxQ.push_back(m.nq);
     m.idxV.push_back(m.nv);
@@ -195,6 +218,14 @@ Model ModelBuilder::build() const {
   for (int i = 0; i < m.nbodies; ++i) {
     m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
     if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;
+  }
+  // (added-mass specs) => checked symmetric 6x6 per body (a second one for a body replaces the first)
+  for (const auto& [name, A] : addedMass_) {
+    const int i = m.bodyIndex(name);
+    if (i < 1) fail("added mass given for unknown body '" + name + "'");
+    checkAddedMass(name, A);
+    m.addedMass[static_cast<std::size_t>(i)] = 0.5 * (A + A.transpose());
+    m.hasAddedMass[static_cast<std::size_t>(i)] = !A.isZero(0.0);
   }
   // (loop specs) => loops with rows
   for (const auto& l : loops_) {

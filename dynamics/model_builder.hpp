@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dynamics/model.hpp"
@@ -29,6 +30,10 @@ class ModelBuilder {
   /// X_PJ in the parent body frame; the body frame is the joint's child frame.
   ModelBuilder& addBody(const std::string& name, const std::string& parent, const Joint& joint,
                         const Transform& X_PJ, const SpatialInertia& inertia, const std::string& geometry = {});
+  /// Gives body `name` a constant added mass A_B: symmetric positive semidefinite 6x6 about the body
+  /// origin in the body frame, ordered [angular; linear] (see addedMassAboutOrigin in
+  /// dynamics/added_mass.hpp for a matrix in the naval order about another point). Checked by build().
+  ModelBuilder& setAddedMass(const std::string& name, const Matrix6& A_B);
   /// Adds a loop-closure (cut joint) between frame F (X_AF on body A) and frame G (X_BG on body B),
   /// constraining the components in `mask` (see ConstraintAxis).
   ModelBuilder& addLoop(const std::string& name, const std::string& bodyA, const Transform& X_AF,
@@ -52,6 +57,7 @@ class ModelBuilder {
   Vector3 gravity_{0.0, 0.0, -9.81};
   std::vector<BodySpec> bodies_;
   std::vector<LoopSpec> loops_;
+  std::vector<std::pair<std::string, Matrix6>> addedMass_;
 };
 
 }  // namespace yardsim::dynamics

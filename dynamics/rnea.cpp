@@ -39,8 +39,16 @@ template <bool kZeroAcc>
         if (nv > 0) d.A_W[i] += S * ddq->segment(iv, nv);
       }
     }
-    const Matrix6 I = m.inertias[i].matrixIn(X);
-    d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]);
+    if (m.hasAddedMass[i]) {
+      // I + A_W (added mass); gravity, folded into the base acceleration -g, acts on the rigid
+      // mass only: A_W (0, -g) is taken back
+      const Matrix6 A_W = actInertia(X, m.addedMass[i]);
+      const Matrix6 I = m.inertias[i].matrixIn(X) + A_W;
+      d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
+    } else {
+      const Matrix6 I = m.inertias[i].matrixIn(X);
+      d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]);
+    }
     if (fext != nullptr) d.F_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }
   // (F_W) => tau = S_W^T F_W, F_W(parent) += F_W

@@ -83,7 +83,7 @@ std::unique_ptr<devs::Coupled> assemble(const Scene& scene) {
   for (const auto& system : scene.systems) {
     MultibodyOptions opt;
     opt.dt = scene.dt;
-    opt.method = scene.integrator;
+    opt.integrator = scene.integratorSpec;
     opt.elementPaths = true;
     const auto& set = system->spec.settings;
     opt.driveBandwidth = set.driveBandwidth;

@@ -328,10 +328,6 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   if (!out.empty() && !(scene.dt > 0))
     diags.error(scene.root.where, "integrator",
                 "the scene has mechanics: give the integrator and its step, e.g. integrator: {method: rk4, dt: 0.01}");
-  if (!out.empty() && scene.integrator != "rk4" && scene.integrator != "semi_implicit_euler")
-    diags.error(scene.root.where, "integrator.method",
-                "expected rk4 or semi_implicit_euler for the scene's mechanics, got '" + scene.integrator + "'",
-                didYouMean(scene.integrator, {"rk4", "semi_implicit_euler"}));
   return out;
 }
 

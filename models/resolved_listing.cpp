@@ -62,6 +62,10 @@ std::string resolvedListing(const Scene& s) {
     for (const auto& r : sys->spec.ropes) os << " rope:" << r.name;
     for (const auto& e : sys->spec.equalizers) os << " equalizer:" << e.name;
     for (const auto& l : sys->spec.loops) os << " loop:" << l.name;
+    for (const auto& h : sys->spec.hulls) os << " hydrostatics:" << h.name;
+    for (const auto& w : sys->spec.windLoads) os << " wind_load:" << w.name;
+    for (const auto& c : sys->spec.currentLoads) os << " current_load:" << c.name;
+    for (const auto& d : sys->spec.dampers) os << " damping:" << d.name;
     os << "\n";
   }
   os << "recorder: ";

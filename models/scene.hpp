@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/integrators/factory.hpp"
 #include "models/params.hpp"
 #include "models/registry.hpp"
 
@@ -73,8 +74,9 @@ struct Scene {
   std::string sha256;  // of the root file's bytes
   double until = std::numeric_limits<double>::infinity();
   long long seed = 0;
-  std::string integrator = "none";  // method named by the scene (metadata until physics)
-  double dt = 0.0;
+  std::string integrator = "none";  // method named by the scene (= integratorSpec.method)
+  double dt = 0.0;                   // its step, s (= integratorSpec.dt)
+  dynamics::IntegratorSpec integratorSpec;  // every parameter of the `integrator:` block
   // integrator.stiffness_check: what to do when omega_max dt exceeds the method's stability
   // limit before the run (docs/numerics.md): warn, refuse (an error) or off
   std::string stiffnessCheck = "warn";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "models/coupling_graph.hpp"
+#include "models/integrator_spec.hpp"
 #include "models/mechanical_systems.hpp"
 #include "models/stiffness_guard.hpp"
 #include "models/port_types.hpp"
@@ -462,21 +463,20 @@ class Loader {
       else d_.error(markOf(n, f), "seed", "expected an integer, got " + shown(n));
     }
     if (const YAML::Node n = doc["integrator"]) {
-      if (!n.IsMap() || !n["method"] || !n["method"].IsScalar()) {
-        d_.error(markOf(n, f), "integrator", "expected {method: name, dt: seconds, ...}");
-      } else {
-        s.integrator = n["method"].Scalar();
+      s.integratorSpec = parseIntegratorSpec(n, f, d_);
+      s.integrator = s.integratorSpec.method;
+      if (n.IsMap())
         if (const YAML::Node dt = n["dt"]) number(dt, "integrator.dt", s.dt, true);
-        s.integratorWhere = markOf(n, f);
-        if (const YAML::Node c = n["stiffness_check"]) {
-          static const std::vector<std::string> kChecks{"warn", "refuse", "off"};
-          const std::string v = c.IsScalar() ? c.Scalar() : "";
-          if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
-            d_.error(markOf(c, f), "integrator.stiffness_check",
-                     "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
-          else
-            s.stiffnessCheck = v;
-        }
+      s.integratorSpec.dt = s.dt;
+      s.integratorWhere = markOf(n, f);
+      if (const YAML::Node c = n.IsMap() ? n["stiffness_check"] : YAML::Node()) {
+        static const std::vector<std::string> kChecks{"warn", "refuse", "off"};
+        const std::string v = c.IsScalar() ? c.Scalar() : "";
+        if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
+          d_.error(markOf(c, f), "integrator.stiffness_check",
+                   "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
+        else
+          s.stiffnessCheck = v;
       }
     }
     if (const YAML::Node r = doc["record"]) {

@@ -9,6 +9,7 @@
 #include "dtss/grid.hpp"
 #include "models/assembler.hpp"
 #include "models/channels.hpp"
+#include "models/integrator_spec.hpp"
 #include "models/mechanical_systems.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "models/multibody/stiffness_estimate.hpp"
@@ -16,14 +17,26 @@
 namespace yardsim::models {
 namespace {
 
-// (scene, run) => the scene's integrator set to the run's (restored on destruction)
+// (scene, run) => the scene's integrator set to the run's (restored on destruction): its
+// method, its step (an adaptive run steps from grid point to grid point), its tolerance and
+// the entry's other integrator keys, read like the scene's own `integrator:` block
 class IntegratorOverride {
  public:
-  IntegratorOverride(Scene& s, const WpRun& r) : s_(s), method_(s.integrator), dt_(s.dt) {
-    s.integrator = r.method;
-    if (r.dt > 0) s.dt = r.dt;
+  IntegratorOverride(Scene& s, const WpRun& r, double gridStep)
+      : s_(s), spec_(s.integratorSpec), method_(s.integrator), dt_(s.dt) {
+    YAML::Node n = r.extra && r.extra.IsMap() ? YAML::Clone(r.extra) : YAML::Node(YAML::NodeType::Map);
+    n["method"] = r.method;
+    if (r.rtol > 0) n["rtol"] = r.rtol;
+    Diagnostics d;
+    dynamics::IntegratorSpec spec = parseIntegratorSpec(n, s.file.string(), d);
+    if (d.hasErrors()) throw std::invalid_argument("wp: " + r.label + " " + r.param() + ": " + d.report());
+    spec.dt = r.dt > 0 ? r.dt : gridStep;
+    s.integratorSpec = spec;
+    s.integrator = spec.method;
+    s.dt = spec.dt;
   }
   ~IntegratorOverride() {
+    s_.integratorSpec = spec_;
     s_.integrator = method_;
     s_.dt = dt_;
   }
@@ -32,6 +45,7 @@ class IntegratorOverride {
 
  private:
   Scene& s_;
+  dynamics::IntegratorSpec spec_;
   std::string method_;
   double dt_;
 };
@@ -54,7 +68,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 WpSeries runOnGrid(Scene& scene, const WpRun& run, const WpSpec& spec) {
-  IntegratorOverride override(scene, run);
+  IntegratorOverride override(scene, run, spec.interval);
   auto root = assemble(scene);
   const auto all = collectChannels(*root);
   std::vector<const Channel*> channels;
@@ -94,8 +108,12 @@ WpSeries runOnGrid(Scene& scene, const WpRun& run, const WpSpec& spec) {
   }
   out.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const auto* m : models) {
-    out.steps += m->counters().steps;
-    out.fEvals += m->counters().fEvals;
+    const dynamics::IntegratorStats& st = m->integratorStats();
+    out.steps += static_cast<std::uint64_t>(st.steps);
+    out.fEvals += static_cast<std::uint64_t>(st.f_evals);
+    out.jacEvals += static_cast<std::uint64_t>(st.jac_evals);
+    out.newtonIts += static_cast<std::uint64_t>(st.newton_its);
+    out.errFails += static_cast<std::uint64_t>(st.err_fails);
   }
   return out;
 }

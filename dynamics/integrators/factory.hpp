@@ -33,7 +33,7 @@ struct IntegratorSpec {
   double atol = 1e-8;          ///< adaptive: absolute tolerance (m, rad, m/s, rad/s alike)
   int maxOrder = 0;            ///< cvode_bdf (1-5), cvode_adams (1-12); 0: the method's maximum
   double maxStep = 0.0;        ///< adaptive: largest internal step, s (0: unbounded)
-  double newtonTol = 1e-10;    ///< hht, generalized_alpha: Newton tolerance on the scaled residual
+  double newtonTol = 1e-8;     ///< hht, generalized_alpha: Newton tolerance on the update of q, v (m, rad)
   int maxNewton = 8;           ///< hht, generalized_alpha: iterations before the Jacobian is refreshed
   LoopStabilization loops = LoopStabilization::Projection;
   double baumgarteAlpha = 0.0;  ///< 1/s, velocity feedback; 0: 0.2/dt

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "dynamics/configuration.hpp"
 
@@ -19,7 +18,7 @@ GeneralizedAlphaParameters chungHulbert(double rho) {
 
 GeneralizedAlpha::GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
                                    double newtonTol, int maxNewton)
-    : model_(model), p_(p), name_(name), newtonTol_(newtonTol), maxNewton_(maxNewton) {
+    : model_(model), p_(p), name_(name), newtonTol_(newtonTol), maxNewton_(maxNewton), explicitStep_(model) {
   const int n = model.nv;
   for (Eigen::VectorXd* x : {&bias_, &aAlg_, &ddq_, &ddqOld_, &aNew_, &delta_, &vNew_, &f_, &fp_, &r_, &dx_, &vLast_,
                              &vp_, &deltaP_})
@@ -57,7 +56,10 @@ void GeneralizedAlpha::start(AccelerationSource& system, double t, const Eigen::
     integrate(model_, q, v, eps, qp_);
     vp_ = v + eps * ddqOld_;
     evaluate(system, t + eps, qp_, vp_, aNew_);
-    aAlg_ += (shift / eps) * (aNew_ - ddqOld_);
+    // (correction) => dropped when larger than ddq_0 itself: the difference then straddles a force
+    // that jumps (a damped rope going taut), not a smooth dddq
+    aNew_ = (shift / eps) * (aNew_ - ddqOld_);
+    if (aNew_.lpNorm<Eigen::Infinity>() <= std::max(1.0, ddqOld_.lpNorm<Eigen::Infinity>())) aAlg_ += aNew_;
   }
   lambda_.setZero();
   started_ = true;
@@ -134,10 +136,10 @@ void GeneralizedAlpha::factorise(double h) {
 }
 
 bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                             double h) {
+                             double h, bool fromPredictor) {
   const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
   const double scale = std::max(p_.beta * s * h * h, p_.gamma * s * h);
-  ddq_ = ddqOld_;
+  if (fromPredictor) ddq_ = ddqOld_;
   double errPrev = std::numeric_limits<double>::infinity();
   for (int it = 0; it < maxNewton_; ++it) {
     // (ddq, lambda) => residual r = ddq - f - M^-1 J^T lambda, r_c = g / (beta' h^2)
@@ -183,6 +185,14 @@ void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::Vector
   // (t, q, v) => restart unless this step continues the previous one
   const double tol = 1e-9 * std::max(1.0, std::abs(t));
   if (!started_ || std::abs(t - tLast_) > tol || q != qLast_ || v != vLast_) start(system, t, q, v, h);
+  advance(system, t, q, v, h, 0);
+  tLast_ = t;
+  qLast_ = q;
+  vLast_ = v;
+}
+
+bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+                               const Eigen::VectorXd& v, double h) {
   fresh_ = false;
   chartBias(v);
   // (iteration matrix) => refreshed when stale, refactorised when h changed
@@ -194,22 +204,47 @@ void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::Vector
     factorise(h);
   }
   lambdaStart_ = lambda_;
-  bool ok = solve(system, t, q, v, h);
-  if (!ok && !fresh_) {
-    ++stats_.err_fails;
+  if (solve(system, t, q, v, h, true)) return true;
+  ++stats_.err_fails;
+  // (failed with an old matrix) => once more with a fresh one at the predictor
+  if (!fresh_) {
     lambda_ = lambdaStart_;
     ddq_ = ddqOld_;
     update(q, v, h);
     jacobian(system, t, q, h);
-    ok = solve(system, t, q, v, h);
-  }
-  if (!ok) {
+    if (solve(system, t, q, v, h, true)) return true;
     ++stats_.err_fails;
-    started_ = false;
-    std::ostringstream m;
-    m << name_ << ": Newton did not converge at t = " << t << " s with dt = " << h
-      << " s; try a smaller dt (the motion is too fast or too nonlinear for one step)";
-    throw SimulationError(m.str());
+  }
+  // (failed across a kink, e.g. a rope going taut: the predictor's matrix lacks its stiffness) =>
+  // a matrix at the last iterate, and Newton from there
+  if (!ddq_.allFinite()) return false;
+  update(q, v, h);
+  jacobian(system, t, q, h);
+  if (solve(system, t, q, v, h, false)) return true;
+  ++stats_.err_fails;
+  lambda_ = lambdaStart_;
+  return false;
+}
+
+void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                               double h, int depth) {
+  if (!attempt(system, t, q, v, h)) {
+    // (Newton failed, e.g. a rope going taut inside the step) => two half steps, down to h / 16
+    if (depth < 4) {
+      stale_ = true;
+      advance(system, t, q, v, 0.5 * h, depth + 1);
+      stale_ = true;
+      advance(system, t, q, v, 0.5 * h, depth + 1);
+      return;
+    }
+    // (no solution at h/16: a force that jumps, like a damped rope going taut) => one RK4
+    // sub-step across it, and a fresh start after it
+    explicitStep_.step(system, t, q, v, h);
+    stats_.f_evals += 4;
+    ++stats_.steps;
+    start(system, t, q, v, h);
+    stale_ = true;
+    return;
   }
   // (converged) => new state and history
   q = qNew_;
@@ -219,9 +254,6 @@ void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::Vector
   t += h;
   ++stats_.steps;
   system.afterStep(t, q, v);
-  tLast_ = t;
-  qLast_ = q;
-  vLast_ = v;
 }
 
 }  // namespace yardsim::dynamics

@@ -11,13 +11,17 @@
 // configuration manifold. The unknowns (ddq_{n+1}, lambda) are
 // solved by Newton with an iteration matrix [I - beta' h^2 F_q - gamma' h F_v, -M^-1 J^T; J, 0]
 // (F = f + M^-1 J^T lambda, its derivatives by finite differences) that is factorised once and reused over steps until Newton
-// slows down. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
+// slows down; a failed solve is retried with a fresh matrix at the predictor, then with one at
+// the last iterate (a rope going taut inside the step), then as two half steps, down to h/16; a
+// sixteenth that still has no solution (a force that jumps: a damped rope going taut) is crossed
+// by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
 // ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
 // Bruls 2007); dddq_0 comes from one extra evaluation (a forward difference along (v, ddq)).
 
 #include <Eigen/LU>
 
 #include "dynamics/integrators/integrator.hpp"
+#include "dynamics/integrators/rk4.hpp"
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
@@ -33,7 +37,7 @@ GeneralizedAlphaParameters chungHulbert(double rhoInf);
 class GeneralizedAlpha final : public Integrator {
  public:
   GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
-                   double newtonTol = 1e-10, int maxNewton = 8);
+                   double newtonTol = 1e-8, int maxNewton = 8);
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
   std::string_view name() const override { return name_; }
   void reset() override { started_ = false; }
@@ -51,14 +55,20 @@ class GeneralizedAlpha final : public Integrator {
   // (state at the end of the step) => f_q, f_v by finite differences; factorised for h
   void jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h);
   void factorise(double h);
-  // one Newton solve from the predictor; false when it does not converge
-  bool solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
+  // (step of h) => Newton with the current matrix, then with a fresh one; false if both fail
+  bool attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
+  // (step of h) => state advanced, in halves (down to h/16) where Newton fails
+  void advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h, int depth);
+  // one Newton solve from the predictor (or from the current ddq_); false when it does not converge
+  bool solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h,
+             bool fromPredictor);
 
   const Model& model_;
   GeneralizedAlphaParameters p_;
   std::string_view name_;
   double newtonTol_;
   int maxNewton_;
+  Rk4 explicitStep_;  // crosses a force jump where Newton has no solution
   bool started_ = false, fresh_ = false, stale_ = true;
   int nc_ = -1;
   double hFactor_ = 0.0, tLast_ = 0.0;

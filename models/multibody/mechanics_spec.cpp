@@ -10,6 +10,7 @@
 #include "forces/geometry/mesh_io.hpp"
 #include "dynamics/rotation.hpp"
 #include "models/diagnostics.hpp"
+#include "models/multibody/added_mass_spec.hpp"
 #include "models/multibody/floating_spec.hpp"
 #include "models/multibody/spec_reader.hpp"
 
@@ -185,7 +186,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       r.fail(it->first, b.name, "duplicate body name '" + b.name + "'");
       continue;
     }
-    if (!r.keys(n, {"parent", "joint", "placement", "mass", "com", "inertia", "geometry"}, b.name))
+    if (!r.keys(n, {"parent", "joint", "placement", "mass", "com", "inertia", "geometry", "added_mass"}, b.name))
       continue;
     b.parent = n["parent"] && n["parent"].IsScalar() ? n["parent"].Scalar() : "";
     if (b.parent.empty()) r.fail(n, b.name, "missing required key 'parent' (a body name or world)");
@@ -214,6 +215,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       e.SetSeqFormat(YAML::Flow);
       e << g;
       b.geometry = e.c_str();
+    }
+    if (const YAML::Node am = n["added_mass"]) {
+      parseAddedMass(r, am, b.name + ".added_mass", p.mark("bodies").file, b);
     }
     spec.bodies.push_back(std::move(b));
   }
@@ -430,6 +434,7 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
                     b.geometry);
   for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
+  setGivenAddedMass(spec.bodies, builder);
   BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, spec.loads, spec.watches, spec};
   out.environment.bodies.clear();
   out.environment.loops.clear();
@@ -451,6 +456,11 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     out.visuals[static_cast<std::size_t>(i)] = b.visual;
     for (std::size_t k = 0; k < b.q0.size(); ++k) out.q0[m.idxQ[i] + static_cast<int>(k)] = b.q0[k];
     for (std::size_t k = 0; k < b.v0.size(); ++k) out.v0[m.idxV[i] + static_cast<int>(k)] = b.v0[k];
+  }
+  // (hull meshes, pose at q0) => added mass by the panel solver, then the model again with it
+  if (needsHullAddedMass(spec.bodies)) {
+    setHullAddedMass(out.model, out.q0, spec, builder);
+    out.model = builder.build();
   }
   return out;
 }

@@ -48,6 +48,12 @@ struct MechanicsSpec {
     std::vector<double> q0, v0;  // empty: neutral / at rest
     bool hold = false;           // a 1-dof joint's servo holds q0 until an actor drives it (brake)
     Visual visual;
+    // added mass (models/multibody/added_mass_spec.hpp): given in the naval order about
+    // addedMassAbout (body frame), or computed from addedMassHull at the initial position
+    std::optional<dynamics::Matrix6> addedMass;
+    dynamics::Vector3 addedMassAbout = dynamics::Vector3::Zero();
+    std::shared_ptr<const forces::TriangleMesh> addedMassHull;
+    double addedMassRho = 0.0;  // kg/m^3; 0: the scene's water density
   };
   struct Loop {
     std::string name, bodyA, bodyB;

@@ -45,12 +45,12 @@ std::string MultibodyModel::likelyCause() const {
   } catch (const std::exception&) {
     return "a smaller dt, or an implicit integrator";
   }
-  const StepVerdict v = judgeStep(e, opt_.method, opt_.dt);
+  const StepVerdict v = judgeStep(e, opt_.integrator.method, opt_.dt);
   if (!v.stable) return v.suggestion + " (" + v.problem + ")";
   std::ostringstream s;
   s.precision(3);
   s << describe(e) << ", omega_max dt = " << v.omegaDt
-    << " is within " << opt_.method << "'s stability limit, so energy is being created by a "
+    << " is within " << opt_.integrator.method << "'s stability limit, so energy is being created by a "
     << "force element or by a step too long for accuracy: try dt/4, check rope damping and "
        "drive bandwidths, or an implicit integrator";
   return s.str();

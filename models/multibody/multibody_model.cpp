@@ -5,8 +5,6 @@
 
 #include "dynamics/crba.hpp"
 #include "dynamics/energy.hpp"
-#include "dynamics/integrators/rk4.hpp"
-#include "dynamics/integrators/semi_implicit_euler.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
@@ -116,11 +114,12 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
   for (auto& f : flows_) loads_.push_back(f.get());
   for (auto& d : dampers_) loads_.push_back(d.get());
   for (auto& b : bodyLoads_) loads_.push_back(b.get());
-  if (opt_.method == "semi_implicit_euler")
-    integrator_ = std::make_unique<dynamics::SemiImplicitEuler>(mech_.model);
-  else
-    integrator_ = std::make_unique<dynamics::Rk4>(mech_.model);
-  if (mech_.model.nc > 0 && opt_.projectLoops) system_.setProjection(true);
+  // (options) => the integrator at step dt; loops kept closed as its spec says
+  opt_.integrator.dt = opt_.dt;
+  if (!opt_.projectLoops && opt_.integrator.loops == dynamics::LoopStabilization::Projection)
+    opt_.integrator.loops = dynamics::LoopStabilization::None;
+  integrator_ = dynamics::makeIntegrator(opt_.integrator, mech_.model);
+  if (mech_.model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, system_);
   if (opt_.driveBandwidth <= 0.0) opt_.driveBandwidth = std::min(10.0, 0.1 / opt_.dt);
   // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
   dynamics::Data data(mech_.model);
@@ -130,7 +129,6 @@ MultibodyModel::MultibodyModel(std::string name, BuiltMechanics mechanics,
     if (mech_.model.jointNv[i] == 1) servoInertia_[i] = M(mech_.model.idxV[i], mech_.model.idxV[i]);
   forces_ = [this](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                    const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
-    ++counters_.fEvals;
     const forces::Stage stage{t, mech_.model, d, q, v};
     if (prescribedDofs(*current_) || system_.hybrid().any()) system_.prescribe(prescribedMask_, prescribedAcc_);
     for (auto& r : ropes_) r->evaluate(stage, f, tau);
@@ -261,7 +259,6 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   double time = t;
   try {
     integrator_->step(system_, time, x.q, x.v, dt);
-    ++counters_.steps;
   } catch (const devs::SimulationError&) {
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
@@ -284,6 +281,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
   powerState_ = nullptr;  // set-points change the forces
+  integrator_->reset();  // the forces change here: no history across it
   for (const SetPoint& s : setpoint.values()) {
     switch (s.kind) {
       case SetPoint::Kind::JointTarget: {
@@ -361,6 +359,7 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
     prescribedVelocityStep(x, accelScratch_);
     d.reported = true;
   }
+  integrator_->reset();
   // (winch jobs ending now) => winches stopped
   for (std::size_t r = 0; r < x.winches.size(); ++r)
     if (x.winches[r].active && x.winches[r].tEnd <= t) {
@@ -385,11 +384,11 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
   if (ropes_.empty() && watchRefs_.empty()) return;
   dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
   const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-  const auto nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
+  const std::size_t nb = static_cast<std::size_t>(mech_.model.nbodies), nr = ropes_.size();
   for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes_[r]->properties().breakingLoad;
     g[nb + r] = mbl ? ropes_[r]->tension(stage) - *mbl : -1.0;
-    // (rope) => > 0 while taut: a sign change is a slack/taut transition
+    // (rope) => its stretch: > 0 taut, < 0 slack
     g[nb + nr + r] = ropes_[r]->length(stage) - ropes_[r]->unstretchedLength(t);
   }
   // (watches) => > 0 once the quantity is past its threshold in the watched direction
@@ -440,9 +439,9 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
     const auto k = static_cast<std::size_t>(r.stateEvent - nb - nr);
     dynamics::forwardKinematics(mech_.model, scratch_, x.q, x.v);
     const forces::Stage stage{t, mech_.model, scratch_, x.q, x.v};
-    const double rate = ropes_[k]->lengthRate(stage) - ropes_[k]->payoutRate(t);
-    event.add({ropes_[k]->name(), "", rate > 0 ? "taut" : "slack",
-               ropes_[k]->length(stage)});
+    // (direction of the crossing) => lengthening through L0: taut; shortening: slack
+    const bool taut = ropes_[k]->lengthRate(stage) >= ropes_[k]->payoutRate(t);
+    event.add({ropes_[k]->name(), "", taut ? "taut" : "slack", ropes_[k]->length(stage)});
     return;
   }
   if (r.stateEvent >= nb) {  // a rope passed its minimum breaking load: a warning event
@@ -458,6 +457,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
   powerState_ = nullptr;
+  integrator_->reset();
   if (e > 0 && e < mech_.model.nbodies)
     x.drives[static_cast<std::size_t>(e)].reported = true;  // keeps holding the target
 }
@@ -506,9 +506,11 @@ double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Dat
   const auto& m = mech_.model;
   dynamics::forwardKinematics(m, d, x.q, x.v);
   double e = 0.0;
-  for (int i = 1; i < m.nbodies; ++i)
+  for (int i = 1; i < m.nbodies; ++i) {
     e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
          m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
+    if (m.hasAddedMass[i]) e += 0.5 * d.V[i].dot(m.addedMass[i] * d.V[i]);  // the fluid's kinetic energy
+  }
   const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);
   for (const auto& q : equalizers_) e += q->potentialEnergy(stage);

@@ -1,9 +1,12 @@
 #pragma once
 // Scene type `multibody`: one mechanically connected system as a DTSS atomic. It steps the
-// multibody kernel (ABA, or the Schur-complement forward dynamics when it has loops) with a
-// fixed-step integrator at step dt; joint drives and body loads set by actors through the
+// multibody kernel (ABA, or the Schur-complement forward dynamics when it has loops) with the
+// integrator the options name, from grid point to grid point at step dt (an adaptive method takes
+// its own steps inside each); the integrator restarts its history whenever the state or the
+// set-points change between steps; joint drives and body loads set by actors through the
 // `setpoint` port are evaluated inside every integrator stage (tight coupling); a drive that
-// reaches its target is a located state event, reported on the `event` port.
+// reaches its target, a rope passing its breaking load, and a rope going taut or slack are
+// located state events, reported on the `event` port.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -14,7 +17,7 @@
 #include <Eigen/Core>
 
 #include "dtss/atomic.hpp"
-#include "dynamics/integrators/integrator.hpp"
+#include "dynamics/integrators/factory.hpp"
 #include "dynamics/multibody_system.hpp"
 #include "forces/body_load.hpp"
 #include "forces/equalizer.hpp"
@@ -64,12 +67,12 @@ struct MultibodyState {
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
 struct MultibodyOptions {
-  double dt = 1e-3;
-  std::string method = "rk4";   // rk4 | semi_implicit_euler
+  double dt = 1e-3;             // s: the DTSS step, and the integrator's (integrator.dt is ignored)
+  dynamics::IntegratorSpec integrator;  // method and its parameters (docs/integrators.md)
   double driveBandwidth = 0.0;  // rad/s of the joint servos; 0: min(10, 0.1/dt)
   double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
   double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
-  bool projectLoops = true;     // project q and v onto the loop manifold after each step
+  bool projectLoops = true;     // false: no projection even if integrator.loops asks for it
   bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
   bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
   // blow-up bounds (docs/numerics.md): the energy balance may rise by at most this fraction of
@@ -77,12 +80,6 @@ struct MultibodyOptions {
   // energy); a loop residual may reach at most this, m (or rad)
   double energyGrowthLimit = 1.0;
   double loopResidualLimit = 1e-3;
-};
-
-// Work done by the integrator since construction (for `yardsim wp`).
-struct MultibodyCounters {
-  std::uint64_t steps = 0;   // accepted steps
-  std::uint64_t fEvals = 0;  // right-hand-side evaluations: forces + ABA
 };
 
 class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable, public Replayable {
@@ -110,7 +107,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   // (committed state) => per body, the spatial force its joint transmits to it (world frame,
   // moment about the world origin first), by RNEA with the accelerations and all forces; trees
   const std::vector<dynamics::Force>& jointForces() const;
-  const MultibodyCounters& counters() const { return counters_; }
+  // work of the integrator since the start: steps, ABA evaluations, Jacobians, Newton iterations
+  const dynamics::IntegratorStats& integratorStats() const { return integrator_->stats(); }
+  const dynamics::Integrator& integrator() const { return *integrator_; }
   const BuiltMechanics& builtMechanics() const { return mech_; }
   const MultibodyOptions& options() const { return opt_; }
   void replayBodies(Replay& out) const override;
@@ -196,7 +195,6 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   mutable const MultibodyState* powerState_ = nullptr;
   double energyBound_ = 0.0;  // J: largest rise of the energy balance before it is a blow-up
   double balance0_ = 0.0;     // J: the energy balance at the start
-  mutable MultibodyCounters counters_;
 };
 
 }  // namespace yardsim::models

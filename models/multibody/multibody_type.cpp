@@ -6,10 +6,23 @@
 namespace yardsim::models {
 namespace {
 
+// (params) => the integrator's spec (method and its parameters; dt is the model's)
+dynamics::IntegratorSpec integratorSpec(const Params& p) {
+  dynamics::IntegratorSpec s;
+  s.method = p.string("method");
+  s.dt = p.number("dt");
+  s.alpha = p.number("alpha");
+  s.rhoInf = p.number("rho_inf");
+  s.rtol = p.number("rtol");
+  s.atol = p.number("atol");
+  s.maxOrder = static_cast<int>(p.number("max_order"));
+  return s;
+}
+
 MultibodyOptions options(const Params& p) {
   MultibodyOptions o;
   o.dt = p.number("dt");
-  o.method = p.string("method");
+  o.integrator = integratorSpec(p);
   o.driveBandwidth = p.number("drive_bandwidth");
   o.driveMaxEffort = p.number("drive_max_effort");
   o.driveTolerance = p.number("drive_tolerance");
@@ -36,7 +49,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
         {
             {"bodies", ParamKind::Map, true, "", "",
              "name: {parent, joint: {type, axis, q0|q0_deg, v0}, placement: {xyz, rpy_deg}, mass, "
-             "com, inertia, geometry}"},
+             "com, inertia, geometry, added_mass: {matrix, about} or {hull, rho}}"},
             {"loops", ParamKind::Any, false, "{}", "",
              "name: {body_a, frame_a, body_b, frame_b, constrain: point|axis|weld}"},
             {"ropes", ParamKind::Any, false, "{}", "",
@@ -64,7 +77,14 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             {"damping", ParamKind::Any, false, "{}", "",
              "name: {body, point, linear: [6], quadratic: [6]} (surge, sway, heave, roll, pitch, yaw)"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
-            {"method", ParamKind::String, false, "rk4", "", "rk4 or semi_implicit_euler"},
+            {"method", ParamKind::String, false, "rk4", "",
+             "integration method (docs/integrators.md): explicit_euler, semi_implicit_euler, rk4, ab2, "
+             "ab3, ab4, hht, generalized_alpha, cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, arkode_imex"},
+            {"alpha", ParamKind::Number, false, "-0.1", "", "hht: alpha in [-1/3, 0]"},
+            {"rho_inf", ParamKind::Number, false, "0.8", "", "generalized_alpha: rho_inf in [0, 1]"},
+            {"rtol", ParamKind::Number, false, "1e-6", "", "adaptive methods: relative tolerance"},
+            {"atol", ParamKind::Number, false, "1e-8", "", "adaptive methods: absolute tolerance"},
+            {"max_order", ParamKind::Number, false, "0", "", "cvode_bdf, cvode_adams: maximum order (0: 5, 12)"},
             {"drive_bandwidth", ParamKind::Number, false, "0", "rad/s",
              "joint servo bandwidth (0: min(10, 0.1/dt))"},
             {"drive_max_effort", ParamKind::Number, false, "0", "N m or N",
@@ -86,9 +106,12 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
     .check =
         [](const Params& p, ParamCheck& c) {
           if (!(p.number("dt") > 0)) c.error("dt", "must be > 0 s");
-          const auto method = p.string("method");
-          if (method != "rk4" && method != "semi_implicit_euler")
-            c.error("method", "expected rk4 or semi_implicit_euler, got '" + method + "'");
+          for (const auto& problem : dynamics::checkIntegratorSpec(integratorSpec(p))) {
+            if (problem.key == "dt") continue;
+            const std::string hint =
+                problem.key == "method" ? didYouMean(p.string("method"), dynamics::integratorMethodNames()) : "";
+            c.error(problem.key, problem.message + (hint.empty() ? "" : " (" + hint + ")"));
+          }
           const MechanicsSpec spec = parseMechanics(
               p, [&](const std::string& param, const YAML::Node& at, const std::string& key,
                      const std::string& msg) { c.errorAt(param, at, key, msg); });

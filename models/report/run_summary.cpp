@@ -38,7 +38,7 @@ void systems(const devs::Model& m, std::string& out) {
     out += out.back() == '[' ? "{\"model\":" : ",{\"model\":";
     appendJsonString(out, mb->path());
     out += ",\"method\":";
-    appendJsonString(out, mb->options().method);
+    appendJsonString(out, mb->options().integrator.method);
     out += ",\"dt\":";
     appendJsonNumber(out, mb->options().dt);
     out += "}";

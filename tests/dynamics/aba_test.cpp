@@ -15,10 +15,12 @@ using namespace yardsim::dynamics::testing;
 
 TEST_CASE("ABA = M^-1 (tau - h) and RNEA(ABA(tau)) = tau on random trees") {
   std::mt19937 rng(17);
-  for (int trial = 0; trial < 12; ++trial) {
-    const int n = 1 + trial * 3;
-    const Model m = randomTree(rng, n);
-    INFO("bodies " << n);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int n = 1 + (trial % 12) * 3;
+    // the second dozen: every other body carries a full 6x6 added mass
+    const bool added = trial >= 12;
+    const Model m = randomTree(rng, n, {0.0, 0.0, -9.81}, added);
+    INFO("bodies " << n << (added ? " with added mass" : ""));
     Data d(m);
     const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), tau = randomVectorX(rng, m.nv);
     ExternalForces f(m);
@@ -50,4 +52,32 @@ TEST_CASE("ABA of a fixed-base pendulum gives -g/l sin(theta) for a point-like b
   tau << 0.0;
   // about +y, a positive angle swings the bob towards +x: gravity pulls it back
   CHECK(aba(m, d, q, v, tau)[0] == Approx(-9.81 / l * std::sin(0.4)).epsilon(1e-8));
+}
+
+TEST_CASE("added mass slows a body's fall but adds nothing to its weight") {
+  // a free body, centre of mass at its origin, heave added mass A33: released from rest it
+  // accelerates at m g / (m + A33); a coupling A35 (heave-pitch, [angular; linear] entry (1, 5))
+  // makes it pitch as well, as (M + A) a = (0, m g) says
+  const double mass = 500.0, a33 = 300.0;
+  for (const double a35 : {0.0, 40.0}) {
+    ModelBuilder b;
+    b.addBody("float", "world", Joint::free(), {}, boxInertia(mass, Vector3(2.0, 1.0, 1.0)));
+    Matrix6 A = Matrix6::Zero();
+    A(5, 5) = a33;
+    A(1, 5) = A(5, 1) = a35;
+    A(1, 1) = 60.0;
+    b.setAddedMass("float", A);
+    const Model m = b.build();
+    Data d(m);
+    const Eigen::VectorXd q = neutralConfiguration(m), v = Eigen::VectorXd::Zero(6), tau = Eigen::VectorXd::Zero(6);
+    const Eigen::VectorXd ddq = aba(m, d, q, v, tau);
+    const Matrix6 MA = boxInertia(mass, Vector3(2.0, 1.0, 1.0)).matrix() + A;
+    Vector6 weight = Vector6::Zero();
+    weight[5] = -9.81 * mass;
+    const Vector6 expected = MA.ldlt().solve(weight);
+    CHECK(relativeError(ddq, expected) < 1e-12);
+    if (a35 == 0.0) CHECK(ddq[5] == Approx(-9.81 * mass / (mass + a33)));
+    // RNEA gives back zero joint forces at that acceleration
+    CHECK(rnea(m, d, q, v, ddq).norm() < 1e-9 * mass);
+  }
 }

@@ -13,8 +13,9 @@ using namespace yardsim::dynamics::testing;
 
 TEST_CASE("CRBA: symmetric positive definite, kinetic energy, unit-acceleration columns") {
   std::mt19937 rng(18);
-  for (int n : {1, 4, 9, 20}) {
-    Model m = randomTree(rng, n);
+  for (int n : {1, 4, 9, 20, -1, -4, -9}) {
+    // negative n: |n| bodies, every other one with a full 6x6 added mass
+    Model m = randomTree(rng, std::abs(n), {0.0, 0.0, -9.81}, n < 0);
     m.gravity.setZero();
     Data d(m);
     const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv);
@@ -41,4 +42,17 @@ TEST_CASE("a single free body has M = its spatial inertia in the body frame") {
   Data d(m);
   const Eigen::VectorXd q = randomConfiguration(m, rng);
   CHECK(relativeError(crba(m, d, q), I.matrix()) < 1e-13);
+}
+
+TEST_CASE("a single free body with added mass has M = its inertia + the added mass in the body frame") {
+  ModelBuilder b;
+  std::mt19937 rng(21);
+  const SpatialInertia I = randomInertia(rng);
+  const Matrix6 A = randomAddedMass(rng);
+  b.addBody("float", "world", Joint::free(), {}, I);
+  b.setAddedMass("float", A);
+  const Model m = b.build();
+  Data d(m);
+  const Eigen::VectorXd q = randomConfiguration(m, rng);
+  CHECK(relativeError(crba(m, d, q), I.matrix() + A) < 1e-13);
 }

@@ -1,7 +1,10 @@
 // Energy, centre of mass and momentum against hand formulas.
 #include <catch2/catch.hpp>
 
+#include "dynamics/configuration.hpp"
 #include "dynamics/energy.hpp"
+#include "dynamics/integrators/rk4.hpp"
+#include "dynamics/multibody_system.hpp"
 #include "test_models.hpp"
 
 using namespace yardsim::dynamics;
@@ -42,4 +45,48 @@ TEST_CASE("free body momentum: m v_c and I_c w + c x m v_c") {
   CHECK((h.tail<3>() - I.mass * vc).norm() < 1e-13);
   CHECK((h.head<3>() - (I.inertiaCom * w + c.cross(I.mass * vc))).norm() < 1e-12);
   CHECK(kineticEnergy(m, d, q, v) == Approx(0.5 * I.mass * vc.squaredNorm() + 0.5 * w.dot(I.inertiaCom * w)));
+}
+
+TEST_CASE("added mass: kinetic energy 1/2 V (I + A) V and momentum (I + A) V by hand") {
+  std::mt19937 rng(22);
+  ModelBuilder b;
+  const SpatialInertia I = randomInertia(rng);
+  const Matrix6 A = randomAddedMass(rng);
+  b.addBody("float", "world", Joint::free(), {}, I);
+  b.setAddedMass("float", A);
+  const Model m = b.build();
+  Data d(m);
+  Eigen::VectorXd q(7), v(6);
+  q << 1, 2, 3, 1, 0, 0, 0;  // identity orientation: body and world axes agree
+  v = randomVectorX(rng, 6);
+  const Vector6 V = v;
+  CHECK(kineticEnergy(m, d, q, v) == Approx(0.5 * V.dot((I.matrix() + A) * V)));
+  // momentum about the world origin: the body-origin momentum moved by p = (1, 2, 3)
+  const Force h_B = (I.matrix() + A) * V;
+  const Force h = momentum(m, d, q, v);
+  CHECK((h.tail<3>() - h_B.tail<3>()).norm() < 1e-12);
+  CHECK((h.head<3>() - (h_B.head<3>() + Vector3(1, 2, 3).cross(h_B.tail<3>()))).norm() < 1e-11);
+  // gravity acts on the rigid mass only
+  CHECK(potentialEnergy(m, d, q) == Approx(9.81 * I.mass * (3.0 + I.com.z())));
+}
+
+TEST_CASE("a free body with a full added mass conserves energy and momentum (Kirchhoff's equations)") {
+  // no gravity, no forces: the body tumbles and drifts with the fluid's Munk moment; T and the
+  // world-frame momentum (body + fluid impulse) stay constant, to RK4's accuracy
+  std::mt19937 rng(23);
+  ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("float", "world", Joint::free(), {}, randomInertia(rng));
+  b.setAddedMass("float", randomAddedMass(rng));
+  const Model m = b.build();
+  MultibodySystem system(m);
+  Rk4 rk4(m);
+  Data d(m);
+  Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, 6);
+  double t = 0.0;
+  const double T0 = kineticEnergy(m, d, q, v);
+  const Force h0 = momentum(m, d, q, v);
+  for (int k = 0; k < 2000; ++k) rk4.step(system, t, q, v, 1e-3);
+  CHECK(kineticEnergy(m, d, q, v) == Approx(T0).epsilon(1e-9));
+  CHECK((momentum(m, d, q, v) - h0).norm() < 1e-8 * h0.norm());
 }

@@ -2,6 +2,7 @@
 // naming the body or loop.
 #include <catch2/catch.hpp>
 
+#include "dynamics/added_mass.hpp"
 #include "dynamics/model_builder.hpp"
 #include "test_models.hpp"
 
@@ -83,6 +84,44 @@ TEST_CASE("bad models are rejected naming the body") {
                     Contains("loop 'stay'"));
   CHECK_THROWS_WITH(build([](ModelBuilder& b) { b.addLoop("stay", "hull", {}, "world", {}, kRotX | kTransX); }),
                     Contains("loop 'stay'") && Contains("rotational"));
+}
+
+TEST_CASE("a bad added mass is rejected naming the body") {
+  auto build = [](const std::string& body, const Matrix6& A) {
+    ModelBuilder b;
+    b.addBody("hull", "world", Joint::free(), {}, kUnit);
+    b.setAddedMass(body, A);
+    return b.build();
+  };
+  Matrix6 A = Matrix6::Identity();
+  CHECK_NOTHROW(build("hull", A));
+  CHECK(build("hull", A).hasAddedMass[1]);
+  CHECK_FALSE(build("hull", Matrix6::Zero()).hasAddedMass[1]);
+  CHECK_THROWS_WITH(build("pontoon", A), Contains("unknown body 'pontoon'"));
+  A(0, 4) = 0.3;
+  CHECK_THROWS_WITH(build("hull", A), Contains("body 'hull'") && Contains("not symmetric"));
+  A(4, 0) = 0.3;
+  CHECK_NOTHROW(build("hull", A));
+  A(2, 2) = -0.5;
+  CHECK_THROWS_WITH(build("hull", A), Contains("body 'hull'") && Contains("not positive semidefinite"));
+  A(2, 2) = std::nan("");
+  CHECK_THROWS_WITH(build("hull", A), Contains("body 'hull'") && Contains("non-finite"));
+}
+
+TEST_CASE("added mass given in the naval order about a point moves to [angular, linear] about the origin") {
+  // a pure heave added mass a at R = (2, 0, -1): heave at the origin with a pitch lever arm
+  Matrix6 naval = Matrix6::Zero();
+  naval(2, 2) = 5.0;
+  const Matrix6 A = addedMassAboutOrigin(naval, Vector3(2.0, 0.0, -1.0));
+  // a unit upward velocity of the origin with no rotation: momentum 5 up, moment about the origin
+  // R x (0, 0, 5) = (0, -10, 0)
+  Vector6 v = Vector6::Zero();
+  v[5] = 1.0;
+  const Vector6 h = A * v;
+  CHECK(h[5] == Approx(5.0));
+  CHECK(h[1] == Approx(-10.0));
+  CHECK(h[0] == Approx(0.0).margin(1e-14));
+  CHECK((A - A.transpose()).norm() < 1e-14);
 }
 
 TEST_CASE("loops get consecutive rows") {

@@ -78,8 +78,17 @@ inline const std::vector<JointType>& allJointTypes() {
   return types;
 }
 
-/// A random tree of n bodies whose joints cycle through every joint type (the first is free).
-inline Model randomTree(std::mt19937& rng, int n, Vector3 gravity = {0.0, 0.0, -9.81}) {
+/// A random symmetric positive definite 6x6 of the size of randomInertia's (an added mass: not a
+/// rigid-body inertia, every block full).
+inline Matrix6 randomAddedMass(std::mt19937& rng) {
+  Matrix6 B;
+  for (int k = 0; k < 6; ++k) B.col(k) = randomVectorX(rng, 6);
+  return B * B.transpose() + 0.1 * Matrix6::Identity();
+}
+
+/// A random tree of n bodies whose joints cycle through every joint type (the first is free);
+/// with addedMass, every other body (the first included) also carries a random added mass.
+inline Model randomTree(std::mt19937& rng, int n, Vector3 gravity = {0.0, 0.0, -9.81}, bool addedMass = false) {
   ModelBuilder b;
   b.setGravity(gravity);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -89,6 +98,7 @@ inline Model randomTree(std::mt19937& rng, int n, Vector3 gravity = {0.0, 0.0, -
     const JointType t = i == 0 ? JointType::Free : types[static_cast<std::size_t>(i - 1) % types.size()];
     b.addBody(indexed("b", i), parent, jointOfType(t, rng), Transform{randomRotation(rng), randomVector(rng)},
               randomInertia(rng));
+    if (addedMass && i % 2 == 0) b.setAddedMass(indexed("b", i), randomAddedMass(rng));
   }
   return b.build();
 }

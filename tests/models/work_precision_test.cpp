@@ -96,3 +96,25 @@ TEST_CASE("a run that blows up is a row with status blow-up, not a failure of th
   CHECK(r.rows[0].omegaDt == Approx(5.95).epsilon(0.01));
   CHECK(std::isinf(r.rows[0].error.rms));
 }
+
+TEST_CASE("an adaptive sweep: one run per tolerance, the integrator's own work counted, errors falling") {
+  testing::SceneDir dir;
+  auto scene = models::loadSceneOrThrow(dir.write("bounce.yaml", kBounce));
+  models::Diagnostics d;
+  models::WpSpec spec = models::parseWpSpec(*scene, d);
+  REQUIRE_FALSE(d.hasErrors());
+  spec.runs = {{"bdf", "cvode_bdf", 0.0, 1e-4, {}}, {"bdf", "cvode_bdf", 0.0, 1e-7, {}}};
+  const auto r = models::workPrecision(*scene, spec);
+  REQUIRE(r.rows.size() == 2);
+  for (const auto& row : r.rows) {
+    CHECK(row.status == "ok");
+    CHECK(row.series.jacEvals > 0);
+    CHECK(row.series.newtonIts > 0);
+    CHECK(row.series.fEvals > row.series.steps);
+    // omega_dt is omega_max times the mean internal step
+    CHECK(row.omegaDt == Approx(r.omegaMax * 1.0 / static_cast<double>(row.series.steps)));
+  }
+  CHECK(r.rows[1].series.steps > r.rows[0].series.steps);
+  CHECK(r.rows[1].error.rms < 0.1 * r.rows[0].error.rms);
+  CHECK(r.rows[0].run.param() == "rtol=0.0001");
+}

@@ -8,7 +8,7 @@
 using namespace yardsim::dynamics;
 using namespace yardsim::dynamics::testing;
 
-TEST_CASE("chart state: gather then scatter returns q and v, any theta gives unit quaternions") {
+TEST_CASE("chart state: gather then scatter returns q and v, and any theta gives unit quaternions") {
   std::mt19937 rng(5);
   const Model m = randomTree(rng, 9);
   ChartState chart(m);

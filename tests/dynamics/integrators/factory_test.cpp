@@ -110,3 +110,27 @@ TEST_CASE("loop stabilisation is selectable: projection holds the four-bar close
   CHECK(b1 < 1.5 * b0);      // with Baumgarte it stays bounded
   CHECK(b1 < 0.1 * none1);
 }
+
+TEST_CASE("every method keeps the quaternions of ball and free joints at unit length") {
+  std::mt19937 rng(11);
+  const Model m = randomTree(rng, 7);  // free root, then every joint type (a ball joint among them)
+  const Eigen::VectorXd q0 = randomConfiguration(m, rng), v0 = randomVectorX(rng, m.nv, 3.0);
+  for (const MethodInfo& info : integratorMethods()) {
+    INFO(info.name);
+    IntegratorSpec s = specOf(std::string(info.name));
+    s.dt = 0.01;
+    MultibodySystem sys(m);
+    const auto integ = makeIntegrator(s, m);
+    Eigen::VectorXd q = q0, v = v0;
+    double t = 0.0, worst = 0.0;
+    for (int k = 0; k < 50; ++k) {
+      integ->step(sys, t, q, v, s.dt);
+      for (int i = 1; i < m.nbodies; ++i) {
+        const JointType type = m.joints[i].type;
+        if (type == JointType::Spherical) worst = std::max(worst, std::abs(q.segment<4>(m.idxQ[i]).norm() - 1.0));
+        if (type == JointType::Free) worst = std::max(worst, std::abs(q.segment<4>(m.idxQ[i] + 3).norm() - 1.0));
+      }
+    }
+    CHECK(worst < 1e-14);
+  }
+}

@@ -1,7 +1,8 @@
 // The clipped hull against closed forms: a box barge and a vertical cylinder at several drafts
 // (exact for the polyhedra, second-order convergence to the round cylinder), a box heeled by 5
 // and 20 degrees against the wall-sided formula, sphere caps, fully submerged and dry hulls, and
-// the Froude-Krylov heave force of a small box in a long wave (Smith effect e^{-kT}).
+// the Froude-Krylov heave force of a small box in a long wave (Smith effect e^{-kT}), and the
+// Froude-Krylov force of a small submerged box against the particle acceleration.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -182,4 +183,23 @@ TEST_CASE("a small box in a long wave feels the Froude-Krylov heave force rho g 
     CHECK(p.force.z() == Approx(kRho * kG * A * (T + wave)).margin(kRho * kG * A * a * 0.05));
     CHECK(std::abs(p.force.z() - kRho * kG * A * T) > 0.5 * kRho * kG * A * std::abs(wave) - 1e-9);
   }
+}
+
+TEST_CASE("a small submerged box feels the Froude-Krylov force rho V (g z + du/dt) of the wave") {
+  // (-grad p = rho g z_hat + rho du/dt in linear theory) => the pressure integral over a body
+  // small against the wave length equals rho V times the particle acceleration at its centre
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 60.0, 0.0}, {{1.0, 8.0, 0.4, 0.0}});
+  const TriangleMesh hull = boxMesh(Vector3(1.0, 1.0, 1.0), 2, 2, 2);
+  SubmergedWorkspace ws(hull);
+  const Vector3 c(3.0, -2.0, -6.0);
+  double biggest = 0.0;
+  for (double t : {0.0, 1.0, 2.5, 4.0, 6.5}) {
+    INFO("t = " << t);
+    const SubmergedProperties p = integrateSubmerged(hull, Transform::translation(c), sea, t, ws);
+    const Vector3 expected = kRho * 1.0 * (Vector3(0, 0, kG) + sea.acceleration(c, t));
+    const Vector3 wave = kRho * sea.acceleration(c, t);
+    CHECK((p.force - expected).norm() < 0.02 * wave.norm() + 1e-9 * kRho * kG);
+    biggest = std::max(biggest, wave.head<2>().norm());
+  }
+  CHECK(biggest > 50.0);  // the horizontal wave force is there to be checked (N)
 }

@@ -12,6 +12,7 @@
 #include "models/assembler.hpp"
 #include "models/channels.hpp"
 #include "models/mechanical_systems.hpp"
+#include "models/resolved_listing.hpp"
 #include "models/scene_loader.hpp"
 #include "support/scene_files.hpp"
 
@@ -84,6 +85,7 @@ TEST_CASE("a free box from YAML floats at the draft of its mass, with its channe
   CHECK(spec.current->profile.size() == 2);
   REQUIRE(spec.wind);
   CHECK(spec.wind->exponent == 0.12);
+  CHECK_THAT(models::resolvedListing(*r.scene), Contains("barge hydrostatics:hull wind_load:wind current_load:current damping:damping"));
   auto root = models::assemble(*r.scene);
   const auto ch = models::collectChannels(*root);
   // (keel at -1.5 m: body origin at mid-depth, z = 2 - 1.5) => already at equilibrium draft

@@ -50,9 +50,12 @@ std::string wpSummary(const WpResult& r, const WpSpec& spec) {
   s.precision(3);
   s << "Scene `" << r.scene << "`: omega_max = " << r.omegaMax << " rad/s; error channels";
   for (const auto& c : spec.channels) s << " `" << c << "`";
-  s << "; reference " << spec.reference.label << " " << spec.reference.param() << ", checked by "
-    << spec.check.label << " " << spec.check.param() << ": E_rms " << r.referenceCheck.rms << " m, E_max "
-    << r.referenceCheck.max << " m (errors below that are measured against the reference alone).\n\n";
+  s << "; reference " << spec.reference.label << " " << spec.reference.param();
+  if (spec.check.method.empty())
+    s << " (published, not checked by a second run).\n\n";
+  else
+    s << ", checked by " << spec.check.label << " " << spec.check.param() << ": E_rms " << r.referenceCheck.rms
+      << " m, E_max " << r.referenceCheck.max << " m (errors below that are measured against the reference alone).\n\n";
   s << "| method | time to E_rms <= 1e-3 m | time to E_rms <= 1e-6 m | blow-ups |\n|---|---|---|---|\n";
   for (const auto& m : methods(r)) {
     // (runs of this method) => the cheapest reaching each tolerance, and the ones that blew up

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include "models/work_precision_spec.hpp"
 
 #include <cmath>
@@ -10,6 +11,7 @@ namespace yardsim::models {
 std::string WpRun::param() const {
   std::ostringstream s;
   s.precision(6);
+  if (!(dt > 0) && !(rtol > 0)) return "";  // a published reference
   if (rtol > 0) s << "rtol=" << rtol;
   else s << "dt=" << dt;
   return s.str();
@@ -62,8 +64,20 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
     for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) r.extra.remove(k);
     return r;
   };
-  spec.reference = single(wp["reference"], "wp.reference");
-  spec.check = single(wp["check"], "wp.check");
+  const YAML::Node ref = wp["reference"];
+  if (ref && ref.IsMap() && ref["file"]) {
+    // (reference: {file}) => a published solution, relative to the scene file
+    checkKeys(ref, {"file"}, f, "wp.reference", d);
+    const std::string name = ref["file"].as<std::string>();
+    const std::filesystem::path path = scene.file.parent_path() / name;
+    if (!std::filesystem::is_regular_file(path))
+      d.error(markOf(ref["file"], f), "wp.reference.file", "no such file: " + path.string());
+    spec.referenceFile = path.string();
+    spec.reference.label = spec.reference.method = "file " + name;
+  } else {
+    spec.reference = single(ref, "wp.reference");
+  }
+  if (wp["check"] || spec.referenceFile.empty()) spec.check = single(wp["check"], "wp.check");
   if (!spec.check.method.empty() && spec.check.method == spec.reference.method)
     d.error(markOf(wp["check"], f), "wp.check",
             "the check must use a different method than the reference (" + spec.reference.method +

@@ -10,7 +10,8 @@
 //     methods:                       # one sweep each
 //       - {method: rk4, dt0: 0.01, levels: 5}        # fixed step dt0 / 2^k, k = 0..levels-1
 //       - {method: cvode_bdf, rtol: [1.0e-3, 1.0e-10], label: bdf}  # adaptive: one run per decade
-//     reference: {method: rk4, dt: 1.0e-4}           # a tight run (dt or rtol)
+//     reference: {method: rk4, dt: 1.0e-4}           # a tight run (dt or rtol), or a published
+//                                                    # solution: {file: ref.csv} (time, channels)
 //     check: {method: semi_implicit_euler, dt: 1.0e-5}  # a second, independent one
 //     repeats: 3                     # timed runs after the warm-up; wall_median_s is their median
 #include <string>
@@ -38,7 +39,9 @@ struct WpSpec {
   double interval = 0.0;
   double until = 0.0;
   std::vector<WpRun> runs;  // every method's sweep, in order
-  WpRun reference, check;
+  WpRun reference, check;   // check: optional with a reference file
+  std::string referenceFile;  // a published reference (work_precision_reference.hpp), or ""
+
   int repeats = 3;
 };
 

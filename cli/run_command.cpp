@@ -7,6 +7,7 @@
 #include "cli/logging.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
+#include "devs/coupled.hpp"
 #include "models/assembler.hpp"
 #include "models/runner.hpp"
 
@@ -34,7 +35,13 @@ int runCommand(const RunArgs& a) {
   ProgressPrinter printer;
   if (!a.quiet) opt.progress = [&](const models::Progress& p) { printer(p); };
   auto log = logger("cli");
-  auto root = models::assemble(*scene);
+  std::unique_ptr<devs::Coupled> root;
+  try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
+    root = models::assemble(*scene);
+  } catch (const devs::SimulationError& e) {
+    std::fprintf(stderr, "numerical failure before the run: %s\nnothing was simulated\n", e.what());
+    return kNumericalFailure;
+  }
   try {
     const models::RunResult r = models::runScene(*scene, *root, opt);
     printer.finish();

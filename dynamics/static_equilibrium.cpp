@@ -2,6 +2,9 @@
 
 #include <Eigen/QR>
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include "dynamics/configuration.hpp"
 
@@ -20,9 +23,19 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
     system.acceleration(t, qq, v, out);
     return out.size() ? out.cwiseAbs().maxCoeff() : 0.0;
   };
+  // (trial q) => its residual, +inf where the system cannot evaluate it (far from anything)
+  auto trialResidual = [&](Eigen::VectorXd& qq, Eigen::VectorXd& out) {
+    try {
+      const double r = residual(qq, out);
+      return std::isfinite(r) ? r : std::numeric_limits<double>::infinity();
+    } catch (const std::runtime_error&) {
+      return std::numeric_limits<double>::infinity();
+    }
+  };
   EquilibriumResult result;
   result.residual = residual(q, a);
   double sigma = 0.0;
+  int neutral = 0;  // accepted moves in a row that did not lower the residual
   while (result.residual > options.tolerance && result.iterations < options.maxIterations) {
     ++result.iterations;
     // (q) => J = da/dx, one tangent direction at a time
@@ -30,7 +43,7 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
       e.setZero();
       e[k] = options.step;
       integrate(model, q, e, 1.0, qTrial);
-      residual(qTrial, aTrial);
+      if (!std::isfinite(trialResidual(qTrial, aTrial))) aTrial = a;  // no information there
       J.col(k) = (aTrial - a) / options.step;
     }
     const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());  // 1/s^2
@@ -42,16 +55,21 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
       Eigen::MatrixXd A = J;
       A.diagonal().array() -= sigma;
       dx = A.completeOrthogonalDecomposition().solve(-a);
+      bool descent = false;
       if (dx.allFinite()) {
         integrate(model, q, dx, 1.0, qTrial);
         normalizeConfiguration(model, qTrial);
-        const double trial = residual(qTrial, aTrial);
+        const double trial = trialResidual(qTrial, aTrial);
         // a descent, or (with sigma > 0) a move that changes nothing yet: falling onto a slack
-        // rope leaves the residual at g until the rope bites
-        accepted = trial < result.residual || (sigma > 0.0 && trial <= result.residual * (1.0 + 1e-12));
+        // rope leaves the residual at g until the rope bites; such moves keep their size and
+        // are limited in number (a body with nothing under it falls forever)
+        descent = trial < result.residual;
+        accepted = descent || (sigma > 0.0 && neutral < options.maxNeutralSteps &&
+                               trial <= result.residual * (1.0 + 1e-12));
       }
       if (accepted) {
-        sigma = sigma * 0.1 < 1e-12 * scale ? 0.0 : sigma * 0.1;
+        neutral = descent ? 0 : neutral + 1;
+        if (descent) sigma = sigma * 0.1 < 1e-12 * scale ? 0.0 : sigma * 0.1;
       } else {
         sigma = sigma == 0.0 ? 1e-6 * scale : sigma * 10.0;
       }

@@ -16,6 +16,7 @@ struct EquilibriumOptions {
   double tolerance = 1e-9;   // on max |a| (m/s^2 or rad/s^2)
   int maxIterations = 50;
   double step = 1e-7;        // finite-difference increment in tangent coordinates
+  int maxNeutralSteps = 20;  // moves in a row that leave the residual as it is (a fall onto slack ropes)
 };
 
 struct EquilibriumResult {

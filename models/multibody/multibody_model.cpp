@@ -507,9 +507,8 @@ double MultibodyModel::energyOf(const MultibodyState& x, double t, dynamics::Dat
   dynamics::forwardKinematics(m, d, x.q, x.v);
   double e = 0.0;
   for (int i = 1; i < m.nbodies; ++i) {
-    e += 0.5 * d.V[i].dot(m.inertias[i].apply(d.V[i])) -
+    e += dynamics::bodyKineticEnergy(m, i, d.V[i]) -  // with the fluid's share (added mass)
          m.inertias[i].mass * m.gravity.dot(d.X_WB[i].actPoint(m.inertias[i].com));
-    if (m.hasAddedMass[i]) e += 0.5 * d.V[i].dot(m.addedMass[i] * d.V[i]);  // the fluid's kinetic energy
   }
   const forces::Stage stage{t, m, d, x.q, x.v};
   for (const auto& r : ropes_) e += r->potentialEnergy(stage);

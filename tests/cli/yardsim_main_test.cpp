@@ -142,6 +142,25 @@ until: 10
   CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 1);
 }
 
+TEST_CASE("a scene asking for an equilibrium that does not exist exits 2 before the run, saying why") {
+  yardsim::testing::SceneDir dir;
+  // a free block with nothing to rest on: it would fall forever
+  const auto scene = dir.write("fall.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  equilibrium: true
+  bodies:
+    block: {parent: world, joint: {type: free}, mass: 1000, inertia: [1, 1, 1]}
+record: {interval: 0.1}
+until: 1
+)");
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out, Catch::Contains("no static equilibrium") && Catch::Contains("multibody 'mechanics'") &&
+                        Catch::Contains("suggestion") && Catch::Contains("nothing was simulated"));
+}
+
 TEST_CASE("yardsim run --report and yardsim report write report.html, and refuse a folder without a run") {
   yardsim::testing::SceneDir dir;
   const std::string pendulum = std::string(YARDSIM_SOURCE_DIR) + "/examples/double_pendulum/scene.yaml";

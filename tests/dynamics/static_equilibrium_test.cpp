@@ -72,3 +72,16 @@ TEST_CASE("a mass on a vertical spring settles at z = -m g / k, and a free slide
   CHECK(q[1] == Approx(-200.0 * 9.81 / k).epsilon(1e-9));
   CHECK(q[0] == Approx(0.7).margin(1e-12));  // no stiffness along the slide: not moved
 }
+
+TEST_CASE("a body with nothing to rest on has no equilibrium: reported, not thrown, state finite") {
+  ModelBuilder b;
+  b.addBody("block", "world", Joint::free(), Transform::identity(), boxInertia(1000.0, Vector3::Ones()));
+  const Model m = b.build();
+  MultibodySystem sys(m);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq);
+  q[3] = 1.0;
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  CHECK_FALSE(r.converged);
+  CHECK(r.residual == Approx(9.81));
+  CHECK(q.allFinite());
+}

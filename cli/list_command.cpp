@@ -4,7 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
-#include "models/assembler.hpp"
+#include "scene/assembler.hpp"
 #include "models/channels.hpp"
 #include "models/registry.hpp"
 
@@ -38,7 +38,7 @@ int listTypesCommand() {
 int listChannelsCommand(const std::string& file) {
   auto scene = loadAndReport(file);
   if (!scene) return kInvalidInput;
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   for (const auto& c : models::collectChannels(*root)) std::printf("%s\n", c.column().c_str());
   return kOk;
 }

@@ -11,7 +11,7 @@ namespace yardsim::cli {
 
 ProgressPrinter::ProgressPrinter() : tty_(isatty(STDERR_FILENO) != 0) {}
 
-void ProgressPrinter::operator()(const models::Progress& p) {
+void ProgressPrinter::operator()(const run::Progress& p) {
   const bool bounded = std::isfinite(p.until) && p.until > 0;
   const double frac = bounded ? std::min(1.0, p.t / p.until) : 0.0;
   const double rtf = p.wall > 0 ? p.t / p.wall : 0.0;

@@ -4,7 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/logging.hpp"
-#include "models/report/report_writer.hpp"
+#include "output/report_writer.hpp"
 
 namespace yardsim::cli {
 
@@ -19,7 +19,7 @@ int reportCommand(const std::string& outdir, bool quiet) {
                  outdir.c_str());
     return kInvalidInput;
   }
-  models::writeReport(outdir);
+  output::writeReport(outdir);
   if (!quiet) logger("cli")->info("report: {}", (std::filesystem::path(outdir) / "report.html").string());
   return kOk;
 }

@@ -8,15 +8,15 @@
 #include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "devs/coupled.hpp"
-#include "models/assembler.hpp"
-#include "models/runner.hpp"
+#include "scene/assembler.hpp"
+#include "run/runner.hpp"
 
 namespace yardsim::cli {
 
 int runCommand(const RunArgs& a) {
   auto scene = loadAndReport(a.scene);
   if (!scene) return kInvalidInput;
-  models::RunOptions opt;
+  run::RunOptions opt;
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
   opt.trace = a.traceGiven ? a.trace : scene->trace;
@@ -33,17 +33,17 @@ int runCommand(const RunArgs& a) {
       return kInvalidInput;
     }
   ProgressPrinter printer;
-  if (!a.quiet) opt.progress = [&](const models::Progress& p) { printer(p); };
+  if (!a.quiet) opt.progress = [&](const run::Progress& p) { printer(p); };
   auto log = logger("cli");
   std::unique_ptr<devs::Coupled> root;
   try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
-    root = models::assemble(*scene);
+    root = scene::assemble(*scene);
   } catch (const devs::SimulationError& e) {
     std::fprintf(stderr, "numerical failure before the run: %s\nnothing was simulated\n", e.what());
     return kNumericalFailure;
   }
   try {
-    const models::RunResult r = models::runScene(*scene, *root, opt);
+    const run::RunResult r = run::runScene(*scene, *root, opt);
     printer.finish();
     if (!a.quiet)
       log->info("{}: simulated {:.6g} s in {:.3g} s wall (real-time factor {:.3g}), {} samples, "

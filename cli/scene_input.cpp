@@ -2,12 +2,12 @@
 
 #include <cstdio>
 
-#include "models/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 
 namespace yardsim::cli {
 
-std::unique_ptr<models::Scene> loadAndReport(const std::string& file) {
-  models::LoadResult r = models::loadScene(file);
+std::unique_ptr<scene::Scene> loadAndReport(const std::string& file) {
+  scene::LoadResult r = scene::loadScene(file);
   for (const auto& d : r.diagnostics.all()) std::fprintf(stderr, "%s\n", models::format(d).c_str());
   if (!r.scene)
     std::fprintf(stderr, "%s: %zu error(s); nothing was simulated\n", file.c_str(),

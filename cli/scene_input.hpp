@@ -2,12 +2,12 @@
 #include <memory>
 #include <string>
 
-#include "models/scene.hpp"
+#include "scene/scene.hpp"
 
 namespace yardsim::cli {
 
 // (scene file) => the validated scene, or nullptr once every error is printed to stderr;
 // warnings are printed either way
-std::unique_ptr<models::Scene> loadAndReport(const std::string& file);
+std::unique_ptr<scene::Scene> loadAndReport(const std::string& file);
 
 }  // namespace yardsim::cli

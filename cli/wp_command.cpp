@@ -3,8 +3,8 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/scene_input.hpp"
-#include "models/work_precision.hpp"
-#include "models/work_precision_output.hpp"
+#include "studies/work_precision.hpp"
+#include "studies/work_precision_output.hpp"
 
 namespace yardsim::cli {
 
@@ -12,7 +12,7 @@ int wpCommand(const WpArgs& a) {
   auto scene = loadAndReport(a.scene);
   if (!scene) return kInvalidInput;
   models::Diagnostics diags;
-  models::WpSpec spec = models::parseWpSpec(*scene, diags);
+  studies::WpSpec spec = studies::parseWpSpec(*scene, diags);
   if (a.repeats > 0) spec.repeats = a.repeats;
   for (const auto& d : diags.all()) std::fprintf(stderr, "%s\n", models::format(d).c_str());
   if (diags.hasErrors()) return kInvalidInput;
@@ -20,9 +20,9 @@ int wpCommand(const WpArgs& a) {
     const auto log = [&](const std::string& line) {
       if (!a.quiet) std::fprintf(stderr, "wp: %s\n", line.c_str());
     };
-    const models::WpResult r = models::workPrecision(*scene, spec, log);
-    models::writeWp(r, spec, a.outdir);
-    std::fputs(models::wpSummary(r, spec).c_str(), stdout);
+    const studies::WpResult r = studies::workPrecision(*scene, spec, log);
+    studies::writeWp(r, spec, a.outdir);
+    std::fputs(studies::wpSummary(r, spec).c_str(), stdout);
     std::printf("\nwritten: %s/wp.csv, wp.html, summary.md\n", a.outdir.c_str());
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "%s: %s\n", a.scene.c_str(), e.what());

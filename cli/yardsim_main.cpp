@@ -6,13 +6,13 @@
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/logging.hpp"
-#include "models/timeseries_writer.hpp"
+#include "run/timeseries_writer.hpp"
 
 namespace yardsim::cli {
 
 int yardsimMain(int argc, char** argv) {
   CLI::App app{"yardsim: heavy-lift and marine operation simulator"};
-  app.set_version_flag("--version", std::string("yardsim ") + models::kVersion);
+  app.set_version_flag("--version", std::string("yardsim ") + run::kVersion);
   app.require_subcommand(1);
 
   RunArgs run;

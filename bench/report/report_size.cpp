@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "models/report/gltf_writer.hpp"
-#include "models/report/report_writer.hpp"
-#include "models/timeseries_writer.hpp"
+#include "output/gltf_writer.hpp"
+#include "output/report_writer.hpp"
+#include "run/timeseries_writer.hpp"
 
 using namespace yardsim;
 
@@ -18,13 +18,13 @@ int main(int argc, char** argv) {
   // (3 channels, 100,000 samples) => timeseries.csv
   double t = 0.0;
   {
-    models::Scene scene;
+    scene::Scene scene;
     scene.name = "report_size";
     std::vector<models::Channel> ch{
         {"crane1.hoist.tension", "N", [&] { return 4.5e6 * (1.0 + 0.1 * std::sin(3.0 * t)); }},
         {"crane2.hoist.tension", "N", [&] { return 4.4e6 * (1.0 + 0.1 * std::cos(2.0 * t)); }},
         {"block.roll", "rad", [&] { return 0.01 * t; }}};
-    models::TimeseriesWriter w(out / "timeseries.csv", scene, ch);
+    run::TimeseriesWriter w(out / "timeseries.csv", scene, ch);
     for (int k = 0; k < 100000; ++k) {
       t = 0.01 * k;
       w.sample(t);
@@ -43,9 +43,9 @@ int main(int argc, char** argv) {
     }
     r.bodies.push_back(body);
   }
-  models::writeGlb(r, out / "replay.glb");
+  output::writeGlb(r, out / "replay.glb");
   const auto start = std::chrono::steady_clock::now();
-  models::writeReport(out);
+  output::writeReport(out);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto mb = [&](const char* f) { return static_cast<double>(std::filesystem::file_size(out / f)) / 1e6; };
   std::printf("timeseries.csv %.2f MB, replay.glb %.2f MB, report.html %.2f MB, written in %.3f s\n",

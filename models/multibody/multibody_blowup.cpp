@@ -9,11 +9,16 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "models/multibody/multibody_model.hpp"
-#include "models/multibody/stiffness_estimate.hpp"
+#include "mechanics/stiffness_estimate.hpp"
 #include "models/numerical_error.hpp"
-#include "models/stiffness_guard.hpp"
+#include "mechanics/step_verdict.hpp"
 
 namespace yardsim::models {
+
+using mechanics::StepVerdict;
+using mechanics::StiffnessEstimate;
+using mechanics::estimateStiffness;
+using mechanics::judgeStep;
 
 double MultibodyModel::energyScale() const {
   // (initial state) => total weight x the system's size, plus its kinetic and strain energy

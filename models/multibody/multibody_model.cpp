@@ -1,3 +1,4 @@
+#include "mechanics/build.hpp"
 #include "models/multibody/multibody_model.hpp"
 
 #include <algorithm>
@@ -10,12 +11,18 @@
 #include "dynamics/rnea.hpp"
 #include "dynamics/rotation.hpp"
 #include "dynamics/static_equilibrium.hpp"
-#include "models/multibody/providers.hpp"
+#include "mechanics/providers.hpp"
 #include "forces/current_load.hpp"
 #include "forces/wind_load.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
+
+using mechanics::BuiltMechanics;
+using mechanics::MechanicsSpec;
+using mechanics::Providers;
+using mechanics::makeProviders;
+using mechanics::missingEnvironment;
 
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
   os << "q=[";

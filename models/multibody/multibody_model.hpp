@@ -26,11 +26,13 @@
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/wire_rope.hpp"
 #include "models/channels.hpp"
-#include "models/multibody/mechanics_spec.hpp"
+#include "mechanics/description.hpp"
 #include "models/multibody/messages.hpp"
-#include "models/report/replay.hpp"
+#include "models/replay.hpp"
 
 namespace yardsim::models {
+
+using mechanics::BuiltMechanics;
 
 // A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
 // motion prescribed (the ramp exactly; the joint is locked at the target afterwards).

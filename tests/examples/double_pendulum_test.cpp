@@ -6,17 +6,17 @@
 #include <map>
 
 #include "devs/simulator.hpp"
-#include "models/assembler.hpp"
+#include "scene/assembler.hpp"
 #include "models/multibody/multibody_model.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("double pendulum: actor 2 finishes first, actor 3 starts after both, 135 and 30 deg") {
-  auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                         "/examples/double_pendulum/scene.yaml");
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   devs::Simulator sim(*root);
   testing::RecordCollector rec(false);
   sim.addListener(rec);

@@ -5,19 +5,19 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "models/assembler.hpp"
-#include "models/runner.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/assembler.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("floating barge: draft, trim, wind heel and roll period of the hand formulas, and waves roll it") {
-  auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/floating_barge/scene.yaml");
-  auto root = models::assemble(*scene);
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/floating_barge/scene.yaml");
+  auto root = scene::assemble(*scene);
   testing::SceneDir out;
-  models::runScene(*scene, *root, {out.path(), 80.0, {}, {}, 0.1});
+  run::runScene(*scene, *root, {out.path(), 80.0, {}, {}, 0.1});
   const testing::CsvFile csv((out.path() / "timeseries.csv").string());
   const int t = 0, draft = csv.column("hull.draft[m]"), heel = csv.column("hull.heel[rad]"),
             trim = csv.column("hull.trim[rad]"), gm = csv.column("hull.gm_t[m]"),

@@ -8,9 +8,9 @@
 
 #include "devs/simulator.hpp"
 #include "dynamics/model.hpp"
-#include "models/assembler.hpp"
+#include "scene/assembler.hpp"
 #include "models/multibody/multibody_model.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
@@ -34,9 +34,9 @@ const char* kRopes[] = {"GOC201.upper_fore", "GOC201.upper_aft", "GOC201.lower_f
 }  // namespace
 
 TEST_CASE("goliath turnover: statics, hoisting overshoot, action order, turnover and lowering") {
-  auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                         "/examples/goliath_turnover/scene.yaml");
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   devs::Simulator sim(*root);
   testing::RecordCollector rec(false);
   sim.addListener(rec);

@@ -4,19 +4,19 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "models/assembler.hpp"
-#include "models/runner.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/assembler.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("Ku 2014 verification model: closed loop, slider-crank kinematics, energy") {
-  auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/ku2014_loop/scene.yaml");
-  auto root = models::assemble(*scene);
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/ku2014_loop/scene.yaml");
+  auto root = scene::assemble(*scene);
   testing::SceneDir out;
-  models::runScene(*scene, *root, {out.path(), scene->until, {}, {}, 0.1});
+  run::runScene(*scene, *root, {out.path(), scene->until, {}, {}, 0.1});
   const testing::CsvFile csv((out.path() / "timeseries.csv").string());
   REQUIRE(csv.rows.size() == 201);
   const int q1 = csv.column("mechanism.revolute1.q[rad]");

@@ -5,15 +5,16 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "mechanics/build.hpp"
 #include "devs/simulator.hpp"
-#include "models/assembler.hpp"
-#include "models/mechanical_systems.hpp"
-#include "models/multibody/stiffness_estimate.hpp"
+#include "scene/assembler.hpp"
+#include "scene/mechanical_systems.hpp"
+#include "mechanics/stiffness_estimate.hpp"
 #include "models/numerical_error.hpp"
-#include "models/runner.hpp"
-#include "models/scene_loader.hpp"
-#include "models/stiffness_guard.hpp"
-#include "models/work_precision.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_loader.hpp"
+#include "scene/stiffness_guard.hpp"
+#include "studies/work_precision.hpp"
 #include "support/csv_file.hpp"
 #include "support/record_collector.hpp"
 #include "support/scene_files.hpp"
@@ -33,14 +34,14 @@ struct Outcome {
 };
 
 // (scene, method, step, end time, output folder) => the run, or the numerical failure
-Outcome run(models::Scene& scene, const std::string& method, double dt, double until,
+Outcome runCase(scene::Scene& scene, const std::string& method, double dt, double until,
             const std::filesystem::path& out) {
   scene.integrator = method;
   scene.dt = dt;
-  auto root = models::assemble(scene);
+  auto root = scene::assemble(scene);
   Outcome o;
   try {
-    o.tEnd = models::runScene(scene, *root, {out, until, {}, {}, 0.1}).tEnd;
+    o.tEnd = run::runScene(scene, *root, {out, until, {}, {}, 0.1}).tEnd;
   } catch (const models::NumericalError& e) {
     o.ok = false;
     o.failure = e.what();
@@ -58,17 +59,17 @@ double smallest(const std::filesystem::path& out, const std::string& column) {
   return m;
 }
 
-models::StiffnessEstimate estimateOf(const models::Scene& scene) {
-  return models::estimateStiffness(models::buildMechanics(scene.systems.at(0)->spec));
+mechanics::StiffnessEstimate estimateOf(const scene::Scene& scene) {
+  return mechanics::estimateStiffness(mechanics::buildMechanics(scene.systems.at(0)->spec));
 }
 
 }  // namespace
 
 TEST_CASE("920 t block on four slings: not stiff, every fixed-step method converges at its order") {
-  auto scene = models::loadSceneOrThrow(example("block_920t"));
+  auto scene = scene::loadSceneOrThrow(example("block_920t"));
   CHECK(estimateOf(*scene).omegaMax < 12.0);  // the slowest of the suite: ~9.4 rad/s
   models::Diagnostics d;
-  models::WpSpec spec = models::parseWpSpec(*scene, d);
+  studies::WpSpec spec = studies::parseWpSpec(*scene, d);
   REQUIRE_FALSE(d.hasErrors());
   // a short sweep: 2 s on a 0.1 s grid; each method at two steps in its asymptotic range
   spec.until = 2.0;
@@ -87,7 +88,7 @@ TEST_CASE("920 t block on four slings: not stiff, every fixed-step method conver
   spec.runs.clear();
   for (const Case& c : cases)
     for (double f : {1.0, 0.5}) spec.runs.push_back({c.method, c.method, c.dt * f, 0.0, YAML::Node()});
-  const auto r = models::workPrecision(*scene, spec);
+  const auto r = studies::workPrecision(*scene, spec);
   CHECK(r.referenceCheck.rms < 1e-8);
   for (std::size_t i = 0; i < std::size(cases); ++i) {
     const auto& coarse = r.rows[2 * i];
@@ -103,16 +104,16 @@ TEST_CASE("920 t block on four slings: not stiff, every fixed-step method conver
 
 TEST_CASE("hook on a 16-part hoist over slings holding 920 t: omega_max 119 rad/s, RK4 stable at 0.0125 s, "
           "blowing up at 0.05 s, the guard predicts both") {
-  auto scene = models::loadSceneOrThrow(example("hook_hoist_920t"));
+  auto scene = scene::loadSceneOrThrow(example("hook_hoist_920t"));
   const auto e = estimateOf(*scene);
   CHECK(e.omegaMax == Approx(119.0).epsilon(0.01));
-  CHECK(models::judgeStep(e, "rk4", 0.0125).stable);
-  CHECK_FALSE(models::judgeStep(e, "rk4", 0.05).stable);
+  CHECK(mechanics::judgeStep(e, "rk4", 0.0125).stable);
+  CHECK_FALSE(mechanics::judgeStep(e, "rk4", 0.05).stable);
   testing::SceneDir dir;
-  const Outcome fine = run(*scene, "rk4", 0.0125, 5.0, dir.path() / "a");
+  const Outcome fine = runCase(*scene, "rk4", 0.0125, 5.0, dir.path() / "a");
   CHECK(fine.ok);
   CHECK(fine.tEnd == Approx(5.0));
-  const Outcome blown = run(*scene, "rk4", 0.05, 5.0, dir.path() / "b");
+  const Outcome blown = runCase(*scene, "rk4", 0.05, 5.0, dir.path() / "b");
   CHECK_FALSE(blown.ok);
   CHECK_THAT(blown.failure, Catch::Contains("hook"));
   // the limit is where the guard puts it: just inside 2.83 / omega_max the slings stay taut
@@ -120,15 +121,15 @@ TEST_CASE("hook on a 16-part hoist over slings holding 920 t: omega_max 119 rad/
   // rope bounds the growth, so the run may not stop, but its answer is wrong)
   const double limit = 2.0 * std::sqrt(2.0) / e.omegaMax;
   scene->record.interval = 0.95 * limit;
-  REQUIRE(run(*scene, "rk4", 0.95 * limit, 5.0, dir.path() / "c").ok);
+  REQUIRE(runCase(*scene, "rk4", 0.95 * limit, 5.0, dir.path() / "c").ok);
   CHECK(smallest(dir.path() / "c", "sling1.tension[N]") > 1e6);
   scene->record.interval = 1.1 * limit;
-  if (run(*scene, "rk4", 1.1 * limit, 5.0, dir.path() / "d").ok)
+  if (runCase(*scene, "rk4", 1.1 * limit, 5.0, dir.path() / "d").ok)
     CHECK(smallest(dir.path() / "d", "sling1.tension[N]") == 0.0);
 }
 
 TEST_CASE("3500 t block under a lumped 24-part hoist: omega_max ~1.4e3 rad/s, RK4 needs dt <= ~2 ms") {
-  auto scene = models::loadSceneOrThrow(example("block_3500t"));
+  auto scene = scene::loadSceneOrThrow(example("block_3500t"));
   const auto e = estimateOf(*scene);
   CHECK(e.omegaMax == Approx(1.4e3).epsilon(0.02));
   const double limit = 2.0 * std::sqrt(2.0) / e.omegaMax;
@@ -137,21 +138,21 @@ TEST_CASE("3500 t block under a lumped 24-part hoist: omega_max ~1.4e3 rad/s, RK
   // inside the limit the hoist stays taut (static 1.46 MN per part); just outside, its lumped
   // nodes' mode grows until segments go slack; at twice the limit the run stops at once
   scene->record.interval = 0.9 * limit;
-  REQUIRE(run(*scene, "rk4", 0.9 * limit, 1.0, dir.path() / "a").ok);
+  REQUIRE(runCase(*scene, "rk4", 0.9 * limit, 1.0, dir.path() / "a").ok);
   CHECK(smallest(dir.path() / "a", "hoist1.tension[N]") > 7e5);
   scene->record.interval = 1.15 * limit;
-  if (run(*scene, "rk4", 1.15 * limit, 1.0, dir.path() / "b").ok)
+  if (runCase(*scene, "rk4", 1.15 * limit, 1.0, dir.path() / "b").ok)
     CHECK(smallest(dir.path() / "b", "hoist1.tension[N]") == 0.0);
   scene->record.interval = 0.05;
-  const Outcome blown = run(*scene, "rk4", 2.0 * limit, 1.0, dir.path() / "c");
+  const Outcome blown = runCase(*scene, "rk4", 2.0 * limit, 1.0, dir.path() / "c");
   CHECK_FALSE(blown.ok);
   CHECK_THAT(blown.failure, Catch::Contains("node"));
 }
 
 TEST_CASE("3500 t block hoisted by its winch: HHT at 0.05 s (25 times RK4's limit) follows the block, at order 2") {
-  auto scene = models::loadSceneOrThrow(example("block_3500t"));
+  auto scene = scene::loadSceneOrThrow(example("block_3500t"));
   models::Diagnostics d;
-  models::WpSpec spec = models::parseWpSpec(*scene, d);
+  studies::WpSpec spec = studies::parseWpSpec(*scene, d);
   REQUIRE_FALSE(d.hasErrors());
   spec.until = 1.0;  // the winch starts at 0.2 s
   spec.repeats = 1;
@@ -163,7 +164,7 @@ TEST_CASE("3500 t block hoisted by its winch: HHT at 0.05 s (25 times RK4's limi
                {"generalized_alpha", "generalized_alpha", 0.05, 0.0, YAML::Load("{rho_inf: 0.8}")},
                {"generalized_alpha", "generalized_alpha", 0.025, 0.0, YAML::Load("{rho_inf: 0.8}")},
                {"generalized_alpha", "generalized_alpha", 0.0125, 0.0, YAML::Load("{rho_inf: 0.8}")}};
-  const auto r = models::workPrecision(*scene, spec);
+  const auto r = studies::workPrecision(*scene, spec);
   for (std::size_t i = 0; i < r.rows.size(); i += 3) {
     INFO(r.rows[i].run.label << ": E_rms " << r.rows[i].error.rms << " -> " << r.rows[i + 1].error.rms
                              << " -> " << r.rows[i + 2].error.rms << ", omega dt " << r.rows[i].omegaDt);
@@ -176,7 +177,7 @@ TEST_CASE("3500 t block hoisted by its winch: HHT at 0.05 s (25 times RK4's limi
 }
 
 TEST_CASE("slack and snap: the tension never pushes, and the peak converges to the energy closed form") {
-  auto scene = models::loadSceneOrThrow(example("slack_snap"));
+  auto scene = scene::loadSceneOrThrow(example("slack_snap"));
   // m g (h + x) = EA/(2 L0) x^2 with h = 0.5 m: x, and the peak tension EA x / L0
   const double m = 1e4, g = 9.81, k = 2e8 / 20.0, h = 0.5;
   const double x = (m * g + std::sqrt(m * g * m * g + 2 * k * m * g * h)) / k;
@@ -185,7 +186,7 @@ TEST_CASE("slack and snap: the tension never pushes, and the peak converges to t
   double previous = HUGE_VAL;
   for (double dt : {4e-3, 2e-3, 1e-3, 5e-4}) {
     const auto out = dir.path() / std::to_string(dt);
-    REQUIRE(run(*scene, "rk4", dt, 1.0, out).ok);
+    REQUIRE(runCase(*scene, "rk4", dt, 1.0, out).ok);
     const testing::CsvFile csv((out / "timeseries.csv").string());
     const int T = csv.column("rope.tension[N]"), L = csv.column("rope.length[m]");
     REQUIRE(T > 0);
@@ -211,12 +212,12 @@ TEST_CASE("slack and snap: the tension never pushes, and the peak converges to t
 
 TEST_CASE("mass ratio 1e6: refused at a careless step with a step that works, which then gives a result") {
   testing::SceneDir dir;
-  auto scene = models::loadSceneOrThrow(example("mass_ratio"));
+  auto scene = scene::loadSceneOrThrow(example("mass_ratio"));
   const auto e = estimateOf(*scene);
   CHECK(e.omegaMax == Approx(std::sqrt((5e6 + 1e8) / 1.0 + 1e8 / 1e6)).epsilon(1e-3));
-  const auto v = models::judgeStep(e, "rk4", 0.01);
+  const auto v = mechanics::judgeStep(e, "rk4", 0.01);
   REQUIRE_FALSE(v.stable);
-  const Outcome o = run(*scene, "rk4", v.suggestedDt, 1.5, dir.path() / "a");
+  const Outcome o = runCase(*scene, "rk4", v.suggestedDt, 1.5, dir.path() / "a");
   CHECK(o.ok);
   const testing::CsvFile csv((dir.path() / "a" / "timeseries.csv").string());
   const int z = csv.column("block.z[m]"), bal = csv.column("mechanics.energy_balance[J]");
@@ -237,10 +238,10 @@ TEST_CASE("mass ratio 1e6: refused at a careless step with a step that works, wh
 }
 
 TEST_CASE("one hour of simulated time: semi-implicit Euler's energy error stays bounded (no drift)") {
-  auto scene = models::loadSceneOrThrow(example("block_920t"));
+  auto scene = scene::loadSceneOrThrow(example("block_920t"));
   scene->record.interval = 10.0;
   testing::SceneDir dir;
-  REQUIRE(run(*scene, "semi_implicit_euler", 0.05, 3600.0, dir.path()).ok);
+  REQUIRE(runCase(*scene, "semi_implicit_euler", 0.05, 3600.0, dir.path()).ok);
   const testing::CsvFile csv((dir.path() / "timeseries.csv").string());
   const int bal = csv.column("mechanics.energy_balance[J]");
   REQUIRE(csv.rows.size() == 361);
@@ -263,8 +264,8 @@ TEST_CASE("slack and snap: the transitions are located events at the closed-form
   const double v0 = std::sqrt(2 * g * h), ds = m * g / k, R = std::hypot(ds, v0 / w), phi = std::asin(ds / R);
   const double taut1 = std::sqrt(2 * h / g), slack1 = taut1 + (M_PI + 2 * phi) / w;
   const double taut2 = slack1 + 2 * v0 / g, slack2 = taut2 + (M_PI + 2 * phi) / w;
-  auto scene = models::loadSceneOrThrow(example("slack_snap"));
-  auto root = models::assemble(*scene);
+  auto scene = scene::loadSceneOrThrow(example("slack_snap"));
+  auto root = scene::assemble(*scene);
   devs::Simulator sim(*root);
   testing::RecordCollector rec(false);
   sim.addListener(rec);

@@ -2,14 +2,14 @@
 
 #include <catch2/catch.hpp>
 
-#include "models/assembler.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/assembler.hpp"
+#include "scene/scene_loader.hpp"
 
 using namespace yardsim;
 
 TEST_CASE("channels are collected with full names and selected by globs") {
-  auto scene = models::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/gpt/scene.yaml");
-  auto root = models::assemble(*scene);
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/gpt/scene.yaml");
+  auto root = scene::assemble(*scene);
   const auto all = models::collectChannels(*root);
   std::vector<std::string> names;
   for (const auto& c : all) names.push_back(c.column());

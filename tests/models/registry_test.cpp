@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include "devs/simulator.hpp"
-#include "models/assembler.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/assembler.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
@@ -47,7 +47,7 @@ TEST_CASE("a type name is registered once") {
 
 TEST_CASE("a user type runs from a scene, and a scene builds only what it names") {
   testing::SceneDir dir;
-  auto scene = models::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
 components:
   g: {type: generator, params: {period: 1}}
   c: {type: test_counter}
@@ -55,7 +55,7 @@ couplings:
   - {from: g.out, to: c.in}
 )"));
   const auto before = models::Registry::instance().instantiated();
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   auto after = models::Registry::instance().instantiated();
   for (auto& [type, n] : after) n -= before.count(type) ? before.at(type) : 0;
   std::erase_if(after, [](const auto& kv) { return kv.second == 0; });

@@ -5,14 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "models/report/loglog_page.hpp"
+#include "output/loglog_page.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: report_loglog_fixture PAGE.html\n");
     return 1;
   }
-  using namespace yardsim::models;
+  using namespace yardsim::output;
   LogLogPage page{"work-precision: fixture", {{"scene", "fixture"}, {"reference", "rk4, dt = 1e-5 s"}}, {}, {}};
   LogLogPlot wall{"error against wall time", "wall time [s]", "E_rms [m]", {}};
   LogLogPlot evals{"error against ABA evaluations", "ABA evaluations", "E_rms [m]", {}};

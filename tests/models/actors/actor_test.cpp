@@ -4,8 +4,8 @@
 #include <map>
 
 #include "devs/simulator.hpp"
-#include "models/assembler.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/assembler.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/record_collector.hpp"
 #include "support/scene_files.hpp"
 
@@ -13,7 +13,7 @@ using namespace yardsim;
 
 TEST_CASE("actors start at a time, after all or after any of others, and report it") {
   testing::SceneDir dir;
-  auto scene = models::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
 components:
   m:
     type: multibody
@@ -34,7 +34,7 @@ couplings:
   - {from: a.finished, to: any.trigger}
   - {from: b.finished, to: any.trigger}
 )"));
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   devs::Simulator sim(*root);
   testing::RecordCollector rec(false);
   sim.addListener(rec);
@@ -56,7 +56,7 @@ couplings:
 
 TEST_CASE("an actor given two start rules is refused") {
   testing::SceneDir dir;
-  const auto r = models::loadScene(dir.write("s.yaml", R"(schema_version: 1
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
 components:
   a: {type: joint_actor, params: {joint: j, target_deg: 10, speed_deg: 1, start_at: 1, after_any: [b]}}
 )"));
@@ -67,7 +67,7 @@ components:
 
 TEST_CASE("an actor naming an element its model does not have is refused before the run") {
   testing::SceneDir dir;
-  const auto r = models::loadScene(dir.write("s.yaml", R"(schema_version: 1
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
 components:
   m:
     type: multibody

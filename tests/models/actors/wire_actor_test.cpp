@@ -8,9 +8,9 @@
 
 #include "devs/simulator.hpp"
 #include "dynamics/kinematics.hpp"
-#include "models/assembler.hpp"
+#include "scene/assembler.hpp"
 #include "models/multibody/multibody_model.hpp"
-#include "models/scene_loader.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/record_collector.hpp"
 #include "support/scene_files.hpp"
 
@@ -19,7 +19,7 @@ using namespace yardsim;
 TEST_CASE("a wire actor hoists a hanging block by its payout, ending exactly on time") {
   testing::SceneDir dir;
   const double m = 1000.0, g = 9.81, ea = 1.0e8, l0 = 10.0;
-  auto scene = models::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", R"(schema_version: 1
 components:
   rig:
     type: multibody
@@ -44,7 +44,7 @@ couplings:
   - {from: winch.setpoint, to: rig.setpoint}
   - {from: rig.event, to: winch.event}
 )"));
-  auto root = models::assemble(*scene);
+  auto root = scene::assemble(*scene);
   auto& rig = static_cast<models::MultibodyModel&>(*root->findComponent("rig"));
   devs::Simulator sim(*root);
   testing::RecordCollector rec(false);

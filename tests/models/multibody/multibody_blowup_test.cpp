@@ -5,13 +5,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/mechanics_reader.hpp"
+#include "mechanics/build.hpp"
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
-#include "models/assembler.hpp"
+#include "scene/assembler.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "models/numerical_error.hpp"
-#include "models/runner.hpp"
-#include "models/scene_loader.hpp"
+#include "run/runner.hpp"
+#include "scene/scene_loader.hpp"
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 
@@ -31,11 +33,11 @@ std::string hookScene(const std::string& integrator) {
 
 TEST_CASE("RK4 beyond its limit on the hook scene stops at once, naming hook, hoist, time and the guard's step") {
   testing::SceneDir dir;
-  auto scene = models::loadSceneOrThrow(dir.write("s.yaml", hookScene("integrator: {method: rk4, dt: 0.05, stiffness_check: off}")));
-  auto root = models::assemble(*scene);
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", hookScene("integrator: {method: rk4, dt: 0.05, stiffness_check: off}")));
+  auto root = scene::assemble(*scene);
   std::string what;
   try {
-    models::runScene(*scene, *root, {dir.path() / "out", scene->until, {}, {}, 0.1});
+    run::runScene(*scene, *root, {dir.path() / "out", scene->until, {}, {}, 0.1});
   } catch (const models::NumericalError& e) {
     what = e.what();
   }
@@ -50,9 +52,9 @@ TEST_CASE("RK4 beyond its limit on the hook scene stops at once, naming hook, ho
 
 TEST_CASE("RK4 inside its limit on the hook scene runs through with a bounded energy balance") {
   testing::SceneDir dir;
-  auto scene = models::loadSceneOrThrow(dir.write("s.yaml", hookScene("integrator: {method: rk4, dt: 0.0125}")));
-  auto root = models::assemble(*scene);
-  const auto r = models::runScene(*scene, *root, {dir.path() / "out", scene->until, {}, {}, 0.1});
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", hookScene("integrator: {method: rk4, dt: 0.0125}")));
+  auto root = scene::assemble(*scene);
+  const auto r = run::runScene(*scene, *root, {dir.path() / "out", scene->until, {}, {}, 0.1});
   CHECK(r.tEnd == Approx(5.0));
   const testing::CsvFile csv((dir.path() / "out" / "timeseries.csv").string());
   const int bal = csv.column("mechanics.energy_balance[J]");
@@ -72,7 +74,7 @@ TEST_CASE("a loop that opens beyond its bound stops the run naming the loop") {
   for (const char* key : {"bodies", "loops"}) params.set(key, mp[key], {});
   for (const char* key : {"ropes", "equalizers"}) params.set(key, YAML::Load("{}"), {});
   params.set("gravity", YAML::Load("[0, 0, -9.81]"), {});
-  auto mech = models::buildMechanics(models::parseMechanics(
+  auto mech = mechanics::buildMechanics(scene::parseMechanics(
       params, [](const std::string& k, const YAML::Node&, const std::string& sub, const std::string& m) {
         FAIL(k + "." + sub + ": " + m);
       }));

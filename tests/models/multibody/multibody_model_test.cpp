@@ -1,3 +1,5 @@
+#include "scene/mechanics_reader.hpp"
+#include "mechanics/build.hpp"
 #include "models/multibody/multibody_model.hpp"
 
 #include <catch2/catch.hpp>
@@ -6,7 +8,7 @@
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
-#include "models/multibody/mechanics_spec.hpp"
+#include "mechanics/description.hpp"
 #include "support/record_collector.hpp"
 #include "support/test_models.hpp"
 
@@ -26,8 +28,8 @@ models::Params params(const std::string& yaml) {
   return p;
 }
 
-models::BuiltMechanics build(const std::string& yaml) {
-  return models::buildMechanics(models::parseMechanics(
+mechanics::BuiltMechanics build(const std::string& yaml) {
+  return mechanics::buildMechanics(scene::parseMechanics(
       params(yaml), [](const std::string& param, const YAML::Node&, const std::string& key,
                        const std::string& msg) { FAIL(param + "." + key + ": " + msg); }));
 }
@@ -245,7 +247,7 @@ TEST_CASE("hold on a joint with more than one degree of freedom is refused") {
   std::string bad = kRod;
   bad.replace(bad.find("type: revolute, axis: [0, 1, 0], q0_deg: 90}"), 44, "type: spherical, hold: true}");
   std::vector<std::string> messages;
-  models::parseMechanics(params(bad), [&](const std::string& param, const YAML::Node&, const std::string& key,
+  scene::parseMechanics(params(bad), [&](const std::string& param, const YAML::Node&, const std::string& key,
                                          const std::string& msg) { messages.push_back(param + "." + key + ": " + msg); });
   REQUIRE(messages.size() == 1);
   CHECK_THAT(messages[0], Catch::Contains("rod.joint.hold") && Catch::Contains("only a 1-dof joint"));

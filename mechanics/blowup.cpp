@@ -1,0 +1,108 @@
+#include "mechanics/blowup.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "dynamics/kinematics.hpp"
+#include "dynamics/loop_constraints.hpp"
+#include "mechanics/energy.hpp"
+#include "mechanics/step_verdict.hpp"
+#include "mechanics/stiffness_estimate.hpp"
+
+namespace yardsim::mechanics {
+
+double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  // (initial state) => total weight x the system's size, plus its kinetic and strain energy
+  const auto& m = s.model();
+  dynamics::forwardKinematics(m, d.scratch, q, v);
+  std::vector<dynamics::Vector3> points;
+  for (int i = 1; i < m.nbodies; ++i) points.push_back(d.scratch.X_WB[i].p);
+  const forces::Stage stage{0.0, m, d.scratch, q, v};
+  double stored = 0.0;
+  for (const auto& r : s.ropes()) {
+    for (const auto& a : r->path().points()) points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
+    stored += r->potentialEnergy(stage);
+  }
+  for (const auto& e : s.equalizers()) stored += e->potentialEnergy(stage);
+  double size = 1.0;
+  for (const auto& a : points)
+    for (const auto& b : points) size = std::max(size, (a - b).norm());
+  double kinetic = 0.0;
+  for (int i = 1; i < m.nbodies; ++i) kinetic += 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
+  return m.totalMass() * std::max(m.gravity.norm(), 1.0) * size + kinetic + stored;
+}
+
+std::string likelyCause(const System& s, const std::string& method, double dt) {
+  // (mechanics at the start) => omega_max against the method's limit at this step
+  StiffnessEstimate e;
+  try {
+    e = estimateStiffness(s.description());
+  } catch (const std::exception&) {
+    return "a smaller dt, or an implicit integrator";
+  }
+  const StepVerdict v = judgeStep(e, method, dt);
+  if (!v.stable) return v.suggestion + " (" + v.problem + ")";
+  std::ostringstream o;
+  o.precision(3);
+  o << describe(e) << ", omega_max dt = " << v.omegaDt << " is within " << method
+    << "'s stability limit, so energy is being created by a "
+    << "force element or by a step too long for accuracy: try dt/4, check rope damping and "
+       "drive bandwidths, or an implicit integrator";
+  return o.str();
+}
+
+void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double work,
+                 double t, const BlowUpLimits& limits) {
+  const auto& m = s.model();
+  // (non-finite state) => the first body whose joint went bad
+  if (!q.allFinite() || !v.allFinite()) {
+    int bad = 1;
+    for (int i = 1; i < m.nbodies; ++i)
+      if (!q.segment(m.idxQ[i], m.jointNq[i]).allFinite() || !v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
+        bad = i;
+        break;
+      }
+    throw BlowUp(", body '" + m.names[bad] + "' (joint '" + s.description().jointNames[bad] + "')",
+                 "its state became NaN or infinite", likelyCause(s, limits.method, limits.dt));
+  }
+  // (energy balance) => a rise beyond the bound, naming the most energetic body and element
+  const double rise = energy(s, d.scratch, q, v, t) - work - limits.balance0;
+  if (rise > limits.energyBound) {
+    int body = 1;
+    double most = -1.0;
+    for (int i = 1; i < m.nbodies; ++i) {
+      const double k = 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
+      if (k > most) most = k, body = i;
+    }
+    std::string element;
+    double strain = 0.0;
+    const forces::Stage stage{t, m, d.scratch, q, v};
+    for (const auto& r : s.ropes())
+      if (const double u = r->potentialEnergy(stage); u > strain) strain = u, element = "rope '" + r->name() + "'";
+    for (const auto& e : s.equalizers())
+      if (const double u = e->potentialEnergy(stage); u > strain)
+        strain = u, element = "equalizer '" + e->name() + "'";
+    std::ostringstream what;
+    what.precision(3);
+    what << "the energy balance rose by " << rise << " J (bound " << limits.energyBound
+         << " J): the integration is unstable; most kinetic energy in body '" << m.names[body] << "'";
+    if (!element.empty()) what << ", most strain energy in " << element;
+    throw BlowUp(", body '" + m.names[body] + "'", what.str(), likelyCause(s, limits.method, limits.dt));
+  }
+  // (loops) => the loop with the largest residual, if beyond the bound
+  if (m.nc == 0) return;
+  const Eigen::VectorXd& r = dynamics::loopResidual(m, d.scratch, q);
+  for (const auto& loop : m.loops) {
+    const double g = r.segment(loop.row, loop.dim).norm();
+    if (g <= limits.loopResidualLimit) continue;
+    std::ostringstream what;
+    what.precision(3);
+    what << "loop '" << loop.name << "' opened: residual " << g << " (bound " << limits.loopResidualLimit << ")";
+    throw BlowUp(", loop '" + loop.name + "'", what.str(),
+                 limits.projectLoops ? "a smaller dt, or an implicit integrator"
+                                     : "turn loop projection on (project_loops: true), or a smaller dt");
+  }
+}
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,46 @@
+#include "mechanics/energy.hpp"
+
+#include "dynamics/energy.hpp"
+#include "dynamics/kinematics.hpp"
+#include "mechanics/stage.hpp"
+
+namespace yardsim::mechanics {
+
+double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t) {
+  // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
+  const auto& m = s.model();
+  dynamics::forwardKinematics(m, kin, q, v);
+  double e = 0.0;
+  for (int i = 1; i < m.nbodies; ++i) {
+    e += dynamics::bodyKineticEnergy(m, i, kin.V[i]) -  // with the fluid's share (added mass)
+         m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
+  }
+  const forces::Stage stage{t, m, kin, q, v};
+  for (const forces::ForceProvider* p : s.providers()) e += p->potentialEnergy(stage);
+  return e;
+}
+
+double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& v, double t) {
+  const auto& m = s.model();
+  dynamics::forwardKinematics(m, d.scratch, q, v);
+  const forces::Stage stage{t, m, d.scratch, q, v};
+  double p = 0.0;
+  for (const forces::ForceProvider* f : s.providers()) p += f->power(stage);
+  // (drives, loads) => their forces at this state, and the power they deliver
+  const SetPoints* saved = d.setPoints;
+  d.setPoints = &sp;
+  d.spForces.clear();
+  d.spTau.setZero();
+  setPointForces(s, d, sp, t, q, v, d.spForces, d.spTau);
+  p += d.spTau.dot(v);
+  if (prescribedDofs(s, d, sp)) {  // (prescribed dofs) => the power of the effort that enforces them
+    d.kernel.acceleration(t, q, v, d.accelScratch);
+    p += d.kernel.prescribedEffort().dot(v);
+  }
+  d.setPoints = saved;
+  for (int b = 1; b < m.nbodies; ++b) p += d.spForces.inBodyFrame(d.scratch, b).dot(d.scratch.V[b]);
+  return p;
+}
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,68 @@
+#include "mechanics/events.hpp"
+
+#include "dynamics/kinematics.hpp"
+
+namespace yardsim::mechanics {
+
+std::vector<EventSlot> eventTable(const System& s) {
+  using K = EventSlot::Kind;
+  std::vector<EventSlot> table;
+  const int nb = s.model().nbodies, nr = static_cast<int>(s.ropes().size());
+  table.push_back({K::None, 0, false});
+  for (int i = 1; i < nb; ++i) table.push_back({K::DriveReached, i, false});
+  for (int r = 0; r < nr; ++r) table.push_back({K::OverMbl, r, false});
+  for (int r = 0; r < nr; ++r) table.push_back({K::SlackTaut, r, true});
+  for (int w = 0; w < static_cast<int>(s.watches().size()); ++w) table.push_back({K::WatchCrossed, w, false});
+  return table;
+}
+
+void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
+                    const Eigen::VectorXd& v, double t, std::span<double> g) {
+  const auto& m = s.model();
+  // (drive) => > 0 once the joint is within tolerance of its target, on the side it comes from
+  g[0] = -1.0;
+  for (int i = 1; i < m.nbodies; ++i) {
+    const JointDrive& j = sp.drives[i];
+    if (!j.active || j.reported || j.prescribed) {
+      g[i] = -1.0;
+      continue;
+    }
+    const double dir = j.target >= j.start ? 1.0 : -1.0;
+    g[i] = dir * (q[m.idxQ[i]] - j.target) + s.servo().tolerance;
+  }
+  // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
+  const auto& ropes = s.ropes();
+  if (ropes.empty() && s.watches().empty()) return;
+  dynamics::forwardKinematics(m, d.scratch, q, v);
+  const forces::Stage stage{t, m, d.scratch, q, v};
+  const std::size_t nb = static_cast<std::size_t>(m.nbodies), nr = ropes.size();
+  for (std::size_t r = 0; r < nr; ++r) {
+    const auto& mbl = ropes[r]->properties().breakingLoad;
+    g[nb + r] = mbl ? ropes[r]->tension(stage) - *mbl : -1.0;
+    // (rope) => its stretch: > 0 taut, < 0 slack
+    g[nb + nr + r] = ropes[r]->length(stage) - ropes[r]->unstretchedLength(t);
+  }
+  // (watches) => > 0 once the quantity is past its threshold in the watched direction
+  const auto& specs = s.description().watches;
+  for (std::size_t w = 0; w < s.watches().size(); ++w) {
+    const double value = watched(s, w, d.scratch, q, v, t);
+    g[nb + 2 * nr + w] = specs[w].above ? value - specs[w].threshold : specs[w].threshold - value;
+  }
+}
+
+double watched(const System& s, std::size_t w, const dynamics::Data& kin, const Eigen::VectorXd& q,
+               const Eigen::VectorXd& v, double t) {
+  const WatchRef& r = s.watches()[w];
+  using K = WatchRef::Kind;
+  switch (r.kind) {
+    case K::Q: return q[r.index];
+    case K::V: return v[r.index];
+    case K::Position: return kin.X_WB[static_cast<std::size_t>(r.index)].p[r.axis];
+    case K::Angle: return dynamics::bodyEulerAngles(kin, r.index)[r.axis];
+    case K::Tension: return s.ropes()[static_cast<std::size_t>(r.index)]->tension({t, s.model(), kin, q, v});
+    case K::Length: return s.ropes()[static_cast<std::size_t>(r.index)]->length({t, s.model(), kin, q, v});
+  }
+  return 0.0;
+}
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,45 @@
+#pragma once
+// The set-points in force on a mechanical system: what actors change between steps (joint
+// drives, loads on bodies, winch jobs). A plain value, part of the multibody model's state.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace yardsim::mechanics {
+
+// A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
+// motion prescribed (the ramp exactly; the joint is locked at the target afterwards). Joint
+// coordinates: rad (revolute) or m (prismatic); speed in rad/s or m/s; times in s.
+struct JointDrive {
+  bool active = false;
+  bool reported = false;  // the "reached" event was sent
+  double start = 0.0, target = 0.0, speed = 0.0, t0 = 0.0;
+  std::string actor;
+  bool prescribed = false;
+  // (ramp) => when a prescribed ramp ends, s
+  double tEnd() const { return t0 + std::max(std::abs(target - start) / speed, 1e-9); }
+};
+
+// A winch job on a rope: paying out (or hauling in) until tEnd, s.
+struct WinchJob {
+  bool active = false;
+  double tEnd = 0.0;
+  std::string actor;
+};
+
+// A force and moment an actor puts on a body: world frame, N and N m, the moment about the
+// world origin together with the force (a spatial force F_W).
+struct ActorLoad {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+};
+
+struct SetPoints {
+  std::vector<JointDrive> drives;  // per body index (its joint)
+  std::vector<ActorLoad> loads;    // per body index
+  std::vector<WinchJob> winches;   // per rope
+};
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,69 @@
+#include "mechanics/stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dynamics/rnea.hpp"
+
+namespace yardsim::mechanics {
+
+bool prescribedDofs(const System& s, Data& d, const SetPoints& sp) {
+  const auto& m = s.model();
+  bool any = false;
+  for (int i = 1; i < m.nbodies; ++i) {
+    const bool on = sp.drives[i].active && sp.drives[i].prescribed;
+    if (m.jointNv[i] == 1) d.prescribedMask[static_cast<std::size_t>(m.idxV[i])] = on ? 1 : 0;
+    any = any || on;
+  }
+  return any;
+}
+
+void setPointForces(const System& s, Data& d, const SetPoints& sp, double t, const Eigen::VectorXd& q,
+                    const Eigen::VectorXd& v, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+  const auto& m = s.model();
+  const ServoSettings& servo = s.servo();
+  const double wc = servo.bandwidth;
+  // (q, v) => bias forces h(q, v), the drives' feedforward (gravity and velocity terms)
+  const bool driving = std::any_of(sp.drives.begin(), sp.drives.end(), [](auto& j) { return j.active; });
+  if (driving) dynamics::biasForces(m, d.feedforward, q, v);
+  for (int i = 1; i < m.nbodies; ++i) {
+    // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
+    const JointDrive& j = sp.drives[i];
+    if (j.active && !j.prescribed) {
+      const int iq = m.idxQ[i], iv = m.idxV[i];
+      const double dir = j.target >= j.start ? 1.0 : -1.0;
+      const double travel = std::abs(j.target - j.start);
+      const double moved = std::min(travel, j.speed * std::max(0.0, t - j.t0));
+      const double qRef = j.start + dir * moved;
+      const double vRef = moved < travel ? dir * j.speed : 0.0;
+      const double I = s.servoInertia()[static_cast<std::size_t>(i)];
+      double u = I * (wc * wc * (qRef - q[iq]) + 2.0 * wc * (vRef - v[iv])) + d.feedforward.nle[iv];
+      if (servo.maxEffort > 0) u = std::clamp(u, -servo.maxEffort, servo.maxEffort);
+      tau[iv] += u;
+    }
+    const ActorLoad& l = sp.loads[i];
+    if (!l.force.isZero() || !l.moment.isZero()) {
+      dynamics::Force F_W;
+      F_W << l.moment, l.force;
+      f.addWorldFrame(i, F_W);
+    }
+  }
+}
+
+void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                 const dynamics::Data& kin, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+  const forces::Stage stage{t, s.model(), kin, q, v};
+  const SetPoints& sp = *d.setPoints;
+  if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any()) d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
+  for (forces::ForceProvider* p : s.providers()) p->evaluate(stage, f, tau);
+  setPointForces(s, d, sp, t, q, v, f, tau);
+}
+
+void connectStage(const System& s, Data& d) {
+  d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                              const dynamics::Data& kin, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+    stageForces(s, d, t, q, v, kin, f, tau);
+  });
+}
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,123 @@
+#include "mechanics/stiffness_estimate.hpp"
+
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+#include "dynamics/configuration.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/multibody_system.hpp"
+#include "mechanics/providers.hpp"
+
+namespace yardsim::mechanics {
+
+namespace {
+
+constexpr double kTautStrain = 1e-4;  // strain given to a rope that is slack at the start
+constexpr double kStep = 1e-7;        // finite-difference step, m or rad
+
+// (mechanics) => the same mechanics with every slack rope and equalizer just taut at q0
+BuiltMechanics tautened(const BuiltMechanics& mech) {
+  BuiltMechanics m = mech;
+  Providers p = makeProviders(m, m.model);
+  dynamics::Data data(m.model);
+  dynamics::forwardKinematics(m.model, data, m.q0, m.v0);
+  const forces::Stage s{0.0, m.model, data, m.q0, m.v0};
+  auto tighten = [](MechanicsSpec::Material& mat, double length) {
+    mat.l0 = std::min(mat.l0, length / (1.0 + kTautStrain));
+    mat.minLength = std::min(mat.minLength, mat.l0);
+  };
+  for (std::size_t i = 0; i < p.ropes.size(); ++i) tighten(m.ropes[i].material, p.ropes[i]->length(s));
+  for (std::size_t i = 0; i < p.equalizers.size(); ++i)
+    tighten(m.equalizers[i].material, p.equalizers[i]->length(s));
+  return m;
+}
+
+}  // namespace
+
+StiffnessEstimate estimateStiffness(const BuiltMechanics& original) {
+  const BuiltMechanics mech = tautened(original);
+  const auto& model = mech.model;
+  const int nv = model.nv;
+  StiffnessEstimate out;
+  if (nv == 0) return out;
+  Providers providers = makeProviders(mech, model);
+  dynamics::MultibodySystem system(model);
+  system.setForces([&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                       const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+    const forces::Stage stage{t, model, d, q, v};
+    for (auto& r : providers.ropes) r->evaluate(stage, f, tau);
+    for (auto& e : providers.equalizers) e->evaluate(stage, f, tau);
+  });
+  // (q0 (+) theta, v0 + dv) => central differences of the accelerations: J = [0 I; A_q A_v]
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * nv, 2 * nv);
+  J.topRightCorner(nv, nv).setIdentity();
+  Eigen::VectorXd q(model.nq), v(nv), ap(nv), am(nv), d(nv);
+  for (int j = 0; j < nv; ++j) {
+    for (int side = 0; side < 2; ++side) {
+      const double sign = side == 0 ? 1.0 : -1.0;
+      d.setZero();
+      d[j] = sign * kStep;
+      dynamics::integrate(model, mech.q0, d, 1.0, q);
+      system.acceleration(0.0, q, mech.v0, side == 0 ? ap : am);
+    }
+    J.block(nv, j, nv, 1) = (ap - am) / (2.0 * kStep);
+    for (int side = 0; side < 2; ++side) {
+      v = mech.v0;
+      v[j] += (side == 0 ? 1.0 : -1.0) * kStep;
+      system.acceleration(0.0, mech.q0, v, side == 0 ? ap : am);
+    }
+    J.block(nv, nv + j, nv, 1) = (ap - am) / (2.0 * kStep);
+  }
+  // (J) => the eigenvalue of largest modulus and its mode shape
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(J, true);
+  Eigen::Index top = 0;
+  eig.eigenvalues().cwiseAbs().maxCoeff(&top);
+  const std::complex<double> lambda = eig.eigenvalues()[top];
+  out.omegaMax = std::abs(lambda);
+  out.dampingRatio = out.omegaMax > 0 ? -lambda.real() / out.omegaMax : 0.0;
+  const Eigen::VectorXcd shape = eig.eigenvectors().col(top).head(nv);
+  Eigen::Index dof = 0;
+  shape.cwiseAbs().maxCoeff(&dof);
+  out.body = model.names[static_cast<std::size_t>(model.dofBody[static_cast<std::size_t>(dof)])];
+  // (mode shape, phase-aligned to its largest entry) => strain energy of each element along it
+  const Eigen::VectorXd phi = (shape * std::conj(shape[dof]) / std::abs(shape[dof])).real().normalized();
+  dynamics::Data dp(model), dm(model);
+  Eigen::VectorXd qp(model.nq), qm(model.nq);
+  const double h = 1e-6;
+  dynamics::integrate(model, mech.q0, phi, h, qp);
+  dynamics::integrate(model, mech.q0, phi, -h, qm);
+  dynamics::forwardKinematics(model, dp, qp, mech.v0);
+  dynamics::forwardKinematics(model, dm, qm, mech.v0);
+  const forces::Stage sp{0.0, model, dp, qp, mech.v0}, sm{0.0, model, dm, qm, mech.v0};
+  double best = 0.0;
+  auto consider = [&](const std::string& name, double stiffness, double dl) {
+    const double energy = 0.5 * stiffness * dl * dl;
+    if (energy > best) {
+      best = energy;
+      out.element = name;
+    }
+  };
+  for (std::size_t i = 0; i < providers.ropes.size(); ++i) {
+    const auto& r = *providers.ropes[i];
+    consider("rope '" + r.name() + "'", r.parts() * r.properties().ea / r.properties().l0,
+             (r.length(sp) - r.length(sm)) / (2 * h));
+  }
+  for (const auto& e : providers.equalizers)
+    consider("equalizer '" + e->name() + "'", e->properties().ea / e->properties().l0,
+             (e->length(sp) - e->length(sm)) / (2 * h));
+  return out;
+}
+
+std::string describe(const StiffnessEstimate& e) {
+  std::ostringstream s;
+  s.precision(3);
+  s << "omega_max = " << e.omegaMax << " rad/s (body '" << e.body << "'";
+  if (!e.element.empty()) s << ", " << e.element;
+  s << ")";
+  return s.str();
+}
+
+}  // namespace yardsim::mechanics

@@ -1,0 +1,81 @@
+#pragma once
+// One mechanically connected system at run time (DESIGN.md, mechanics/): the built mechanics
+// (the immutable dynamics::Model, q0, v0, names, rope and load specs, the environment), the one
+// list of force providers built from them in evaluation order (ropes, equalizers, hydrostatics,
+// wind and current loads, damping, body loads from time series), the watched quantities and the
+// joint servos' settings. Built once; the stage function (stage.hpp), the energy balance
+// (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp) and the stiffness
+// estimate all iterate the same list. Providers keep per-stage caches and the winches' payout
+// set-points, so a System serves one run at a time.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "forces/body_load.hpp"
+#include "forces/equalizer.hpp"
+#include "forces/flow_load.hpp"
+#include "forces/hydrostatics.hpp"
+#include "forces/linear_quadratic_damping.hpp"
+#include "forces/wire_rope.hpp"
+#include "mechanics/description.hpp"
+
+namespace yardsim::mechanics {
+
+// The joint servos (docs/scenes.md): bandwidth rad/s (0: min(10, 0.1/dt)), force bound N m or N
+// (0: unbounded), and the tolerance rad or m within which a drive has reached its target.
+struct ServoSettings {
+  double bandwidth = 0.0;
+  double maxEffort = 0.0;
+  double tolerance = 1e-3;
+};
+
+// A watched quantity, resolved: what it reads and which dof, body or rope.
+struct WatchRef {
+  enum class Kind { Q, V, Position, Angle, Tension, Length } kind;
+  int index, axis;
+};
+
+class System {
+ public:
+  // (built mechanics, servo settings with bandwidth resolved) => every provider built; throws
+  // std::invalid_argument naming what is wrong (a watch on an unknown quantity, a load without
+  // its environment)
+  System(BuiltMechanics mechanics, const ServoSettings& servo, const std::string& name);
+  System(const System&) = delete;
+  System& operator=(const System&) = delete;
+
+  const dynamics::Model& model() const { return mech_.model; }
+  const BuiltMechanics& description() const { return mech_; }
+  const ServoSettings& servo() const { return servo_; }
+  // the one list, in evaluation order
+  const std::vector<forces::ForceProvider*>& providers() const { return providers_; }
+  // typed views of the same providers, for channels, events and replay
+  const std::vector<std::unique_ptr<forces::WireRope>>& ropes() const { return ropes_; }
+  const std::vector<std::unique_ptr<forces::Equalizer>>& equalizers() const { return equalizers_; }
+  const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return hydros_; }
+  const std::vector<std::unique_ptr<forces::FlowLoad>>& flows() const { return flows_; }
+  const std::vector<std::unique_ptr<forces::LinearQuadraticDamping>>& dampers() const { return dampers_; }
+  const std::vector<std::unique_ptr<forces::BodyLoad>>& bodyLoads() const { return bodyLoads_; }
+  const std::vector<WatchRef>& watches() const { return watchRefs_; }
+  // per body: the joint-space inertia of its 1-dof joint at q0 (kg m^2 or kg), for servo gains
+  const std::vector<double>& servoInertia() const { return servoInertia_; }
+
+  // (joint name) => body index, or -1; (rope name) => rope index, or -1
+  int jointBody(const std::string& joint) const;
+  int ropeIndex(const std::string& rope) const;
+
+ private:
+  BuiltMechanics mech_;
+  ServoSettings servo_;
+  std::vector<std::unique_ptr<forces::WireRope>> ropes_;
+  std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
+  std::vector<std::unique_ptr<forces::Hydrostatics>> hydros_;
+  std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
+  std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;
+  std::vector<std::unique_ptr<forces::BodyLoad>> bodyLoads_;
+  std::vector<forces::ForceProvider*> providers_;
+  std::vector<WatchRef> watchRefs_;
+  std::vector<double> servoInertia_;
+};
+
+}  // namespace yardsim::mechanics

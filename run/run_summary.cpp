@@ -1,0 +1,100 @@
+#include "run/run_summary.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "devs/trace_format.hpp"
+#include "models/multibody/multibody_model.hpp"
+#include "run/timeseries_writer.hpp"
+
+namespace yardsim::run {
+
+using models::MultibodyModel;
+using scene::Instance;
+using scene::Scene;
+namespace {
+
+using devs::appendJsonNumber;
+using devs::appendJsonString;
+
+// (instance tree) => "{path, kind}" of every actor: an atomic with `started` and `finished` ports
+void actors(const Instance& in, std::string& out) {
+  if (in.atomic()) {
+    if (in.port("started") && in.port("finished")) {
+      out += out.back() == '[' ? "{\"path\":" : ",{\"path\":";
+      appendJsonString(out, in.path);
+      out += ",\"kind\":";
+      appendJsonString(out, in.type->name);
+      out += "}";
+    }
+    return;
+  }
+  for (const auto& c : in.children) actors(*c, out);
+}
+
+// (model tree) => "{model, method, dt}" of every multibody model
+void systems(const devs::Model& m, std::string& out) {
+  if (!m.isAtomic()) {
+    for (const auto& c : static_cast<const devs::Coupled&>(m).components()) systems(*c, out);
+    return;
+  }
+  if (const auto* mb = dynamic_cast<const MultibodyModel*>(&m)) {
+    out += out.back() == '[' ? "{\"model\":" : ",{\"model\":";
+    appendJsonString(out, mb->path());
+    out += ",\"method\":";
+    appendJsonString(out, mb->options().integrator.method);
+    out += ",\"dt\":";
+    appendJsonNumber(out, mb->options().dt);
+    out += "}";
+  }
+}
+
+}  // namespace
+
+std::string runSummaryJson(const Scene& scene, const devs::Model& root, const RunFacts& f) {
+  std::string o = "{\"yardsim\":";
+  appendJsonString(o, kVersion);
+  auto key = [&](const char* k) { o += std::string(",\"") + k + "\":"; };
+  auto text = [&](const char* k, const std::string& v) { key(k); appendJsonString(o, v); };
+  auto number = [&](const char* k, double v) { key(k); appendJsonNumber(o, v); };
+  text("scene", scene.name);
+  text("file", scene.file.string());
+  text("scene_sha256", scene.sha256);
+  text("integrator", scene.integrator);
+  number("step", scene.dt);
+  number("until", f.until);
+  number("t_end", f.tEnd);
+  number("wall", f.wall);
+  number("real_time_factor", f.wall > 0 ? f.tEnd / f.wall : 0.0);
+  text("status", f.status);
+  text("message", f.message);
+  number("record_interval", scene.record.interval);
+  number("replay_interval", f.replayInterval);
+  key("systems");
+  o += "[";
+  systems(root, o);
+  o += "]";
+  key("actors");
+  o += "[";
+  actors(scene.root, o);
+  o += "]";
+  key("report");
+  o += "{\"plots\":[";
+  for (std::size_t i = 0; i < scene.report.plots.size(); ++i)
+    appendJsonString(o += i ? "," : "", scene.report.plots[i]);
+  o += "],\"static\":{";
+  for (std::size_t i = 0; i < scene.report.staticLevels.size(); ++i) {
+    appendJsonString(o += i ? "," : "", scene.report.staticLevels[i].first);
+    appendJsonNumber(o += ":", scene.report.staticLevels[i].second);
+  }
+  return o + "}}}\n";
+}
+
+void writeRunSummary(const std::filesystem::path& file, const Scene& scene,
+                     const devs::Model& root, const RunFacts& facts) {
+  std::ofstream out(file);
+  out << runSummaryJson(scene, root, facts);
+  if (!out) throw std::runtime_error("cannot write '" + file.string() + "'");
+}
+
+}  // namespace yardsim::run

@@ -1,0 +1,45 @@
+#pragma once
+// Running an assembled scene: trace sinks and the time-series recorder are attached only when
+// asked for, samples are taken on the record grid (after every event at that time), progress
+// is reported to a callback, and whatever was recorded is on disk if the run throws.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "devs/coupled.hpp"
+#include "devs/simulator.hpp"
+#include "scene/scene.hpp"
+
+namespace yardsim::run {
+
+using scene::Scene;
+
+struct Progress {
+  double t;       // simulated time reached, s
+  double until;   // end time, s (infinite when the scene runs until no event is left)
+  double wall;    // wall time so far, s
+};
+
+struct RunOptions {
+  std::filesystem::path outdir;
+  double until;                     // end time, s
+  std::vector<std::string> trace;   // sinks: jsonl (trace.jsonl), chrome (trace.json), csv (trace.csv)
+  std::function<void(const Progress&)> progress;  // called at most every progressPeriod
+  double progressPeriod = 0.1;      // s of wall time
+  std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below
+};
+
+struct RunResult {
+  double tEnd = 0.0;
+  double wall = 0.0;
+  std::size_t samples = 0;
+  devs::SimulatorStats stats;
+};
+
+// (scene, its assembled model, options) => the run: OUTDIR/timeseries.csv and the traces asked
+// for, OUTDIR/replay.glb (the bodies' poses on the record grid) when the scene has bodies and
+// records, and OUTDIR/run.json; throws what the simulation throws, after writing what it has
+RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& options);
+
+}  // namespace yardsim::run

@@ -1,0 +1,42 @@
+#pragma once
+// OUTDIR/timeseries.csv: '#' metadata lines (yardsim version, scene file and SHA-256,
+// integrator, step, seed), a header `time[s],<channel>[<unit>],...`, then one row per sample.
+// Rows are flushed as the run goes (at least every 0.2 s of wall time, and when the writer is
+// destroyed), so a run that fails keeps every sample taken before the failure.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "models/channels.hpp"
+#include "scene/scene.hpp"
+
+namespace yardsim::run {
+
+using models::Channel;
+using scene::Scene;
+
+class TimeseriesWriter {
+ public:
+  TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,
+                   std::vector<Channel> channels);
+  ~TimeseriesWriter();
+  // (t) => one row: t and every channel read now
+  void sample(double t);
+  std::size_t rows() const { return rows_; }
+
+ private:
+  std::ofstream out_;
+  std::vector<Channel> channels_;
+  std::string line_;
+  std::size_t rows_ = 0;
+  std::chrono::steady_clock::time_point lastFlush_;
+};
+
+// (value) => shortest text that reads back to the same double ("nan", "inf" for non-finite)
+void appendCsvNumber(std::string& out, double value);
+
+extern const char* const kVersion;
+
+}  // namespace yardsim::run

@@ -1,0 +1,96 @@
+#pragma once
+// Reading a mechanics mapping with errors at their YAML nodes: keys checked against a list (with
+// "did you mean"), numbers, lists, vectors and poses, each problem reported once through the
+// MechanicsReport with the key path below the parameter. Shared by mechanics_spec.cpp (bodies,
+// joints, ropes) and floating_spec.cpp (water, wind, hydrostatics, flow loads, damping).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scene/mechanics_reader.hpp"
+#include "dynamics/rotation.hpp"
+#include "models/diagnostics.hpp"
+#include "mechanics/description.hpp"
+
+namespace yardsim::scene::spec {
+
+using dynamics::Vector3;
+using models::didYouMean;
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Reader {
+  const MechanicsReport& report;
+  std::string param;
+
+  void fail(const YAML::Node& at, const std::string& key, const std::string& msg) const {
+    report(param, marked(at), key, msg);
+  }
+  // (node) => itself when it knows its place in the file, else its first element or key that
+  // does (collections rebuilt while resolving $references lose their marks)
+  static YAML::Node marked(const YAML::Node& n) {
+    if (!n.IsDefined() || !n.Mark().is_null()) return n;
+    if (n.IsSequence())
+      for (std::size_t i = 0; i < n.size(); ++i)
+        if (const YAML::Node m = marked(n[i]); !m.Mark().is_null()) return m;
+    if (n.IsMap())
+      for (auto it = n.begin(); it != n.end(); ++it)
+        if (const YAML::Node m = marked(it->second); !m.Mark().is_null()) return m;
+    return n;
+  }
+  bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
+            const std::string& key) const {
+    if (!map.IsMap()) {
+      fail(map, key, "expected a mapping");
+      return false;
+    }
+    bool ok = true;
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      const auto k = it->first.as<std::string>();
+      if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+      const std::string hint = didYouMean(k, allowed);
+      fail(it->first.Mark().is_null() ? it->second : it->first, key.empty() ? k : key + "." + k,
+           "unknown key '" + k + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+      ok = false;
+    }
+    return ok;
+  }
+  double number(const YAML::Node& n, const std::string& key, double fallback,
+                bool required = false) const {
+    if (!n) {
+      if (required) fail(n, key, "missing required key '" + key + "' (a number)");
+      return fallback;
+    }
+    double v = 0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !std::isfinite(v)) {
+      fail(n, key, "expected a number, got " + (n.IsScalar() ? "'" + n.Scalar() + "'" : std::string("a collection")));
+      return fallback;
+    }
+    return v;
+  }
+  std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t size) const {
+    std::vector<double> out;
+    if (!n.IsSequence() || (size && n.size() != size)) {
+      fail(n, key, "expected a list of " + (size ? std::to_string(size) + " " : std::string()) + "numbers");
+      return std::vector<double>(size, 0.0);
+    }
+    for (std::size_t i = 0; i < n.size(); ++i) out.push_back(number(n[i], key, 0.0));
+    return out;
+  }
+  Vector3 vec3(const YAML::Node& n, const std::string& key, const Vector3& fallback) const {
+    if (!n) return fallback;
+    const auto v = numbers(n, key, 3);
+    return {v[0], v[1], v[2]};
+  }
+  // ({xyz, rpy_deg}) => transform
+  dynamics::Transform pose(const YAML::Node& n, const std::string& key) const {
+    if (!n) return dynamics::Transform::identity();
+    if (!keys(n, {"xyz", "rpy_deg"}, key)) return dynamics::Transform::identity();
+    const Vector3 rpy = vec3(n["rpy_deg"], key + ".rpy_deg", Vector3::Zero()) * kDeg;
+    return {dynamics::eulerToMatrix(rpy), vec3(n["xyz"], key + ".xyz", Vector3::Zero())};
+  }
+};
+
+
+}  // namespace yardsim::scene::spec

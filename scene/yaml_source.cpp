@@ -1,0 +1,95 @@
+#include "scene/yaml_source.hpp"
+
+#include <set>
+
+namespace yardsim::scene {
+
+using models::Diagnostics;
+using models::SourceMark;
+using models::didYouMean;
+
+SourceMark markOf(const YAML::Node& node, const std::string& file) {
+  const YAML::Mark m = node.Mark();
+  if (m.is_null()) return {file, 0, 0};
+  return {file, m.line + 1, m.column + 1};
+}
+
+std::string joinKey(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+bool checkKeys(const YAML::Node& map, const std::vector<std::string>& allowed,
+               const std::string& file, const std::string& keyPath, Diagnostics& diags) {
+  bool ok = true;
+  std::set<std::string> seen;
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    const auto key = it->first.as<std::string>();
+    if (!seen.insert(key).second) {
+      diags.error(markOf(it->first, file), joinKey(keyPath, key),
+                  "duplicate key '" + key + "'; each key may appear once");
+      ok = false;
+    } else if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::string expected;
+      for (const auto& a : allowed) expected += (expected.empty() ? "" : ", ") + a;
+      diags.error(markOf(it->first, file), joinKey(keyPath, key),
+                  "unknown key '" + key + "'; expected one of: " + expected,
+                  didYouMean(key, allowed));
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+const YAML::Node* Scope::find(const std::string& name) const {
+  for (const Scope* s = this; s; s = s->parent) {
+    auto it = s->values.find(name);
+    if (it != s->values.end()) return &it->second;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> Scope::names() const {
+  std::vector<std::string> out;
+  for (const Scope* s = this; s; s = s->parent)
+    for (const auto& [k, _] : s->values) out.push_back(k);
+  return out;
+}
+
+YAML::Node resolveRefs(const YAML::Node& node, const Scope& scope, const std::string& file,
+                       const std::string& keyPath, Diagnostics& diags) {
+  if (node.IsScalar()) {
+    const std::string& text = node.Scalar();
+    if (text.size() < 2 || text[0] != '$' || node.Tag() == "!") return node;
+    const std::string name = text.substr(1);
+    if (const YAML::Node* value = scope.find(name)) return YAML::Clone(*value);
+    diags.error(markOf(node, file), keyPath,
+                "unknown parameter '" + name + "'; a '$name' refers to a key of a params block",
+                didYouMean(name, scope.names()));
+    return YAML::Node(YAML::NodeType::Null);
+  }
+  if (node.IsSequence()) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    std::size_t i = 0;
+    for (const auto& e : node)
+      out.push_back(resolveRefs(e, scope, file, keyPath + "[" + std::to_string(i++) + "]", diags));
+    return out;
+  }
+  if (node.IsMap()) {
+    YAML::Node out(YAML::NodeType::Map);
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const auto key = it->first.as<std::string>();
+      out[key] = resolveRefs(it->second, scope, file, joinKey(keyPath, key), diags);
+    }
+    return out;
+  }
+  return node;
+}
+
+std::string shown(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+}  // namespace yardsim::scene

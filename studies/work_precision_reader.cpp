@@ -1,0 +1,148 @@
+#include <filesystem>
+#include "studies/work_precision_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "scene/yaml_source.hpp"
+
+namespace yardsim::studies {
+
+using models::Diagnostics;
+using scene::Scene;
+using scene::checkKeys;
+using scene::markOf;
+using scene::shown;
+
+std::string WpRun::param() const {
+  std::ostringstream s;
+  s.precision(6);
+  if (!(dt > 0) && !(rtol > 0)) return "";  // a published reference
+  if (rtol > 0) s << "rtol=" << rtol;
+  else s << "dt=" << dt;
+  return s.str();
+}
+
+WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
+  WpSpec spec;
+  const std::string f = scene.file.string();
+  const YAML::Node doc = YAML::LoadFile(f);
+  const YAML::Node wp = doc["wp"];
+  if (!wp || !wp.IsMap()) {
+    d.error(markOf(wp ? wp : doc, f), "wp",
+            "the scene has no `wp:` block: give channels, methods and a reference (docs/numerics.md)");
+    return spec;
+  }
+  checkKeys(wp, {"channels", "interval", "until", "methods", "reference", "check", "repeats"}, f, "wp", d);
+  // (node, key) => a positive number, or an error there
+  auto positive = [&](const YAML::Node& n, const std::string& key, double fallback) {
+    double v = 0.0;
+    if (!n) return fallback;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v) || !(v > 0) || !std::isfinite(v)) {
+      d.error(markOf(n, f), key, "expected a positive number, got " + shown(n));
+      return fallback;
+    }
+    return v;
+  };
+  const YAML::Node ch = wp["channels"];
+  if (!ch || !ch.IsSequence() || ch.size() == 0)
+    d.error(markOf(ch ? ch : wp, f), "wp.channels", "expected a list of channel names (see `yardsim list-channels`)");
+  else
+    for (const auto& c : ch) spec.channels.push_back(c.as<std::string>());
+  spec.interval = positive(wp["interval"], "wp.interval", scene.record.interval);
+  spec.until = positive(wp["until"], "wp.until", scene.until);
+  if (!(spec.interval > 0)) d.error(markOf(wp, f), "wp.interval", "missing: the output grid step, s");
+  if (!std::isfinite(spec.until)) d.error(markOf(wp, f), "wp.until", "missing: the scene runs without end; give wp.until");
+  spec.repeats = static_cast<int>(positive(wp["repeats"], "wp.repeats", 3.0));
+  // (one run: method and dt or rtol) => the run
+  auto single = [&](const YAML::Node& n, const std::string& key) {
+    WpRun r;
+    if (!n || !n.IsMap() || !n["method"]) {
+      d.error(markOf(n ? n : wp, f), key, "expected {method: name, dt: s} or {method: name, rtol: x}");
+      return r;
+    }
+    r.method = r.label = n["method"].as<std::string>();
+    if (n["label"]) r.label = n["label"].as<std::string>();
+    r.dt = positive(n["dt"], key + ".dt", 0.0);
+    r.rtol = positive(n["rtol"], key + ".rtol", 0.0);
+    if (!(r.dt > 0) && !(r.rtol > 0)) d.error(markOf(n, f), key, "give dt (fixed step) or rtol (adaptive)");
+    r.extra = YAML::Clone(n);
+    for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) r.extra.remove(k);
+    return r;
+  };
+  const YAML::Node ref = wp["reference"];
+  if (ref && ref.IsMap() && ref["file"]) {
+    // (reference: {file}) => a published solution, relative to the scene file
+    checkKeys(ref, {"file"}, f, "wp.reference", d);
+    const std::string name = ref["file"].as<std::string>();
+    const std::filesystem::path path = scene.file.parent_path() / name;
+    if (!std::filesystem::is_regular_file(path))
+      d.error(markOf(ref["file"], f), "wp.reference.file", "no such file: " + path.string());
+    spec.referenceFile = path.string();
+    spec.reference.label = spec.reference.method = "file " + name;
+  } else {
+    spec.reference = single(ref, "wp.reference");
+  }
+  if (wp["check"] || spec.referenceFile.empty()) spec.check = single(wp["check"], "wp.check");
+  if (!spec.check.method.empty() && spec.check.method == spec.reference.method)
+    d.error(markOf(wp["check"], f), "wp.check",
+            "the check must use a different method than the reference (" + spec.reference.method +
+                "), so that it is an independent confirmation");
+  const YAML::Node ms = wp["methods"];
+  if (!ms || !ms.IsSequence() || ms.size() == 0) {
+    d.error(markOf(ms ? ms : wp, f), "wp.methods", "expected a list of {method, dt0, levels} or {method, rtol: [hi, lo]}");
+    return spec;
+  }
+  for (std::size_t i = 0; i < ms.size(); ++i) {
+    const YAML::Node m = ms[i];
+    const std::string key = "wp.methods[" + std::to_string(i) + "]";
+    if (!m.IsMap() || !m["method"]) {
+      d.error(markOf(m, f), key, "expected {method: name, dt0: s, levels: n} or {method: name, rtol: [hi, lo]}");
+      continue;
+    }
+    WpRun base;
+    base.method = base.label = m["method"].as<std::string>();
+    if (m["label"]) base.label = m["label"].as<std::string>();
+    base.extra = YAML::Clone(m);
+    for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) base.extra.remove(k);
+    if (const YAML::Node rt = m["rtol"]) {
+      // (rtol: [hi, lo]) => one run per decade from hi down to lo
+      if (!rt.IsSequence() || rt.size() != 2) {
+        d.error(markOf(rt, f), key + ".rtol", "expected [highest, lowest], e.g. [1.0e-3, 1.0e-10]");
+        continue;
+      }
+      const double hi = positive(rt[0], key + ".rtol[0]", 1e-3), lo = positive(rt[1], key + ".rtol[1]", 1e-10);
+      for (double r = hi; r >= lo * (1 - 1e-9); r /= 10.0) {
+        WpRun run = base;
+        run.rtol = r;
+        spec.runs.push_back(run);
+      }
+    } else {
+      const double dt0 = positive(m["dt0"], key + ".dt0", 0.0);
+      const double levels = positive(m["levels"], key + ".levels", 4.0);
+      if (!(dt0 > 0)) {
+        d.error(markOf(m, f), key, "missing dt0 (the longest step of the sweep, s) or rtol");
+        continue;
+      }
+      for (int k = 0; k < static_cast<int>(levels); ++k) {
+        WpRun run = base;
+        run.dt = dt0 / std::pow(2.0, k);
+        spec.runs.push_back(run);
+      }
+    }
+  }
+  // (fixed steps) => each divides the grid interval, so that samples fall on step times
+  std::vector<const WpRun*> all{&spec.reference, &spec.check};
+  for (const auto& r : spec.runs) all.push_back(&r);
+  for (const WpRun* r : all) {
+    if (!(r->dt > 0) || !(spec.interval > 0)) continue;
+    const double ratio = spec.interval / r->dt;
+    if (std::abs(ratio - std::round(ratio)) > 1e-6 * ratio || std::round(ratio) < 1)
+      d.error(markOf(wp, f), "wp.interval",
+              "the grid interval " + std::to_string(spec.interval) + " s is not a multiple of the step " +
+                  std::to_string(r->dt) + " s of " + r->label + ": samples must fall on step times");
+  }
+  return spec;
+}
+
+}  // namespace yardsim::studies

@@ -1,0 +1,55 @@
+#include "scene/coupling_graph.hpp"
+
+#include <catch2/catch.hpp>
+
+#include "scene/scene_loader.hpp"
+#include "support/scene_files.hpp"
+
+using namespace yardsim;
+
+TEST_CASE("a loop of zero-delay models is an algebraic loop naming its models") {
+  testing::SceneDir dir;
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+components:
+  box:
+    coupled:
+      inputs: {in: int}
+      outputs: {out: int}
+      components:
+        d1: {type: delay, params: {delay: 0}}
+        d2: {type: delay, params: {delay: 0}}
+      couplings:
+        - {from: in, to: d1.in}
+        - {from: d1.out, to: d2.in}
+        - {from: d2.out, to: out}
+  d3: {type: delay}
+couplings:
+  - {from: box.out, to: d3.in}
+  - {from: d3.out, to: box.in}
+)"));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  const auto& msg = r.diagnostics.all()[0].message;
+  CHECK_THAT(msg, Catch::Contains("zero-delay algebraic loop"));
+  CHECK_THAT(msg, Catch::Contains("box.d1") && Catch::Contains("box.d2") && Catch::Contains("d3"));
+}
+
+TEST_CASE("a loop with a delay in it is fine — an unfed input is a warning") {
+  testing::SceneDir dir;
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+components:
+  d1: {type: delay, params: {delay: 0}}
+  d2: {type: delay, params: {delay: 0.5}}
+  lonely: {type: delay}
+couplings:
+  - {from: d1.out, to: d2.in}
+  - {from: d2.out, to: d1.in}
+)"));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  REQUIRE(r.diagnostics.all().size() == 1);
+  const auto& w = r.diagnostics.all()[0];
+  CHECK(w.severity == models::Diagnostic::Severity::Warning);
+  CHECK(w.where.line == 5);
+  CHECK_THAT(w.message, Catch::Contains("input port 'in' of 'lonely' is not connected"));
+}

@@ -1,0 +1,119 @@
+#include "scene/mechanics_reader.hpp"
+#include "mechanics/build.hpp"
+#include "mechanics/description.hpp"
+
+#include <catch2/catch.hpp>
+
+#include "scene/scene_loader.hpp"
+#include "support/scene_files.hpp"
+
+using namespace yardsim;
+
+namespace {
+scene::LoadResult load(const testing::SceneDir& dir, const std::string& bodies) {
+  return scene::loadScene(dir.write("s.yaml", "schema_version: 1\ncomponents:\n  m:\n    type: multibody\n"
+                                               "    params:\n      dt: 0.01\n      bodies:\n" + bodies));
+}
+}  // namespace
+
+TEST_CASE("multibody bodies are checked with positions inside the params") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        a:
+          parent: world
+          joint: {type: revolut, axis: [0, 1, 0]}
+          mass: 1
+          inertia: [1, 1, 1]
+        b:
+          parent: c
+          joint: {type: revolute}
+          mass: -2
+          inertia: [1, 1, 1]
+)");
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 3);
+  const auto& d = r.diagnostics.all();
+  CHECK(d[0].keyPath == "components.m.params.bodies.a.joint.type");
+  CHECK(d[0].where.line == 10);
+  CHECK_THAT(d[0].message, Catch::Contains("did you mean 'revolute'?"));
+  CHECK(d[1].keyPath == "components.m.params.bodies.b.mass");
+  CHECK(d[1].where.line == 16);
+  CHECK(d[2].keyPath == "components.m.params.bodies.b.parent");
+  CHECK(d[2].where.line == 14);
+}
+
+TEST_CASE("an inertia that violates the triangle inequality is refused naming the body") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        slab:
+          parent: world
+          joint: {type: revolute}
+          mass: 1
+          inertia: [1, 1, 5]
+)");
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  CHECK_THAT(r.diagnostics.all()[0].message, Catch::Contains("slab"));
+}
+
+TEST_CASE("initial positions in degrees and placements build into the model") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        a:
+          parent: world
+          joint: {name: j0, type: revolute, axis: [0, 1, 0], q0_deg: 30, v0: 0.5}
+          placement: {xyz: [0, 0, 2]}
+          mass: 1
+          inertia: [1, 1, 1]
+)");
+  REQUIRE(r.scene);
+  const auto& inst = *r.scene->root.child("m");
+  const auto spec = scene::parseMechanics(inst.params, [](auto&&...) { FAIL("unexpected"); });
+  const auto built = mechanics::buildMechanics(spec);
+  CHECK(built.model.nbodies == 2);
+  CHECK(built.q0[0] == Approx(M_PI / 6));
+  CHECK(built.v0[0] == 0.5);
+  CHECK(built.jointNames[1] == "j0");
+  CHECK(built.model.X_PJ[1].p.z() == 2.0);
+}
+
+TEST_CASE("visual geometry: each shape parsed, and every mistake refused at its place") {
+  testing::SceneDir dir;
+  const std::string body = "          parent: world\n          joint: {type: fixed}\n          mass: 1\n"
+                           "          inertia: [1, 1, 1]\n";
+  const auto good = load(dir, "        a:\n" + body + "          geometry: {box: [1, 2, 3]}\n" +
+                                  "        b:\n" + body +
+                                  "          geometry: {cylinder: {radius: 0.5, length: 4}, pose: {xyz: [0, 0, 1]}}\n" +
+                                  "        c:\n" + body + "          geometry: {sphere: 0.25}\n" +
+                                  "        d:\n" + body);
+  REQUIRE(good.scene);
+  using Shape = mechanics::MechanicsSpec::Visual::Shape;
+  const auto spec = scene::parseMechanics(good.scene->root.child("m")->params, [](auto&&...) { FAIL("unexpected"); });
+  const auto built = mechanics::buildMechanics(spec);
+  REQUIRE(built.visuals.size() == 5);
+  CHECK(built.visuals[1].shape == Shape::Box);
+  CHECK(built.visuals[1].size == dynamics::Vector3(1, 2, 3));
+  CHECK(built.visuals[2].shape == Shape::Cylinder);
+  CHECK(built.visuals[2].size.head<2>() == Eigen::Vector2d(0.5, 4));
+  CHECK(built.visuals[2].posed);
+  CHECK(built.visuals[2].X_BG.p.z() == 1.0);
+  CHECK(built.visuals[3].shape == Shape::Sphere);
+  CHECK(built.visuals[3].size[0] == 0.25);
+  CHECK(built.visuals[4].shape == Shape::Auto);
+
+  const auto bad = load(dir, "        a:\n" + body + "          geometry: {box: [1, 2]}\n" +
+                                 "        b:\n" + body + "          geometry: {sphere: -1}\n" +
+                                 "        c:\n" + body + "          geometry: {box: [1, 1, 1], sphere: 1}\n" +
+                                 "        d:\n" + body + "          geometry: {cylinder: {radius: 1}}\n" +
+                                 "        e:\n" + body + "          geometry: {cone: 1}\n");
+  INFO(bad.diagnostics.report());
+  REQUIRE(bad.diagnostics.errorCount() == 5);
+  const auto& d = bad.diagnostics.all();
+  CHECK(d[0].keyPath == "components.m.params.bodies.a.geometry.box");
+  CHECK_THAT(d[0].message, Catch::Contains("list of 3 numbers"));
+  CHECK(d[1].keyPath == "components.m.params.bodies.b.geometry.sphere");
+  CHECK(d[1].where.line == 19);
+  CHECK_THAT(d[1].message, Catch::Contains("must be > 0 m"));
+  CHECK(d[2].keyPath == "components.m.params.bodies.c.geometry");
+  CHECK_THAT(d[2].message, Catch::Contains("more than one shape"));
+  CHECK(d[3].keyPath == "components.m.params.bodies.d.geometry.cylinder.length");
+  CHECK(d[4].keyPath == "components.m.params.bodies.e.geometry.cone");
+  CHECK_THAT(d[4].message, Catch::Contains("unknown key 'cone'"));
+}

@@ -15,8 +15,8 @@ namespace yardsim::mechanics {
 
 class BlowUp : public std::runtime_error {
  public:
-  BlowUp(std::string element, const std::string& what, std::string suggestion)
-      : std::runtime_error(what), element(std::move(element)), suggestion(std::move(suggestion)) {}
+  BlowUp(std::string where, const std::string& what, std::string fix)
+      : std::runtime_error(what), element(std::move(where)), suggestion(std::move(fix)) {}
   std::string element;     // ", body 'hook' (joint 'hook_joint')", ", loop 'l1'"
   std::string suggestion;  // what to try instead
 };

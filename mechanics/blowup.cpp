@@ -37,7 +37,7 @@ std::string likelyCause(const System& s, const std::string& method, double dt) {
   // (mechanics at the start) => omega_max against the method's limit at this step
   StiffnessEstimate e;
   try {
-    e = estimateStiffness(s.description());
+    e = estimateStiffness(s.description(), s.servo());
   } catch (const std::exception&) {
     return "a smaller dt, or an implicit integrator";
   }

@@ -9,7 +9,10 @@
 #include "dynamics/configuration.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "mechanics/data.hpp"
 #include "mechanics/providers.hpp"
+#include "mechanics/stage.hpp"
+#include "mechanics/system.hpp"
 
 namespace yardsim::mechanics {
 
@@ -37,20 +40,27 @@ BuiltMechanics tautened(const BuiltMechanics& mech) {
 
 }  // namespace
 
-StiffnessEstimate estimateStiffness(const BuiltMechanics& original) {
+StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoSettings& servo) {
   const BuiltMechanics mech = tautened(original);
   const auto& model = mech.model;
   const int nv = model.nv;
   StiffnessEstimate out;
   if (nv == 0) return out;
-  Providers providers = makeProviders(mech, model);
-  dynamics::MultibodySystem system(model);
-  system.setForces([&](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                       const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
-    const forces::Stage stage{t, model, d, q, v};
-    for (auto& r : providers.ropes) r->evaluate(stage, f, tau);
-    for (auto& e : providers.equalizers) e->evaluate(stage, f, tau);
-  });
+  // (the system's one provider list and its held joints' servos) => the stage the run evaluates
+  const System system(mech, servo, "stiffness estimate");
+  Data data(system);
+  SetPoints held{std::vector<JointDrive>(static_cast<std::size_t>(model.nbodies)),
+                 std::vector<ActorLoad>(static_cast<std::size_t>(model.nbodies)),
+                 std::vector<WinchJob>(mech.ropes.size())};
+  if (servo.bandwidth > 0)
+    for (int i = 1; i < model.nbodies; ++i)
+      if (mech.hold[static_cast<std::size_t>(i)]) {
+        const double q = mech.q0[model.idxQ[i]];
+        held.drives[static_cast<std::size_t>(i)] = JointDrive{true, true, q, q, 0.0, 0.0, "", false};
+      }
+  data.setPoints = &held;
+  connectStage(system, data);
+  dynamics::MultibodySystem& kernel = data.kernel;
   // (q0 (+) theta, v0 + dv) => central differences of the accelerations: J = [0 I; A_q A_v]
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * nv, 2 * nv);
   J.topRightCorner(nv, nv).setIdentity();
@@ -61,13 +71,13 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original) {
       d.setZero();
       d[j] = sign * kStep;
       dynamics::integrate(model, mech.q0, d, 1.0, q);
-      system.acceleration(0.0, q, mech.v0, side == 0 ? ap : am);
+      kernel.acceleration(0.0, q, mech.v0, side == 0 ? ap : am);
     }
     J.block(nv, j, nv, 1) = (ap - am) / (2.0 * kStep);
     for (int side = 0; side < 2; ++side) {
       v = mech.v0;
       v[j] += (side == 0 ? 1.0 : -1.0) * kStep;
-      system.acceleration(0.0, mech.q0, v, side == 0 ? ap : am);
+      kernel.acceleration(0.0, mech.q0, v, side == 0 ? ap : am);
     }
     J.block(nv, nv + j, nv, 1) = (ap - am) / (2.0 * kStep);
   }
@@ -100,14 +110,22 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original) {
       out.element = name;
     }
   };
-  for (std::size_t i = 0; i < providers.ropes.size(); ++i) {
-    const auto& r = *providers.ropes[i];
-    consider("rope '" + r.name() + "'", r.parts() * r.properties().ea / r.properties().l0,
-             (r.length(sp) - r.length(sm)) / (2 * h));
-  }
-  for (const auto& e : providers.equalizers)
+  for (const auto& r : system.ropes())
+    consider("rope '" + r->name() + "'", r->parts() * r->properties().ea / r->properties().l0,
+             (r->length(sp) - r->length(sm)) / (2 * h));
+  for (const auto& e : system.equalizers())
     consider("equalizer '" + e->name() + "'", e->properties().ea / e->properties().l0,
              (e->length(sp) - e->length(sm)) / (2 * h));
+  // (any other provider that stores energy) => its strain energy along the mode, by the second
+  // difference of its potential energy
+  dynamics::Data d0(model);
+  dynamics::forwardKinematics(model, d0, mech.q0, mech.v0);
+  const forces::Stage s0{0.0, model, d0, mech.q0, mech.v0};
+  for (std::size_t k = system.ropes().size() + system.equalizers().size(); k < system.providers().size(); ++k) {
+    const forces::ForceProvider& p = *system.providers()[k];
+    const double curvature = (p.potentialEnergy(sp) - 2.0 * p.potentialEnergy(s0) + p.potentialEnergy(sm)) / (h * h);
+    if (curvature > 0) consider("provider '" + p.name() + "'", curvature, 1.0);
+  }
   return out;
 }
 

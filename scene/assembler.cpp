@@ -99,7 +99,8 @@ std::unique_ptr<devs::Coupled> assemble(const Scene& scene) {
     opt.driveMaxEffort = set.driveMaxEffort;
     opt.driveTolerance = set.driveTolerance;
     opt.equilibrium = set.equilibrium;
-    root->addComponent(std::make_unique<MultibodyModel>(system->name, buildMechanics(system->spec), opt));
+    root->addComponent(std::make_unique<MultibodyModel>(
+        system->name, system->built ? *system->built : buildMechanics(system->spec), opt));
   }
   bindActors(scene.root, *root);
   return root;

@@ -327,7 +327,8 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {
     try {
-      buildMechanics(s->spec);  // the kernel's own checks (inertia, tree), naming the body
+      // (spec) => built once, with the kernel's own checks (inertia, tree) naming the body
+      s->built = std::make_shared<const mechanics::BuiltMechanics>(buildMechanics(s->spec));
     } catch (const std::exception& e) {
       diags.error(scene.root.where, "mechanics", std::string("mechanical system '") + s->name + "': " + e.what());
     }

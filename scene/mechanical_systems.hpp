@@ -24,6 +24,9 @@ using models::ElementRef;
 struct MechanicalSystem {
   std::string name;    // the multibody model's name at the scene root: mechanics, mechanics2, ...
   MechanicsSpec spec;  // bodies, joints, ropes, equalizers, loops with full path names
+  // the spec built once at validation (model, added mass from hulls, q0): shared by the stiffness
+  // guard and the assembler; null when it could not be built (an error was reported)
+  std::shared_ptr<const mechanics::BuiltMechanics> built;
 };
 
 // (scene with its instance tree) => its mechanical systems; every problem reported with its place

@@ -32,7 +32,10 @@ void checkStiffness(const Scene& scene, Diagnostics& diags) {
     // (system) => its estimate and the verdict on the scene's step
     StiffnessEstimate e;
     try {
-      e = estimateStiffness(buildMechanics(system->spec));
+      const auto& set = system->spec.settings;
+      const mechanics::ServoSettings servo{set.driveBandwidth > 0 ? set.driveBandwidth : std::min(10.0, 0.1 / scene.dt),
+                                           set.driveMaxEffort, set.driveTolerance};
+      e = estimateStiffness(system->built ? *system->built : buildMechanics(system->spec), servo);
     } catch (const std::exception& ex) {
       diags.error(scene.integratorWhere, "integrator",
                   "mechanical system '" + system->name + "': its accelerations at the start are not "

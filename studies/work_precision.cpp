@@ -155,7 +155,7 @@ WpResult workPrecision(Scene& scene, const WpSpec& spec, const std::function<voi
   WpResult result;
   result.scene = scene.name;
   for (const auto& s : scene.systems)
-    result.omegaMax = std::max(result.omegaMax, estimateStiffness(buildMechanics(s->spec)).omegaMax);
+    result.omegaMax = std::max(result.omegaMax, estimateStiffness(s->built ? *s->built : buildMechanics(s->spec)).omegaMax);
   // (reference and check) => the solution errors are measured against, and its own accuracy
   auto say = [&](const std::string& m) {
     if (log) log(m);

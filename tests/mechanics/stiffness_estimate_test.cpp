@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "forces/geometry/mesh_io.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
 #include "mechanics/build.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "mechanics/stiffness_estimate.hpp"
@@ -75,4 +77,38 @@ TEST_CASE("the 3500 t block's lumped hoist: omega_max about 1.4e3 rad/s in the r
   CHECK(e.omegaMax == Approx(2 * std::sqrt(9.6e8 / 1920.0) * std::sin(9 * M_PI / 20)).epsilon(0.01));
   CHECK(e.body.rfind("node", 0) == 0);
   CHECK(e.element.rfind("rope 'hoist", 0) == 0);
+}
+
+TEST_CASE("a floating box barge: the estimate sees its hydrostatics, heave at sqrt(rho g A / m), damping ratio c / 2 sqrt(k m)") {
+  // 20 x 8 x 4 box of 246 t, centre of mass at mid-depth: draft 1.5 m; heave is its stiffest mode
+  // (roll sqrt(m g GM_T / I_xx) = 1.84 rad/s, pitch 2.44 rad/s); the hull's waterplane gives
+  // k = rho g L B, the damping c on heave
+  testing::SceneDir dir;
+  std::filesystem::create_directories(dir.path() / "meshes");
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(20, 8, 4), 2, 2, 1), dir.file("meshes/barge.stl"));
+  const double m = 246000.0, rho = 1025.0, g = 9.81, k = rho * g * 20 * 8, c = 2e5;
+  const std::string yaml = R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  gravity: [0, 0, -9.81]
+  water: {density: 1025}
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 246000
+      inertia: [1.64e6, 8.53e6, 9.51e6]
+  hydrostatics:
+    hull: {body: barge, mesh: meshes/barge.stl}
+  damping:
+    heave: {body: barge, linear: [0, 0, 2e5, 0, 0, 0], quadratic: [0, 0, 0, 0, 0, 0]}
+)";
+  auto scene = scene::loadSceneOrThrow(dir.write("barge.yaml", yaml));
+  REQUIRE(scene->systems.size() == 1);
+  const auto e = mechanics::estimateStiffness(mechanics::buildMechanics(scene->systems[0]->spec));
+  INFO(mechanics::describe(e));
+  CHECK(e.omegaMax == Approx(std::sqrt(k / m)).epsilon(1e-4));
+  CHECK(e.dampingRatio == Approx(c / (2.0 * std::sqrt(k * m))).epsilon(1e-4));
+  CHECK(e.body == "barge");
+  CHECK(e.element == "provider 'hull'");
 }

@@ -8,6 +8,7 @@
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/mechanical_systems.hpp"
+#include "scene/run_settings_reader.hpp"
 #include "scene/stiffness_guard.hpp"
 #include "models/port_types.hpp"
 #include "scene/sha256.hpp"
@@ -41,7 +42,6 @@ const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
                                               "placement", "description"};
-const std::vector<std::string> kTraceSinks{"jsonl", "chrome", "csv"};
 
 struct Override {
   YAML::Node value;
@@ -71,7 +71,7 @@ class Loader {
     stack_.push_back(fs::weakly_canonical(file));
     Scope scope;
     fileBody(scene->root, doc, file, scope, {}, true);
-    runSettings(*scene, doc, file.string());
+    readRunSettings(*scene, doc, file.string(), d_);
     stack_.pop_back();
     return scene;
   }
@@ -458,96 +458,6 @@ class Loader {
                  " no port '" + port + "'",
              didYouMean(port, names));
     return nullptr;
-  }
-
-  void runSettings(Scene& s, const YAML::Node& doc, const std::string& f) {
-    auto number = [&](const YAML::Node& n, const std::string& kp, double& out, bool positive) {
-      if (!hasKind(n, ParamKind::Number) || (positive ? !(n.as<double>() > 0) : n.as<double>() < 0)) {
-        d_.error(markOf(n, f), kp,
-                 std::string("expected a ") + (positive ? "positive" : "non-negative") +
-                     " number of seconds, got " + shown(n));
-        return;
-      }
-      out = n.as<double>();
-    };
-    if (const YAML::Node n = doc["name"]) s.name = n.IsScalar() ? n.Scalar() : "";
-    if (s.name.empty()) s.name = s.file.stem().string();
-    if (const YAML::Node n = doc["until"]) number(n, "until", s.until, false);
-    if (const YAML::Node n = doc["seed"]) {
-      if (hasKind(n, ParamKind::Integer)) s.seed = n.as<long long>();
-      else d_.error(markOf(n, f), "seed", "expected an integer, got " + shown(n));
-    }
-    if (const YAML::Node n = doc["integrator"]) {
-      s.integratorSpec = parseIntegratorSpec(n, f, d_);
-      s.integrator = s.integratorSpec.method;
-      if (n.IsMap())
-        if (const YAML::Node dt = n["dt"]) number(dt, "integrator.dt", s.dt, true);
-      s.integratorSpec.dt = s.dt;
-      s.integratorWhere = markOf(n, f);
-      if (const YAML::Node c = n.IsMap() ? n["stiffness_check"] : YAML::Node()) {
-        static const std::vector<std::string> kChecks{"warn", "refuse", "off"};
-        const std::string v = c.IsScalar() ? c.Scalar() : "";
-        if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
-          d_.error(markOf(c, f), "integrator.stiffness_check",
-                   "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
-        else
-          s.stiffnessCheck = v;
-      }
-    }
-    if (const YAML::Node r = doc["record"]) {
-      if (!r.IsMap()) {
-        d_.error(markOf(r, f), "record", "expected {interval: seconds, channels: [globs]}");
-      } else {
-        checkKeys(r, {"interval", "channels"}, f, "record", d_);
-        if (const YAML::Node i = r["interval"]) number(i, "record.interval", s.record.interval, true);
-        else d_.error(markOf(r, f), "record", "missing required key 'interval' (seconds)");
-        const YAML::Node ch = r["channels"];
-        if (ch && hasKind(ch, ParamKind::StringList)) s.record.channels = ch.as<std::vector<std::string>>();
-        else if (ch) d_.error(markOf(ch, f), "record.channels", "expected a list of channel globs");
-        else s.record.channels = {"*"};
-      }
-    }
-    if (const YAML::Node r = doc["report"]) reportSettings(s, r, f);
-    if (const YAML::Node t = doc["trace"]) {
-      if (!hasKind(t, ParamKind::StringList)) {
-        d_.error(markOf(t, f), "trace", "expected a list of trace sinks: jsonl, chrome, csv");
-      } else {
-        for (const auto& e : t) {
-          const std::string sink = e.Scalar();
-          if (std::find(kTraceSinks.begin(), kTraceSinks.end(), sink) == kTraceSinks.end())
-            d_.error(markOf(e, f), "trace", "unknown trace sink '" + sink + "'; expected jsonl, chrome or csv",
-                     didYouMean(sink, kTraceSinks));
-          else s.trace.push_back(sink);
-        }
-      }
-    }
-  }
-
-  // ({plots: [globs], static: {channel: value}}) => what the report shows
-  void reportSettings(Scene& s, const YAML::Node& r, const std::string& f) {
-    if (!r.IsMap()) {
-      d_.error(markOf(r, f), "report", "expected {plots: [channel globs], static: {channel: value}}");
-      return;
-    }
-    checkKeys(r, {"plots", "static"}, f, "report", d_);
-    if (const YAML::Node p = r["plots"]) {
-      if (hasKind(p, ParamKind::StringList)) s.report.plots = p.as<std::vector<std::string>>();
-      else d_.error(markOf(p, f), "report.plots", "expected a list of channel globs");
-    }
-    if (const YAML::Node st = r["static"]) {
-      if (!st.IsMap()) {
-        d_.error(markOf(st, f), "report.static",
-                 "expected a mapping {channel: value}, e.g. {crane.hoist.tension: 4.5e6}");
-        return;
-      }
-      for (auto it = st.begin(); it != st.end(); ++it) {
-        const std::string name = it->first.Scalar();
-        if (!hasKind(it->second, ParamKind::Number))
-          d_.error(markOf(it->second, f), "report.static." + name,
-                   "expected a number (the static value in the channel's unit), got " + shown(it->second));
-        else s.report.staticLevels.emplace_back(name, it->second.as<double>());
-      }
-    }
   }
 
   Diagnostics& d_;

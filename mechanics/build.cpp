@@ -29,6 +29,8 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
   out.environment.equalizers.clear();
   out.environment.loads.clear();
   out.environment.watches.clear();
+  out.environment.providers.clear();
+  out.providers = spec.providers;
   const auto& m = out.model;
   out.visuals.resize(static_cast<std::size_t>(m.nbodies));
   out.q0 = Eigen::VectorXd::Zero(m.nq);

@@ -5,6 +5,7 @@
 // ropes, equalizers, loads, watches and the environment; and the same once built (build.hpp)
 // into an immutable dynamics::Model with its initial q and v.
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,8 +17,10 @@
 #include "forces/airy_waves.hpp"
 #include "forces/current_profile.hpp"
 #include "forces/flow_load.hpp"
+#include "forces/force_provider.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
 #include "forces/linear_quadratic_damping.hpp"
+#include "forces/rope_path.hpp"
 #include "forces/wind_profile.hpp"
 
 namespace yardsim::mechanics {
@@ -114,8 +117,20 @@ struct MechanicsSpec {
     dynamics::Vector3 point = dynamics::Vector3::Zero();
     forces::DampingCoefficients coefficients;
   };
+  // A force provider contributed by a registered reader (scene/provider_readers.hpp; a new
+  // provider is its forces/ file pair and one reader function): attached at points on bodies
+  // (body frame, m) or in the world, built for the system's model when the system is built and
+  // evaluated after the built-in providers.
+  using ProviderBuild = std::function<std::unique_ptr<forces::ForceProvider>(
+      const std::string& name, const dynamics::Model& model, const std::vector<forces::Attachment>& at)>;
+  struct ProviderSpec {
+    std::string kind, name;  // kind: the mechanics key that declared it (springs, ...)
+    std::vector<Point> attachments;
+    ProviderBuild build;
+  };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;
+  std::vector<ProviderSpec> providers;
   std::vector<Load> loads;
   std::vector<Watch> watches;
   std::vector<Body> bodies;
@@ -143,7 +158,8 @@ struct BuiltMechanics {
   std::vector<MechanicsSpec::Load> loads;
   std::vector<MechanicsSpec::Watch> watches;
   MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
-  std::vector<MechanicsSpec::Visual> visuals = {};  // per body index (0: world); last, defaulted
+  std::vector<MechanicsSpec::Visual> visuals = {};  // per body index (0: world); defaulted
+  std::vector<MechanicsSpec::ProviderSpec> providers = {};  // from registered readers
 };
 
 }  // namespace yardsim::mechanics

@@ -66,6 +66,16 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (const auto& d : env.dampers)
     dampers_.push_back(
         std::make_unique<forces::LinearQuadraticDamping>(d.name, model, bodyOf(d.body), d.point, d.coefficients));
+  // (providers of registered readers) => built at their attachments
+  for (const auto& p : mech_.providers) {
+    std::vector<forces::Attachment> at;
+    for (const auto& [body, p_B] : p.attachments) {
+      const int b = body == "world" ? 0 : model.bodyIndex(body);
+      if (b < 0) throw std::invalid_argument(p.kind + " '" + p.name + "': unknown body '" + body + "'");
+      at.push_back({b, p_B});
+    }
+    contributed_.push_back(p.build(p.name, model, at));
+  }
   // (typed providers) => the one list, in the order every stage evaluates them
   for (auto& r : ropes_) providers_.push_back(r.get());
   for (auto& e : equalizers_) providers_.push_back(e.get());
@@ -73,6 +83,7 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (auto& f : flows_) providers_.push_back(f.get());
   for (auto& d : dampers_) providers_.push_back(d.get());
   for (auto& b : bodyLoads_) providers_.push_back(b.get());
+  for (auto& c : contributed_) providers_.push_back(c.get());
   // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
   dynamics::Data data(model);
   const Eigen::MatrixXd& M = dynamics::crba(model, data, mech_.q0);

@@ -56,6 +56,8 @@ class System {
   const std::vector<std::unique_ptr<forces::FlowLoad>>& flows() const { return flows_; }
   const std::vector<std::unique_ptr<forces::LinearQuadraticDamping>>& dampers() const { return dampers_; }
   const std::vector<std::unique_ptr<forces::BodyLoad>>& bodyLoads() const { return bodyLoads_; }
+  // the providers of registered readers (MechanicsSpec::ProviderSpec), last in the list
+  const std::vector<std::unique_ptr<forces::ForceProvider>>& contributed() const { return contributed_; }
   const std::vector<WatchRef>& watches() const { return watchRefs_; }
   // per body: the joint-space inertia of its 1-dof joint at q0 (kg m^2 or kg), for servo gains
   const std::vector<double>& servoInertia() const { return servoInertia_; }
@@ -73,6 +75,7 @@ class System {
   std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
   std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;
   std::vector<std::unique_ptr<forces::BodyLoad>> bodyLoads_;
+  std::vector<std::unique_ptr<forces::ForceProvider>> contributed_;
   std::vector<forces::ForceProvider*> providers_;
   std::vector<WatchRef> watchRefs_;
   std::vector<double> servoInertia_;

@@ -10,6 +10,7 @@
 
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rotation.hpp"
+#include "scene/provider_readers.hpp"
 #include "scene/yaml_source.hpp"
 
 namespace yardsim::scene {
@@ -53,6 +54,9 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
     for (const char* key : {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "hydrostatics", "wind_loads",
                             "current_loads", "damping"})
       p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Map),
+            inst.mechanicsWhere);
+    for (const ProviderReader& reader : providerReaders())
+      p.set(reader.key, inst.mechanics[reader.key] ? inst.mechanics[reader.key] : YAML::Node(YAML::NodeType::Map),
             inst.mechanicsWhere);
     // (the environment) => the root's only: one sea and one wind per scene
     for (const char* key : {"water", "wind"}) {
@@ -129,6 +133,7 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
   for (const auto& w : s.spec.windLoads) out.push_back({"wind_load", w.name, ""});
   for (const auto& c : s.spec.currentLoads) out.push_back({"current_load", c.name, ""});
   for (const auto& d : s.spec.dampers) out.push_back({"damping", d.name, ""});
+  for (const auto& c : s.spec.providers) out.push_back({c.kind, c.name, ""});
   return out;
 }
 
@@ -209,6 +214,14 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     for (const auto& w : f.spec.windLoads) all.windLoads.push_back(provider(w, "wind load"));
     for (const auto& c : f.spec.currentLoads) all.currentLoads.push_back(provider(c, "current load"));
     for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping"));
+    for (auto c : f.spec.providers) {  // (registered readers' providers) => full names, points placed
+      c.name = prefixed(path, c.name);
+      for (auto& [body, p] : c.attachments) {
+        body = resolve(f, body, c.kind + " '" + c.name + "'");
+        p = place(f, body, p);
+      }
+      all.providers.push_back(std::move(c));
+    }
     for (auto l : f.spec.loops) {
       l.name = prefixed(path, l.name);
       l.bodyA = resolve(f, l.bodyA, "loop '" + l.name + "'");
@@ -268,6 +281,12 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     eqAt.push_back(join(bodies));
   }
   for (const auto& l : all.loops) loopAt.push_back(join({l.bodyA, l.bodyB}));
+  std::vector<int> providerAt;
+  for (const auto& c : all.providers) {
+    std::vector<std::string> bodies;
+    for (const auto& a : c.attachments) bodies.push_back(a.first);
+    providerAt.push_back(join(bodies));
+  }
   // (a watch) => the system of its element's body (a joint's or a rope's first body)
   auto elementBody = [&](const std::string& e) -> int {
     for (const auto& b : all.bodies)
@@ -283,6 +302,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     if (eqAt[i] < 0)
       diags.error(scene.root.where, "mechanics",
                   "equalizer '" + all.equalizers[i].name + "' is attached to no body");
+  for (std::size_t i = 0; i < all.providers.size(); ++i)
+    if (providerAt[i] < 0)
+      diags.error(scene.root.where, "mechanics",
+                  all.providers[i].kind + " '" + all.providers[i].name + "' is attached to no body");
   if (const std::string missing = missingEnvironment(all); !missing.empty())
     diags.error(scene.root.where, "mechanics", missing);
   if (diags.hasErrors()) return {};
@@ -315,6 +338,8 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     if (loopAt[i] >= 0) systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
   for (const auto& l : all.loads)
     if (l.body != "world") systemOf(index.at(l.body))->spec.loads.push_back(l);
+  for (std::size_t i = 0; i < all.providers.size(); ++i)
+    systemOf(providerAt[i])->spec.providers.push_back(all.providers[i]);
   for (const auto& w : all.watches)
     if (const int b = elementBody(w.element); b >= 0) systemOf(b)->spec.watches.push_back(w);
   // (floating providers) => the system of their body (a world body was reported above)

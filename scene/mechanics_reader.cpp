@@ -12,6 +12,7 @@
 #include "models/diagnostics.hpp"
 #include "scene/added_mass_reader.hpp"
 #include "scene/floating_reader.hpp"
+#include "scene/provider_readers.hpp"
 #include "scene/spec_reader.hpp"
 
 namespace yardsim::scene {
@@ -428,6 +429,32 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     wr.fail(watch, "", "expected a mapping of watched quantities");
   }
   parseFloating(p, report, names, spec);
+  // (registered readers' keys) => their providers, attachments checked like a rope's
+  for (const ProviderReader& reader : providerReaders()) {
+    if (!p.has(reader.key)) continue;
+    const YAML::Node block = p.node(reader.key);
+    const Reader br{report, reader.key};
+    if (block.IsNull() || (block.IsMap() && block.size() == 0)) continue;
+    if (!block.IsMap()) {
+      br.fail(block, "", "expected a mapping of named entries (" + reader.summary + ")");
+      continue;
+    }
+    for (auto it = block.begin(); it != block.end(); ++it) {
+      const std::string name = it->first.as<std::string>();
+      MechanicsSpec::ProviderSpec ps = reader.read(name, it->second, br, name);
+      ps.kind = reader.key;
+      ps.name = name;
+      for (std::size_t i = 0; i < ps.attachments.size(); ++i) {
+        const std::string& body = ps.attachments[i].first;
+        if (body == "world" || names.count(body)) continue;
+        std::vector<std::string> known(names.begin(), names.end());
+        const std::string hint = didYouMean(body, known);
+        br.fail(it->second, name, "unknown body '" + body + "'" + (hint.empty() ? "" : " (" + hint + ")"));
+      }
+      if (!ps.build) br.fail(it->second, name, "the reader of '" + reader.key + "' built nothing");
+      else spec.providers.push_back(std::move(ps));
+    }
+  }
   return spec;
 }
 

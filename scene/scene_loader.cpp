@@ -8,6 +8,7 @@
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/mechanical_systems.hpp"
+#include "scene/provider_readers.hpp"
 #include "scene/run_settings_reader.hpp"
 #include "scene/stiffness_guard.hpp"
 #include "models/port_types.hpp"
@@ -184,10 +185,7 @@ class Loader {
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
         inst.mechanicsWhere = markOf(mech, f);
-        checkKeys(mech, {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "gravity", "water", "wind",
-                         "hydrostatics", "wind_loads", "current_loads", "damping", "drive_bandwidth",
-                         "drive_max_effort", "drive_tolerance", "equilibrium"}, f,
-                  joinKey(kp, "mechanics"), d_);
+        checkKeys(mech, mechanicsKeys(), f, joinKey(kp, "mechanics"), d_);
       }
     }
   }

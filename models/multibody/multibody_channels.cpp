@@ -66,6 +66,11 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
                      }});
   }
   floatingChannels(out);
+  for (const auto& c : system_.contributed()) {  // (providers of registered readers) => energy, power
+    const forces::ForceProvider* p = c.get();
+    out.push_back({p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage()); }});
+    out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage()); }});
+  }
   // (system-wide quantities) => under the model's own name when element names are paths
   const std::string own = opt_.elementPaths ? path() + "." : "";
   out.push_back({own + "energy", "J", [this] { return energy(); }});

@@ -4,14 +4,22 @@
 
 namespace yardsim::dynamics {
 
+namespace {
+
+// (q, v, tau, fext; with kPlaced, d.X_PB and d.X_WB already hold q's placements) => ddq
 // flatten: inline every Eigen helper into the three passes (GCC otherwise leaves 6x6 products as calls)
-[[gnu::flatten]] const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& tau, const ExternalForces* fext) {
+template <bool kPlaced>
+[[gnu::flatten]] const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const Eigen::VectorXd& q,
+                                                  const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
+                                                  const ExternalForces* fext) {
   // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
-    updateJointPlacement(m, d, i, q);
     const int p = m.parent[i];
-    const Transform& X = d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+    if constexpr (!kPlaced) {
+      updateJointPlacement(m, d, i, q);
+      d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+    }
+    const Transform& X = d.X_WB[i];
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     Motion vJ;
@@ -96,6 +104,19 @@ namespace yardsim::dynamics {
     }
   }
   return d.ddq;
+}
+
+}  // namespace
+
+const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                           const Eigen::VectorXd& tau, const ExternalForces* fext) {
+  return abaPasses<false>(m, d, q, v, tau, fext);
+}
+
+const Eigen::VectorXd& abaAfterKinematics(const Model& m, Data& d, const Eigen::VectorXd& q,
+                                          const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
+                                          const ExternalForces* fext) {
+  return abaPasses<true>(m, d, q, v, tau, fext);
 }
 
 }  // namespace yardsim::dynamics

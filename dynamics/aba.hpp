@@ -17,4 +17,11 @@ namespace yardsim::dynamics {
 const Eigen::VectorXd& aba(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext = nullptr);
 
+/// The same, for a data that already holds forwardKinematics(q, ...) (X_PB, X_WB): the joint
+/// placements are not computed again (one kinematics pass per integrator stage). Same results
+/// to the last bit as aba().
+const Eigen::VectorXd& abaAfterKinematics(const Model& model, Data& data, const Eigen::VectorXd& q,
+                                          const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
+                                          const ExternalForces* fext = nullptr);
+
 }  // namespace yardsim::dynamics

@@ -14,7 +14,6 @@ namespace yardsim::dynamics {
 MultibodySystem::MultibodySystem(const Model& model)
     : model_(model),
       data_(model),
-      scratch_(model),
       forces_(model),
       tau_(Eigen::VectorXd::Zero(model.nv)),
       tauStage_(Eigen::VectorXd::Zero(model.nv)),
@@ -52,12 +51,12 @@ const ExternalForces* MultibodySystem::stageForces(double t, const Eigen::Vector
       if (!v.segment(model_.idxV[i], model_.jointNv[i]).allFinite()) diverged(model_, t, "the velocity", i);
     }
   }
-  // (t, q, v) => forces from the callback (with kinematics available in scratch)
+  // (t, q, v) => forces from the callback, with the stage's kinematics in data_ (ABA reuses them)
   forces_.clear();
   tauStage_ = tau_;
   if (callback_) {
-    forwardKinematics(model_, scratch_, q, v);
-    callback_(t, q, v, scratch_, forces_, tauStage_);
+    forwardKinematics(model_, data_, q, v);
+    callback_(t, q, v, data_, forces_, tauStage_);
   }
   return forces_.empty() ? nullptr : &forces_;
 }
@@ -70,7 +69,7 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
     a = aPrescribed_;
     hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
   } else if (model_.nc == 0) {
-    a = aba(model_, data_, q, v, tauStage_, f);
+    a = callback_ ? abaAfterKinematics(model_, data_, q, v, tauStage_, f) : aba(model_, data_, q, v, tauStage_, f);
   } else {
     a = constrainedForwardDynamics(model_, data_, q, v, tauStage_, f, stab_);
   }
@@ -85,7 +84,7 @@ void MultibodySystem::unconstrainedAcceleration(double t, const Eigen::VectorXd&
     a = aPrescribed_;
     hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
   } else {
-    a = aba(model_, data_, q, v, tauStage_, f);
+    a = callback_ ? abaAfterKinematics(model_, data_, q, v, tauStage_, f) : aba(model_, data_, q, v, tauStage_, f);
   }
   if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
 }

@@ -56,7 +56,6 @@ class MultibodySystem final : public AccelerationSource {
  private:
   const Model& model_;
   Data data_;
-  Data scratch_;
   ExternalForces forces_;
   Eigen::VectorXd tau_, tauStage_;
   HybridDynamics hybrid_;

@@ -7,6 +7,7 @@
 #include "dynamics/aba.hpp"
 #include "dynamics/configuration.hpp"
 #include "dynamics/crba.hpp"
+#include "dynamics/kinematics.hpp"
 #include "dynamics/rnea.hpp"
 #include "test_models.hpp"
 
@@ -79,5 +80,23 @@ TEST_CASE("added mass slows a body's fall but adds nothing to its weight") {
     if (a35 == 0.0) CHECK(ddq[5] == Approx(-9.81 * mass / (mass + a33)));
     // RNEA gives back zero joint forces at that acceleration
     CHECK(rnea(m, d, q, v, ddq).norm() < 1e-9 * mass);
+  }
+}
+
+TEST_CASE("ABA after forward kinematics equals ABA to the last bit, and does use the kinematics it is given") {
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 24; ++trial) {
+    const Model m = randomTree(rng, 1 + (trial % 12) * 3, {0.0, 0.0, -9.81}, trial >= 12);
+    Data full(m), reuse(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), tau = randomVectorX(rng, m.nv);
+    ExternalForces f(m);
+    for (int i = 1; i < m.nbodies; ++i) f.addWorldFrame(i, randomVectorX(rng, 6));
+    const Eigen::VectorXd a = aba(m, full, q, v, tau, &f);
+    forwardKinematics(m, reuse, q, v);
+    CHECK(abaAfterKinematics(m, reuse, q, v, tau, &f) == a);  // bit for bit
+    // (kinematics of another configuration) => another answer: the placements are not recomputed
+    const Eigen::VectorXd q2 = randomConfiguration(m, rng);
+    forwardKinematics(m, reuse, q2, v);
+    CHECK(relativeError(abaAfterKinematics(m, reuse, q, v, tau, &f), a) > 1e-6);
   }
 }

@@ -1,28 +1,25 @@
 #include "output/base64.hpp"
 
+#include <openssl/evp.h>
+
 #include <algorithm>
-#include <cstdint>
+#include <climits>
+#include <stdexcept>
 
 namespace yardsim::output {
 
 void appendBase64(std::string& out, const void* data, std::size_t bytes) {
-  static const char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  const auto* p = static_cast<const std::uint8_t*>(data);
-  out.reserve(out.size() + (bytes + 2) / 3 * 4);
-  std::size_t i = 0;
-  // (three bytes) => four characters
-  for (; i + 3 <= bytes; i += 3) {
-    const std::uint32_t v = (std::uint32_t{p[i]} << 16) | (std::uint32_t{p[i + 1]} << 8) | p[i + 2];
-    for (int s = 18; s >= 0; s -= 6) out += kAlphabet[(v >> s) & 63];
-  }
-  // (one or two bytes left) => padded
-  if (const std::size_t rest = bytes - i) {
-    std::uint32_t v = std::uint32_t{p[i]} << 16;
-    if (rest == 2) v |= std::uint32_t{p[i + 1]} << 8;
-    out += kAlphabet[(v >> 18) & 63];
-    out += kAlphabet[(v >> 12) & 63];
-    out += rest == 2 ? kAlphabet[(v >> 6) & 63] : '=';
-    out += '=';
+  // (bytes, in chunks libcrypto's int sizes take, multiples of 3) => padded base64, no newlines
+  constexpr std::size_t kChunk = 3 * (1u << 28);
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t done = 0; done < bytes || (bytes == 0 && done == 0); done += kChunk) {
+    const std::size_t n = std::min(kChunk, bytes - done);
+    const std::size_t at = out.size();
+    out.resize(at + 4 * ((n + 2) / 3) + 1);  // EVP_EncodeBlock writes a terminating NUL
+    const int written = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(out.data() + at), p + done, static_cast<int>(n));
+    if (written < 0) throw std::runtime_error("base64: libcrypto's EVP_EncodeBlock failed");
+    out.resize(at + static_cast<std::size_t>(written));
+    if (bytes == 0) break;
   }
 }
 

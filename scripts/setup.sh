@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
-  libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev
+  libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev libssl-dev
   chromium  # the report's browser test (tests/report)
 )
 missing=()

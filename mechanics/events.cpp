@@ -1,5 +1,8 @@
 #include "mechanics/events.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::mechanics {
@@ -48,6 +51,51 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
     const double value = watched(s, w, d.scratch, q, v, t);
     g[nb + 2 * nr + w] = specs[w].above ? value - specs[w].threshold : specs[w].threshold - value;
   }
+}
+
+EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
+                             const Eigen::VectorXd& v, double t, const EventSlot& e) {
+  const auto& model = s.model();
+  const auto& ropes = s.ropes();
+  const auto k = static_cast<std::size_t>(e.index);
+  using K = EventSlot::Kind;
+  if (e.kind == K::DriveReached)
+    return {s.description().jointNames[k], sp.drives[k].actor, "reached", q[model.idxQ[e.index]]};
+  // (state) => its kinematics, the quantity at the event
+  dynamics::forwardKinematics(model, d.scratch, q, v);
+  const forces::Stage stage{t, model, d.scratch, q, v};
+  switch (e.kind) {
+    case K::WatchCrossed: return {s.description().watches[k].name, "", "crossed", watched(s, k, d.scratch, q, v, t)};
+    case K::SlackTaut: {  // (direction of the crossing) => lengthening through L0: taut; shortening: slack
+      const bool taut = ropes[k]->lengthRate(stage) >= ropes[k]->payoutRate(t);
+      return {ropes[k]->name(), "", taut ? "taut" : "slack", ropes[k]->length(stage)};
+    }
+    case K::OverMbl: return {ropes[k]->name(), "", "over_mbl", ropes[k]->tension(stage)};
+    default: return {};
+  }
+}
+
+void reportTimeEvents(const System& s, const SetPoints& sp, const Eigen::VectorXd&, double t,
+                      std::vector<EventReport>& out) {
+  const auto& ropes = s.ropes();
+  for (std::size_t k = 0; k < sp.winches.size(); ++k)
+    if (sp.winches[k].active && sp.winches[k].tEnd <= t)
+      out.push_back({ropes[k]->name(), sp.winches[k].actor, "done", ropes[k]->unstretchedLength(t)});
+  for (int i = 1; i < s.model().nbodies; ++i) {
+    const JointDrive& j = sp.drives[static_cast<std::size_t>(i)];
+    if (j.active && j.prescribed && !j.reported && j.tEnd() <= t)
+      out.push_back({s.description().jointNames[static_cast<std::size_t>(i)], j.actor, "reached", j.target});
+  }
+}
+
+double nextTimeEvent(const System& s, const SetPoints& sp, double t) {
+  double next = std::numeric_limits<double>::infinity();
+  for (const auto& w : sp.winches)
+    if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  for (const auto& d : sp.drives)
+    if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
+  for (const auto& l : s.bodyLoads()) next = std::min(next, l->nextBreak(t));  // kinks and jumps
+  return next;
 }
 
 double watched(const System& s, std::size_t w, const dynamics::Data& kin, const Eigen::VectorXd& q,

@@ -5,6 +5,7 @@
 // the stepper locates. Consumers look an event up by kind, never by index arithmetic.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,6 +24,13 @@ struct EventSlot {
   bool bothWays = false;  // false: only rising crossings count
 };
 
+// What an event says: the element (joint, rope, watch), the actor that asked for it ("" for
+// none), its kind (reached, done, over_mbl, taut, slack, crossed) and the quantity then (SI).
+struct EventReport {
+  std::string element, actor, kind;
+  double value = 0.0;
+};
+
 // (system) => its events, in the order of the event functions
 std::vector<EventSlot> eventTable(const System& s);
 
@@ -30,6 +38,19 @@ std::vector<EventSlot> eventTable(const System& s);
 // kinematics afterwards when the system has ropes or watches)
 void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
                     const Eigen::VectorXd& v, double t, std::span<double> g);
+
+// (the located state event that fired at t, state then) => its report
+EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
+                             const Eigen::VectorXd& v, double t, const EventSlot& e);
+
+// (set-points, t) => the reports of the time events due at t: winch jobs done, prescribed ramps
+// at their targets
+void reportTimeEvents(const System& s, const SetPoints& sp, const Eigen::VectorXd& q, double t,
+                      std::vector<EventReport>& out);
+
+// (set-points, t) => the next time event after t, s (a winch job's or a prescribed ramp's end,
+// a kink or jump of a body load's time series), or infinity
+double nextTimeEvent(const System& s, const SetPoints& sp, double t);
 
 // (watch, t, q, v with their kinematics in kin) => the watched quantity in its SI unit
 double watched(const System& s, std::size_t w, const dynamics::Data& kin, const Eigen::VectorXd& q,

@@ -157,20 +157,18 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         if (i < 0 || model.jointNv[i] != 1)
           throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
                                       "' names '" + s.element + "', which is not a 1-dof joint here");
-        const double q = x.q[model.idxQ[i]];
         const bool wasPrescribed = sp.drives[i].active && sp.drives[i].prescribed;
-        sp.drives[i] = mechanics::JointDrive{true, false, q, s.target, std::abs(s.speed), t, s.actor, s.prescribed};
+        const int iv = model.idxV[i];
+        const double step = mechanics::startDrive(sp, i, x.q[model.idxQ[i]], x.v[iv], s.target, s.speed, t,
+                                                  s.actor, s.prescribed);
         if (s.prescribed && model.nc > 0)
           throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" + s.actor +
                                       "' on '" + s.element + "' needs a system without loop closures; "
                                       "use mode: servo");
-        if (s.prescribed || wasPrescribed) {
-          // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
-          const int iv = model.idxV[i];
+        if (s.prescribed || wasPrescribed) {  // (velocity step of the joint) => an impulse
           Eigen::VectorXd& dv = ws_.data.accelScratch;
           dv.setZero();
-          if (s.prescribed) dv[iv] = (s.target >= q ? 1.0 : -1.0) * std::abs(s.speed) - x.v[iv];
-          if (s.prescribed && s.target == q) dv[iv] = -x.v[iv];
+          dv[iv] = step;
           prescribedVelocityStep(x, dv);
         }
         break;
@@ -190,9 +188,8 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           throw devs::SimulationError("multibody '" + path() + "': winch set-point from '" +
                                       s.actor + "' names '" + s.element +
                                       "', which is not a rope here, or has no positive speed");
-        const auto ri = static_cast<std::size_t>(r);
-        system_.ropes()[ri]->setPayoutRate(t, s.amount >= 0 ? s.speed : -s.speed);
-        sp.winches[ri] = mechanics::WinchJob{true, t + std::abs(s.amount) / s.speed, s.actor};
+        system_.ropes()[static_cast<std::size_t>(r)]->setPayoutRate(
+            t, mechanics::startWinch(sp, r, t, s.speed, s.amount, s.actor));
         break;
       }
     }
@@ -200,13 +197,7 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
 }
 
 devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) const {
-  devs::Time next = devs::kInfinity;
-  for (const auto& w : x.setPoints.winches)
-    if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
-  for (const auto& d : x.setPoints.drives)
-    if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
-  for (const auto& l : system_.bodyLoads()) next = std::min(next, l->nextBreak(t));  // kinks and jumps
-  return next;
+  return mechanics::nextTimeEvent(system_, x.setPoints, t);
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
@@ -239,40 +230,13 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::
 }
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
-  const auto& model = system_.model();
-  const auto& ropes = system_.ropes();
-  const auto& sp = x.setPoints;
-  const auto& names = system_.description().jointNames;
-  if (r.timeEvent) {
-    for (std::size_t k = 0; k < sp.winches.size(); ++k)
-      if (sp.winches[k].active && sp.winches[k].tEnd <= t)
-        event.add({ropes[k]->name(), sp.winches[k].actor, "done", ropes[k]->unstretchedLength(t)});
-    for (int i = 1; i < model.nbodies; ++i) {
-      const mechanics::JointDrive& d = sp.drives[i];
-      if (d.active && d.prescribed && !d.reported && d.tEnd() <= t) event.add({names[i], d.actor, "reached", d.target});
-    }
-  }
-  if (r.stateEvent <= 0) return;
-  // (the event that fired) => its message, with the quantity at the event
-  const mechanics::EventSlot& e = events_[static_cast<std::size_t>(r.stateEvent)];
-  const auto k = static_cast<std::size_t>(e.index);
-  auto& kin = ws_.data.scratch;
-  using K = mechanics::EventSlot::Kind;
-  if (e.kind != K::DriveReached) dynamics::forwardKinematics(model, kin, x.q, x.v);
-  const forces::Stage stage{t, model, kin, x.q, x.v};
-  switch (e.kind) {
-    case K::WatchCrossed:
-      event.add({system_.description().watches[k].name, "", "crossed", mechanics::watched(system_, k, kin, x.q, x.v, t)});
-      break;
-    case K::SlackTaut: {  // (direction of the crossing) => lengthening through L0: taut; shortening: slack
-      const bool taut = ropes[k]->lengthRate(stage) >= ropes[k]->payoutRate(t);
-      event.add({ropes[k]->name(), "", taut ? "taut" : "slack", ropes[k]->length(stage)});
-      break;
-    }
-    case K::OverMbl: event.add({ropes[k]->name(), "", "over_mbl", ropes[k]->tension(stage)}); break;
-    case K::DriveReached: event.add({names[k], sp.drives[k].actor, "reached", x.q[model.idxQ[e.index]]}); break;
-    case K::None: break;
-  }
+  // (time events due, the state event that fired) => their reports on the event port
+  std::vector<mechanics::EventReport> reports;
+  if (r.timeEvent) mechanics::reportTimeEvents(system_, x.setPoints, x.q, t, reports);
+  if (r.stateEvent > 0)
+    reports.push_back(mechanics::reportStateEvent(system_, ws_.data, x.setPoints, x.q, x.v, t,
+                                                  events_[static_cast<std::size_t>(r.stateEvent)]));
+  for (const auto& e : reports) event.add({e.element, e.actor, e.kind, e.value});
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {

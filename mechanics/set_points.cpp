@@ -1,0 +1,20 @@
+#include "mechanics/set_points.hpp"
+
+namespace yardsim::mechanics {
+
+double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed, double t,
+                  const std::string& actor, bool prescribed) {
+  JointDrive& d = sp.drives[static_cast<std::size_t>(body)];
+  d = JointDrive{true, false, q, target, std::abs(speed), t, actor, prescribed};
+  // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
+  if (!prescribed) return 0.0;  // a servo keeps its own velocity; a replaced ramp stops its impulse
+  if (target == q) return -v;
+  return (target >= q ? 1.0 : -1.0) * std::abs(speed) - v;
+}
+
+double startWinch(SetPoints& sp, int rope, double t, double speed, double amount, const std::string& actor) {
+  sp.winches[static_cast<std::size_t>(rope)] = WinchJob{true, t + std::abs(amount) / speed, actor};
+  return amount >= 0 ? speed : -speed;
+}
+
+}  // namespace yardsim::mechanics

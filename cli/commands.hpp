@@ -12,6 +12,7 @@ struct RunArgs {
   bool traceGiven = false;
   bool quiet = false;
   bool report = false;  // also write OUTDIR/report.html (and record trace.jsonl for its timeline)
+  std::string failOn;   // "alarm": exit 4 when the run raised an alarm (over_mbl, a watch crossed)
 };
 int runCommand(const RunArgs& a);
 

@@ -35,6 +35,14 @@ int runCommand(const RunArgs& a) {
   ProgressPrinter printer;
   if (!a.quiet) opt.progress = [&](const run::Progress& p) { printer(p); };
   auto log = logger("cli");
+  // (an alarm's first occurrence) => one console line, also when quiet; notices are summed up at the end
+  opt.onAlarm = [&](const run::Alarm& al) {
+    if (al.severity != "alarm") return;
+    printer.finish();
+    std::fprintf(stderr, "ALARM t = %.6g s: %s '%s' %s (%.6g)\n", al.first, al.model.c_str(), al.element.c_str(),
+                 al.kind == "over_mbl" ? "passed its minimum breaking load, tension [N]" : "crossed its threshold, value",
+                 al.worst);
+  };
   std::unique_ptr<devs::Coupled> root;
   try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
     root = scene::assemble(*scene);
@@ -50,7 +58,16 @@ int runCommand(const RunArgs& a) {
                 "{} transitions; output in {}",
                 scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
                 r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
-    return a.report ? reportCommand(a.outdir, a.quiet) : kOk;
+    // (alarms) => first time, count and worst value of each; exit 4 when asked to fail on them
+    for (const auto& al : r.alarms)
+      if (al.severity == "alarm" || !a.quiet)
+        std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g\n",
+                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
+                     al.worst);
+    const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [](const auto& al) { return al.severity == "alarm"; });
+    const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
+    if (status == kOk && alarmed && a.failOn == "alarm") return kAlarm;
+    return status;
   } catch (const devs::SimulationError& e) {
     printer.finish();
     std::fprintf(stderr, "numerical failure: %s\neverything recorded until then is in %s\n",

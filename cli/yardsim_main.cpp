@@ -23,6 +23,8 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
   runCmd->add_flag("--report", run.report, "also write OUTDIR/report.html (adds the jsonl trace)");
+  runCmd->add_option("--fail-on", run.failOn, "alarm: exit 4 when a rope passed its MBL or a watch crossed")
+      ->check(CLI::IsMember({"alarm"}));
 
   std::string reportDir;
   bool reportQuiet = false;

@@ -13,7 +13,8 @@
 //  - State events: event functions g_j(x, t) are checked over every advance; when one changes
 //    sign the way it is declared to, its crossing time is located (Illinois, to the model's
 //    tolerance, by re-advancing from the start of the step), the target is moved there, and an
-//    output event is emitted at that time; onStateEvent then lets the model react.
+//    output event is emitted at that time; onStateEvent then lets the model react. Functions
+//    that crossed too by the located state are reached at the same time (Reached::coincident).
 //  - Time events: times known in advance (nextTimeEvent) are landed on exactly.
 #include <algorithm>
 #include <cstdint>
@@ -34,6 +35,10 @@ struct Reached {
   bool grid = false;
   bool timeEvent = false;
   int stateEvent = -1;  // index of the state-event function, -1 when none
+  // other state-event functions that crossed the way they are declared to between the start of
+  // the step and the located event (within the location tolerance of it): reached at the same
+  // time, reported and reacted to with it
+  std::vector<int> coincident = {};
   bool operator==(const Reached&) const = default;
 };
 
@@ -111,6 +116,7 @@ class Atomic : public devs::Atomic<State<X>> {
     if (s.reached.grid) ++s.steps;
     if (s.reached.timeEvent) onTimeEvent(s.x, s.tx);
     if (s.reached.stateEvent >= 0) onStateEvent(s.x, s.tx, s.reached.stateEvent);
+    for (const int j : s.reached.coincident) onStateEvent(s.x, s.tx, j);
   }
 
   // (committed x at t) => xNext at the next target, moved to the earliest state event
@@ -152,8 +158,13 @@ class Atomic : public devs::Atomic<State<X>> {
       advance(s.xNext, t, earliest - t);
       s.tNext = earliest;
       s.reached = Reached{};
+      eventFunctions(s.xNext, earliest, g1_);
     }
     s.reached.stateEvent = which;
+    // (g at the located state) => the others that crossed by then: the same event time
+    for (std::size_t j = 0; j < dirs.size(); ++j)
+      if (static_cast<int>(j) != which && crosses(g0_[j], g1_[j], dirs[j]))
+        s.reached.coincident.push_back(static_cast<int>(j));
   }
 
   Grid grid_;

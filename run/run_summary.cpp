@@ -49,6 +49,41 @@ void systems(const devs::Model& m, std::string& out) {
   }
 }
 
+// (model tree, report's static levels) => per rope of every multibody model: its channel name,
+// parts, peak tension of one part and when, the static tension (the report's static level of
+// its tension channel, else its tension at the start), peak/static, MBL and peak/MBL
+void ropes(const devs::Model& m, const Scene& scene, std::string& out) {
+  if (!m.isAtomic()) {
+    for (const auto& c : static_cast<const devs::Coupled&>(m).components()) ropes(*c, scene, out);
+    return;
+  }
+  const auto* mb = dynamic_cast<const MultibodyModel*>(&m);
+  if (mb == nullptr) return;
+  const auto& x = mb->state().x;
+  for (std::size_t r = 0; r < mb->system().ropes().size(); ++r) {
+    const forces::WireRope& rope = mb->rope(r);
+    const std::string name = (mb->channelNamesArePaths() ? "" : mb->path() + ".") + rope.name();
+    double statical = mb->initialTension()[r];
+    for (const auto& [channel, level] : scene.report.staticLevels)
+      if (channel == name + ".tension") statical = level;
+    out += out.back() == '[' ? "{\"name\":" : ",{\"name\":";
+    appendJsonString(out, name);
+    auto number = [&](const char* k, double v) {
+      out += std::string(",\"") + k + "\":";
+      appendJsonNumber(out, v);
+    };
+    number("parts", rope.parts());
+    number("peak", x.peakTension[r]);
+    number("peak_time", x.peakTime[r]);
+    number("static", statical);
+    number("peak_over_static", statical > 0 ? x.peakTension[r] / statical : 0.0);
+    const double mbl = rope.properties().breakingLoad.value_or(0.0);
+    number("mbl", mbl);
+    number("mbl_utilisation", mbl > 0 ? x.peakTension[r] / mbl : 0.0);
+    out += "}";
+  }
+}
+
 }  // namespace
 
 std::string runSummaryJson(const Scene& scene, const devs::Model& root, const RunFacts& f) {
@@ -73,6 +108,25 @@ std::string runSummaryJson(const Scene& scene, const devs::Model& root, const Ru
   key("systems");
   o += "[";
   systems(root, o);
+  o += "]";
+  key("ropes");
+  o += "[";
+  ropes(root, scene, o);
+  o += "]";
+  key("alarms");
+  o += "[";
+  for (std::size_t i = 0; i < f.alarms.size(); ++i) {
+    const Alarm& a = f.alarms[i];
+    o += i ? ",{\"model\":" : "{\"model\":";
+    appendJsonString(o, a.model);
+    text("element", a.element);
+    text("kind", a.kind);
+    text("severity", a.severity);
+    number("first", a.first);
+    number("count", static_cast<double>(a.count));
+    number("worst", a.worst);
+    o += "}";
+  }
   o += "]";
   key("actors");
   o += "[";

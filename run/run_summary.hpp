@@ -1,12 +1,16 @@
 #pragma once
 // OUTDIR/run.json: what the report's header needs and the run's other outputs do not say —
 // scene name and file, the integrator and step of each multibody model, simulated and wall
-// time, how the run ended, the actors (path and kind) and the scene's `report:` block.
+// time, how the run ended, the actors (path and kind), the scene's `report:` block, per rope its
+// peak, static and breaking loads (`ropes`) and the safety events of the run (`alarms`).
 // Written when a run ends, and when it fails.
 #include <filesystem>
 #include <string>
 
+#include <vector>
+
 #include "devs/coupled.hpp"
+#include "run/alarms.hpp"
 #include "scene/scene.hpp"
 
 namespace yardsim::run {
@@ -18,6 +22,7 @@ struct RunFacts {
   std::string status = "ok";                   // ok | failed
   std::string message;                         // the diagnosis when failed
   double replayInterval = 0.0;                 // s between replay frames; 0: no replay
+  std::vector<Alarm> alarms;                   // in order of first occurrence
 };
 
 // (scene, its assembled model, facts) => run.json text

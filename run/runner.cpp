@@ -47,6 +47,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
         1, static_cast<std::int64_t>(std::ceil(opt.until / interval / static_cast<double>(opt.maxReplayFrames))));
   const bool replaying = recorder && !replay.empty();
   if (replaying) replay.sample(0.0);
+  AlarmMonitor alarms(opt.onAlarm);
   RunFacts facts;
   facts.until = opt.until;
   facts.replayInterval = replaying ? interval * static_cast<double>(stride) : 0.0;
@@ -54,6 +55,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   // (facts) => replay.glb and run.json, also when the run fails
   auto finish = [&] {
     facts.tEnd = reached;
+    facts.alarms = alarms.alarms();
     facts.wall = wall();
     if (replaying) writeGlb(replay.replay(), opt.outdir / "replay.glb");
     writeRunSummary(opt.outdir / "run.json", scene, root, facts);
@@ -75,6 +77,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
         throw std::invalid_argument("unknown trace sink '" + name + "' (expected jsonl, chrome or csv)");
       sim.addListener(*sinks.back());
     }
+    sim.addListener(alarms);
     double lastReport = 0.0;
     auto report = [&](double t) {
       if (!opt.progress) return;
@@ -104,6 +107,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     result.wall = wall();
     result.samples = recorder ? recorder->rows() : 0;
     result.stats = sim.stats();
+    result.alarms = alarms.alarms();
     if (opt.progress) opt.progress({result.tEnd, opt.until, result.wall});
     reached = sim.time();
   } catch (const std::exception& e) {

@@ -9,6 +9,7 @@
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
+#include "run/alarms.hpp"
 #include "scene/scene.hpp"
 
 namespace yardsim::run {
@@ -28,6 +29,7 @@ struct RunOptions {
   std::function<void(const Progress&)> progress;  // called at most every progressPeriod
   double progressPeriod = 0.1;      // s of wall time
   std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below
+  std::function<void(const Alarm&)> onAlarm = {};  // at the first occurrence of each alarm or notice
 };
 
 struct RunResult {
@@ -35,6 +37,7 @@ struct RunResult {
   double wall = 0.0;
   std::size_t samples = 0;
   devs::SimulatorStats stats;
+  std::vector<Alarm> alarms;  // every safety event of the run (alarms.hpp), also in run.json
 };
 
 // (scene, its assembled model, options) => the run: OUTDIR/timeseries.csv and the traces asked

@@ -27,7 +27,7 @@ MultibodyState initialState(const mechanics::BuiltMechanics& m) {
   MultibodyState x{m.q0, m.v0,
                    {std::vector<mechanics::JointDrive>(n), std::vector<mechanics::ActorLoad>(n),
                     std::vector<mechanics::WinchJob>(m.ropes.size())},
-                   0.0, std::vector<double>(m.ropes.size(), 0.0)};
+                   0.0, std::vector<double>(m.ropes.size(), 0.0), std::vector<double>(m.ropes.size(), 0.0)};
   for (std::size_t i = 1; i < n; ++i)
     if (m.hold[i]) {
       const double q = m.q0[m.model.idxQ[i]];
@@ -66,6 +66,7 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
   const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
   for (std::size_t r = 0; r < system_.ropes().size(); ++r) x0.peakTension[r] = system_.ropes()[r]->tension(stage);
+  initialTension_ = x0.peakTension;
   // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
   limits_.balance0 = mechanics::energy(system_, ws_.data.scratch, x0.q, x0.v, 0.0);
   limits_.energyBound = opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
@@ -129,7 +130,10 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
     // (end-of-step kinematics in scratch) => running peak of every rope's tension
     const forces::Stage stage{t + dt, system_.model(), d.scratch, x.q, x.v};
     for (std::size_t r = 0; r < system_.ropes().size(); ++r)
-      x.peakTension[r] = std::max(x.peakTension[r], system_.ropes()[r]->tension(stage));
+      if (const double tension = system_.ropes()[r]->tension(stage); tension > x.peakTension[r]) {
+        x.peakTension[r] = tension;
+        x.peakTime[r] = t + dt;
+      }
     ws_.powerState = &x;
     ws_.powerTime = t + dt;
     ws_.power = p1;
@@ -236,6 +240,10 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
   if (r.stateEvent > 0)
     reports.push_back(mechanics::reportStateEvent(system_, ws_.data, x.setPoints, x.q, x.v, t,
                                                   events_[static_cast<std::size_t>(r.stateEvent)]));
+  for (const int j : r.coincident)
+    if (j > 0)
+      reports.push_back(mechanics::reportStateEvent(system_, ws_.data, x.setPoints, x.q, x.v, t,
+                                                    events_[static_cast<std::size_t>(j)]));
   for (const auto& e : reports) event.add({e.element, e.actor, e.kind, e.value});
 }
 

@@ -34,6 +34,7 @@ struct MultibodyState {
   mechanics::SetPoints setPoints;
   double work = 0.0;                // J: integral of the power of non-conservative forces
   std::vector<double> peakTension;  // N per rope part: the largest tension at any step so far
+  std::vector<double> peakTime;     // s: when each rope's peak was reached
 };
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
@@ -69,6 +70,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   double energy() const;
   const forces::WireRope& rope(std::size_t i) const { return *system_.ropes()[i]; }
   const forces::Equalizer& equalizer(std::size_t i) const { return *system_.equalizers()[i]; }
+  // per rope: the tension of one part at the start (after equilibrium, if asked for), N
+  const std::vector<double>& initialTension() const { return initialTension_; }
   const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return system_.hydrostatics(); }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
@@ -112,6 +115,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   std::vector<mechanics::EventSlot> events_;
   std::vector<dtss::Crossing> directions_;
   mechanics::BlowUpLimits limits_;
+  std::vector<double> initialTension_;
   // Everything that changes while the state is advanced and read: the mechanics workspace, the
   // integrator (its history restarts at every discontinuity) and caches of the committed state.
   struct Workspace {

@@ -246,3 +246,42 @@ until: 1
   CHECK(none.status == 1);
   CHECK_THAT(none.out, Catch::Contains("no `wp:` block"));
 }
+
+TEST_CASE("yardsim run shows a rope over its MBL on the console and in run.json, and --fail-on alarm exits 4") {
+  yardsim::testing::SceneDir dir;
+  const auto scene = dir.write("mbl.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.001}
+until: 0.5
+record: {interval: 0.01}
+mechanics:
+  bodies:
+    block:
+      parent: world
+      joint: {type: prismatic, axis: [0, 0, 1], q0: -10.0}
+      mass: 1000.0
+      inertia: [100, 100, 100]
+  ropes:
+    hoist:
+      path: [{body: world, point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}]
+      EA: 1.0e8
+      L0: 10.0
+      damping: 2.0e5
+      mbl: 8829.0
+)");
+  const auto plain = runYardsim("run " + scene.string() + " -o " + dir.file("a") + " --quiet");
+  INFO(plain.out);
+  CHECK(plain.status == 0);  // an alarm alone does not fail the run
+  CHECK(plain.out.find("ALARM") != std::string::npos);
+  CHECK(plain.out.find("'hoist' passed its minimum breaking load") != std::string::npos);
+  std::ifstream json(dir.file("a/run.json"));
+  const std::string summary((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  CHECK(summary.find("\"alarms\":[{\"model\":\"mechanics\",\"element\":\"hoist\",\"kind\":\"over_mbl\"") !=
+        std::string::npos);
+  const auto strict = runYardsim("run " + scene.string() + " -o " + dir.file("b") + " --quiet --fail-on alarm");
+  INFO(strict.out);
+  CHECK(strict.status == 4);
+  CHECK(std::filesystem::exists(dir.path() / "b/timeseries.csv"));  // the output is kept
+  const auto bad = runYardsim("run " + scene.string() + " -o " + dir.file("c") + " --fail-on alarms");
+  CHECK(bad.status != 0);
+  CHECK(bad.status != 4);
+}

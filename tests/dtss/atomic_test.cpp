@@ -191,3 +191,52 @@ TEST_CASE("DTSS steps are spans in the Chrome trace") {
 TEST_CASE("a non-positive step is refused") {
   CHECK_THROWS_WITH(Clock(0.0, {}), Catch::Contains("clock") && Catch::Contains("h must be > 0"));
 }
+
+namespace {
+// A stone falling through two gates at the same height (g0 = y, g1 = 2 y): both are crossed at
+// the same instant; neither may be lost. It keeps falling (the gates only count).
+struct Stone {
+  double y, v;
+  int reactions = 0;
+};
+std::ostream& operator<<(std::ostream& os, const Stone& s) { return os << s.y; }
+
+class TwoGates final : public dtss::Atomic<Stone> {
+ public:
+  explicit TwoGates(double y0) : dtss::Atomic<Stone>("stone", Stone{y0, 0.0}, 0.1, 0.0, 1e-11) {}
+  devs::OutPort<int>& gate = addOutPort<int>("gate");
+
+ protected:
+  void advance(Stone& s, Time, Time dt) const override {
+    s.y += s.v * dt - 0.5 * kG * dt * dt;
+    s.v -= kG * dt;
+  }
+  std::span<const Crossing> eventDirections() const override { return dirs_; }
+  void eventFunctions(const Stone& s, Time, std::span<double> g) const override {
+    g[0] = s.y;
+    g[1] = 2.0 * s.y;
+  }
+  void outputAt(const Stone&, Time, const dtss::Reached& r) const override {
+    if (r.stateEvent >= 0) gate.add(r.stateEvent);
+    for (int j : r.coincident) gate.add(j);
+  }
+  void onStateEvent(Stone& s, Time, int) const override { ++s.reactions; }
+
+ private:
+  std::array<Crossing, 2> dirs_{Crossing::Falling, Crossing::Falling};
+};
+}  // namespace
+
+TEST_CASE("two state events crossed at the same instant are both reached, reported and reacted to") {
+  devs::Coupled root("root");
+  auto& stone = root.add<TwoGates>(10.0);
+  devs::Simulator sim(root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  sim.runUntil(2.0);
+  const auto gates = times(rec.records, "gate");
+  REQUIRE(gates.size() == 2);
+  CHECK(gates[0] == Approx(std::sqrt(2.0 * 10.0 / kG)).margin(1e-9));
+  CHECK(gates[1] == gates[0]);
+  CHECK(stone.state().x.reactions == 2);
+}

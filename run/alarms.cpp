@@ -1,0 +1,37 @@
+#include "run/alarms.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "devs/atomic.hpp"
+#include "devs/port.hpp"
+#include "models/multibody/messages.hpp"
+
+namespace yardsim::run {
+
+void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& port) {
+  // (events of a multibody model) => the safety ones counted
+  const auto* events = dynamic_cast<const devs::Port<models::MechanicsEvent>*>(&port);
+  if (events == nullptr || port.name() != "event") return;
+  for (const models::MechanicsEvent& e : events->values()) {
+    const bool alarm = e.what == "over_mbl" || e.what == "crossed";
+    if (!alarm && e.what != "slack" && e.what != "taut") continue;
+    auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
+      return a.model == m.path() && a.element == e.element && a.kind == e.what;
+    });
+    if (it == alarms_.end()) {
+      alarms_.push_back({m.path(), e.element, e.what, alarm ? "alarm" : "notice", t, 1, e.value});
+      if (onFirst_) onFirst_(alarms_.back());
+      continue;
+    }
+    ++it->count;
+    if (std::abs(e.value) > std::abs(it->worst)) it->worst = e.value;
+  }
+}
+
+std::size_t AlarmMonitor::alarmCount() const {
+  return static_cast<std::size_t>(
+      std::count_if(alarms_.begin(), alarms_.end(), [](const Alarm& a) { return a.severity == "alarm"; }));
+}
+
+}  // namespace yardsim::run

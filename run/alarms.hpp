@@ -1,0 +1,41 @@
+#pragma once
+// Safety events made visible (docs/scenes.md, "Alarms"): a listener on every multibody model's
+// `event` port that keeps, per element and kind, the first time, the count and the worst value:
+// a rope over its minimum breaking load (over_mbl) and a watched quantity past its threshold
+// (crossed) are alarms; a rope going slack or taut is a notice. The runner calls back at each
+// first occurrence (the console line) and writes the list into run.json.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "devs/listener.hpp"
+
+namespace yardsim::run {
+
+struct Alarm {
+  std::string model;     // the multibody model's path
+  std::string element;   // rope or watch name
+  std::string kind;      // over_mbl, crossed, slack, taut
+  std::string severity;  // alarm (over_mbl, crossed) or notice (slack, taut)
+  double first = 0.0;    // s: the first occurrence, as located
+  std::size_t count = 0;
+  double worst = 0.0;    // SI: the largest value reported (tension in N for over_mbl)
+};
+
+class AlarmMonitor final : public devs::Listener {
+ public:
+  // (alarm at its first occurrence) => e.g. a console line; may be empty
+  explicit AlarmMonitor(std::function<void(const Alarm&)> onFirst = {}) : onFirst_(std::move(onFirst)) {}
+  void onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& port) override;
+  // every (element, kind) seen, in order of first occurrence
+  const std::vector<Alarm>& alarms() const { return alarms_; }
+  // the number of distinct alarms of severity "alarm"
+  std::size_t alarmCount() const;
+
+ private:
+  std::function<void(const Alarm&)> onFirst_;
+  std::vector<Alarm> alarms_;
+};
+
+}  // namespace yardsim::run

@@ -1,14 +1,39 @@
 #include "cli/yardsim_main.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/logging.hpp"
+#include "models/diagnostics.hpp"
 #include "run/timeseries_writer.hpp"
 
 namespace yardsim::cli {
+
+namespace {
+// (option, unit) => a validator refusing a value that is not a finite number >= 0 (nan, inf, -5)
+CLI::Validator finiteNonNegative(const std::string& unit) {
+  return CLI::Validator(
+      [unit](std::string& text) -> std::string {
+        double v = 0.0;
+        try {
+          std::size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) throw std::invalid_argument(text);
+        } catch (const std::exception&) {
+          return "expected a number of " + unit + ", got '" + text + "'";
+        }
+        if (!std::isfinite(v) || v < 0.0) return "expected a finite number >= 0 " + unit + ", got " + text;
+        return "";
+      },
+      "finite >= 0");
+}
+}  // namespace
 
 int yardsimMain(int argc, char** argv) {
   CLI::App app{"yardsim: heavy-lift and marine operation simulator"};
@@ -19,7 +44,8 @@ int yardsimMain(int argc, char** argv) {
   auto* runCmd = app.add_subcommand("run", "run a scene and write its outputs");
   runCmd->add_option("scene", run.scene, "scene file (YAML)")->required();
   runCmd->add_option("-o,--outdir", run.outdir, "output folder")->capture_default_str();
-  runCmd->add_option("--until", run.until, "end time in s (default: the scene's `until`)");
+  runCmd->add_option("--until", run.until, "end time in s (default: the scene's `until`)")
+      ->check(finiteNonNegative("s"));
   runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
   runCmd->add_flag("--report", run.report, "also write OUTDIR/report.html (adds the jsonl trace)");
@@ -36,7 +62,14 @@ int yardsimMain(int argc, char** argv) {
   auto* wpCmd = app.add_subcommand("wp", "error against run time: run the scene's `wp:` sweep of integrators");
   wpCmd->add_option("scene", wp.scene, "scene file (YAML) with a wp: block")->required();
   wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.html, summary.md)")->capture_default_str();
-  wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)");
+  wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
+                       ? ""
+                       : "expected a whole number >= 1, got " + text;
+          },
+          "whole number >= 1"));
   wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
 
   std::string validateScene;
@@ -58,6 +91,19 @@ int yardsimMain(int argc, char** argv) {
   auto* channels = app.add_subcommand("list-channels", "list the channels a scene can record");
   channels->add_option("scene", channelsScene, "scene file (YAML)")->required();
 
+  // (a first word that is no command) => named, with the commands there are
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(c->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      const std::string hint = models::didYouMean(argv[1], names);
+      std::string all;
+      for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+      std::fprintf(stderr, "yardsim: unknown command '%s'%s; the commands are %s (yardsim --help)\n", argv[1],
+                   hint.empty() ? "" : (" (" + hint + ")").c_str(), all.c_str());
+      return kInvalidInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

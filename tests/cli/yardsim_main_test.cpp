@@ -285,3 +285,19 @@ mechanics:
   CHECK(bad.status != 0);
   CHECK(bad.status != 4);
 }
+
+TEST_CASE("yardsim refuses a bad --until, --repeats or command with exit 1 and says why") {
+  yardsim::testing::SceneDir dir;
+  for (const std::string until : {"-5", "nan", "inf", "1e400", "x"}) {
+    const auto r = runYardsim("run " + kGpt + " -o " + dir.file("out") + " --quiet --until=" + until);
+    INFO(until << ": " << r.out);
+    CHECK(r.status == 1);
+    CHECK(r.out.find("--until: expected a") != std::string::npos);
+  }
+  const auto repeats = runYardsim("wp " + kGpt + " -o " + dir.file("wp") + " --repeats -1");
+  CHECK(repeats.status == 1);
+  CHECK(repeats.out.find("--repeats: expected a whole number >= 1") != std::string::npos);
+  const auto bogus = runYardsim("rnu " + kGpt);
+  CHECK(bogus.status == 1);
+  CHECK(bogus.out.find("unknown command 'rnu' (did you mean 'run'?)") != std::string::npos);
+}

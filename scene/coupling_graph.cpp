@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/strong_components.hpp>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -222,6 +223,39 @@ void bindStartRules(Scene& scene, Diagnostics& diags) {
       a->params.set(rule, rewritten, a->params.mark(rule));
     }
   }
+  checkStartRuleCycles(index, diags);
+}
+
+void checkStartRuleCycles(const CouplingIndex& index, Diagnostics& diags) {
+  // (actor => the actors it waits for) => a cycle of waiting, by depth-first search: an actor in
+  // it (or one that waits for itself) would never start, nor anything after it
+  std::map<std::string, const Instance*> byPath;
+  for (const Instance* a : index.atomics()) byPath[a->path] = a;
+  std::map<std::string, int> color;  // 0 unseen, 1 on the current path, 2 done
+  std::vector<std::string> stack;
+  std::function<void(const std::string&)> visit = [&](const std::string& path) {
+    color[path] = 1;
+    stack.push_back(path);
+    const auto it = byPath.find(path);
+    if (it != byPath.end())
+      for (const std::string& next : it->second->listensTo) {
+        if (color[next] == 1) {  // (back edge) => the cycle from `next` to here
+          std::string cycle;
+          for (auto s = std::find(stack.begin(), stack.end(), next); s != stack.end(); ++s) cycle += *s + " -> ";
+          const Instance* first = byPath.at(next);
+          const char* rule = first->params.has("after_all") ? "after_all" : "after_any";
+          diags.error(first->params.mark(rule), first->keyPath + ".params." + rule,
+                      "actors wait for each other in a cycle and would never start: " + cycle + next,
+                      "remove one of these start rules, or start one of them with start_at");
+        } else if (color[next] == 0) {
+          visit(next);
+        }
+      }
+    stack.pop_back();
+    color[path] = 2;
+  };
+  for (const auto& [path, actor] : byPath)
+    if (color[path] == 0 && !actor->listensTo.empty()) visit(path);
 }
 
 }  // namespace yardsim::scene

@@ -43,7 +43,12 @@ void checkElementReferences(Scene& scene, Diagnostics& diags);
 // (scene) => every actor whose `trigger` port is not coupled listens to the actors its start
 // rule names (`after_all` / `after_any`), resolved from where it sits like element names (a
 // sibling first, then the enclosing models, then the root); the names are rewritten to full paths
-// and the assembler couples their `finished` ports to its `trigger`. Unknown names are errors.
+// and the assembler couples their `finished` ports to its `trigger`. Unknown names are errors, and
+// so is a cycle of actors waiting for each other (checkStartRuleCycles).
 void bindStartRules(Scene& scene, Diagnostics& diags);
+
+// (resolved start rules) => an error at the first actor of a cycle of waiting, naming the cycle
+// (a self-reference is a cycle of one)
+void checkStartRuleCycles(const CouplingIndex& index, Diagnostics& diags);
 
 }  // namespace yardsim::scene

@@ -53,3 +53,32 @@ couplings:
   CHECK(w.where.line == 5);
   CHECK_THAT(w.message, Catch::Contains("input port 'in' of 'lonely' is not connected"));
 }
+
+TEST_CASE("actors waiting for each other in a cycle, or for themselves, are refused naming the cycle") {
+  yardsim::testing::SceneDir dir;
+  const auto r = yardsim::scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+until: 5
+mechanics:
+  bodies:
+    arm:
+      parent: world
+      joint: {name: hinge, type: revolute, axis: [0, 1, 0]}
+      mass: 1
+      inertia: [1, 1, 1]
+components:
+  first: {type: joint_actor, params: {joint: hinge, target_deg: 10, speed_deg: 5, after_all: [second]}}
+  second: {type: joint_actor, params: {joint: hinge, target_deg: 20, speed_deg: 5, after_any: [third]}}
+  third: {type: joint_actor, params: {joint: hinge, target_deg: 20, speed_deg: 5, after_all: [first]}}
+  self: {type: joint_actor, params: {joint: hinge, target_deg: 0, speed_deg: 5, after_all: [self]}}
+  fine: {type: joint_actor, params: {joint: hinge, target_deg: 0, speed_deg: 5, after_all: [self]}}
+)"));
+  CHECK_FALSE(r.scene);
+  const std::string report = r.diagnostics.report();
+  INFO(report);
+  CHECK(report.find("s.yaml:12:94") != std::string::npos);  // at the first actor's start rule
+  CHECK(report.find("would never start: first -> second -> third -> first") != std::string::npos);
+  CHECK(report.find("s.yaml:15:") != std::string::npos);
+  CHECK(report.find("would never start: self -> self") != std::string::npos);
+  CHECK(report.find("fine ->") == std::string::npos);  // waits for a cycle, but is not in one
+}

@@ -1,5 +1,6 @@
 #include "models/params.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace yardsim::models {
@@ -24,18 +25,24 @@ bool converts(const YAML::Node& n) {
   T out;
   return n.IsScalar() && YAML::convert<T>::decode(n, out);
 }
+// (node) => a finite number (NaN and infinities are refused at the door: they only ever hang or
+// poison a run)
+bool finiteNumber(const YAML::Node& n) {
+  double out = 0.0;
+  return n.IsScalar() && YAML::convert<double>::decode(n, out) && std::isfinite(out);
+}
 }  // namespace
 
 bool hasKind(const YAML::Node& v, ParamKind kind) {
   switch (kind) {
-    case ParamKind::Number: return converts<double>(v);
+    case ParamKind::Number: return finiteNumber(v);
     case ParamKind::Integer: return converts<long long>(v);
     case ParamKind::Boolean: return converts<bool>(v);
     case ParamKind::String: return v.IsScalar();
     case ParamKind::NumberList:
       if (!v.IsSequence()) return false;
       for (const auto& e : v)
-        if (!converts<double>(e)) return false;
+        if (!finiteNumber(e)) return false;
       return true;
     case ParamKind::StringList:
       if (!v.IsSequence()) return false;

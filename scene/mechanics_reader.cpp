@@ -293,6 +293,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     if (n["EA"] && !(m.ea > 0)) rd.fail(n["EA"], k + ".EA", "EA must be > 0 N");
     if (n["L0"] && !(m.l0 > 0)) rd.fail(n["L0"], k + ".L0", "L0 must be > 0 m");
     if (m.damping < 0) rd.fail(n["damping"], k + ".damping", "damping must be >= 0 N s/m");
+    if (n["mbl"] && !(m.mbl > 0)) rd.fail(n["mbl"], k + ".mbl", "mbl must be > 0 N (leave it out for a rope without one)");
     return m;
   };
   const std::vector<std::string> materialKeys{"EA", "L0", "damping", "min_length", "mbl"};
@@ -310,8 +311,10 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       if (!rr.keys(n, keys, k)) continue;
       rope.path = points(rr, n["path"], k + ".path", 2);
       rope.material = material(rr, n, k);
-      rope.parts = static_cast<int>(rr.number(n["parts"], k + ".parts", 1.0));
-      if (rope.parts < 1) rr.fail(n["parts"], k + ".parts", "parts must be >= 1");
+      const double parts = rr.number(n["parts"], k + ".parts", 1.0);
+      rope.parts = static_cast<int>(parts);
+      if (parts < 1 || parts > 1000 || parts != std::floor(parts))
+        rr.fail(n["parts"], k + ".parts", "parts must be a whole number from 1 to 1000, got " + std::to_string(parts));
       spec.ropes.push_back(std::move(rope));
     }
   } else if (ropes.IsDefined() && !ropes.IsNull()) {

@@ -117,3 +117,25 @@ TEST_CASE("visual geometry: each shape parsed, and every mistake refused at its 
   CHECK(d[4].keyPath == "components.m.params.bodies.e.geometry.cone");
   CHECK_THAT(d[4].message, Catch::Contains("unknown key 'cone'"));
 }
+
+TEST_CASE("a rope's parts are a whole number and its breaking load, when given, is positive") {
+  testing::SceneDir dir;
+  auto scene = [&](const std::string& rope) {
+    return scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  bodies:
+    block: {parent: world, joint: {type: prismatic, axis: [0, 0, 1], q0: -5}, mass: 10, inertia: [1, 1, 1]}
+  ropes:
+    hoist: {path: [{point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], EA: 1.0e6, L0: 5, )" + rope + "}\n"));
+  };
+  CHECK(scene("parts: 2").scene);
+  CHECK(scene("mbl: 1e5").scene);
+  for (const std::string bad : {"parts: 2.5", "parts: 0", "parts: 1e9", "mbl: 0", "mbl: -1"}) {
+    const auto r = scene(bad);
+    INFO(bad << "\n" << r.diagnostics.report());
+    CHECK_FALSE(r.scene);
+    CHECK(r.diagnostics.report().find("s.yaml:7:") != std::string::npos);
+    CHECK(r.diagnostics.report().find(bad.substr(0, bad.find(':'))) != std::string::npos);
+  }
+}

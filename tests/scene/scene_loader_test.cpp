@@ -1,6 +1,8 @@
 #include "scene/scene_loader.hpp"
 
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 
 #include "support/scene_files.hpp"
 
@@ -283,4 +285,28 @@ report:
   CHECK(d[1].keyPath == "report.static.crane.hoist.tension");
   CHECK(d[1].where.line == 6);
   CHECK_THAT(d[1].message, Catch::Contains("expected a number") && Catch::Contains("'heavy'"));
+}
+
+TEST_CASE("NaN and infinities are refused at the door wherever a number is read, with the place") {
+  // (the default example, one number replaced at a time) => exit 1 with file:line:col and key
+  std::ifstream in(std::string(YARDSIM_SOURCE_DIR) + "/examples/double_pendulum/scene.yaml");
+  const std::string base((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"dt: 0.002", "dt: .nan"},                    // a type parameter
+      {"target_deg: 45", "target_deg: .inf"},       // an actor parameter
+      {"start_at: 0}", "start_at: -.inf}"},         // another
+      {"speed_deg: 6.0", "speed_deg: .nan"},        // a scene parameter, used through $speed_deg
+      {"until: 30", "until: .nan"},                 // the run settings
+      {"interval: 0.05", "interval: .inf"}};
+  testing::SceneDir dir;
+  for (const auto& [from, to] : edits) {
+    std::string text = base;
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    const auto r = scene::loadScene(dir.write("s.yaml", text));
+    INFO(to << "\n" << r.diagnostics.report());
+    CHECK_FALSE(r.scene);
+    CHECK(r.diagnostics.report().find("s.yaml:") != std::string::npos);
+  }
 }

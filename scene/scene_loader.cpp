@@ -81,27 +81,7 @@ class Loader {
   // (file) => parsed document, or nullopt with a diagnostic
   std::optional<YAML::Node> parse(const fs::path& file, const SourceMark& from,
                                   const std::string& keyPath, std::string* text = nullptr) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-      d_.error(from.file.empty() ? SourceMark{file.string()} : from, keyPath,
-               "cannot read scene file '" + file.string() + "'");
-      return std::nullopt;
-    }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    if (text) *text = ss.str();
-    try {
-      YAML::Node doc = YAML::Load(ss.str());
-      if (!doc.IsMap()) {
-        d_.error({file.string(), 1, 1}, "", "a scene file must be a mapping of keys");
-        return std::nullopt;
-      }
-      return doc;
-    } catch (const YAML::ParserException& e) {
-      d_.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "",
-               "YAML syntax error: " + e.msg);
-      return std::nullopt;
-    }
+    return readYamlFile(file, from, keyPath, d_, text);
   }
 
   // (a file's top-level mapping) => a coupled instance; overrides replace its params' defaults

@@ -1,12 +1,58 @@
 #include "scene/yaml_source.hpp"
 
+#include <fstream>
 #include <set>
+#include <sstream>
 
 namespace yardsim::scene {
 
 using models::Diagnostics;
 using models::SourceMark;
 using models::didYouMean;
+
+std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const SourceMark& from,
+                                       const std::string& keyPath, Diagnostics& diags, std::string* text) {
+  const SourceMark at = from.file.empty() ? SourceMark{file.string()} : from;
+  // (path) => a regular file below the size limit (a device or a FIFO would never end)
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    diags.error(at, keyPath,
+                std::filesystem::exists(file, ec) ? "'" + file.string() + "' is not a regular file"
+                                                  : "cannot read scene file '" + file.string() + "'");
+    return std::nullopt;
+  }
+  if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxSceneFileBytes) {
+    diags.error(at, keyPath,
+                "'" + file.string() + "' has " + std::to_string(size) + " bytes; a scene file has at most " +
+                    std::to_string(kMaxSceneFileBytes) + " (meshes belong in mesh files)");
+    return std::nullopt;
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    diags.error(at, keyPath, "cannot read scene file '" + file.string() + "'");
+    return std::nullopt;
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (text) *text = ss.str();
+  try {
+    const std::vector<YAML::Node> docs = YAML::LoadAll(ss.str());
+    if (docs.size() > 1) {
+      diags.error(markOf(docs[1], file.string()), "",
+                  "a scene file holds one YAML document; a second one starts here (remove the '---' line, "
+                  "or move it to its own file)");
+      return std::nullopt;
+    }
+    if (docs.empty() || !docs[0].IsMap()) {
+      diags.error({file.string(), 1, 1}, "", "a scene file must be a mapping of keys");
+      return std::nullopt;
+    }
+    return docs[0];
+  } catch (const YAML::ParserException& e) {
+    diags.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "", "YAML syntax error: " + e.msg);
+    return std::nullopt;
+  }
+}
 
 SourceMark markOf(const YAML::Node& node, const std::string& file) {
   const YAML::Mark m = node.Mark();

@@ -2,7 +2,9 @@
 // Reading YAML with its positions: marks as file:line:column, key checks with "did you mean",
 // duplicate keys, and `$name` parameter references resolved through nested scopes.
 #include <filesystem>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,16 @@ namespace yardsim::scene {
 
 using models::Diagnostics;
 using models::SourceMark;
+
+// Scene files are regular files of at most this many bytes (a larger one is refused, not read).
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
+
+// (file, where it was named from (empty for the root), the key that named it) => its one YAML
+// document, a mapping; or nullopt with the reason (unreadable, not a regular file, too large,
+// a syntax error at its place, a second document, not a mapping); its bytes in *text if asked
+std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const SourceMark& from,
+                                       const std::string& keyPath, Diagnostics& diags,
+                                       std::string* text = nullptr);
 
 // (node, file) => its 1-based position
 SourceMark markOf(const YAML::Node& node, const std::string& file);

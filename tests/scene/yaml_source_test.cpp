@@ -1,0 +1,44 @@
+// Reading a scene file: one YAML document, a mapping, from a regular file below the size limit;
+// anything else refused with the place and the reason before it is parsed (a device or a FIFO
+// would never end, a huge file would take the memory).
+#include "scene/yaml_source.hpp"
+
+#include <catch2/catch.hpp>
+#include <fstream>
+
+#include "scene/scene_loader.hpp"
+#include "support/scene_files.hpp"
+
+using namespace yardsim;
+
+namespace {
+std::string errors(const std::filesystem::path& file) {
+  models::Diagnostics d;
+  CHECK_FALSE(scene::readYamlFile(file, {}, "", d));
+  return d.report();
+}
+}  // namespace
+
+TEST_CASE("a scene file is one YAML document, a mapping, in a regular file of at most 16 MiB") {
+  testing::SceneDir dir;
+  CHECK_THAT(errors("/dev/zero"), Catch::Contains("'/dev/zero' is not a regular file"));
+  CHECK_THAT(errors(dir.write("two.yaml", "schema_version: 1\n---\nfoo: 1\n")),
+             Catch::Contains("two.yaml:3:1") && Catch::Contains("a second one starts here"));
+  CHECK_THAT(errors(dir.write("list.yaml", "- 1\n- 2\n")), Catch::Contains("must be a mapping"));
+  CHECK_THAT(errors(dir.path() / "missing.yaml"), Catch::Contains("cannot read scene file"));
+  {
+    std::ofstream big(dir.path() / "big.yaml");
+    big << "schema_version: 1\n# " << std::string(scene::kMaxSceneFileBytes, 'x') << "\n";
+  }
+  CHECK_THAT(errors(dir.path() / "big.yaml"), Catch::Contains("a scene file has at most 16777216"));
+  models::Diagnostics d;
+  CHECK(scene::readYamlFile(dir.write("ok.yaml", "schema_version: 1\n"), {}, "", d));
+  CHECK_FALSE(d.hasErrors());
+}
+
+TEST_CASE("an include of a device is refused at the include, not read") {
+  testing::SceneDir dir;
+  const auto r = scene::loadScene(dir.write("s.yaml", "schema_version: 1\ncomponents:\n  x: {include: /dev/urandom}\n"));
+  CHECK_FALSE(r.scene);
+  CHECK_THAT(r.diagnostics.report(), Catch::Contains("s.yaml:3:16") && Catch::Contains("not a regular file"));
+}

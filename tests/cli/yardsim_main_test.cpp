@@ -301,3 +301,16 @@ TEST_CASE("yardsim refuses a bad --until, --repeats or command with exit 1 and s
   CHECK(bogus.status == 1);
   CHECK(bogus.out.find("unknown command 'rnu' (did you mean 'run'?)") != std::string::npos);
 }
+
+TEST_CASE("yardsim validate checks a scene's wp: block as yardsim wp reads it") {
+  yardsim::testing::SceneDir dir;
+  std::ifstream in(std::string(YARDSIM_SOURCE_DIR) + "/examples/stiff/block_920t.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(runYardsim("validate " + dir.write("ok.yaml", text).string()).status == 0);
+  text.replace(text.find("  methods:"), 10, "  metods:");
+  const auto r = runYardsim("validate " + dir.write("bad.yaml", text).string());
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK(r.out.find("wp.metods: unknown key 'metods'") != std::string::npos);
+  CHECK(r.out.find("did you mean 'methods'?") != std::string::npos);
+}

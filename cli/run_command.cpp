@@ -8,6 +8,8 @@
 #include "cli/progress.hpp"
 #include "cli/scene_input.hpp"
 #include "devs/coupled.hpp"
+#include "models/channels.hpp"
+#include "models/diagnostics.hpp"
 #include "scene/assembler.hpp"
 #include "run/runner.hpp"
 
@@ -49,6 +51,25 @@ int runCommand(const RunArgs& a) {
   } catch (const devs::SimulationError& e) {
     std::fprintf(stderr, "numerical failure before the run: %s\nnothing was simulated\n", e.what());
     return kNumericalFailure;
+  }
+  // (report.static) => every name a channel of the assembled scene, or refused before the run
+  {
+    std::vector<std::string> names;
+    for (const auto& c : models::collectChannels(*root)) names.push_back(c.name);
+    models::Diagnostics d;
+    for (std::size_t i = 0; i < scene->report.staticLevels.size(); ++i) {
+      const std::string& name = scene->report.staticLevels[i].first;
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        d.error(scene->report.staticWhere[i], "report.static." + name,
+                "no channel '" + name + "' in this scene (yardsim list-channels lists them)",
+                models::didYouMean(name, names));
+    }
+    for (const auto& e : d.all()) std::fprintf(stderr, "%s\n", models::format(e).c_str());
+    const std::size_t unknown = d.errorCount();
+    if (unknown > 0) {
+      std::fprintf(stderr, "%s: %zu error(s); nothing was simulated\n", a.scene.c_str(), unknown);
+      return kInvalidInput;
+    }
   }
   try {
     const run::RunResult r = run::runScene(*scene, *root, opt);

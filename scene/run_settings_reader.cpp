@@ -38,7 +38,10 @@ void reportSettings(Scene& s, const YAML::Node& r, const std::string& f, Diagnos
       if (!hasKind(it->second, ParamKind::Number))
         diags.error(markOf(it->second, f), "report.static." + name,
                  "expected a number (the static value in the channel's unit), got " + shown(it->second));
-      else s.report.staticLevels.emplace_back(name, it->second.as<double>());
+      else {
+        s.report.staticLevels.emplace_back(name, it->second.as<double>());
+        s.report.staticWhere.push_back(markOf(it->first, f));
+      }
     }
   }
 }

@@ -69,6 +69,7 @@ struct RecordSpec {
 struct ReportSpec {
   std::vector<std::string> plots;                             // globs; empty: every recorded channel
   std::vector<std::pair<std::string, double>> staticLevels;   // channel => value in its unit
+  std::vector<SourceMark> staticWhere;                        // where each is written
 };
 
 struct MechanicalSystem;  // models/mechanical_systems.hpp

@@ -314,3 +314,25 @@ TEST_CASE("yardsim validate checks a scene's wp: block as yardsim wp reads it") 
   CHECK(r.out.find("wp.metods: unknown key 'metods'") != std::string::npos);
   CHECK(r.out.find("did you mean 'methods'?") != std::string::npos);
 }
+
+TEST_CASE("yardsim run refuses a report.static level of a channel the scene does not have") {
+  yardsim::testing::SceneDir dir;
+  const auto scene = dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.001}
+until: 0.1
+record: {interval: 0.01}
+report:
+  static: {hoist.tension: 9810, hoist.tensoin: 9810}
+mechanics:
+  bodies:
+    block: {parent: world, joint: {type: prismatic, axis: [0, 0, 1], q0: -10.001}, mass: 1000, inertia: [1, 1, 1]}
+  ropes:
+    hoist: {path: [{point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], EA: 1.0e8, L0: 10}
+)");
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK(r.out.find("s.yaml:6:33: error: report.static.hoist.tensoin: no channel") != std::string::npos);
+  CHECK(r.out.find("did you mean 'hoist.tension'?") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "out/timeseries.csv"));
+}

@@ -240,3 +240,21 @@ TEST_CASE("two state events crossed at the same instant are both reached, report
   CHECK(gates[1] == gates[0]);
   CHECK(stone.state().x.reactions == 2);
 }
+
+TEST_CASE("the step count counts grid steps only, with time and state events between grid points") {
+  // (time events at 0.35 and 0.7, off the grid, and 1.0, on it) => 30 grid steps up to 3.05 s
+  devs::Coupled clocks("clocks");
+  auto& clock = clocks.add<Clock>(0.1, std::vector<Time>{0.35, 0.7, 1.0});
+  devs::Simulator a(clocks);
+  a.runUntil(3.05);
+  CHECK(clock.state().steps == 30);
+  // (a bouncing ball: every impact is a located state event between grid points) => floor(T/h)
+  devs::Coupled balls("balls");
+  auto& ball = balls.add<BouncingBall>(10.0, 0.8, 0.1, 1e-11);
+  devs::Simulator b(balls);
+  testing::RecordCollector rec(false);
+  b.addListener(rec);
+  b.runUntil(8.05);
+  REQUIRE(times(rec.records, "bounce").size() >= 4);
+  CHECK(ball.state().steps == 80);
+}

@@ -1,5 +1,6 @@
 #pragma once
 // One function per subcommand; each returns the exit status.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct RunArgs {
   bool quiet = false;
   bool report = false;  // also write OUTDIR/report.html (and record trace.jsonl for its timeline)
   std::string failOn;   // "alarm": exit 4 when the run raised an alarm (over_mbl, a watch crossed)
+  std::uint64_t maxTransitionsPerInstant = 1000000;  // then the run stops (a zero-time loop)
 };
 int runCommand(const RunArgs& a);
 

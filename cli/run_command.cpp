@@ -22,6 +22,7 @@ int runCommand(const RunArgs& a) {
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
   opt.trace = a.traceGiven ? a.trace : scene->trace;
+  opt.maxTransitionsPerInstant = a.maxTransitionsPerInstant;
   if (a.report && !(scene->record.interval > 0)) {
     std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
                          "docs/report.md)\n", a.scene.c_str());

@@ -51,5 +51,5 @@ function(yardsim_test name)
   target_compile_definitions(${name} PRIVATE
     YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
   # --warn NoTests: a test whose name Catch cannot match fails instead of passing empty
-  catch_discover_tests(${name} EXTRA_ARGS --warn NoTests)
+  catch_discover_tests(${name} EXTRA_ARGS --warn NoTests PROPERTIES TIMEOUT 300)
 endfunction()

@@ -44,6 +44,30 @@ void Simulator::start() {
   }
 }
 
+void Simulator::countInstant(Time t, std::size_t transitions) {
+  // (steps at one time) => transitions since time last advanced; past the limit, the models
+  atInstant_ = (t == lastInstant_ ? atInstant_ : 0) + transitions;
+  lastInstant_ = t;
+  if (atInstant_ <= instantLimit_) return;
+  std::string who;
+  std::size_t named = 0;
+  for (const std::uint32_t i : imminent_) {
+    if (named++ == 5) {
+      who += ", ...";
+      break;
+    }
+    who += (who.empty() ? "'" : ", '") + flat_.atomics[i]->path() + "'";
+  }
+  for (const std::uint32_t r : receivers_) {
+    if (named++ >= 5) break;
+    who += (who.empty() ? "'" : ", '") + flat_.atomics[r]->path() + "'";
+  }
+  throw SimulationError("more than " + std::to_string(instantLimit_) + " transitions at t = " + std::to_string(t) +
+                        " s without time advancing: the models " + who +
+                        " keep scheduling events at the same time (a zero time advance in a loop); "
+                        "suggestion: give them a time advance > 0, or raise --max-transitions-per-instant");
+}
+
 bool Simulator::step() {
   start();
   if (queue_.empty()) return false;
@@ -88,6 +112,7 @@ bool Simulator::step() {
         l->onInput(t, static_cast<const AtomicBase&>(p->owner()), *p);
 
   // (inputs, states) => internal, confluent and external transitions
+  if (instantLimit_ > 0) countInstant(t, imminent_.size() + receivers_.size());
   for (const std::uint32_t i : imminent_) {
     AtomicBase* a = flat_.atomics[i];
     const Time e = t - tl_[i];

@@ -11,6 +11,7 @@
 // are computed from the states before any transition of that t, and zero time advances make
 // further event times at the same t, processed by the next step in order.
 #include <cstdint>
+#include <stdexcept>
 #include <span>
 #include <vector>
 
@@ -52,6 +53,10 @@ class Simulator {
   void run() { runUntil(kInfinity); }
 
   const SimulatorStats& stats() const { return stats_; }
+  // (n > 0) => a run that executes more than n transitions at one simulated time stops with a
+  // SimulationError naming the models of the last step (an illegitimate model that never lets
+  // time advance would otherwise loop forever, writing its trace); 0 (default): no limit
+  void setInstantLimit(std::uint64_t n) { instantLimit_ = n; }
   std::span<AtomicBase* const> atomics() const { return flat_.atomics; }
 
  private:
@@ -70,6 +75,11 @@ class Simulator {
   SimulatorStats stats_;
   Time t_;
   bool started_ = false;
+  std::uint64_t instantLimit_ = 0;
+  std::uint64_t atInstant_ = 0;  // transitions executed at time lastInstant_ so far
+  Time lastInstant_ = -kInfinity;
+  // (t, transitions of this step) => counted; throws past the limit
+  void countInstant(Time t, std::size_t transitions);
 };
 
 }  // namespace yardsim::devs

@@ -64,6 +64,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   RunResult result;
   try {
     devs::Simulator sim(root);
+    sim.setInstantLimit(opt.maxTransitionsPerInstant);
     // (trace names) => sinks, only those asked for
     std::vector<std::unique_ptr<devs::Listener>> sinks;
     for (const auto& name : opt.trace) {

@@ -30,6 +30,8 @@ struct RunOptions {
   double progressPeriod = 0.1;      // s of wall time
   std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below
   std::function<void(const Alarm&)> onAlarm = {};  // at the first occurrence of each alarm or notice
+  // more transitions than this at one simulated time stop the run (devs::Simulator::setInstantLimit)
+  std::uint64_t maxTransitionsPerInstant = 1000000;
 };
 
 struct RunResult {

@@ -17,7 +17,8 @@ struct Result {
 
 // (arguments) => exit status and output of `yardsim arguments`
 Result runYardsim(const std::string& args) {
-  const std::string cmd = std::string(YARDSIM_EXE) + " " + args + " 2>&1";
+  // a time-out of its own: a command that never ends fails its test instead of hanging the suite
+  const std::string cmd = "timeout -s KILL 120 " + std::string(YARDSIM_EXE) + " " + args + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);
   std::string out;

@@ -205,3 +205,44 @@ TEST_CASE("atomic states are plain values that can be checkpointed and restored"
   col.setState(checkpoint);
   CHECK(col.state().bags.size() == 1);
 }
+
+namespace {
+// An illegitimate model: it never lets time advance (time advance 0 after every transition).
+struct Spin {
+  std::uint64_t n = 0;
+};
+std::ostream& operator<<(std::ostream& os, const Spin& s) { return os << s.n; }
+class Spinner final : public devs::Atomic<Spin> {
+ public:
+  explicit Spinner(std::string name) : devs::Atomic<Spin>(std::move(name), Spin{}) {}
+
+ protected:
+  devs::Time timeAdvance(const Spin& s) const override { return s.n < 3 ? 1.0 : 0.0; }
+  void output(const Spin&) const override {}
+  void internalTransition(Spin& s) const override { ++s.n; }
+  void externalTransition(Spin&, devs::Time) const override {}
+};
+}  // namespace
+
+TEST_CASE("a model that never lets time advance is stopped past the limit, naming it and the time") {
+  Coupled root("root");
+  root.add<Spinner>("spin");
+  Simulator sim(root);
+  sim.setInstantLimit(1000);
+  try {
+    sim.runUntil(100.0);
+    FAIL("expected the zero-time loop to be stopped");
+  } catch (const devs::SimulationError& e) {
+    const std::string msg = e.what();
+    CHECK(msg.find("more than 1000 transitions at t = 3") != std::string::npos);
+    CHECK(msg.find("'root.spin'") != std::string::npos);
+  }
+  CHECK(sim.time() == 3.0);
+  CHECK(sim.stats().internal == 2 + 1000);  // at t = 1 and 2, then 1000 at t = 3: the limit
+  // (no limit) => the default simulator does not count (benchmarks pay nothing for it)
+  Coupled other("other");
+  other.add<Spinner>("spin");
+  Simulator free(other);
+  for (int i = 0; i < 5000; ++i) free.step();
+  CHECK(free.time() == 3.0);
+}

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "scene/assembler.hpp"
 #include "models/numerical_error.hpp"
@@ -57,4 +59,37 @@ TEST_CASE("a run that blows up stops with a diagnosis and keeps what it recorded
   const auto& last = csv.rows.back();
   CHECK(std::abs(last[1]) <= 1000.0);
   CHECK(std::abs(last[1]) > 1.0);  // it was growing
+}
+
+namespace {
+// never lets time advance after t = 1 (an illegitimate DEVS model)
+struct Spin {
+  int n = 0;
+};
+std::ostream& operator<<(std::ostream& os, const Spin& s) { return os << s.n; }
+class Spinner final : public devs::Atomic<Spin> {
+ public:
+  Spinner() : devs::Atomic<Spin>("spin", Spin{}) {}
+
+ protected:
+  devs::Time timeAdvance(const Spin& s) const override { return s.n == 0 ? 1.0 : 0.0; }
+  void output(const Spin&) const override {}
+  void internalTransition(Spin& s) const override { ++s.n; }
+  void externalTransition(Spin&, devs::Time) const override {}
+};
+}  // namespace
+
+TEST_CASE("a zero-time loop stops the run with a diagnosis naming the model, and run.json says failed") {
+  testing::SceneDir dir;
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", springScene(0.05, "rk4", 2.0)));
+  devs::Coupled root("root");
+  root.add<Spinner>();
+  run::RunOptions opt{dir.path() / "out", 10.0, {"jsonl"}, {}, 0.1, 2000};
+  opt.maxTransitionsPerInstant = 500;
+  CHECK_THROWS_WITH(run::runScene(*scene, root, opt),
+                    Catch::Contains("more than 500 transitions at t = 1") && Catch::Contains("'root.spin'"));
+  std::ifstream json(dir.path() / "out/run.json");
+  const std::string summary((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  CHECK(summary.find("\"status\":\"failed\"") != std::string::npos);
+  CHECK(std::filesystem::file_size(dir.path() / "out/trace.jsonl") < 1000000);  // bounded, not gigabytes
 }

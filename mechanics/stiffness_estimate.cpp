@@ -132,7 +132,7 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
 std::string describe(const StiffnessEstimate& e) {
   std::ostringstream s;
   s.precision(3);
-  s << "omega_max = " << e.omegaMax << " rad/s (body '" << e.body << "'";
+  s << "omega_max = " << e.omegaMax << " rad/s, damping ratio " << e.dampingRatio << " (body '" << e.body << "'";
   if (!e.element.empty()) s << ", " << e.element;
   s << ")";
   return s.str();

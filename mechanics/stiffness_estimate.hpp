@@ -26,7 +26,7 @@ struct StiffnessEstimate {
 // accelerations at the initial state are not finite
 StiffnessEstimate estimateStiffness(const BuiltMechanics& mech, const ServoSettings& servo = {});
 
-// (estimate) => "omega_max = 119 rad/s (body 'hook', rope 'hoist')"
+// (estimate) => "omega_max = 119 rad/s, damping ratio 0.05 (body 'hook', rope 'hoist')"
 std::string describe(const StiffnessEstimate& e);
 
 }  // namespace yardsim::mechanics

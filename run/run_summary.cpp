@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "devs/trace_format.hpp"
+#include "mechanics/stiffness_estimate.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "run/timeseries_writer.hpp"
 
@@ -45,6 +46,17 @@ void systems(const devs::Model& m, std::string& out) {
     appendJsonString(out, mb->options().integrator.method);
     out += ",\"dt\":";
     appendJsonNumber(out, mb->options().dt);
+    // (the system at its start) => its stiffest mode: what the stiffness guard judged
+    try {
+      const mechanics::StiffnessEstimate e = mechanics::estimateStiffness(mb->builtMechanics(), mb->system().servo());
+      out += ",\"omega_max\":";
+      appendJsonNumber(out, e.omegaMax);
+      out += ",\"damping_ratio\":";
+      appendJsonNumber(out, e.dampingRatio);
+      out += ",\"stiffest_body\":";
+      appendJsonString(out, e.body);
+    } catch (const std::exception&) {  // accelerations not finite at the start: the run says so
+    }
     out += "}";
   }
 }

@@ -8,6 +8,7 @@
 #include "forces/geometry/primitive_meshes.hpp"
 #include "mechanics/build.hpp"
 #include "scene/mechanical_systems.hpp"
+#include "mechanics/step_verdict.hpp"
 #include "mechanics/stiffness_estimate.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
@@ -111,4 +112,11 @@ mechanics:
   CHECK(e.dampingRatio == Approx(c / (2.0 * std::sqrt(k * m))).epsilon(1e-4));
   CHECK(e.body == "barge");
   CHECK(e.element == "provider 'hull'");
+  // (the guard's words, where a user reads the estimate) => the damping ratio with it
+  const double zeta = c / (2.0 * std::sqrt(k * m));
+  CHECK(zeta == Approx(0.159).epsilon(2e-3));
+  CHECK_THAT(mechanics::describe(e), Catch::Contains("omega_max = 2.56 rad/s, damping ratio 0.159"));
+  const mechanics::StepVerdict v = mechanics::judgeStep(e, "rk4", 2.0);  // 2.56 x 2 s > 2.83
+  CHECK_FALSE(v.stable);
+  CHECK_THAT(v.message(), Catch::Contains("damping ratio 0.159"));
 }

@@ -207,3 +207,47 @@ TEST_CASE("watches and loads in fragments resolve like other names, unknown elem
   CHECK_THAT(bad.diagnostics.report(), Catch::Contains("watch.taut") && Catch::Contains("unknown element 'hoits'") &&
                                            Catch::Contains("did you mean 'hoist'?"));
 }
+
+TEST_CASE("a placement with roll, pitch and yaw, nested twice, puts a body where the hand computation does") {
+  // post at p = (1, 2, 3) in its file; that file placed at (10, 0, 0) with rpy (30, 20, 50) deg
+  // inside a file placed at (0, 5, 0) with rpy (-15, 40, 90) deg: p_W = p1 + R1 (p2 + R2 p),
+  // R = Rz(yaw) Ry(pitch) Rx(roll) written out here with elementary rotations
+  testing::SceneDir dir;
+  dir.write("post.yaml", R"(schema_version: 1
+mechanics:
+  bodies:
+    post: {parent: world, joint: {type: fixed}, placement: {xyz: [1, 2, 3]}, mass: 1, inertia: [1, 1, 1]}
+)");
+  dir.write("yard.yaml", R"(schema_version: 1
+components:
+  inner: {include: post.yaml, placement: {xyz: [10, 0, 0], rpy_deg: [30, 20, 50]}}
+)");
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+components:
+  outer: {include: yard.yaml, placement: {xyz: [0, 5, 0], rpy_deg: [-15, 40, 90]}}
+)"));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  auto rot = [](double rollDeg, double pitchDeg, double yawDeg) {
+    const double a = rollDeg * M_PI / 180, b = pitchDeg * M_PI / 180, c = yawDeg * M_PI / 180;
+    Eigen::Matrix3d Rx, Ry, Rz;
+    Rx << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+    Ry << std::cos(b), 0, std::sin(b), 0, 1, 0, -std::sin(b), 0, std::cos(b);
+    Rz << std::cos(c), -std::sin(c), 0, std::sin(c), std::cos(c), 0, 0, 0, 1;
+    return Eigen::Matrix3d(Rz * Ry * Rx);
+  };
+  const Eigen::Matrix3d R1 = rot(-15, 40, 90), R2 = rot(30, 20, 50);
+  const Eigen::Vector3d expected = Eigen::Vector3d(0, 5, 0) + R1 * (Eigen::Vector3d(10, 0, 0) + R2 * Eigen::Vector3d(1, 2, 3));
+  const Eigen::Matrix3d R = R1 * R2;  // the post's orientation in the world
+  auto root = scene::assemble(*r.scene);
+  const auto channels = models::collectChannels(*root);
+  CHECK(channel(channels, "outer.inner.post.x") == Approx(expected.x()).margin(1e-12));
+  CHECK(channel(channels, "outer.inner.post.y") == Approx(expected.y()).margin(1e-12));
+  CHECK(channel(channels, "outer.inner.post.z") == Approx(expected.z()).margin(1e-12));
+  // (roll, pitch, yaw of R) => the same rotation rebuilt
+  const Eigen::Matrix3d back = rot(channel(channels, "outer.inner.post.roll") * 180 / M_PI,
+                                   channel(channels, "outer.inner.post.pitch") * 180 / M_PI,
+                                   channel(channels, "outer.inner.post.yaw") * 180 / M_PI);
+  CHECK((back - R).norm() < 1e-12);
+}

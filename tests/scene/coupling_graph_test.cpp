@@ -82,3 +82,61 @@ components:
   CHECK(report.find("would never start: self -> self") != std::string::npos);
   CHECK(report.find("fine ->") == std::string::npos);  // waits for a cycle, but is not in one
 }
+
+TEST_CASE("algebraic loops of one, two and three models, across two levels, each named exactly where it starts") {
+  testing::SceneDir dir;
+  struct Case {
+    std::string yaml, where, message;
+  };
+  const std::vector<Case> cases{
+      {R"(schema_version: 1
+components:
+  d: {type: delay, params: {delay: 0}}
+couplings:
+  - {from: d.out, to: d.in}
+)", "s.yaml:3:3: error: components.d: ", "zero-delay algebraic loop: d -> d; "},
+      {R"(schema_version: 1
+components:
+  a: {type: delay, params: {delay: 0}}
+  b: {type: delay}
+couplings:
+  - {from: a.out, to: b.in}
+  - {from: b.out, to: a.in}
+)", "s.yaml:3:3: error: components.a: ", "zero-delay algebraic loop: a -> b -> a; "},
+      {R"(schema_version: 1
+components:
+  top:
+    coupled:
+      inputs: {in: int}
+      outputs: {out: int}
+      components:
+        mid:
+          coupled:
+            inputs: {in: int}
+            outputs: {out: int}
+            components:
+              deep: {type: delay}
+            couplings:
+              - {from: in, to: deep.in}
+              - {from: deep.out, to: out}
+      couplings:
+        - {from: in, to: mid.in}
+        - {from: mid.out, to: out}
+  back: {type: delay}
+couplings:
+  - {from: top.out, to: back.in}
+  - {from: back.out, to: top.in}
+)", "s.yaml:13:15: error: components.top.coupled.components.mid.coupled.components.deep: ",
+       "zero-delay algebraic loop: top.mid.deep -> back -> top.mid.deep; "}};
+  for (const auto& c : cases) {
+    const auto r = scene::loadScene(dir.write("s.yaml", c.yaml));
+    const std::string report = r.diagnostics.report();
+    INFO(report);
+    CHECK_FALSE(r.scene);
+    REQUIRE(r.diagnostics.errorCount() == 1);
+    CHECK(report.find(c.where + c.message) != std::string::npos);
+  }
+  // (the three-level loop) => both its models named, the deep one by its full path
+  const auto r = scene::loadScene(dir.write("s.yaml", cases[2].yaml));
+  CHECK_THAT(r.diagnostics.report(), Catch::Contains("top.mid.deep") && Catch::Contains("back"));
+}

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
@@ -11,6 +12,7 @@
 #include "models/channels.hpp"
 #include "models/diagnostics.hpp"
 #include "scene/assembler.hpp"
+#include "run/run_summary.hpp"
 #include "run/runner.hpp"
 
 namespace yardsim::cli {
@@ -51,6 +53,17 @@ int runCommand(const RunArgs& a) {
     root = scene::assemble(*scene);
   } catch (const devs::SimulationError& e) {
     std::fprintf(stderr, "numerical failure before the run: %s\nnothing was simulated\n", e.what());
+    // (the failure) => OUTDIR/run.json with status failed and the diagnosis, as after a run
+    try {
+      std::filesystem::create_directories(a.outdir);
+      run::RunFacts facts;
+      facts.until = opt.until;
+      facts.status = "failed";
+      facts.message = e.what();
+      devs::Coupled nothing(scene->name);
+      run::writeRunSummary(std::filesystem::path(a.outdir) / "run.json", *scene, nothing, facts);
+    } catch (const std::exception&) {  // an unwritable folder: the console has the diagnosis
+    }
     return kNumericalFailure;
   }
   // (report.static) => every name a channel of the assembled scene, or refused before the run

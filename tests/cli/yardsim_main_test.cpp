@@ -160,6 +160,11 @@ until: 1
   CHECK(r.status == 2);
   CHECK_THAT(r.out, Catch::Contains("no static equilibrium") && Catch::Contains("multibody 'mechanics'") &&
                         Catch::Contains("suggestion") && Catch::Contains("nothing was simulated"));
+  // (run.json) => written anyway, with the status and the diagnosis
+  std::ifstream json(dir.file("out/run.json"));
+  const std::string summary((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  CHECK(summary.find("\"status\":\"failed\"") != std::string::npos);
+  CHECK(summary.find("no static equilibrium") != std::string::npos);
 }
 
 TEST_CASE("yardsim run --report and yardsim report write report.html, and refuse a folder without a run") {

@@ -10,6 +10,20 @@ using models::Diagnostics;
 using models::SourceMark;
 using models::didYouMean;
 
+namespace {
+// (node, budget) => the budget left after counting the node and everything below it, as aliases
+// expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes)
+std::size_t countNodes(const YAML::Node& n, std::size_t budget) {
+  if (budget == 0) return 0;
+  --budget;
+  if (n.IsSequence())
+    for (const auto& e : n) budget = countNodes(e, budget);
+  else if (n.IsMap())
+    for (auto it = n.begin(); it != n.end() && budget > 0; ++it) budget = countNodes(it->second, budget);
+  return budget;
+}
+}  // namespace
+
 std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const SourceMark& from,
                                        const std::string& keyPath, Diagnostics& diags, std::string* text) {
   const SourceMark at = from.file.empty() ? SourceMark{file.string()} : from;
@@ -41,6 +55,12 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
       diags.error(markOf(docs[1], file.string()), "",
                   "a scene file holds one YAML document; a second one starts here (remove the '---' line, "
                   "or move it to its own file)");
+      return std::nullopt;
+    }
+    if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes) == 0) {
+      diags.error({file.string(), 1, 1}, "",
+                  "the document expands to more than " + std::to_string(kMaxSceneNodes) +
+                      " nodes (YAML aliases repeated into each other?); a scene is far smaller");
       return std::nullopt;
     }
     if (docs.empty() || !docs[0].IsMap()) {

@@ -19,6 +19,8 @@ using models::SourceMark;
 
 // Scene files are regular files of at most this many bytes (a larger one is refused, not read).
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
+// ... and expand, with their YAML aliases, to at most this many nodes.
+inline constexpr std::size_t kMaxSceneNodes = 1000000;
 
 // (file, where it was named from (empty for the root), the key that named it) => its one YAML
 // document, a mapping; or nullopt with the reason (unreadable, not a regular file, too large,

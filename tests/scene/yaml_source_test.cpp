@@ -42,3 +42,16 @@ TEST_CASE("an include of a device is refused at the include, not read") {
   CHECK_FALSE(r.scene);
   CHECK_THAT(r.diagnostics.report(), Catch::Contains("s.yaml:3:16") && Catch::Contains("not a regular file"));
 }
+
+TEST_CASE("a YAML alias bomb is refused at once, not expanded") {
+  // 10 levels of 10 aliases each: 10^10 nodes from a dozen lines
+  std::string bomb = "schema_version: 1\na: &a [x, x, x, x, x, x, x, x, x, x]\n";
+  for (char c = 'b'; c <= 'j'; ++c) {
+    const char p = static_cast<char>(c - 1);
+    bomb += std::string(1, c) + ": &" + c + " [";
+    for (int i = 0; i < 10; ++i) bomb += std::string(i ? ", *" : "*") + p;
+    bomb += "]\n";
+  }
+  testing::SceneDir dir;
+  CHECK_THAT(errors(dir.write("bomb.yaml", bomb)), Catch::Contains("expands to more than 1000000 nodes"));
+}

@@ -20,16 +20,10 @@ Model& Coupled::addComponent(std::unique_ptr<Model> model) {
     throw ModelError("coupled model '" + path() + "' already has a component named '" +
                      model->name() + "'");
   model->parent_ = this;
-  dropPathCache(*model);
+  treeChanged();
   byName_.emplace(model->name(), model.get());
   components_.push_back(std::move(model));
   return *components_.back();
-}
-
-void Coupled::dropPathCache(const Model& m) {
-  m.path_.clear();
-  if (!m.isAtomic())
-    for (const auto& child : static_cast<const Coupled&>(m).components_) dropPathCache(*child);
 }
 
 Model* Coupled::findComponent(std::string_view name) const {

@@ -40,9 +40,6 @@ class Coupled : public Model {
   std::size_t couplingCount() const { return couplings_; }
 
  private:
-  // (model subtree) => cached paths dropped, recomputed under the new parent
-  static void dropPathCache(const Model& m);
-
   std::vector<std::unique_ptr<Model>> components_;
   std::unordered_map<std::string_view, Model*> byName_;
   std::size_t couplings_ = 0;

@@ -21,10 +21,14 @@ Model::Model(std::string name) : name_(std::move(name)) { checkName(name_, "mode
 
 Model::~Model() = default;
 
+std::atomic<std::uint64_t> Model::treeGeneration_{1};
+
 const std::string& Model::path() const {
-  if (path_.empty()) {
+  const std::uint64_t now = treeGeneration_.load(std::memory_order_relaxed);
+  if (path_.empty() || pathGeneration_ != now) {
     const Model* p = parent_;
     path_ = (p && !p->hidden_) ? p->path() + "." + name_ : name_;
+    pathGeneration_ = now;
   }
   return path_;
 }

@@ -1,5 +1,7 @@
 #pragma once
 // Common base of atomic and coupled models: a name, a parent, typed input and output ports.
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -28,7 +30,10 @@ class Model {
   // name is hidden (a scene) does not appear in its descendants' paths: "ef.genr"
   const std::string& path() const;
   // () => this model's name left out of its descendants' paths (call before adding children)
-  void hideNameInPaths() { hidden_ = true; }
+  void hideNameInPaths() {
+    hidden_ = true;
+    treeChanged();
+  }
   Coupled* parent() const { return parent_; }
   virtual bool isAtomic() const = 0;
 
@@ -53,8 +58,14 @@ class Model {
   PortBase& registerPort(std::unique_ptr<PortBase> port,
                          std::vector<std::unique_ptr<PortBase>>& list);
 
+  // () => every cached path is stale (a model was added somewhere, or a name hidden): paths are
+  // recomputed when next asked for, so adding a subtree costs O(1), not a walk over it
+  static void treeChanged() { treeGeneration_.fetch_add(1, std::memory_order_relaxed); }
+  static std::atomic<std::uint64_t> treeGeneration_;
+
   std::string name_;
   mutable std::string path_;
+  mutable std::uint64_t pathGeneration_ = 0;  // the tree generation path_ was computed in
   Coupled* parent_ = nullptr;
   bool hidden_ = false;
   std::vector<std::unique_ptr<PortBase>> in_;

@@ -16,8 +16,18 @@ done
 # unless a node is already installed (e.g. one that ships its own npm)
 command -v node > /dev/null || missing+=(nodejs)
 command -v npm > /dev/null || missing+=(npm)
+# (report/node_modules) => the report bundle's pinned packages, which the browser tests need, so
+# that README's test command runs every test with none skipped
+report_packages() {
+  local report="$(cd "$(dirname "$0")/.." && pwd)/report"
+  if [ ! -d "$report/node_modules" ]; then
+    echo "setup: installing the report bundle's pinned npm packages (npm ci)"
+    (cd "$report" && npm ci --ignore-scripts --no-audit --no-fund)
+  fi
+}
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages, node and npm already installed"
+  report_packages
   exit 0
 fi
 sudo=""
@@ -26,3 +36,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+report_packages

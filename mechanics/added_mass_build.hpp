@@ -13,14 +13,16 @@
 namespace yardsim::mechanics {
 
 /// (bodies) => builder.setAddedMass for each body with a given matrix.
-void setGivenAddedMass(const std::vector<MechanicsSpec::Body>& bodies, dynamics::ModelBuilder& builder);
+void setGivenAddedMass(const std::vector<MechanicsSpec::Body>& bodies,
+                       dynamics::ModelBuilder& builder);
 
 /// True when a body asks for its added mass from a hull mesh.
 bool needsHullAddedMass(const std::vector<MechanicsSpec::Body>& bodies);
 
 /// (model without those, initial q, spec: bodies and water) => builder.setAddedMass for each body
-/// with a hull, computed at the pose of q0; throws dynamics::ModelError naming the body (a dry hull).
-void setHullAddedMass(const dynamics::Model& model, const Eigen::VectorXd& q0, const MechanicsSpec& spec,
-                      dynamics::ModelBuilder& builder);
+/// with a hull, computed at the pose of q0; throws dynamics::ModelError naming the body (a dry
+/// hull).
+void setHullAddedMass(const dynamics::Model& model, const Eigen::VectorXd& q0,
+                      const MechanicsSpec& spec, dynamics::ModelBuilder& builder);
 
 }  // namespace yardsim::mechanics

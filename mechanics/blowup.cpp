@@ -21,7 +21,8 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
   const forces::Stage stage{0.0, m, d.scratch, q, v};
   double stored = 0.0;
   for (const auto& r : s.ropes()) {
-    for (const auto& a : r->path().points()) points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
+    for (const auto& a : r->path().points())
+      points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
     stored += r->potentialEnergy(stage);
   }
   for (const auto& e : s.equalizers()) stored += e->potentialEnergy(stage);
@@ -29,7 +30,8 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
   for (const auto& a : points)
     for (const auto& b : points) size = std::max(size, (a - b).norm());
   double kinetic = 0.0;
-  for (int i = 1; i < m.nbodies; ++i) kinetic += 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
+  for (int i = 1; i < m.nbodies; ++i)
+    kinetic += 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
   return m.totalMass() * std::max(m.gravity.norm(), 1.0) * size + kinetic + stored;
 }
 
@@ -52,14 +54,15 @@ std::string likelyCause(const System& s, const std::string& method, double dt) {
   return o.str();
 }
 
-void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double work,
-                 double t, const BlowUpLimits& limits) {
+void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                 double work, double t, const BlowUpLimits& limits) {
   const auto& m = s.model();
   // (non-finite state) => the first body whose joint went bad
   if (!q.allFinite() || !v.allFinite()) {
     int bad = 1;
     for (int i = 1; i < m.nbodies; ++i)
-      if (!q.segment(m.idxQ[i], m.jointNq[i]).allFinite() || !v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
+      if (!q.segment(m.idxQ[i], m.jointNq[i]).allFinite() ||
+          !v.segment(m.idxV[i], m.jointNv[i]).allFinite()) {
         bad = i;
         break;
       }
@@ -79,16 +82,19 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
     double strain = 0.0;
     const forces::Stage stage{t, m, d.scratch, q, v};
     for (const auto& r : s.ropes())
-      if (const double u = r->potentialEnergy(stage); u > strain) strain = u, element = "rope '" + r->name() + "'";
+      if (const double u = r->potentialEnergy(stage); u > strain)
+        strain = u, element = "rope '" + r->name() + "'";
     for (const auto& e : s.equalizers())
       if (const double u = e->potentialEnergy(stage); u > strain)
         strain = u, element = "equalizer '" + e->name() + "'";
     std::ostringstream what;
     what.precision(3);
     what << "the energy balance rose by " << rise << " J (bound " << limits.energyBound
-         << " J): the integration is unstable; most kinetic energy in body '" << m.names[body] << "'";
+         << " J): the integration is unstable; most kinetic energy in body '" << m.names[body]
+         << "'";
     if (!element.empty()) what << ", most strain energy in " << element;
-    throw BlowUp(", body '" + m.names[body] + "'", what.str(), likelyCause(s, limits.method, limits.dt));
+    throw BlowUp(", body '" + m.names[body] + "'", what.str(),
+                 likelyCause(s, limits.method, limits.dt));
   }
   // (loops) => the loop with the largest residual, if beyond the bound
   if (m.nc == 0) return;
@@ -98,10 +104,12 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
     if (g <= limits.loopResidualLimit) continue;
     std::ostringstream what;
     what.precision(3);
-    what << "loop '" << loop.name << "' opened: residual " << g << " (bound " << limits.loopResidualLimit << ")";
+    what << "loop '" << loop.name << "' opened: residual " << g << " (bound "
+         << limits.loopResidualLimit << ")";
     throw BlowUp(", loop '" + loop.name + "'", what.str(),
-                 limits.projectLoops ? "a smaller dt, or an implicit integrator"
-                                     : "turn loop projection on (project_loops: true), or a smaller dt");
+                 limits.projectLoops
+                     ? "a smaller dt, or an implicit integrator"
+                     : "turn loop projection on (project_loops: true), or a smaller dt");
   }
 }
 

@@ -22,8 +22,8 @@ class BlowUp : public std::runtime_error {
 };
 
 struct BlowUpLimits {
-  double energyBound = 0.0;        // J: largest rise of the energy balance
-  double balance0 = 0.0;           // J: the energy balance at the start
+  double energyBound = 0.0;         // J: largest rise of the energy balance
+  double balance0 = 0.0;            // J: the energy balance at the start
   double loopResidualLimit = 1e-3;  // m or rad
   bool projectLoops = true;
   std::string method;  // the integrator, for the likely cause
@@ -40,7 +40,7 @@ std::string likelyCause(const System& s, const std::string& method, double dt);
 
 // (state after a step to t, the work so far) => throws BlowUp when it is not finite, its energy
 // balance grew beyond the bound or a loop opened
-void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double work,
-                 double t, const BlowUpLimits& limits);
+void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                 double work, double t, const BlowUpLimits& limits);
 
 }  // namespace yardsim::mechanics

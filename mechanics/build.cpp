@@ -7,10 +7,12 @@ namespace yardsim::mechanics {
 
 std::string missingEnvironment(const MechanicsSpec& spec) {
   if (!spec.windLoads.empty() && !spec.wind)
-    return "wind load '" + spec.windLoads.front().name + "' needs the scene's wind: declare `wind: {speed, ...}` under the root's mechanics";
+    return "wind load '" + spec.windLoads.front().name +
+           "' needs the scene's wind: declare `wind: {speed, ...}` under the root's mechanics";
   if (!spec.currentLoads.empty() && !spec.current)
     return "current load '" + spec.currentLoads.front().name +
-           "' needs the scene's current: declare `water: {current: {speed, ...}}` under the root's mechanics";
+           "' needs the scene's current: declare `water: {current: {speed, ...}}` under the root's "
+           "mechanics";
   return "";
 }
 
@@ -18,11 +20,13 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
   dynamics::ModelBuilder builder;
   builder.setGravity(spec.gravity);
   for (const auto& b : spec.bodies)
-    builder.addBody(b.name, b.parent, b.joint, b.X_PJ, dynamics::makeInertia(b.mass, b.com, b.inertia),
-                    b.geometry);
-  for (const auto& l : spec.loops) builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
+    builder.addBody(b.name, b.parent, b.joint, b.X_PJ,
+                    dynamics::makeInertia(b.mass, b.com, b.inertia), b.geometry);
+  for (const auto& l : spec.loops)
+    builder.addLoop(l.name, l.bodyA, l.X_AF, l.bodyB, l.X_BG, l.mask);
   setGivenAddedMass(spec.bodies, builder);
-  BuiltMechanics out{builder.build(), {}, {}, {}, {}, spec.ropes, spec.equalizers, spec.loads, spec.watches, spec};
+  BuiltMechanics out{builder.build(), {},         {},           {},  {}, spec.ropes,
+                     spec.equalizers, spec.loads, spec.watches, spec};
   out.environment.bodies.clear();
   out.environment.loops.clear();
   out.environment.ropes.clear();
@@ -37,7 +41,8 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
   out.v0 = Eigen::VectorXd::Zero(m.nv);
   out.jointNames.assign(static_cast<std::size_t>(m.nbodies), "");
   out.hold.assign(static_cast<std::size_t>(m.nbodies), 0);
-  for (int i = 1; i < m.nbodies; ++i) dynamics::jointNeutral(m.joints[i], out.q0.data() + m.idxQ[i]);
+  for (int i = 1; i < m.nbodies; ++i)
+    dynamics::jointNeutral(m.joints[i], out.q0.data() + m.idxQ[i]);
   for (const auto& b : spec.bodies) {
     const int i = m.bodyIndex(b.name);
     out.jointNames[static_cast<std::size_t>(i)] = b.jointName;

@@ -46,8 +46,8 @@ struct MechanicsSpec {
     double mass = 0.0;
     dynamics::Vector3 com = dynamics::Vector3::Zero();
     dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // about the centre of mass
-    std::vector<double> q0, v0;  // empty: neutral / at rest
-    bool hold = false;           // a 1-dof joint's servo holds q0 until an actor drives it (brake)
+    std::vector<double> q0, v0;                             // empty: neutral / at rest
+    bool hold = false;  // a 1-dof joint's servo holds q0 until an actor drives it (brake)
     Visual visual;
     // added mass (models/multibody/added_mass_spec.hpp): given in the naval order about
     // addedMassAbout (body frame), or computed from addedMassHull at the initial position
@@ -80,10 +80,10 @@ struct MechanicsSpec {
   };
   // System-wide settings: the `multibody` type's params, or the scene root's `mechanics:`
   struct Settings {
-    double driveBandwidth = 0.0;  // rad/s; 0: min(10, 0.1/dt)
-    double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
-    double driveTolerance = 1e-3; // rad or m
-    bool equilibrium = false;     // start from static equilibrium instead of the given q0
+    double driveBandwidth = 0.0;   // rad/s; 0: min(10, 0.1/dt)
+    double driveMaxEffort = 0.0;   // N m or N; 0: unbounded
+    double driveTolerance = 1e-3;  // rad or m
+    bool equilibrium = false;      // start from static equilibrium instead of the given q0
   };
   // A force and moment history on a body (forces/body_load.hpp): rows [t, fx, fy, fz, mx, my, mz]
   // in the world or the body frame, at a point fixed on the body; linear between rows.
@@ -122,7 +122,8 @@ struct MechanicsSpec {
   // (body frame, m) or in the world, built for the system's model when the system is built and
   // evaluated after the built-in providers.
   using ProviderBuild = std::function<std::unique_ptr<forces::ForceProvider>(
-      const std::string& name, const dynamics::Model& model, const std::vector<forces::Attachment>& at)>;
+      const std::string& name, const dynamics::Model& model,
+      const std::vector<forces::Attachment>& at)>;
   struct ProviderSpec {
     std::string kind, name;  // kind: the mechanics key that declared it (springs, ...)
     std::vector<Point> attachments;
@@ -158,7 +159,7 @@ struct BuiltMechanics {
   std::vector<MechanicsSpec::Load> loads;
   std::vector<MechanicsSpec::Watch> watches;
   MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
-  std::vector<MechanicsSpec::Visual> visuals = {};  // per body index (0: world); defaulted
+  std::vector<MechanicsSpec::Visual> visuals = {};          // per body index (0: world); defaulted
   std::vector<MechanicsSpec::ProviderSpec> providers = {};  // from registered readers
 };
 

@@ -6,7 +6,8 @@
 
 namespace yardsim::mechanics {
 
-double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t) {
+double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q,
+              const Eigen::VectorXd& v, double t) {
   // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
   const auto& m = s.model();
   dynamics::forwardKinematics(m, kin, q, v);
@@ -34,7 +35,8 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
   d.spTau.setZero();
   setPointForces(s, d, sp, t, q, v, d.spForces, d.spTau);
   p += d.spTau.dot(v);
-  if (prescribedDofs(s, d, sp)) {  // (prescribed dofs) => the power of the effort that enforces them
+  if (prescribedDofs(s, d,
+                     sp)) {  // (prescribed dofs) => the power of the effort that enforces them
     d.kernel.acceleration(t, q, v, d.accelScratch);
     p += d.kernel.prescribedEffort().dot(v);
   }

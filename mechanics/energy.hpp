@@ -15,7 +15,8 @@ namespace yardsim::mechanics {
 
 // (t, q, v; kin is overwritten with their kinematics) => kinetic + gravity potential + stored
 // energy of every provider, J
-double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t);
+double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q,
+              const Eigen::VectorXd& v, double t);
 
 // (t, q, v, set-points) => power of the non-conservative forces into the system, W: every
 // provider's power, the servos' tau . v, the effort that enforces prescribed motion, and the

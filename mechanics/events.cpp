@@ -15,7 +15,8 @@ std::vector<EventSlot> eventTable(const System& s) {
   for (int i = 1; i < nb; ++i) table.push_back({K::DriveReached, i, false});
   for (int r = 0; r < nr; ++r) table.push_back({K::OverMbl, r, false});
   for (int r = 0; r < nr; ++r) table.push_back({K::SlackTaut, r, true});
-  for (int w = 0; w < static_cast<int>(s.watches().size()); ++w) table.push_back({K::WatchCrossed, w, false});
+  for (int w = 0; w < static_cast<int>(s.watches().size()); ++w)
+    table.push_back({K::WatchCrossed, w, false});
   return table;
 }
 
@@ -53,8 +54,9 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
   }
 }
 
-EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
-                             const Eigen::VectorXd& v, double t, const EventSlot& e) {
+EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
+                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                             const EventSlot& e) {
   const auto& model = s.model();
   const auto& ropes = s.ropes();
   const auto k = static_cast<std::size_t>(e.index);
@@ -65,13 +67,17 @@ EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp, cons
   dynamics::forwardKinematics(model, d.scratch, q, v);
   const forces::Stage stage{t, model, d.scratch, q, v};
   switch (e.kind) {
-    case K::WatchCrossed: return {s.description().watches[k].name, "", "crossed", watched(s, k, d.scratch, q, v, t)};
-    case K::SlackTaut: {  // (direction of the crossing) => lengthening through L0: taut; shortening: slack
+    case K::WatchCrossed:
+      return {s.description().watches[k].name, "", "crossed", watched(s, k, d.scratch, q, v, t)};
+    case K::SlackTaut: {  // (direction of the crossing) => lengthening through L0: taut;
+                          // shortening: slack
       const bool taut = ropes[k]->lengthRate(stage) >= ropes[k]->payoutRate(t);
       return {ropes[k]->name(), "", taut ? "taut" : "slack", ropes[k]->length(stage)};
     }
-    case K::OverMbl: return {ropes[k]->name(), "", "over_mbl", ropes[k]->tension(stage)};
-    default: return {};
+    case K::OverMbl:
+      return {ropes[k]->name(), "", "over_mbl", ropes[k]->tension(stage)};
+    default:
+      return {};
   }
 }
 
@@ -80,11 +86,13 @@ void reportTimeEvents(const System& s, const SetPoints& sp, const Eigen::VectorX
   const auto& ropes = s.ropes();
   for (std::size_t k = 0; k < sp.winches.size(); ++k)
     if (sp.winches[k].active && sp.winches[k].tEnd <= t)
-      out.push_back({ropes[k]->name(), sp.winches[k].actor, "done", ropes[k]->unstretchedLength(t)});
+      out.push_back(
+          {ropes[k]->name(), sp.winches[k].actor, "done", ropes[k]->unstretchedLength(t)});
   for (int i = 1; i < s.model().nbodies; ++i) {
     const JointDrive& j = sp.drives[static_cast<std::size_t>(i)];
     if (j.active && j.prescribed && !j.reported && j.tEnd() <= t)
-      out.push_back({s.description().jointNames[static_cast<std::size_t>(i)], j.actor, "reached", j.target});
+      out.push_back(
+          {s.description().jointNames[static_cast<std::size_t>(i)], j.actor, "reached", j.target});
   }
 }
 
@@ -103,12 +111,18 @@ double watched(const System& s, std::size_t w, const dynamics::Data& kin, const 
   const WatchRef& r = s.watches()[w];
   using K = WatchRef::Kind;
   switch (r.kind) {
-    case K::Q: return q[r.index];
-    case K::V: return v[r.index];
-    case K::Position: return kin.X_WB[static_cast<std::size_t>(r.index)].p[r.axis];
-    case K::Angle: return dynamics::bodyEulerAngles(kin, r.index)[r.axis];
-    case K::Tension: return s.ropes()[static_cast<std::size_t>(r.index)]->tension({t, s.model(), kin, q, v});
-    case K::Length: return s.ropes()[static_cast<std::size_t>(r.index)]->length({t, s.model(), kin, q, v});
+    case K::Q:
+      return q[r.index];
+    case K::V:
+      return v[r.index];
+    case K::Position:
+      return kin.X_WB[static_cast<std::size_t>(r.index)].p[r.axis];
+    case K::Angle:
+      return dynamics::bodyEulerAngles(kin, r.index)[r.axis];
+    case K::Tension:
+      return s.ropes()[static_cast<std::size_t>(r.index)]->tension({t, s.model(), kin, q, v});
+    case K::Length:
+      return s.ropes()[static_cast<std::size_t>(r.index)]->length({t, s.model(), kin, q, v});
   }
   return 0.0;
 }

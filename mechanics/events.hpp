@@ -40,8 +40,9 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
                     const Eigen::VectorXd& v, double t, std::span<double> g);
 
 // (the located state event that fired at t, state then) => its report
-EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
-                             const Eigen::VectorXd& v, double t, const EventSlot& e);
+EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
+                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t,
+                             const EventSlot& e);
 
 // (set-points, t) => the reports of the time events due at t: winch jobs done, prescribed ramps
 // at their targets

@@ -2,8 +2,8 @@
 
 namespace yardsim::mechanics {
 
-double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed, double t,
-                  const std::string& actor, bool prescribed) {
+double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed,
+                  double t, const std::string& actor, bool prescribed) {
   JointDrive& d = sp.drives[static_cast<std::size_t>(body)];
   d = JointDrive{true, false, q, target, std::abs(speed), t, actor, prescribed};
   // (ramp start) => the joint takes the ramp's speed at once (servo: keeps its own)
@@ -12,7 +12,8 @@ double startDrive(SetPoints& sp, int body, double q, double v, double target, do
   return (target >= q ? 1.0 : -1.0) * std::abs(speed) - v;
 }
 
-double startWinch(SetPoints& sp, int rope, double t, double speed, double amount, const std::string& actor) {
+double startWinch(SetPoints& sp, int rope, double t, double speed, double amount,
+                  const std::string& actor) {
   sp.winches[static_cast<std::size_t>(rope)] = WinchJob{true, t + std::abs(amount) / speed, actor};
   return amount >= 0 ? speed : -speed;
 }

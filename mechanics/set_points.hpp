@@ -45,11 +45,12 @@ struct SetPoints {
 // (a drive request at t for the 1-dof joint of body i, now at q with velocity v: target, speed,
 // the actor, servo or prescribed) => the drive in sp; the joint's velocity step when a prescribed
 // ramp starts (it takes the ramp's speed at once) or a prescribed one is replaced, else 0
-double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed, double t,
-                  const std::string& actor, bool prescribed);
+double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed,
+                  double t, const std::string& actor, bool prescribed);
 
 // (a winch request at t on rope r: change of unstretched length `amount` m (< 0 hoists) at
 // `speed` m/s) => the job in sp, ending at t + |amount| / speed; returns the payout rate, m/s
-double startWinch(SetPoints& sp, int rope, double t, double speed, double amount, const std::string& actor);
+double startWinch(SetPoints& sp, int rope, double t, double speed, double amount,
+                  const std::string& actor);
 
 }  // namespace yardsim::mechanics

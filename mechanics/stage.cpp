@@ -18,13 +18,15 @@ bool prescribedDofs(const System& s, Data& d, const SetPoints& sp) {
   return any;
 }
 
-void setPointForces(const System& s, Data& d, const SetPoints& sp, double t, const Eigen::VectorXd& q,
-                    const Eigen::VectorXd& v, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
+                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, dynamics::ExternalForces& f,
+                    Eigen::VectorXd& tau) {
   const auto& m = s.model();
   const ServoSettings& servo = s.servo();
   const double wc = servo.bandwidth;
   // (q, v) => bias forces h(q, v), the drives' feedforward (gravity and velocity terms)
-  const bool driving = std::any_of(sp.drives.begin(), sp.drives.end(), [](auto& j) { return j.active; });
+  const bool driving =
+      std::any_of(sp.drives.begin(), sp.drives.end(), [](auto& j) { return j.active; });
   if (driving) dynamics::biasForces(m, d.feedforward, q, v);
   for (int i = 1; i < m.nbodies; ++i) {
     // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
@@ -50,20 +52,21 @@ void setPointForces(const System& s, Data& d, const SetPoints& sp, double t, con
   }
 }
 
-void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                 const dynamics::Data& kin, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
+                 const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
+                 Eigen::VectorXd& tau) {
   const forces::Stage stage{t, s.model(), kin, q, v};
   const SetPoints& sp = *d.setPoints;
-  if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any()) d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
+  if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any())
+    d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
   for (forces::ForceProvider* p : s.providers()) p->evaluate(stage, f, tau);
   setPointForces(s, d, sp, t, q, v, f, tau);
 }
 
 void connectStage(const System& s, Data& d) {
   d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                              const dynamics::Data& kin, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
-    stageForces(s, d, t, q, v, kin, f, tau);
-  });
+                              const dynamics::Data& kin, dynamics::ExternalForces& f,
+                              Eigen::VectorXd& tau) { stageForces(s, d, t, q, v, kin, f, tau); });
 }
 
 }  // namespace yardsim::mechanics

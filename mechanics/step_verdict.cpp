@@ -7,7 +7,6 @@
 
 namespace yardsim::mechanics {
 
-
 double stabilityLimit(std::string_view method) {
   // (method table) => the intersection of its stability region with the imaginary axis
   if (const dynamics::MethodInfo* m = dynamics::findMethod(method)) return m->imagStabilityLimit;

@@ -32,7 +32,8 @@ BuiltMechanics tautened(const BuiltMechanics& mech) {
     mat.l0 = std::min(mat.l0, length / (1.0 + kTautStrain));
     mat.minLength = std::min(mat.minLength, mat.l0);
   };
-  for (std::size_t i = 0; i < p.ropes.size(); ++i) tighten(m.ropes[i].material, p.ropes[i]->length(s));
+  for (std::size_t i = 0; i < p.ropes.size(); ++i)
+    tighten(m.ropes[i].material, p.ropes[i]->length(s));
   for (std::size_t i = 0; i < p.equalizers.size(); ++i)
     tighten(m.equalizers[i].material, p.equalizers[i]->length(s));
   return m;
@@ -56,7 +57,8 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
     for (int i = 1; i < model.nbodies; ++i)
       if (mech.hold[static_cast<std::size_t>(i)]) {
         const double q = mech.q0[model.idxQ[i]];
-        held.drives[static_cast<std::size_t>(i)] = JointDrive{true, true, q, q, 0.0, 0.0, "", false};
+        held.drives[static_cast<std::size_t>(i)] =
+            JointDrive{true, true, q, q, 0.0, 0.0, "", false};
       }
   data.setPoints = &held;
   connectStage(system, data);
@@ -93,7 +95,8 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
   shape.cwiseAbs().maxCoeff(&dof);
   out.body = model.names[static_cast<std::size_t>(model.dofBody[static_cast<std::size_t>(dof)])];
   // (mode shape, phase-aligned to its largest entry) => strain energy of each element along it
-  const Eigen::VectorXd phi = (shape * std::conj(shape[dof]) / std::abs(shape[dof])).real().normalized();
+  const Eigen::VectorXd phi =
+      (shape * std::conj(shape[dof]) / std::abs(shape[dof])).real().normalized();
   dynamics::Data dp(model), dm(model);
   Eigen::VectorXd qp(model.nq), qm(model.nq);
   const double h = 1e-6;
@@ -121,9 +124,11 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
   dynamics::Data d0(model);
   dynamics::forwardKinematics(model, d0, mech.q0, mech.v0);
   const forces::Stage s0{0.0, model, d0, mech.q0, mech.v0};
-  for (std::size_t k = system.ropes().size() + system.equalizers().size(); k < system.providers().size(); ++k) {
+  for (std::size_t k = system.ropes().size() + system.equalizers().size();
+       k < system.providers().size(); ++k) {
     const forces::ForceProvider& p = *system.providers()[k];
-    const double curvature = (p.potentialEnergy(sp) - 2.0 * p.potentialEnergy(s0) + p.potentialEnergy(sm)) / (h * h);
+    const double curvature =
+        (p.potentialEnergy(sp) - 2.0 * p.potentialEnergy(s0) + p.potentialEnergy(sm)) / (h * h);
     if (curvature > 0) consider("provider '" + p.name() + "'", curvature, 1.0);
   }
   return out;
@@ -132,7 +137,8 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
 std::string describe(const StiffnessEstimate& e) {
   std::ostringstream s;
   s.precision(3);
-  s << "omega_max = " << e.omegaMax << " rad/s, damping ratio " << e.dampingRatio << " (body '" << e.body << "'";
+  s << "omega_max = " << e.omegaMax << " rad/s, damping ratio " << e.dampingRatio << " (body '"
+    << e.body << "'";
   if (!e.element.empty()) s << ", " << e.element;
   s << ")";
   return s.str();

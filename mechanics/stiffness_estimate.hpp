@@ -14,12 +14,11 @@
 
 namespace yardsim::mechanics {
 
-
 struct StiffnessEstimate {
-  double omegaMax = 0.0;  // rad/s, largest |eigenvalue| of the linearised first-order system
+  double omegaMax = 0.0;      // rad/s, largest |eigenvalue| of the linearised first-order system
   double dampingRatio = 0.0;  // of that mode: -Re(lambda)/|lambda|
-  std::string body;       // the body that moves most in that mode
-  std::string element;    // the provider storing most of its strain energy ("" if none)
+  std::string body;           // the body that moves most in that mode
+  std::string element;        // the provider storing most of its strain energy ("" if none)
 };
 
 // (mechanics with their initial state) => the estimate; throws std::runtime_error when the

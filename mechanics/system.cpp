@@ -27,7 +27,8 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (const auto& w : mech_.watches) {
     using K = WatchRef::Kind;
     WatchRef ref{K::Q, -1, 0};
-    const int joint = jointBody(w.element), body = model.bodyIndex(w.element), rope = ropeIndex(w.element);
+    const int joint = jointBody(w.element), body = model.bodyIndex(w.element),
+              rope = ropeIndex(w.element);
     const std::string& q = w.quantity;
     if (joint > 0 && (q == "q" || q == "v"))
       ref = {q == "q" ? K::Q : K::V, q == "q" ? model.idxQ[joint] : model.idxV[joint], 0};
@@ -38,7 +39,8 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
     else if (rope >= 0 && (q == "tension" || q == "length"))
       ref = {q == "tension" ? K::Tension : K::Length, rope, 0};
     else
-      throw std::invalid_argument("watch '" + w.name + "': '" + w.element + "' has no quantity '" + q + "'");
+      throw std::invalid_argument("watch '" + w.name + "': '" + w.element + "' has no quantity '" +
+                                  q + "'");
     watchRefs_.push_back(ref);
   }
   // (floating-body specs) => hydrostatics on one sea, wind and current loads, damping
@@ -50,28 +52,30 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   const auto sea = std::make_shared<const forces::AiryWaves>(water, env.waves);
   auto bodyOf = [&](const std::string& n) { return model.bodyIndex(n); };
   for (const auto& h : env.hulls)
-    hydros_.push_back(std::make_unique<forces::Hydrostatics>(h.name, model, bodyOf(h.body), *h.mesh, sea));
+    hydros_.push_back(
+        std::make_unique<forces::Hydrostatics>(h.name, model, bodyOf(h.body), *h.mesh, sea));
   if (env.wind) {
     const auto wind = std::make_shared<const forces::WindField>(*env.wind);
     for (const auto& w : env.windLoads)
-      flows_.push_back(std::make_unique<forces::WindLoad>(w.name, model, bodyOf(w.body), w.point, w.areas,
-                                                          w.coefficients, wind));
+      flows_.push_back(std::make_unique<forces::WindLoad>(w.name, model, bodyOf(w.body), w.point,
+                                                          w.areas, w.coefficients, wind));
   }
   if (env.current) {
     const auto current = std::make_shared<const forces::CurrentField>(*env.current);
     for (const auto& c : env.currentLoads)
-      flows_.push_back(std::make_unique<forces::CurrentLoad>(c.name, model, bodyOf(c.body), c.point, c.areas,
-                                                             c.coefficients, current, water.density));
+      flows_.push_back(std::make_unique<forces::CurrentLoad>(
+          c.name, model, bodyOf(c.body), c.point, c.areas, c.coefficients, current, water.density));
   }
   for (const auto& d : env.dampers)
-    dampers_.push_back(
-        std::make_unique<forces::LinearQuadraticDamping>(d.name, model, bodyOf(d.body), d.point, d.coefficients));
+    dampers_.push_back(std::make_unique<forces::LinearQuadraticDamping>(
+        d.name, model, bodyOf(d.body), d.point, d.coefficients));
   // (providers of registered readers) => built at their attachments
   for (const auto& p : mech_.providers) {
     std::vector<forces::Attachment> at;
     for (const auto& [body, p_B] : p.attachments) {
       const int b = body == "world" ? 0 : model.bodyIndex(body);
-      if (b < 0) throw std::invalid_argument(p.kind + " '" + p.name + "': unknown body '" + body + "'");
+      if (b < 0)
+        throw std::invalid_argument(p.kind + " '" + p.name + "': unknown body '" + body + "'");
       at.push_back({b, p_B});
     }
     contributed_.push_back(p.build(p.name, model, at));

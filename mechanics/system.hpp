@@ -54,10 +54,14 @@ class System {
   const std::vector<std::unique_ptr<forces::Equalizer>>& equalizers() const { return equalizers_; }
   const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return hydros_; }
   const std::vector<std::unique_ptr<forces::FlowLoad>>& flows() const { return flows_; }
-  const std::vector<std::unique_ptr<forces::LinearQuadraticDamping>>& dampers() const { return dampers_; }
+  const std::vector<std::unique_ptr<forces::LinearQuadraticDamping>>& dampers() const {
+    return dampers_;
+  }
   const std::vector<std::unique_ptr<forces::BodyLoad>>& bodyLoads() const { return bodyLoads_; }
   // the providers of registered readers (MechanicsSpec::ProviderSpec), last in the list
-  const std::vector<std::unique_ptr<forces::ForceProvider>>& contributed() const { return contributed_; }
+  const std::vector<std::unique_ptr<forces::ForceProvider>>& contributed() const {
+    return contributed_;
+  }
   const std::vector<WatchRef>& watches() const { return watchRefs_; }
   // per body: the joint-space inertia of its 1-dof joint at q0 (kg m^2 or kg), for servo gains
   const std::vector<double>& servoInertia() const { return servoInertia_; }

@@ -30,8 +30,8 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
 }
 
 std::size_t AlarmMonitor::alarmCount() const {
-  return static_cast<std::size_t>(
-      std::count_if(alarms_.begin(), alarms_.end(), [](const Alarm& a) { return a.severity == "alarm"; }));
+  return static_cast<std::size_t>(std::count_if(
+      alarms_.begin(), alarms_.end(), [](const Alarm& a) { return a.severity == "alarm"; }));
 }
 
 }  // namespace yardsim::run

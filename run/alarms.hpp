@@ -20,13 +20,14 @@ struct Alarm {
   std::string severity;  // alarm (over_mbl, crossed) or notice (slack, taut)
   double first = 0.0;    // s: the first occurrence, as located
   std::size_t count = 0;
-  double worst = 0.0;    // SI: the largest value reported (tension in N for over_mbl)
+  double worst = 0.0;  // SI: the largest value reported (tension in N for over_mbl)
 };
 
 class AlarmMonitor final : public devs::Listener {
  public:
   // (alarm at its first occurrence) => e.g. a console line; may be empty
-  explicit AlarmMonitor(std::function<void(const Alarm&)> onFirst = {}) : onFirst_(std::move(onFirst)) {}
+  explicit AlarmMonitor(std::function<void(const Alarm&)> onFirst = {})
+      : onFirst_(std::move(onFirst)) {}
   void onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& port) override;
   // every (element, kind) seen, in order of first occurrence
   const std::vector<Alarm>& alarms() const { return alarms_; }

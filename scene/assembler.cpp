@@ -1,8 +1,8 @@
-#include "mechanics/build.hpp"
 #include "scene/assembler.hpp"
 
 #include <stdexcept>
 
+#include "mechanics/build.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "models/port_types.hpp"

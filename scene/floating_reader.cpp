@@ -1,8 +1,8 @@
-#include "scene/mechanics_reader.hpp"
 #include "scene/floating_reader.hpp"
 
 #include <filesystem>
 
+#include "scene/mechanics_reader.hpp"
 #include "forces/geometry/mesh_io.hpp"
 #include "scene/spec_reader.hpp"
 

@@ -1,5 +1,3 @@
-#include "scene/mechanics_reader.hpp"
-#include "mechanics/build.hpp"
 #include "scene/mechanical_systems.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
@@ -8,6 +6,8 @@
 #include <map>
 #include <set>
 
+#include "scene/mechanics_reader.hpp"
+#include "mechanics/build.hpp"
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rotation.hpp"
 #include "scene/provider_readers.hpp"

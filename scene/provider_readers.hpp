@@ -20,7 +20,8 @@ namespace yardsim::scene {
 // (entry name, its node, the reader that reports problems at their nodes with key paths below
 // the block, the entry's key path) => the provider's spec (kind and name are filled in after)
 using ProviderRead = std::function<mechanics::MechanicsSpec::ProviderSpec(
-    const std::string& name, const YAML::Node& node, const spec::Reader& r, const std::string& key)>;
+    const std::string& name, const YAML::Node& node, const spec::Reader& r,
+    const std::string& key)>;
 
 struct ProviderReader {
   std::string key;      // the mechanics key: `springs:` => {name: {...}, ...}
@@ -38,11 +39,13 @@ std::vector<std::string> mechanicsKeys();
 
 // ({body, point: [x, y, z]} at key) => the attachment (body "world" when not given); the body
 // name is checked when the fragments are merged
-mechanics::MechanicsSpec::Point readPoint(const spec::Reader& r, const YAML::Node& n, const std::string& key);
+mechanics::MechanicsSpec::Point readPoint(const spec::Reader& r, const YAML::Node& n,
+                                          const std::string& key);
 
 }  // namespace yardsim::scene
 
 // YARDSIM_REGISTER_PROVIDER(id, ProviderReader{...}) in a .cpp of scene/providers/ (or of your own
 // executable) registers a reader before main().
-#define YARDSIM_REGISTER_PROVIDER(id, ...) \
-  [[maybe_unused]] static const bool yardsim_provider_reader_##id = ::yardsim::scene::registerProviderReader(__VA_ARGS__)
+#define YARDSIM_REGISTER_PROVIDER(id, ...)                          \
+  [[maybe_unused]] static const bool yardsim_provider_reader_##id = \
+      ::yardsim::scene::registerProviderReader(__VA_ARGS__)

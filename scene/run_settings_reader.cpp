@@ -8,9 +8,9 @@
 namespace yardsim::scene {
 
 using models::Diagnostics;
-using models::ParamKind;
 using models::didYouMean;
 using models::hasKind;
+using models::ParamKind;
 
 namespace {
 
@@ -19,25 +19,29 @@ const std::vector<std::string> kTraceSinks{"jsonl", "chrome", "csv"};
 // ({plots: [globs], static: {channel: value}}) => what the report shows
 void reportSettings(Scene& s, const YAML::Node& r, const std::string& f, Diagnostics& diags) {
   if (!r.IsMap()) {
-    diags.error(markOf(r, f), "report", "expected {plots: [channel globs], static: {channel: value}}");
+    diags.error(markOf(r, f), "report",
+                "expected {plots: [channel globs], static: {channel: value}}");
     return;
   }
   checkKeys(r, {"plots", "static"}, f, "report", diags);
   if (const YAML::Node p = r["plots"]) {
-    if (hasKind(p, ParamKind::StringList)) s.report.plots = p.as<std::vector<std::string>>();
-    else diags.error(markOf(p, f), "report.plots", "expected a list of channel globs");
+    if (hasKind(p, ParamKind::StringList))
+      s.report.plots = p.as<std::vector<std::string>>();
+    else
+      diags.error(markOf(p, f), "report.plots", "expected a list of channel globs");
   }
   if (const YAML::Node st = r["static"]) {
     if (!st.IsMap()) {
       diags.error(markOf(st, f), "report.static",
-               "expected a mapping {channel: value}, e.g. {crane.hoist.tension: 4.5e6}");
+                  "expected a mapping {channel: value}, e.g. {crane.hoist.tension: 4.5e6}");
       return;
     }
     for (auto it = st.begin(); it != st.end(); ++it) {
       const std::string name = it->first.Scalar();
       if (!hasKind(it->second, ParamKind::Number))
-        diags.error(markOf(it->second, f), "report.static." + name,
-                 "expected a number (the static value in the channel's unit), got " + shown(it->second));
+        diags.error(
+            markOf(it->second, f), "report.static." + name,
+            "expected a number (the static value in the channel's unit), got " + shown(it->second));
       else {
         s.report.staticLevels.emplace_back(name, it->second.as<double>());
         s.report.staticWhere.push_back(markOf(it->first, f));
@@ -52,8 +56,8 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
   auto number = [&](const YAML::Node& n, const std::string& kp, double& out, bool positive) {
     if (!hasKind(n, ParamKind::Number) || (positive ? !(n.as<double>() > 0) : n.as<double>() < 0)) {
       diags.error(markOf(n, f), kp,
-               std::string("expected a ") + (positive ? "positive" : "non-negative") +
-                   " number of seconds, got " + shown(n));
+                  std::string("expected a ") + (positive ? "positive" : "non-negative") +
+                      " number of seconds, got " + shown(n));
       return;
     }
     out = n.as<double>();
@@ -62,8 +66,10 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
   if (s.name.empty()) s.name = s.file.stem().string();
   if (const YAML::Node n = doc["until"]) number(n, "until", s.until, false);
   if (const YAML::Node n = doc["seed"]) {
-    if (hasKind(n, ParamKind::Integer)) s.seed = n.as<long long>();
-    else diags.error(markOf(n, f), "seed", "expected an integer, got " + shown(n));
+    if (hasKind(n, ParamKind::Integer))
+      s.seed = n.as<long long>();
+    else
+      diags.error(markOf(n, f), "seed", "expected an integer, got " + shown(n));
   }
   if (const YAML::Node n = doc["integrator"]) {
     s.integratorSpec = parseIntegratorSpec(n, f, diags);
@@ -77,7 +83,7 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
       const std::string v = c.IsScalar() ? c.Scalar() : "";
       if (std::find(kChecks.begin(), kChecks.end(), v) == kChecks.end())
         diags.error(markOf(c, f), "integrator.stiffness_check",
-                 "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
+                    "expected warn, refuse or off, got " + shown(c), didYouMean(v, kChecks));
       else
         s.stiffnessCheck = v;
     }
@@ -87,12 +93,17 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
       diags.error(markOf(r, f), "record", "expected {interval: seconds, channels: [globs]}");
     } else {
       checkKeys(r, {"interval", "channels"}, f, "record", diags);
-      if (const YAML::Node i = r["interval"]) number(i, "record.interval", s.record.interval, true);
-      else diags.error(markOf(r, f), "record", "missing required key 'interval' (seconds)");
+      if (const YAML::Node i = r["interval"])
+        number(i, "record.interval", s.record.interval, true);
+      else
+        diags.error(markOf(r, f), "record", "missing required key 'interval' (seconds)");
       const YAML::Node ch = r["channels"];
-      if (ch && hasKind(ch, ParamKind::StringList)) s.record.channels = ch.as<std::vector<std::string>>();
-      else if (ch) diags.error(markOf(ch, f), "record.channels", "expected a list of channel globs");
-      else s.record.channels = {"*"};
+      if (ch && hasKind(ch, ParamKind::StringList))
+        s.record.channels = ch.as<std::vector<std::string>>();
+      else if (ch)
+        diags.error(markOf(ch, f), "record.channels", "expected a list of channel globs");
+      else
+        s.record.channels = {"*"};
     }
   }
   if (const YAML::Node r = doc["report"]) reportSettings(s, r, f, diags);
@@ -103,9 +114,11 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
       for (const auto& e : t) {
         const std::string sink = e.Scalar();
         if (std::find(kTraceSinks.begin(), kTraceSinks.end(), sink) == kTraceSinks.end())
-          diags.error(markOf(e, f), "trace", "unknown trace sink '" + sink + "'; expected jsonl, chrome or csv",
-                   didYouMean(sink, kTraceSinks));
-        else s.trace.push_back(sink);
+          diags.error(markOf(e, f), "trace",
+                      "unknown trace sink '" + sink + "'; expected jsonl, chrome or csv",
+                      didYouMean(sink, kTraceSinks));
+        else
+          s.trace.push_back(sink);
       }
     }
   }

@@ -13,6 +13,7 @@
 namespace yardsim::scene {
 
 // (root document, its file) => the settings in s; problems in diags
-void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& file, models::Diagnostics& diags);
+void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& file,
+                     models::Diagnostics& diags);
 
 }  // namespace yardsim::scene

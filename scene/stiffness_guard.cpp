@@ -1,9 +1,9 @@
-#include "mechanics/build.hpp"
 #include "scene/stiffness_guard.hpp"
 
 #include <cmath>
 #include <sstream>
 
+#include "mechanics/build.hpp"
 #include "dynamics/integrators/factory.hpp"
 #include "scene/mechanical_systems.hpp"
 

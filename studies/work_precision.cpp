@@ -1,6 +1,6 @@
-#include "mechanics/build.hpp"
 #include "studies/work_precision.hpp"
 
+#include "mechanics/build.hpp"
 #include "studies/work_precision_reference.hpp"
 
 #include <algorithm>

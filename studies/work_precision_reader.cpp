@@ -1,7 +1,7 @@
-#include <filesystem>
 #include "studies/work_precision_reader.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "scene/yaml_source.hpp"

@@ -15,17 +15,21 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     for (int k = 0; k < m.jointNq[i] && m.jointNq[i] == m.jointNv[i]; ++k) {
       const std::string suffix = m.jointNq[i] == 1 ? "" : std::to_string(k);
       const int iq = m.idxQ[i] + k, iv = m.idxV[i] + k;
-      out.push_back({j + ".q" + suffix, linear ? "m" : "rad", [this, iq] { return state().x.q[iq]; }});
-      out.push_back({j + ".v" + suffix, linear ? "m/s" : "rad/s", [this, iv] { return state().x.v[iv]; }});
+      out.push_back(
+          {j + ".q" + suffix, linear ? "m" : "rad", [this, iq] { return state().x.q[iq]; }});
+      out.push_back(
+          {j + ".v" + suffix, linear ? "m/s" : "rad/s", [this, iv] { return state().x.v[iv]; }});
       out.push_back({j + ".a" + suffix, linear ? "m/s^2" : "rad/s^2",
                      [this, iv] { return acceleration()[iv]; }});
     }
     if (m.nc == 0 && m.jointNv[i] < 6)  // (joint) => magnitude of the force it transmits
-      out.push_back({j + ".reaction", "N", [this, i] { return jointForces()[i].tail<3>().norm(); }});
+      out.push_back(
+          {j + ".reaction", "N", [this, i] { return jointForces()[i].tail<3>().norm(); }});
     const std::string& b = m.names[i];
     const char* axes[3] = {"x", "y", "z"};
     for (int k = 0; k < 3; ++k)
-      out.push_back({b + "." + axes[k], "m", [this, i, k] { return kinematicsOf(state().x).X_WB[i].p[k]; }});
+      out.push_back(
+          {b + "." + axes[k], "m", [this, i, k] { return kinematicsOf(state().x).X_WB[i].p[k]; }});
     const char* angles[3] = {"roll", "pitch", "yaw"};
     for (int k = 0; k < 3; ++k)
       out.push_back({b + "." + angles[k], "rad", [this, i, k] {
@@ -38,8 +42,10 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
       const auto& s = state();
       return forces::Stage{s.tx, system_.model(), kinematicsOf(s.x), s.x.q, s.x.v};
     };
-    out.push_back({n + ".tension", "N", [this, r, stage] { return system_.ropes()[r]->tension(stage()); }});
-    out.push_back({n + ".length", "m", [this, r, stage] { return system_.ropes()[r]->length(stage()); }});
+    out.push_back(
+        {n + ".tension", "N", [this, r, stage] { return system_.ropes()[r]->tension(stage()); }});
+    out.push_back(
+        {n + ".length", "m", [this, r, stage] { return system_.ropes()[r]->length(stage()); }});
     out.push_back({n + ".unstretched_length", "m",
                    [this, r] { return system_.ropes()[r]->unstretchedLength(state().tx); }});
     out.push_back({n + ".peak_tension", "N", [this, r] { return state().x.peakTension[r]; }});
@@ -66,9 +72,11 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
                      }});
   }
   floatingChannels(out);
-  for (const auto& c : system_.contributed()) {  // (providers of registered readers) => energy, power
+  for (const auto& c :
+       system_.contributed()) {  // (providers of registered readers) => energy, power
     const forces::ForceProvider* p = c.get();
-    out.push_back({p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage()); }});
+    out.push_back(
+        {p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage()); }});
     out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage()); }});
   }
   // (system-wide quantities) => under the model's own name when element names are paths
@@ -87,13 +95,16 @@ void MultibodyModel::floatingChannels(std::vector<Channel>& out) const {
   for (const auto& hp : system_.hydrostatics()) {
     const forces::Hydrostatics* h = hp.get();
     const std::string& n = h->name();
-    auto rep = [this, h]() -> const forces::HydrostaticReport& { return h->report(committedStage()); };
+    auto rep = [this, h]() -> const forces::HydrostaticReport& {
+      return h->report(committedStage());
+    };
     out.push_back({n + ".draft", "m", [rep] { return rep().draft; }});
     out.push_back({n + ".heel", "rad", [rep] { return rep().heel; }});
     out.push_back({n + ".trim", "rad", [rep] { return rep().trim; }});
     out.push_back({n + ".displacement", "kg", [rep] { return rep().displacement; }});
     out.push_back({n + ".volume", "m^3", [rep] { return rep().submerged.volume; }});
-    out.push_back({n + ".waterplane_area", "m^2", [rep] { return rep().submerged.waterplaneArea; }});
+    out.push_back(
+        {n + ".waterplane_area", "m^2", [rep] { return rep().submerged.waterplaneArea; }});
     out.push_back({n + ".gm_t", "m", [rep] { return rep().gmTransverse; }});
     out.push_back({n + ".gm_l", "m", [rep] { return rep().gmLongitudinal; }});
     // (force, moment about the world origin) => world axes, moment about the body's centre of mass

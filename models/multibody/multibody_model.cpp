@@ -24,10 +24,13 @@ namespace {
 // (mechanics) => initial state; held joints (brakes) start with a drive holding q0
 MultibodyState initialState(const mechanics::BuiltMechanics& m) {
   const auto n = static_cast<std::size_t>(m.model.nbodies);
-  MultibodyState x{m.q0, m.v0,
+  MultibodyState x{m.q0,
+                   m.v0,
                    {std::vector<mechanics::JointDrive>(n), std::vector<mechanics::ActorLoad>(n),
                     std::vector<mechanics::WinchJob>(m.ropes.size())},
-                   0.0, std::vector<double>(m.ropes.size(), 0.0), std::vector<double>(m.ropes.size(), 0.0)};
+                   0.0,
+                   std::vector<double>(m.ropes.size(), 0.0),
+                   std::vector<double>(m.ropes.size(), 0.0)};
   for (std::size_t i = 1; i < n; ++i)
     if (m.hold[i]) {
       const double q = m.q0[m.model.idxQ[i]];
@@ -50,11 +53,13 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
                                const MultibodyOptions& options)
     : dtss::Atomic<MultibodyState>(std::move(name), initialState(mechanics), options.dt),
       opt_(resolved(options)),
-      system_(std::move(mechanics), {opt_.driveBandwidth, opt_.driveMaxEffort, opt_.driveTolerance}, this->name()),
+      system_(std::move(mechanics), {opt_.driveBandwidth, opt_.driveMaxEffort, opt_.driveTolerance},
+              this->name()),
       events_(mechanics::eventTable(system_)),
       ws_(system_) {
   // (event table) => the directions the stepper locates
-  for (const auto& e : events_) directions_.push_back(e.bothWays ? dtss::Crossing::Both : dtss::Crossing::Rising);
+  for (const auto& e : events_)
+    directions_.push_back(e.bothWays ? dtss::Crossing::Both : dtss::Crossing::Rising);
   // (options) => the integrator at step dt; loops kept closed as its spec says
   const auto& model = system_.model();
   ws_.integrator = dynamics::makeIntegrator(opt_.integrator, model);
@@ -65,11 +70,13 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   MultibodyState& x0 = mutableState().x;
   dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
   const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
-  for (std::size_t r = 0; r < system_.ropes().size(); ++r) x0.peakTension[r] = system_.ropes()[r]->tension(stage);
+  for (std::size_t r = 0; r < system_.ropes().size(); ++r)
+    x0.peakTension[r] = system_.ropes()[r]->tension(stage);
   initialTension_ = x0.peakTension;
   // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
   limits_.balance0 = mechanics::energy(system_, ws_.data.scratch, x0.q, x0.v, 0.0);
-  limits_.energyBound = opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
+  limits_.energyBound =
+      opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
   limits_.loopResidualLimit = opt_.loopResidualLimit;
   limits_.projectLoops = opt_.projectLoops;
   limits_.method = opt_.integrator.method;
@@ -150,8 +157,8 @@ void MultibodyModel::checkBlowUp(const MultibodyState& x, double t) const {
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
-  ws_.powerState = nullptr;      // set-points change the forces
-  ws_.integrator->reset();  // the forces change here: no history across it
+  ws_.powerState = nullptr;  // set-points change the forces
+  ws_.integrator->reset();   // the forces change here: no history across it
   const auto& model = system_.model();
   auto& sp = x.setPoints;
   for (const SetPoint& s : setpoint.values()) {
@@ -160,14 +167,16 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         const int i = system_.jointBody(s.element);
         if (i < 0 || model.jointNv[i] != 1)
           throw devs::SimulationError("multibody '" + path() + "': set-point from '" + s.actor +
-                                      "' names '" + s.element + "', which is not a 1-dof joint here");
+                                      "' names '" + s.element +
+                                      "', which is not a 1-dof joint here");
         const bool wasPrescribed = sp.drives[i].active && sp.drives[i].prescribed;
         const int iv = model.idxV[i];
-        const double step = mechanics::startDrive(sp, i, x.q[model.idxQ[i]], x.v[iv], s.target, s.speed, t,
-                                                  s.actor, s.prescribed);
+        const double step = mechanics::startDrive(sp, i, x.q[model.idxQ[i]], x.v[iv], s.target,
+                                                  s.speed, t, s.actor, s.prescribed);
         if (s.prescribed && model.nc > 0)
-          throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" + s.actor +
-                                      "' on '" + s.element + "' needs a system without loop closures; "
+          throw devs::SimulationError("multibody '" + path() + "': prescribed motion from '" +
+                                      s.actor + "' on '" + s.element +
+                                      "' needs a system without loop closures; "
                                       "use mode: servo");
         if (s.prescribed || wasPrescribed) {  // (velocity step of the joint) => an impulse
           Eigen::VectorXd& dv = ws_.data.accelScratch;
@@ -229,7 +238,8 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
     }
 }
 
-void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t, std::span<double> g) const {
+void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t,
+                                    std::span<double> g) const {
   mechanics::eventFunctions(system_, ws_.data, x.setPoints, x.q, x.v, t, g);
 }
 
@@ -252,7 +262,8 @@ void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
   ws_.integrator->reset();
   const mechanics::EventSlot& slot = events_[static_cast<std::size_t>(e)];
   if (slot.kind == mechanics::EventSlot::Kind::DriveReached)
-    x.setPoints.drives[static_cast<std::size_t>(slot.index)].reported = true;  // keeps holding the target
+    x.setPoints.drives[static_cast<std::size_t>(slot.index)].reported =
+        true;  // keeps holding the target
 }
 
 const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) const {

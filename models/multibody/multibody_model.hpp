@@ -39,14 +39,14 @@ struct MultibodyState {
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
 struct MultibodyOptions {
-  double dt = 1e-3;             // s: the DTSS step, and the integrator's (integrator.dt is ignored)
+  double dt = 1e-3;  // s: the DTSS step, and the integrator's (integrator.dt is ignored)
   dynamics::IntegratorSpec integrator;  // method and its parameters (docs/integrators.md)
-  double driveBandwidth = 0.0;  // rad/s of the joint servos; 0: min(10, 0.1/dt)
-  double driveMaxEffort = 0.0;  // N m or N; 0: unbounded
-  double driveTolerance = 1e-3; // rad or m: a drive has reached its target within this
-  bool projectLoops = true;     // false: no projection even if integrator.loops asks for it
-  bool equilibrium = false;     // move q0 to static equilibrium (v = 0) before the run
-  bool elementPaths = false;    // channel names are the elements' full paths (scene mechanics)
+  double driveBandwidth = 0.0;          // rad/s of the joint servos; 0: min(10, 0.1/dt)
+  double driveMaxEffort = 0.0;          // N m or N; 0: unbounded
+  double driveTolerance = 1e-3;         // rad or m: a drive has reached its target within this
+  bool projectLoops = true;             // false: no projection even if integrator.loops asks for it
+  bool equilibrium = false;             // move q0 to static equilibrium (v = 0) before the run
+  bool elementPaths = false;  // channel names are the elements' full paths (scene mechanics)
   // blow-up bounds (docs/numerics.md): the energy balance may rise by at most this fraction of
   // the system's energy scale (total weight x its size, plus its initial kinetic and strain
   // energy); a loop residual may reach at most this, m (or rad)
@@ -54,9 +54,12 @@ struct MultibodyOptions {
   double loopResidualLimit = 1e-3;
 };
 
-class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observable, public Replayable {
+class MultibodyModel final : public dtss::Atomic<MultibodyState>,
+                             public Observable,
+                             public Replayable {
  public:
-  MultibodyModel(std::string name, mechanics::BuiltMechanics mechanics, const MultibodyOptions& options);
+  MultibodyModel(std::string name, mechanics::BuiltMechanics mechanics,
+                 const MultibodyOptions& options);
   devs::InPort<SetPoint>& setpoint = addInPort<SetPoint>("setpoint");
   devs::OutPort<MechanicsEvent>& event = addOutPort<MechanicsEvent>("event");
 
@@ -72,7 +75,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>, public Observa
   const forces::Equalizer& equalizer(std::size_t i) const { return *system_.equalizers()[i]; }
   // per rope: the tension of one part at the start (after equilibrium, if asked for), N
   const std::vector<double>& initialTension() const { return initialTension_; }
-  const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return system_.hydrostatics(); }
+  const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const {
+    return system_.hydrostatics();
+  }
   // (committed state) => joint accelerations (dv/dt), with the set-points in force
   const Eigen::VectorXd& acceleration() const;
   // (joint name) => body index, or -1

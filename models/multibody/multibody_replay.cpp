@@ -14,8 +14,8 @@ void MultibodyModel::replayBodies(Replay& out) const {
   const auto first = static_cast<int>(out.bodies.size());
   for (int i = 1; i < m.nbodies; ++i) {
     const auto& in = m.inertias[static_cast<std::size_t>(i)];
-    out.bodies.push_back(replayShape(system_.description().visuals[static_cast<std::size_t>(i)], in.mass, in.com,
-                                     in.inertiaCom));
+    out.bodies.push_back(replayShape(system_.description().visuals[static_cast<std::size_t>(i)],
+                                     in.mass, in.com, in.inertiaCom));
     out.bodies.back().name = prefix + m.names[static_cast<std::size_t>(i)];
   }
   auto point = [&](const mechanics::MechanicsSpec::Point& p) {
@@ -48,8 +48,8 @@ void MultibodyModel::replayFrame(Replay& out, std::size_t firstBody) const {
       if (prev[0] * r[0] + prev[1] * r[1] + prev[2] * r[2] + prev[3] * r[3] < 0)
         for (float& c : r) c = -c;
     }
-    b.translation.push_back({static_cast<float>(X.p[0]), static_cast<float>(X.p[1]),
-                             static_cast<float>(X.p[2])});
+    b.translation.push_back(
+        {static_cast<float>(X.p[0]), static_cast<float>(X.p[1]), static_cast<float>(X.p[2])});
     b.rotation.push_back(r);
   }
 }

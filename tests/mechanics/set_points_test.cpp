@@ -9,14 +9,17 @@
 
 using namespace yardsim::mechanics;
 
-TEST_CASE("startDrive: the velocity step of a prescribed ramp, none for a servo, a stop at the target") {
+TEST_CASE(
+    "startDrive: the velocity step of a prescribed ramp, none for a servo, a stop at the target") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
   for (int trial = 0; trial < 200; ++trial) {
     SetPoints sp{std::vector<JointDrive>(3), {}, {}};
-    const double q = u(rng), v = u(rng), target = u(rng), speed = 0.1 + std::abs(u(rng)), t = std::abs(u(rng));
+    const double q = u(rng), v = u(rng), target = u(rng), speed = 0.1 + std::abs(u(rng)),
+                 t = std::abs(u(rng));
     const double up = target >= q ? 1.0 : -1.0;
-    CHECK(startDrive(sp, 2, q, v, target, speed, t, "a", true) == Approx(up * speed - v).margin(1e-15));
+    CHECK(startDrive(sp, 2, q, v, target, speed, t, "a", true) ==
+          Approx(up * speed - v).margin(1e-15));
     const JointDrive& d = sp.drives[2];
     CHECK(d.active);
     CHECK_FALSE(d.reported);
@@ -25,13 +28,15 @@ TEST_CASE("startDrive: the velocity step of a prescribed ramp, none for a servo,
     CHECK(d.target == target);
     CHECK(d.t0 == t);
     CHECK(d.tEnd() == Approx(t + std::abs(target - q) / speed));
-    CHECK(startDrive(sp, 2, q, v, target, -speed, t, "a", false) == 0.0);  // a servo keeps its velocity
-    CHECK(sp.drives[2].speed == speed);                                      // |speed|
-    CHECK(startDrive(sp, 1, q, v, q, speed, t, "a", true) == -v);            // already there: stop
+    CHECK(startDrive(sp, 2, q, v, target, -speed, t, "a", false) ==
+          0.0);                                                    // a servo keeps its velocity
+    CHECK(sp.drives[2].speed == speed);                            // |speed|
+    CHECK(startDrive(sp, 1, q, v, q, speed, t, "a", true) == -v);  // already there: stop
   }
 }
 
-TEST_CASE("startWinch: the job ends after |amount| / speed, pays out positive and hauls in negative") {
+TEST_CASE(
+    "startWinch: the job ends after |amount| / speed, pays out positive and hauls in negative") {
   SetPoints sp{{}, {}, std::vector<WinchJob>(2)};
   CHECK(startWinch(sp, 1, 10.0, 0.5, 2.0, "w") == 0.5);
   CHECK(sp.winches[1].tEnd == Approx(14.0));

@@ -1,15 +1,15 @@
 // Safety events made visible: a block caught by a rope whose breaking load is 0.9 m g raises one
-// over_mbl alarm as the rope takes the load after a 1 mm fall, a watch on the block's depth raises a
-// `crossed` alarm, the rope going taut is a notice; run.json lists them, and per rope its peak,
+// over_mbl alarm as the rope takes the load after a 1 mm fall, a watch on the block's depth raises
+// a `crossed` alarm, the rope going taut is a notice; run.json lists them, and per rope its peak,
 // when, the static tension (m g in the end: here the report's static level), peak/static and
 // peak/MBL.
 #include "run/alarms.hpp"
 
+#include <yaml-cpp/yaml.h>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <yaml-cpp/yaml.h>
 
 #include "run/runner.hpp"
 #include "scene/assembler.hpp"
@@ -51,7 +51,8 @@ TEST_CASE("a rope over its MBL and a watch crossing are alarms, in run.json with
   run::RunOptions opt{dir.path() / "out", scene->until, {}, {}, 0.1, 2000};
   opt.onAlarm = [&](const run::Alarm& a) { firsts.push_back(a); };
   const auto r = run::runScene(*scene, *root, opt);
-  // (events) => over_mbl once, crossed once, taut a notice; each reported once when it first happens
+  // (events) => over_mbl once, crossed once, taut a notice; each reported once when it first
+  // happens
   auto find = [&](const std::string& kind) -> const run::Alarm* {
     for (const auto& a : r.alarms)
       if (a.kind == kind) return &a;
@@ -85,8 +86,8 @@ TEST_CASE("a rope over its MBL and a watch crossing are alarms, in run.json with
   const YAML::Node rope = json["ropes"][0];
   CHECK(rope["name"].as<std::string>() == "hoist");
   const double peak = rope["peak"].as<double>();
-  CHECK(peak > 8829.0);            // it did pass the MBL
-  CHECK(peak == mbl->worst);       // at the catch: the damper, then a critically damped decay
+  CHECK(peak > 8829.0);       // it did pass the MBL
+  CHECK(peak == mbl->worst);  // at the catch: the damper, then a critically damped decay
   CHECK(rope["peak_time"].as<double>() == mbl->first);
   CHECK(rope["static"].as<double>() == 9810.0);  // the report's static level
   CHECK(rope["peak_over_static"].as<double>() == Approx(peak / 9810.0));

@@ -40,7 +40,9 @@ class TestSpring final : public forces::ForceProvider {
   }
   double doPotentialEnergy(const forces::Stage& s) const override {
     const double x = (dynamics::pointPosition(s.data, b_.body, b_.p_B) -
-                      dynamics::pointPosition(s.data, a_.body, a_.p_B)).norm() - length_;
+                      dynamics::pointPosition(s.data, a_.body, a_.p_B))
+                         .norm() -
+                     length_;
     return 0.5 * k_ * x * x;
   }
 
@@ -49,27 +51,32 @@ class TestSpring final : public forces::ForceProvider {
   double k_, length_;
 };
 
-YARDSIM_REGISTER_PROVIDER(testSprings, scene::ProviderReader{
-    .key = "test_springs",
-    .summary = "name: {between: [{body, point}, {body, point}], k, free_length}",
-    .read = [](const std::string&, const YAML::Node& n, const scene::spec::Reader& r, const std::string& key) {
-      mechanics::MechanicsSpec::ProviderSpec out;
-      if (!r.keys(n, {"between", "k", "free_length"}, key)) return out;
-      const YAML::Node ends = n["between"];
-      if (!ends.IsSequence() || ends.size() != 2) {
-        r.fail(ends, key + ".between", "expected two points {body, point}");
-        return out;
-      }
-      for (std::size_t i = 0; i < 2; ++i)
-        out.attachments.push_back(scene::readPoint(r, ends[i], key + ".between[" + std::to_string(i) + "]"));
-      const double k = r.number(n["k"], key + ".k", 0.0, true);
-      const double length = r.number(n["free_length"], key + ".free_length", 0.0, true);
-      if (n["k"] && !(k > 0)) r.fail(n["k"], key + ".k", "k must be > 0 N/m");
-      out.build = [k, length](const std::string& name, const dynamics::Model&, const std::vector<forces::Attachment>& at) {
-        return std::make_unique<TestSpring>(name, at[0], at[1], k, length);
-      };
-      return out;
-    }});
+YARDSIM_REGISTER_PROVIDER(
+    testSprings, scene::ProviderReader{
+                     .key = "test_springs",
+                     .summary = "name: {between: [{body, point}, {body, point}], k, free_length}",
+                     .read = [](const std::string&, const YAML::Node& n,
+                                const scene::spec::Reader& r, const std::string& key) {
+                       mechanics::MechanicsSpec::ProviderSpec out;
+                       if (!r.keys(n, {"between", "k", "free_length"}, key)) return out;
+                       const YAML::Node ends = n["between"];
+                       if (!ends.IsSequence() || ends.size() != 2) {
+                         r.fail(ends, key + ".between", "expected two points {body, point}");
+                         return out;
+                       }
+                       for (std::size_t i = 0; i < 2; ++i)
+                         out.attachments.push_back(scene::readPoint(
+                             r, ends[i], key + ".between[" + std::to_string(i) + "]"));
+                       const double k = r.number(n["k"], key + ".k", 0.0, true);
+                       const double length =
+                           r.number(n["free_length"], key + ".free_length", 0.0, true);
+                       if (n["k"] && !(k > 0)) r.fail(n["k"], key + ".k", "k must be > 0 N/m");
+                       out.build = [k, length](const std::string& name, const dynamics::Model&,
+                                               const std::vector<forces::Attachment>& at) {
+                         return std::make_unique<TestSpring>(name, at[0], at[1], k, length);
+                       };
+                       return out;
+                     }});
 
 // a 10 kg block on a vertical slider hanging from the world by the spring, 0.3 m below its free
 // length: omega = sqrt(k/m)
@@ -88,11 +95,15 @@ mechanics:
 )" + spring;
 }
 
-const std::string kSpring = "    spring: {between: [{point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], k: 4000, free_length: 1}\n";
+const std::string kSpring =
+    "    spring: {between: [{point: [0, 0, 0]}, {body: block, point: [0, 0, 0]}], k: 4000, "
+    "free_length: 1}\n";
 
 }  // namespace
 
-TEST_CASE("a registered provider is read, built into the system's one list, and seen by the stiffness estimate") {
+TEST_CASE(
+    "a registered provider is read, built into the system's one list, and seen by the stiffness "
+    "estimate") {
   testing::SceneDir dir;
   auto r = scene::loadScene(dir.write("s.yaml", hanging(kSpring)));
   INFO(r.diagnostics.report());
@@ -125,7 +136,8 @@ TEST_CASE("a registered provider is read, built into the system's one list, and 
   CHECK(found);
 }
 
-TEST_CASE("a registered provider in an included, placed fragment: names resolved, world points placed") {
+TEST_CASE(
+    "a registered provider in an included, placed fragment: names resolved, world points placed") {
   testing::SceneDir dir;
   dir.write("rig.yaml", R"(schema_version: 1
 mechanics:
@@ -154,15 +166,20 @@ components:
 
 TEST_CASE("a registered provider's problems are reported at their nodes") {
   testing::SceneDir dir;
-  const auto unknown = scene::loadScene(dir.write(
-      "a.yaml", hanging("    spring: {between: [{point: [0, 0, 0]}, {body: blok, point: [0, 0, 0]}], k: 4000, free_length: 1}\n")));
+  const auto unknown = scene::loadScene(
+      dir.write("a.yaml", hanging("    spring: {between: [{point: [0, 0, 0]}, {body: blok, point: "
+                                  "[0, 0, 0]}], k: 4000, free_length: 1}\n")));
   CHECK_FALSE(unknown.scene);
   CHECK_THAT(unknown.diagnostics.report(), Contains("unknown body 'blok'") && Contains("block"));
   const auto key = scene::loadScene(dir.write(
-      "b.yaml", hanging("    spring: {between: [{point: [0, 0, 0]}, {body: block}], k: -1, free_lenght: 1}\n")));
+      "b.yaml",
+      hanging(
+          "    spring: {between: [{point: [0, 0, 0]}, {body: block}], k: -1, free_lenght: 1}\n")));
   CHECK_FALSE(key.scene);
-  CHECK_THAT(key.diagnostics.report(), Contains("b.yaml:") && Contains("free_lenght") && Contains("free_length"));
-  const auto misspelt = scene::loadScene(dir.write("c.yaml", hanging(kSpring) + "  test_sprngs: {}\n"));
+  CHECK_THAT(key.diagnostics.report(),
+             Contains("b.yaml:") && Contains("free_lenght") && Contains("free_length"));
+  const auto misspelt =
+      scene::loadScene(dir.write("c.yaml", hanging(kSpring) + "  test_sprngs: {}\n"));
   CHECK_THAT(misspelt.diagnostics.report(), Contains("test_sprngs") && Contains("test_springs"));
 }
 

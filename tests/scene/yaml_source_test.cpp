@@ -38,9 +38,11 @@ TEST_CASE("a scene file is one YAML document, a mapping, in a regular file of at
 
 TEST_CASE("an include of a device is refused at the include, not read") {
   testing::SceneDir dir;
-  const auto r = scene::loadScene(dir.write("s.yaml", "schema_version: 1\ncomponents:\n  x: {include: /dev/urandom}\n"));
+  const auto r = scene::loadScene(
+      dir.write("s.yaml", "schema_version: 1\ncomponents:\n  x: {include: /dev/urandom}\n"));
   CHECK_FALSE(r.scene);
-  CHECK_THAT(r.diagnostics.report(), Catch::Contains("s.yaml:3:16") && Catch::Contains("not a regular file"));
+  CHECK_THAT(r.diagnostics.report(),
+             Catch::Contains("s.yaml:3:16") && Catch::Contains("not a regular file"));
 }
 
 TEST_CASE("a YAML alias bomb is refused at once, not expanded") {
@@ -53,5 +55,6 @@ TEST_CASE("a YAML alias bomb is refused at once, not expanded") {
     bomb += "]\n";
   }
   testing::SceneDir dir;
-  CHECK_THAT(errors(dir.write("bomb.yaml", bomb)), Catch::Contains("expands to more than 1000000 nodes"));
+  CHECK_THAT(errors(dir.write("bomb.yaml", bomb)),
+             Catch::Contains("expands to more than 1000000 nodes"));
 }

@@ -25,6 +25,8 @@ int runCommand(const RunArgs& a) {
   opt.until = a.until >= 0 ? a.until : scene->until;
   opt.trace = a.traceGiven ? a.trace : scene->trace;
   opt.maxTransitionsPerInstant = a.maxTransitionsPerInstant;
+  opt.checkpointEvery = a.checkpointEvery;
+  opt.restartFrom = a.restart;
   if (a.report && !(scene->record.interval > 0)) {
     std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
                          "docs/report.md)\n", a.scene.c_str());
@@ -103,6 +105,10 @@ int runCommand(const RunArgs& a) {
     const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
     if (status == kOk && alarmed && a.failOn == "alarm") return kAlarm;
     return status;
+  } catch (const devs::CheckpointError& e) {
+    printer.finish();
+    std::fprintf(stderr, "%s\nnothing was simulated\n", e.what());
+    return kInvalidInput;
   } catch (const devs::SimulationError& e) {
     printer.finish();
     std::fprintf(stderr, "numerical failure: %s\neverything recorded until then is in %s\n",

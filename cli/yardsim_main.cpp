@@ -55,6 +55,11 @@ int yardsimMain(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   runCmd->add_option("--fail-on", run.failOn, "alarm: exit 4 when a rope passed its MBL or a watch crossed")
       ->check(CLI::IsMember({"alarm"}));
+  runCmd->add_option("--checkpoint-every", run.checkpointEvery,
+                     "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
+      ->check(finiteNonNegative("s"));
+  runCmd->add_option("--restart", run.restart,
+                     "continue from a checkpoint of this scene (OUTDIR gets what follows it)");
 
   std::string reportDir;
   bool reportQuiet = false;

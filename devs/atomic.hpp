@@ -8,6 +8,7 @@
 #include <string_view>
 #include <utility>
 
+#include "devs/checkpoint_archive.hpp"
 #include "devs/model.hpp"
 #include "devs/time.hpp"
 
@@ -46,6 +47,17 @@ class AtomicBase : public Model {
   // () => "devs", or "dtss" for discrete-time models (the Chrome trace draws their steps as spans)
   virtual std::string_view kind() const { return "devs"; }
 
+  // Checkpoints (docs/scenes.md): only between event times.
+  // () => whether the state can be archived (its type has a StateCodec)
+  virtual bool canCheckpoint() const { return false; }
+  // (archive) => the state, and whatever else the results depend on, appended
+  virtual void saveCheckpoint(CheckpointWriter& w) const;
+  // (archive at this model's record) => the state and the rest restored exactly
+  virtual void loadCheckpoint(CheckpointReader& r);
+  // () => a checkpoint was just written: what could not be archived (an adaptive integrator's
+  // history) restarts here, so that the run goes on exactly as a restart from it would
+  virtual void afterCheckpoint() {}
+
   // Index in the Simulator's flat list of atomics (set when flattened).
   std::uint32_t simIndex() const { return simIndex_; }
 
@@ -66,6 +78,24 @@ class Atomic : public AtomicBase {
 
   void writeState(std::string& out) const override { TraceFormat<S>::write(out, state_); }
 
+  bool canCheckpoint() const override { return HasStateCodec<S>; }
+  void saveCheckpoint(CheckpointWriter& w) const override {
+    if constexpr (HasStateCodec<S>) {
+      devs::save(w, state_);
+      saveWorkspace(w);
+    } else {
+      AtomicBase::saveCheckpoint(w);
+    }
+  }
+  void loadCheckpoint(CheckpointReader& r) override {
+    if constexpr (HasStateCodec<S>) {
+      devs::load(r, state_);
+      loadWorkspace(r);
+    } else {
+      AtomicBase::loadCheckpoint(r);
+    }
+  }
+
  protected:
   // What a model defines: time advance, output, and the transitions, as functions of S.
   virtual Time timeAdvance(const S& s) const = 0;
@@ -74,6 +104,10 @@ class Atomic : public AtomicBase {
   virtual void externalTransition(S& s, Time e) const = 0;
   // (initialize only) => the state, for models that must set it up at the start time
   S& mutableState() { return state_; }
+  // (archive) => what besides the state the results depend on (a cache the next step reuses);
+  // (archive) => it restored. Both default to nothing.
+  virtual void saveWorkspace(CheckpointWriter& /*w*/) const {}
+  virtual void loadWorkspace(CheckpointReader& /*r*/) {}
   // Default confluent rule: internal first, then external with e = 0.
   virtual void confluentTransition(S& s, Time e) const {
     (void)e;

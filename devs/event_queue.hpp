@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "devs/checkpoint_archive.hpp"
 #include "devs/time.hpp"
 
 namespace yardsim::devs {
@@ -20,6 +21,10 @@ class EventQueue {
   // (model, tn) => scheduled at tn (inserted, moved, or removed when tn is infinite)
   void schedule(std::uint32_t model, Time tn);
   Time tn(std::uint32_t model) const { return tn_[model]; }
+  // (archive) => the heap exactly as it is (ties pop in the same order after a restore)
+  void save(CheckpointWriter& w) const;
+  // (archive of a queue over as many models) => that heap; CheckpointError when it is not one
+  void load(CheckpointReader& r);
 
  private:
   static constexpr std::uint32_t kAbsent = 0xffffffffu;

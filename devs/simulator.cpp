@@ -160,6 +160,56 @@ bool Simulator::step() {
   return true;
 }
 
+const AtomicBase* Simulator::firstUncheckpointable() const {
+  for (const AtomicBase* a : flat_.atomics)
+    if (!a->canCheckpoint()) return a;
+  return nullptr;
+}
+
+void Simulator::saveCheckpoint(CheckpointWriter& w) {
+  // (simulator) => clock, counters, queue, then per atomic its path and state
+  w.section("simulator");
+  devs::save(w, t_);
+  devs::save(w, tl_);
+  for (const std::uint64_t c : {stats_.eventTimes, stats_.internal, stats_.external,
+                                stats_.confluent, stats_.messages, atInstant_})
+    w.i64(static_cast<std::int64_t>(c));
+  devs::save(w, lastInstant_);
+  queue_.save(w);
+  w.list(flat_.atomics.size());
+  for (const AtomicBase* a : flat_.atomics) {
+    w.str(a->path());
+    a->saveCheckpoint(w);
+  }
+  for (AtomicBase* a : flat_.atomics) a->afterCheckpoint();
+}
+
+void Simulator::loadCheckpoint(CheckpointReader& r) {
+  r.section("simulator");
+  devs::load(r, t_);
+  devs::load(r, tl_);
+  if (tl_.size() != flat_.atomics.size())
+    throw CheckpointError("the checkpoint holds " + std::to_string(tl_.size()) +
+                          " atomic models, this scene " + std::to_string(flat_.atomics.size()));
+  for (std::uint64_t* c : {&stats_.eventTimes, &stats_.internal, &stats_.external,
+                           &stats_.confluent, &stats_.messages, &atInstant_})
+    *c = static_cast<std::uint64_t>(r.i64());
+  devs::load(r, lastInstant_);
+  queue_.load(r);
+  if (r.list() != flat_.atomics.size())
+    throw CheckpointError("the checkpoint's model list differs from this scene's");
+  for (AtomicBase* a : flat_.atomics) {
+    const std::string path = r.str();
+    if (path != a->path())
+      throw CheckpointError("the checkpoint holds model '" + path + "' where this scene has '" +
+                            a->path() + "'");
+    a->loadCheckpoint(r);
+  }
+  // (restored run) => listeners told of the start, without the initial states
+  started_ = true;
+  for (Listener* l : listeners_) l->onStart(t_, flat_.atomics);
+}
+
 void Simulator::runUntil(Time tEnd) {
   start();
   while (!queue_.empty() && queue_.topTime() <= tEnd) step();

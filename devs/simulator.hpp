@@ -59,6 +59,17 @@ class Simulator {
   void setInstantLimit(std::uint64_t n) { instantLimit_ = n; }
   std::span<AtomicBase* const> atomics() const { return flat_.atomics; }
 
+  // Checkpoints (between event times only: after step() or runUntil() returned).
+  // () => the first model whose state cannot be archived, or nullptr when all can
+  const AtomicBase* firstUncheckpointable() const;
+  // (archive) => the clock, the event queue, the counters and every atomic's state appended;
+  // then each atomic's afterCheckpoint() (what it could not archive restarts here)
+  void saveCheckpoint(CheckpointWriter& w);
+  // (archive written by saveCheckpoint for the same model) => the run continues from there;
+  // listeners get onStart but no initial state records (the trace goes on where it stopped).
+  // Throws CheckpointError when the models differ (count or paths) or the archive is broken.
+  void loadCheckpoint(CheckpointReader& r);
+
  private:
   void start();  // start hooks, once
   void reschedule(std::uint32_t i, Time t);

@@ -47,6 +47,9 @@ class RecordSink : public Listener {
   void onTransition(Time t, const AtomicBase& m, Transition kind, Time e) override;
   void onState(Time t, const AtomicBase& m) override;
   void onEnd(Time t) override;
+  // () => the sequence number of the next record; (n) => a restored run's trace goes on at n
+  std::uint64_t sequence() const { return seq_; }
+  void continueAt(std::uint64_t n) { seq_ = n; }
 
  protected:
   virtual void write(const TraceRecord& r) = 0;

@@ -175,6 +175,37 @@ class Atomic : public devs::Atomic<State<X>> {
 }  // namespace yardsim::dtss
 
 namespace yardsim::devs {
+// A DTSS state in a checkpoint: the committed and the look-ahead state, their times, what the
+// look-ahead reaches and the step count (the model's X needs a StateCodec of its own)
+template <class X>
+  requires HasStateCodec<X>
+struct StateCodec<dtss::State<X>> {
+  static void save(CheckpointWriter& w, const dtss::State<X>& s) {
+    w.section("dtss");
+    devs::save(w, s.x);
+    devs::save(w, s.tx);
+    devs::save(w, s.xNext);
+    devs::save(w, s.tNext);
+    devs::save(w, s.reached.grid);
+    devs::save(w, s.reached.timeEvent);
+    devs::save(w, s.reached.stateEvent);
+    devs::save(w, s.reached.coincident);
+    devs::save(w, s.steps);
+  }
+  static void load(CheckpointReader& r, dtss::State<X>& s) {
+    r.section("dtss");
+    devs::load(r, s.x);
+    devs::load(r, s.tx);
+    devs::load(r, s.xNext);
+    devs::load(r, s.tNext);
+    devs::load(r, s.reached.grid);
+    devs::load(r, s.reached.timeEvent);
+    devs::load(r, s.reached.stateEvent);
+    devs::load(r, s.reached.coincident);
+    devs::load(r, s.steps);
+  }
+};
+
 // A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}
 template <class X>
 struct TraceFormat<dtss::State<X>> {

@@ -2,6 +2,7 @@
 // The unstretched length of a rope under a winch: a piecewise-linear function of time set by
 // payout-rate set-points at exact times, evaluated analytically (no integration, no drift) and
 // held at a minimum length while hauling in. Used by the wire rope and the equalizer.
+#include <utility>
 #include <vector>
 
 namespace yardsim::forces {
@@ -21,12 +22,18 @@ class Winch {
   double rate(double t) const;
   double minLength() const { return minLength_; }
 
- private:
+  // One piece of L0: from time t on, L0(tau) = l0 + rate (tau - t) until the next piece.
   struct SetPoint {
     double t;     // s
     double l0;    // L0(t), m
     double rate;  // m/s
   };
+  // () => every piece so far, in time order (what a checkpoint carries)
+  const std::vector<SetPoint>& history() const { return setPoints_; }
+  // (pieces of history() of a winch with the same L0 and minimum length) => this winch as it was
+  void restoreHistory(std::vector<SetPoint> pieces) { setPoints_ = std::move(pieces); }
+
+ private:
   // (t) => the set-point in force at t (the last one with t_k <= t, else the first)
   const SetPoint& active(double t) const;
 

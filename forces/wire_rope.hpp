@@ -30,6 +30,9 @@ class WireRope final : public ForceProvider {
   // (t) => unstretched length of one part L0(t), m; and its rate, m/s
   double unstretchedLength(double t) const { return winch_.length(t); }
   double payoutRate(double t) const { return winch_.rate(t); }
+  // the winch itself (its history, for checkpoints)
+  const Winch& winch() const { return winch_; }
+  Winch& winch() { return winch_; }
 
   // (stage) => tension of one part T >= 0, N; the end blocks feel n T
   double tension(const Stage& s) const;

@@ -31,6 +31,8 @@ class AlarmMonitor final : public devs::Listener {
   void onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& port) override;
   // every (element, kind) seen, in order of first occurrence
   const std::vector<Alarm>& alarms() const { return alarms_; }
+  // (alarms of the run a checkpoint was taken in) => counted on from there (restarts)
+  void restore(std::vector<Alarm> alarms) { alarms_ = std::move(alarms); }
   // the number of distinct alarms of severity "alarm"
   std::size_t alarmCount() const;
 

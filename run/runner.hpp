@@ -32,6 +32,12 @@ struct RunOptions {
   std::function<void(const Alarm&)> onAlarm = {};  // at the first occurrence of each alarm or notice
   // more transitions than this at one simulated time stop the run (devs::Simulator::setInstantLimit)
   std::uint64_t maxTransitionsPerInstant = 1000000;
+  // checkpoints (docs/scenes.md): every this many simulated seconds (0: none), written to
+  // OUTDIR/checkpoints/t000050.000.ckpt after every event up to that time
+  double checkpointEvery = 0.0;
+  // a checkpoint of this scene to continue from (empty: start at t = 0); OUTDIR then holds the
+  // rows, trace records and replay frames after the checkpoint's time
+  std::filesystem::path restartFrom = {};
 };
 
 struct RunResult {
@@ -44,7 +50,9 @@ struct RunResult {
 
 // (scene, its assembled model, options) => the run: OUTDIR/timeseries.csv and the traces asked
 // for, OUTDIR/replay.glb (the bodies' poses on the record grid) when the scene has bodies and
-// records, and OUTDIR/run.json; throws what the simulation throws, after writing what it has
+// records, and OUTDIR/run.json; throws what the simulation throws, after writing what it has.
+// A checkpoint that cannot be applied (another scene or version, a damaged file, a model type
+// without a state codec) throws devs::CheckpointError before anything is simulated.
 RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& options);
 
 }  // namespace yardsim::run

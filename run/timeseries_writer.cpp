@@ -22,7 +22,8 @@ void appendCsvNumber(std::string& out, double value) {
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,
-                                   std::vector<Channel> channels)
+                                   std::vector<Channel> channels,
+                                   const std::string& restartedFrom)
     : out_(file), channels_(std::move(channels)), lastFlush_(std::chrono::steady_clock::now()) {
   if (!out_) throw std::runtime_error("cannot write '" + file.string() + "'");
   out_ << "# yardsim " << kVersion << "\n"
@@ -30,8 +31,9 @@ TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scen
        << "# scene_sha256 " << scene.sha256 << "\n"
        << "# integrator " << scene.integrator << "\n"
        << "# step " << scene.dt << "\n"
-       << "# seed " << scene.seed << "\n"
-       << "time[s]";
+       << "# seed " << scene.seed << "\n";
+  if (!restartedFrom.empty()) out_ << "# restarted_from " << restartedFrom << "\n";
+  out_ << "time[s]";
   for (const auto& c : channels_) out_ << ',' << c.column();
   out_ << '\n';
   out_.flush();

@@ -19,8 +19,10 @@ using scene::Scene;
 
 class TimeseriesWriter {
  public:
+  // (file, scene, channels, the checkpoint a restarted run continues from: a
+  // "# restarted_from <file> at <t> s" line in the metadata) => the header written
   TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,
-                   std::vector<Channel> channels);
+                   std::vector<Channel> channels, const std::string& restartedFrom = {});
   ~TimeseriesWriter();
   // (t) => one row: t and every channel read now
   void sample(double t);

@@ -20,6 +20,7 @@ class AdamsBashforth final : public Integrator {
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
   std::string_view name() const override;
   void reset() override { count_ = 0; }
+  bool carriesHistory() const override { return true; }
   int order() const { return order_; }
 
  private:

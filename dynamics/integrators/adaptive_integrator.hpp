@@ -31,6 +31,7 @@ class AdaptiveIntegrator : public Integrator {
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) final;
   bool canFindRoots() const final { return true; }
   void reset() final { initialised_ = false; }
+  bool carriesHistory() const override { return true; }
 
   /// Which part of dy/dt a right-hand side returns (IMEX splits kinematics from dynamics).
   enum class Part { All, Kinematic, Dynamic };

@@ -41,6 +41,7 @@ class GeneralizedAlpha final : public Integrator {
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
   std::string_view name() const override { return name_; }
   void reset() override { started_ = false; }
+  bool carriesHistory() const override { return true; }
   const GeneralizedAlphaParameters& parameters() const { return p_; }
   /// Lagrange multipliers of the last step (size rows of the loops).
   const Eigen::VectorXd& multipliers() const { return lambda_; }

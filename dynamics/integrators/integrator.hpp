@@ -67,6 +67,10 @@ class Integrator {
   /// step starts afresh. Methods also restart by themselves when a step does not begin where
   /// the previous one ended (an external event changed the state, or a step is re-taken).
   virtual void reset() {}
+  /// Whether the method carries a history from step to step (multistep values, algorithmic
+  /// accelerations, an adaptive solver's order and step) that reset() forgets; a checkpoint is a
+  /// restart point of that history (docs/scenes.md, checkpoints).
+  virtual bool carriesHistory() const { return false; }
   /// Whether step() can stop at state events (root finding; the SUNDIALS methods).
   virtual bool canFindRoots() const { return false; }
   void findRoots(bool on) { roots_ = on && canFindRoots(); }

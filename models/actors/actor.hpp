@@ -8,6 +8,7 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "devs/atomic.hpp"
@@ -32,6 +33,17 @@ struct ActorState {
   std::set<std::string> finished;  // actors seen finishing (paths)
 };
 std::ostream& operator<<(std::ostream& os, const ActorState& s);
+
+}  // namespace yardsim::models
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::ActorState> : FieldCodec<models::ActorState> {
+  static auto fields(auto& s) { return std::tie(s.phase, s.sigma, s.clock, s.finished); }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models {
 
 class Actor : public devs::Atomic<ActorState> {
  public:

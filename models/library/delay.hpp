@@ -14,6 +14,17 @@ struct DelayState {
 };
 std::ostream& operator<<(std::ostream& os, const DelayState& s);
 
+}  // namespace yardsim::models::library
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::library::DelayState> : FieldCodec<models::library::DelayState> {
+  static auto fields(auto& s) { return std::tie(s.sigma, s.held); }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models::library {
+
 class Delay final : public devs::Atomic<DelayState> {
  public:
   Delay(std::string name, devs::Time delay);

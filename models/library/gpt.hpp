@@ -22,6 +22,17 @@ struct GeneratorState {
 };
 std::ostream& operator<<(std::ostream& os, const GeneratorState& s);
 
+}  // namespace yardsim::models::library
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::library::GeneratorState> : FieldCodec<models::library::GeneratorState> {
+  static auto fields(auto& s) { return std::tie(s.sigma, s.next, s.active); }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models::library {
+
 class Generator final : public devs::Atomic<GeneratorState>, public Observable {
  public:
   Generator(std::string name, Time period);
@@ -44,6 +55,17 @@ struct ProcessorState {
   int job = 0;  // job in service, 0 when idle
 };
 std::ostream& operator<<(std::ostream& os, const ProcessorState& s);
+
+}  // namespace yardsim::models::library
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::library::ProcessorState> : FieldCodec<models::library::ProcessorState> {
+  static auto fields(auto& s) { return std::tie(s.sigma, s.job); }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models::library {
 
 class Processor final : public devs::Atomic<ProcessorState>, public Observable {
  public:
@@ -71,6 +93,19 @@ struct TransducerState {
   std::vector<Time> arrivals;  // arrival time by job id - 1
 };
 std::ostream& operator<<(std::ostream& os, const TransducerState& s);
+
+}  // namespace yardsim::models::library
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::library::TransducerState> : FieldCodec<models::library::TransducerState> {
+  static auto fields(auto& s) {
+    return std::tie(s.clock, s.sigma, s.arrived, s.solved, s.turnaroundSum, s.arrivals);
+  }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models::library {
 
 class Transducer final : public devs::Atomic<TransducerState>, public Observable {
  public:

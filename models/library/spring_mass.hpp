@@ -6,6 +6,7 @@
 #include <array>
 #include <ostream>
 #include <string>
+#include <tuple>
 
 #include "dtss/atomic.hpp"
 #include "models/channels.hpp"
@@ -18,6 +19,17 @@ struct SpringMassState {
   double force = 0.0;  // N, external, set by input
 };
 std::ostream& operator<<(std::ostream& os, const SpringMassState& s);
+
+}  // namespace yardsim::models::library
+
+namespace yardsim::devs {
+template <>
+struct StateCodec<models::library::SpringMassState> : FieldCodec<models::library::SpringMassState> {
+  static auto fields(auto& s) { return std::tie(s.x, s.v, s.force); }
+};
+}  // namespace yardsim::devs
+
+namespace yardsim::models::library {
 
 enum class StepMethod { Euler, SymplecticEuler, Rk4 };
 

@@ -314,4 +314,48 @@ forces::Stage MultibodyModel::committedStage() const {
   return forces::Stage{s.tx, system_.model(), kinematicsOf(s.x), s.x.q, s.x.v};
 }
 
+void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
+  // (providers, caches) => each rope's winch pieces; the power the next step starts from
+  w.section("multibody");
+  w.list(system_.ropes().size());
+  for (const auto& rope : system_.ropes()) {
+    const auto& pieces = rope->winch().history();
+    w.list(pieces.size());
+    for (const auto& p : pieces) {
+      w.f64(p.t);
+      w.f64(p.l0);
+      w.f64(p.rate);
+    }
+  }
+  w.boolean(ws_.powerState == &state().xNext);
+  w.f64(ws_.powerTime);
+  w.f64(ws_.power);
+}
+
+void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
+  r.section("multibody");
+  if (r.list() != system_.ropes().size())
+    throw devs::CheckpointError("multibody '" + path() + "': the checkpoint has another number of ropes");
+  for (const auto& rope : system_.ropes()) {
+    std::vector<forces::Winch::SetPoint> pieces(r.list());
+    for (auto& p : pieces) {
+      p.t = r.f64();
+      p.l0 = r.f64();
+      p.rate = r.f64();
+    }
+    rope->winch().restoreHistory(std::move(pieces));
+  }
+  // (caches of the run that wrote it) => the same reuse of the power at the next step
+  ws_.powerState = r.boolean() ? &state().xNext : nullptr;
+  ws_.powerTime = r.f64();
+  ws_.power = r.f64();
+  ws_.accelTime = ws_.viewTime = ws_.reactionTime = -1.0;
+  ws_.viewState = nullptr;
+  ws_.integrator->reset();
+}
+
+void MultibodyModel::afterCheckpoint() {
+  if (ws_.integrator->carriesHistory()) ws_.integrator->reset();
+}
+
 }  // namespace yardsim::models

@@ -23,20 +23,10 @@
 #include "mechanics/system.hpp"
 #include "models/channels.hpp"
 #include "models/multibody/messages.hpp"
+#include "models/multibody/multibody_state.hpp"
 #include "models/replay.hpp"
 
 namespace yardsim::models {
-
-// The DTSS state, a plain value: configuration q and velocity v (joint coordinates, SI), the
-// set-points in force, the work of the non-conservative forces and each rope part's peak tension.
-struct MultibodyState {
-  Eigen::VectorXd q, v;
-  mechanics::SetPoints setPoints;
-  double work = 0.0;                // J: integral of the power of non-conservative forces
-  std::vector<double> peakTension;  // N per rope part: the largest tension at any step so far
-  std::vector<double> peakTime;     // s: when each rope's peak was reached
-};
-std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
 struct MultibodyOptions {
   double dt = 1e-3;  // s: the DTSS step, and the integrator's (integrator.dt is ignored)
@@ -100,6 +90,12 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void onStateEvent(MultibodyState& x, devs::Time t, int event) const override;
   devs::Time nextTimeEvent(const MultibodyState& x, devs::Time t) const override;
   void onTimeEvent(MultibodyState& x, devs::Time t) const override;
+  // checkpoints: the winches' histories and the power carried into the next step; an
+  // integrator with a history restarts it at the checkpoint (in the run that writes it and in
+  // the run restarted from it alike)
+  void saveWorkspace(devs::CheckpointWriter& w) const override;
+  void loadWorkspace(devs::CheckpointReader& r) override;
+  void afterCheckpoint() override;
 
  private:
   // (initial state) => static equilibrium, or a NumericalError saying why not

@@ -10,8 +10,12 @@ CheckpointError noCodec(const AtomicBase& m) {
 }
 }  // namespace
 
-void AtomicBase::saveCheckpoint(CheckpointWriter& /*w*/) const { throw noCodec(*this); }
+void AtomicBase::saveCheckpoint(CheckpointWriter& /*w*/) const {
+  throw noCodec(*this);
+}
 
-void AtomicBase::loadCheckpoint(CheckpointReader& /*r*/) { throw noCodec(*this); }
+void AtomicBase::loadCheckpoint(CheckpointReader& /*r*/) {
+  throw noCodec(*this);
+}
 
 }  // namespace yardsim::devs

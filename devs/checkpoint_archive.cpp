@@ -10,13 +10,20 @@ constexpr char kF64 = 'd', kI64 = 'i', kBool = 'b', kStr = 's', kList = 'l', kSe
 // (tag) => its name in messages
 std::string_view tagName(char tag) {
   switch (tag) {
-    case kF64: return "a number";
-    case kI64: return "an integer";
-    case kBool: return "a boolean";
-    case kStr: return "a string";
-    case kList: return "a list";
-    case kSection: return "a section";
-    default: return "an unknown tag";
+    case kF64:
+      return "a number";
+    case kI64:
+      return "an integer";
+    case kBool:
+      return "a boolean";
+    case kStr:
+      return "a string";
+    case kList:
+      return "a list";
+    case kSection:
+      return "a section";
+    default:
+      return "an unknown tag";
   }
 }
 

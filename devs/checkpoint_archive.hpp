@@ -99,7 +99,7 @@ struct FieldCodec {
 };
 
 template <class T>
-  requires std::is_arithmetic_v<T> || std::is_enum_v<T>
+requires std::is_arithmetic_v<T> || std::is_enum_v<T>
 struct StateCodec<T> {
   static void save(CheckpointWriter& w, const T& v) {
     if constexpr (std::is_same_v<T, bool>)

@@ -49,7 +49,8 @@ void writeCheckpointFile(const std::filesystem::path& file, const std::string& f
 
 namespace {
 // (stream, key) => the value of the header line "key value", else CheckpointError
-std::string headerLine(std::istream& in, const std::filesystem::path& file, const std::string& key) {
+std::string headerLine(std::istream& in, const std::filesystem::path& file,
+                       const std::string& key) {
   std::string line;
   if (!std::getline(in, line) || line.rfind(key + " ", 0) != 0)
     throw CheckpointError(file.string() + ": not a yardsim checkpoint, or a truncated one (no '" +
@@ -65,8 +66,8 @@ CheckpointFile readCheckpointFile(const std::filesystem::path& file,
   // (header) => format, version and scene checked before the payload is read
   const std::string format = headerLine(in, file, "YARDSIM-CHECKPOINT");
   if (format != std::to_string(kCheckpointFormat))
-    throw CheckpointError(file.string() + ": checkpoint format " + format + ", this yardsim reads " +
-                          std::to_string(kCheckpointFormat));
+    throw CheckpointError(file.string() + ": checkpoint format " + format +
+                          ", this yardsim reads " + std::to_string(kCheckpointFormat));
   const std::string version = headerLine(in, file, "yardsim");
   if (version != kVersion)
     throw CheckpointError(file.string() + ": written by yardsim " + version + ", this is yardsim " +
@@ -91,10 +92,13 @@ CheckpointFile readCheckpointFile(const std::filesystem::path& file,
   out.payload.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   if (out.payload.size() != n)
     throw CheckpointError(file.string() + ": the checkpoint holds " +
-                          std::to_string(out.payload.size()) + " bytes of state where its header "
-                          "announces " + bytes + " (a truncated file?)");
+                          std::to_string(out.payload.size()) +
+                          " bytes of state where its header "
+                          "announces " +
+                          bytes + " (a truncated file?)");
   if (scene::sha256Hex(out.payload) != digest)
-    throw CheckpointError(file.string() + ": the checkpoint's state does not match its SHA-256 "
+    throw CheckpointError(file.string() +
+                          ": the checkpoint's state does not match its SHA-256 "
                           "(an altered or damaged file)");
   return out;
 }

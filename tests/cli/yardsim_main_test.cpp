@@ -342,3 +342,28 @@ mechanics:
   CHECK(r.out.find("did you mean 'hoist.tension'?") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir.path() / "out/timeseries.csv"));
 }
+
+TEST_CASE("yardsim run --checkpoint-every and --restart continue a run, and another scene's checkpoint is exit 1") {
+  yardsim::testing::SceneDir dir;
+  const auto first = runYardsim("run " + kGpt + " -o " + dir.file("a") + " --checkpoint-every 5 --quiet");
+  INFO(first.out);
+  REQUIRE(first.status == 0);
+  const std::string ckpt = dir.file("a/checkpoints/t000010.000.ckpt");
+  REQUIRE(std::filesystem::exists(ckpt));
+  const auto again = runYardsim("run " + kGpt + " -o " + dir.file("b") + " --restart " + ckpt + " --quiet");
+  INFO(again.out);
+  CHECK(again.status == 0);
+  const yardsim::testing::CsvFile whole(dir.file("a/timeseries.csv"));
+  const yardsim::testing::CsvFile rest(dir.file("b/timeseries.csv"));
+  REQUIRE(!rest.rows.empty());
+  CHECK(rest.rows.front()[0] > 10.0);
+  CHECK(rest.rows.back() == whole.rows.back());
+
+  const std::string pendulum = std::string(YARDSIM_SOURCE_DIR) + "/examples/double_pendulum/scene.yaml";
+  const auto wrong = runYardsim("run " + pendulum + " -o " + dir.file("c") + " --restart " + ckpt + " --quiet");
+  CHECK(wrong.status == 1);
+  CHECK_THAT(wrong.out, Catch::Contains("written for another scene") && Catch::Contains("nothing was simulated"));
+  const auto missing = runYardsim("run " + kGpt + " -o " + dir.file("d") + " --restart " + dir.file("none.ckpt"));
+  CHECK(missing.status == 1);
+  CHECK_THAT(missing.out, Catch::Contains("cannot open the checkpoint"));
+}

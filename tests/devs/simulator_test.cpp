@@ -206,6 +206,64 @@ TEST_CASE("atomic states are plain values that can be checkpointed and restored"
   CHECK(col.state().bags.size() == 1);
 }
 
+TEST_CASE("a simulator restored from a checkpoint goes on exactly as the one that wrote it") {
+  // (gpt run to t = 7.25, archived) => a fresh model restored from it gives the same records
+  GptParameters p;
+  auto whole = makeGpt(p);
+  Simulator a(*whole);
+  RecordCollector recA;
+  a.addListener(recA);
+  a.runUntil(7.25);
+  REQUIRE(a.firstUncheckpointable() == nullptr);
+  devs::CheckpointWriter w;
+  a.saveCheckpoint(w);
+  const std::size_t before = recA.records.size();
+  a.run();
+  const std::vector<Record> after(recA.records.begin() + static_cast<std::ptrdiff_t>(before),
+                                  recA.records.end());
+  REQUIRE(!after.empty());
+
+  auto fresh = makeGpt(p);
+  Simulator b(*fresh);
+  RecordCollector recB;
+  b.addListener(recB);
+  devs::CheckpointReader r(w.bytes());
+  b.loadCheckpoint(r);
+  CHECK(r.atEnd());
+  CHECK(b.time() == 7.25);
+  b.run();
+  REQUIRE(recB.records.size() == after.size());
+  for (std::size_t i = 0; i < after.size(); ++i) {
+    CHECK(recB.records[i].t == after[i].t);
+    CHECK(recB.records[i].model == after[i].model);
+    CHECK(recB.records[i].kind == after[i].kind);
+    CHECK(recB.records[i].port == after[i].port);
+    CHECK(recB.records[i].value == after[i].value);
+  }
+  CHECK(b.stats().internal == a.stats().internal);
+  CHECK(b.stats().messages == a.stats().messages);
+}
+
+TEST_CASE("a checkpoint is refused by another model, and a state without a codec is named") {
+  GptParameters p;
+  auto gpt = makeGpt(p);
+  Simulator a(*gpt);
+  a.runUntil(3.0);
+  devs::CheckpointWriter w;
+  a.saveCheckpoint(w);
+  // (another hierarchy) => refused, naming a model that differs
+  Coupled other("root");
+  other.add<Emitter>("gen", std::vector<devs::Time>{1.0});
+  Simulator b(other);
+  devs::CheckpointReader r(w.bytes());
+  CHECK_THROWS_AS(b.loadCheckpoint(r), devs::CheckpointError);
+  // (a state type without a StateCodec) => named before anything is written
+  REQUIRE(b.firstUncheckpointable() != nullptr);
+  CHECK(b.firstUncheckpointable()->path() == "root.gen");
+  devs::CheckpointWriter w2;
+  CHECK_THROWS_WITH(b.saveCheckpoint(w2), Catch::Contains("'root.gen' cannot be checkpointed"));
+}
+
 namespace {
 // An illegitimate model: it never lets time advance (time advance 0 after every transition).
 struct Spin {

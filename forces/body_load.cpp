@@ -68,10 +68,11 @@ double BodyLoad::nextBreak(double t) const {
 LoadSample BodyLoad::at(double t, bool leftLimit) const {
   // (t) => linear between the samples around t; held outside
   if (samples_.empty()) return {t, Vector3::Zero(), Vector3::Zero()};
-  const auto next = leftLimit ? std::lower_bound(samples_.begin(), samples_.end(), t,
-                                                 [](const LoadSample& s, double x) { return s.t < x; })
-                              : std::upper_bound(samples_.begin(), samples_.end(), t,
-                                                 [](double x, const LoadSample& s) { return x < s.t; });
+  const auto next = leftLimit
+                        ? std::lower_bound(samples_.begin(), samples_.end(), t,
+                                           [](const LoadSample& s, double x) { return s.t < x; })
+                        : std::upper_bound(samples_.begin(), samples_.end(), t,
+                                           [](double x, const LoadSample& s) { return x < s.t; });
   if (next == samples_.begin()) return {t, samples_.front().force, samples_.front().moment};
   if (next == samples_.end()) return {t, samples_.back().force, samples_.back().moment};
   const LoadSample& a = *(next - 1);
@@ -82,7 +83,7 @@ LoadSample BodyLoad::at(double t, bool leftLimit) const {
 
 void BodyLoad::worldLoad(const Stage& s, Vector3& f_W, Vector3& m_W) const {
   // (t, frame, R_WB) => F and M in the world
-  const LoadSample x = at(s.t, s.t > stepStart_);
+  const LoadSample x = at(s.t, s.t > s.stepStart);
   if (frame_ == LoadFrame::World) {
     f_W = x.force;
     m_W = x.moment;
@@ -93,7 +94,8 @@ void BodyLoad::worldLoad(const Stage& s, Vector3& f_W, Vector3& m_W) const {
   }
 }
 
-void BodyLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+void BodyLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                          Eigen::VectorXd& /*tau*/) const {
   // (F_W, M_W, p_W) => spatial force about the world origin [p_W x F_W + M_W; F_W]
   Vector3 f_W, m_W;
   worldLoad(s, f_W, m_W);

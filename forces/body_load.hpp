@@ -42,11 +42,9 @@ class BodyLoad final : public ForceProvider {
   void set(double t, const dynamics::Vector3& force, const dynamics::Vector3& moment);
 
   // (t) => F and M in the load's frame at t: right-continuous at steps, or the value just before
-  // a step with leftLimit
+  // a step with leftLimit. A stage later than its Stage::stepStart sees the left limit, so a
+  // step that ends exactly on a jump integrates the value before it.
   LoadSample at(double t, bool leftLimit = false) const;
-  // (start of the integrator step being taken) => stages later than it see the left limit at a
-  // step, so a step that ends exactly on a jump integrates the value before it
-  void setStepStart(double t) { stepStart_ = t; }
   // (t) => the first sample time after t (a kink or a jump, to be landed on), or +inf
   double nextBreak(double t) const;
   int body() const { return body_; }
@@ -54,7 +52,7 @@ class BodyLoad final : public ForceProvider {
   LoadFrame frame() const { return frame_; }
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   // F_W . v_W(point) + M_W . omega_W, W
   double doPower(const Stage& s) const override;
 
@@ -66,7 +64,6 @@ class BodyLoad final : public ForceProvider {
   dynamics::Vector3 p_B_;
   LoadFrame frame_;
   std::vector<LoadSample> samples_;  // empty: zero load
-  double stepStart_ = std::numeric_limits<double>::infinity();  // none: right-continuous
 };
 
 }  // namespace yardsim::forces

@@ -48,17 +48,27 @@ double Equalizer::tension(const Stage& s) const {
   return ropeTension(properties_.ea, properties_.damping, strain(s, measure(s)));
 }
 
-void Equalizer::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+std::unique_ptr<ProviderScratch> Equalizer::makeScratch() const {
+  auto s = std::make_unique<Scratch>();
+  for (const RopePath& b : branches_) s->branches.push_back(b.makePoints());
+  return s;
+}
+
+void Equalizer::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                           Eigen::VectorXd& /*tau*/) const {
   // (branch paths) => total length and rate => one tension T => T along every branch
+  std::unique_ptr<ProviderScratch> temporary;
+  std::vector<PathPoints>& points = scratchOf<Scratch>(s, temporary).branches;
   PathMeasure m;
-  for (RopePath& b : branches_) {
-    const PathMeasure mb = b.update(s.data);
+  for (std::size_t j = 0; j < branches_.size(); ++j) {
+    const PathMeasure mb = branches_[j].update(s.data, points[j]);
     m.length += mb.length;
     m.rate += mb.rate;
   }
-  lastTension_ = ropeTension(properties_.ea, properties_.damping, strain(s, m));
-  if (lastTension_ == 0.0) return;
-  for (const RopePath& b : branches_) b.applyTension(lastTension_, f);
+  const double tension = ropeTension(properties_.ea, properties_.damping, strain(s, m));
+  if (tension == 0.0) return;
+  for (std::size_t j = 0; j < branches_.size(); ++j)
+    branches_[j].applyTension(tension, points[j], f);
 }
 
 double Equalizer::doPotentialEnergy(const Stage& s) const {

@@ -38,23 +38,24 @@ class Equalizer final : public ForceProvider {
   double branchLength(const Stage& s, int j) const { return branches_[j].measure(s.data).length; }
   bool isTaut(const Stage& s) const { return length(s) > unstretchedLength(s.t); }
 
-  // as on the wire rope: the tension of the last evaluate() (the integrator's last stage), N
-  double lastTension() const { return lastTension_; }
-  bool exceedsBreakingLoad() const {
-    return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad;
-  }
   // (stage) => its tension exceeds the minimum breaking load (never if none was given)
   bool exceedsBreakingLoad(const Stage& s) const {
     return properties_.breakingLoad && tension(s) > *properties_.breakingLoad;
   }
 
   int branchCount() const { return static_cast<int>(branches_.size()); }
-  // branch j's path, starting at the sheave point; after evaluate(), its world points
+  // branch j's path, starting at the sheave point
   const RopePath& branch(int j) const { return branches_[j]; }
   const RopeProperties& properties() const { return properties_; }
 
+  // the scratch: every branch's world points at the stage
+  struct Scratch final : ProviderScratch {
+    std::vector<PathPoints> branches;
+  };
+  std::unique_ptr<ProviderScratch> makeScratch() const override;
+
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   double doPotentialEnergy(const Stage& s) const override;
   double doPower(const Stage& s) const override;
 
@@ -66,7 +67,6 @@ class Equalizer final : public ForceProvider {
   RopeProperties properties_;
   std::vector<RopePath> branches_;
   Winch winch_;
-  double lastTension_ = 0.0;
 };
 
 }  // namespace yardsim::forces

@@ -15,19 +15,24 @@ FlowCoefficients::FlowCoefficients(std::vector<double> angles, std::vector<doubl
     : angles_(std::move(angles)), cx_(std::move(cx)), cy_(std::move(cy)), cmz_(std::move(cmz)) {
   const std::size_t n = angles_.size();
   if (n < 2 || cx_.size() != n || cy_.size() != n || cmz_.size() != n)
-    throw std::invalid_argument("flow coefficients: at least 2 angles, and cx, cy, cmz of the same length as the angles");
+    throw std::invalid_argument(
+        "flow coefficients: at least 2 angles, and cx, cy, cmz of the same length as the angles");
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(angles_[i]) || !std::isfinite(cx_[i]) || !std::isfinite(cy_[i]) || !std::isfinite(cmz_[i]))
-      throw std::invalid_argument("flow coefficients: entry " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(angles_[i]) || !std::isfinite(cx_[i]) || !std::isfinite(cy_[i]) ||
+        !std::isfinite(cmz_[i]))
+      throw std::invalid_argument("flow coefficients: entry " + std::to_string(i) +
+                                  " is not finite");
     if (i > 0 && !(angles_[i] > angles_[i - 1]))
       throw std::invalid_argument("flow coefficients: the angles must increase strictly");
   }
   const double tol = 1e-9;
   if (std::abs(angles_.front()) > tol)
     throw std::invalid_argument("flow coefficients: the angles must start at 0");
-  if (std::abs(angles_.back() - M_PI) < tol) mirrored_ = true;
+  if (std::abs(angles_.back() - M_PI) < tol)
+    mirrored_ = true;
   else if (std::abs(angles_.back() - 2 * M_PI) > tol)
-    throw std::invalid_argument("flow coefficients: the angles must end at 180 deg (mirrored) or 360 deg");
+    throw std::invalid_argument(
+        "flow coefficients: the angles must end at 180 deg (mirrored) or 360 deg");
 }
 
 std::array<double, 3> FlowCoefficients::at(double theta) const {
@@ -49,16 +54,22 @@ std::array<double, 3> FlowCoefficients::at(double theta) const {
 
 FlowLoad::FlowLoad(std::string name, const dynamics::Model& model, int body, const Vector3& p_B,
                    const FlowAreas& areas, FlowCoefficients coefficients, double density)
-    : ForceProvider(std::move(name)), body_(body), p_B_(p_B), areas_(areas),
-      coefficients_(std::move(coefficients)), density_(density) {
+    : ForceProvider(std::move(name)),
+      body_(body),
+      p_B_(p_B),
+      areas_(areas),
+      coefficients_(std::move(coefficients)),
+      density_(density) {
   const std::string me = "flow load '" + this->name() + "': ";
   if (body_ < 1 || body_ >= model.nbodies)
-    throw std::invalid_argument(me + "body " + std::to_string(body_) + " is the world or outside the model");
+    throw std::invalid_argument(me + "body " + std::to_string(body_) +
+                                " is the world or outside the model");
   if (!p_B_.allFinite()) throw std::invalid_argument(me + "the point is not finite");
   if (!(areas_.frontal >= 0) || !(areas_.lateral >= 0) || !(areas_.length >= 0) ||
       !std::isfinite(areas_.frontal + areas_.lateral + areas_.length))
     throw std::invalid_argument(me + "areas and length must be finite and >= 0");
-  if (!(density_ > 0) || !std::isfinite(density_)) throw std::invalid_argument(me + "the density must be > 0");
+  if (!(density_ > 0) || !std::isfinite(density_))
+    throw std::invalid_argument(me + "the density must be > 0");
 }
 
 FlowLoadState FlowLoad::load(const Stage& s) const {
@@ -82,7 +93,8 @@ FlowLoadState FlowLoad::load(const Stage& s) const {
   return r;
 }
 
-void FlowLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+void FlowLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                          Eigen::VectorXd& /*tau*/) const {
   const FlowLoadState r = load(s);
   const Vector3 p_W = s.data.X_WB[body_].actPoint(p_B_);
   dynamics::Force F_W;

@@ -38,15 +38,16 @@ class FlowCoefficients {
 struct FlowAreas {
   double frontal = 0.0;  // m^2, projected on the body's y-z plane (flow along x)
   double lateral = 0.0;  // m^2, projected on the x-z plane (flow along y)
-  double length = 0.0;   // m, the length for the yaw moment (length overall or between perpendiculars)
+  double length =
+      0.0;  // m, the length for the yaw moment (length overall or between perpendiculars)
 };
 
 // What a flow load did at the last evaluation (for recording).
 struct FlowLoadState {
   dynamics::Vector3 force = dynamics::Vector3::Zero();  // N, world
-  double yawMoment = 0.0;                                // N m about the vertical through the point
-  double speed = 0.0;                                    // m/s, relative
-  double angle = 0.0;                                    // rad, where the relative flow comes from
+  double yawMoment = 0.0;                               // N m about the vertical through the point
+  double speed = 0.0;                                   // m/s, relative
+  double angle = 0.0;                                   // rad, where the relative flow comes from
 };
 
 class FlowLoad : public ForceProvider {
@@ -64,7 +65,7 @@ class FlowLoad : public ForceProvider {
  protected:
   // (world point, t) => the flow velocity there, m/s
   virtual dynamics::Vector3 flowVelocity(const dynamics::Vector3& p_W, double t) const = 0;
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   double doPower(const Stage& s) const override;
 
  private:

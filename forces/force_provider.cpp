@@ -2,7 +2,8 @@
 
 namespace yardsim::forces {
 
-void ForceProvider::evaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
+void ForceProvider::evaluate(const Stage& s, dynamics::ExternalForces& f,
+                             Eigen::VectorXd& tau) const {
   doEvaluate(s, f, tau);
   // (accumulated forces) => finite, or a diagnosis naming this provider; a non-finite total
   // appears first after the provider that made it
@@ -13,8 +14,8 @@ void ForceProvider::evaluate(const Stage& s, dynamics::ExternalForces& f, Eigen:
                      " s; check its parameters, or take a smaller step");
   }
   if (!tau.allFinite())
-    throw ForceError("force provider '" + name_ + "' produced a non-finite joint force at t = " +
-                     std::to_string(s.t) + " s");
+    throw ForceError("force provider '" + name_ +
+                     "' produced a non-finite joint force at t = " + std::to_string(s.t) + " s");
 }
 
 }  // namespace yardsim::forces

@@ -8,6 +8,14 @@
 // and the power of its non-conservative part, so that a scene's energy balance
 //   kinetic + sum(potential) - integral(sum(power)) dt = constant
 // can be checked.
+//
+// Providers are immutable while a system runs: evaluate(), potentialEnergy() and power() are
+// const. What a provider writes while it computes (a rope's path points, a clipped hull) lives
+// in a ProviderScratch it makes once (makeScratch()) and the caller owns: mechanics::Data holds
+// one per provider of a system and hands it over in Stage::scratch. A caller that gives none
+// (a test, a one-off evaluation) gets a temporary one, made, used and dropped in that call.
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -19,13 +27,24 @@
 
 namespace yardsim::forces {
 
+// A provider's scratch: what it writes while it is evaluated. Owned by the caller.
+class ProviderScratch {
+ public:
+  virtual ~ProviderScratch() = default;
+};
+
 // What a provider sees at one integrator stage: data holds forwardKinematics(q, v) (X_WB, V).
 struct Stage {
-  double t;
+  double t;  // s
   const dynamics::Model& model;
   const dynamics::Data& data;
   const Eigen::VectorXd& q;
   const Eigen::VectorXd& v;
+  // this provider's scratch (from its makeScratch()); nullptr: a temporary one is made
+  ProviderScratch* scratch = nullptr;
+  // s: the start of the integrator step in progress (a load read at the step's end takes its
+  // value before a jump there, forces/body_load.hpp); infinity outside a step
+  double stepStart = std::numeric_limits<double>::infinity();
 };
 
 // A provider produced a non-finite force, or was given a state it cannot handle.
@@ -43,9 +62,12 @@ class ForceProvider {
 
   const std::string& name() const { return name_; }
 
+  // () => a scratch sized for this provider, or nullptr when it writes nothing
+  virtual std::unique_ptr<ProviderScratch> makeScratch() const { return nullptr; }
+
   // (stage) => forces added to f and generalized forces added to tau (size nv); throws
-  // ForceError when what this provider added is not finite. Allocation-free.
-  void evaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau);
+  // ForceError when what this provider added is not finite. Allocation-free given a scratch.
+  void evaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const;
   // (stage) => energy stored by this provider, J (gravity: m g h; a rope: its strain energy)
   double potentialEnergy(const Stage& s) const { return doPotentialEnergy(s); }
   // (stage) => power of the non-conservative part into the system, W (damping <= 0; a winch
@@ -53,7 +75,15 @@ class ForceProvider {
   double power(const Stage& s) const { return doPower(s); }
 
  protected:
-  virtual void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) = 0;
+  virtual void doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                          Eigen::VectorXd& tau) const = 0;
+  // (stage, a temporary for callers that gave no scratch) => the stage's scratch as T
+  template <class T>
+  T& scratchOf(const Stage& s, std::unique_ptr<ProviderScratch>& temporary) const {
+    if (s.scratch != nullptr) return static_cast<T&>(*s.scratch);
+    temporary = makeScratch();
+    return static_cast<T&>(*temporary);
+  }
   virtual double doPotentialEnergy(const Stage& /*s*/) const { return 0.0; }
   virtual double doPower(const Stage& /*s*/) const { return 0.0; }
 

@@ -12,7 +12,8 @@ Gravity::Gravity(std::string name, const dynamics::Vector3& g_W)
     throw std::invalid_argument("gravity '" + this->name() + "': g must be finite");
 }
 
-void Gravity::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+void Gravity::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                         Eigen::VectorXd& /*tau*/) const {
   // (X_WB, m_i, c_i) => f_W = m_i g_W at p_W = X_WB c_i
   for (int b = 1; b < s.model.nbodies; ++b) {
     const dynamics::SpatialInertia& I = s.model.inertias[b];

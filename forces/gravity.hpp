@@ -18,7 +18,7 @@ class Gravity final : public ForceProvider {
   const dynamics::Vector3& gravity() const { return g_W_; }
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   double doPotentialEnergy(const Stage& s) const override;
 
  private:

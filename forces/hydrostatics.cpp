@@ -10,19 +10,17 @@ namespace yardsim::forces {
 
 using dynamics::Vector3;
 
-Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int body, TriangleMesh hull,
-                           std::shared_ptr<const AiryWaves> sea)
+Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int body,
+                           TriangleMesh hull, std::shared_ptr<const AiryWaves> sea)
     : ForceProvider(std::move(name)),
       body_(body),
       hull_(std::move(hull)),
       sea_(std::move(sea)),
-      calm_(sea_ ? sea_->water() : WaterProperties{}),
-      ws_(hull_),
-      reportQ_(Eigen::VectorXd::Zero(model.nq)) {
+      calm_(sea_ ? sea_->water() : WaterProperties{}) {
   if (body_ < 1 || body_ >= model.nbodies)
-    throw std::invalid_argument("hydrostatics '" + this->name() + "': body " + std::to_string(body_) +
-                                " is the world or outside the model's " + std::to_string(model.nbodies) +
-                                " bodies");
+    throw std::invalid_argument("hydrostatics '" + this->name() + "': body " +
+                                std::to_string(body_) + " is the world or outside the model's " +
+                                std::to_string(model.nbodies) + " bodies");
   if (!sea_) throw std::invalid_argument("hydrostatics '" + this->name() + "': no sea given");
   try {
     checkClosedMesh(hull_);
@@ -43,16 +41,25 @@ Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int b
     }
 }
 
-void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+std::unique_ptr<ProviderScratch> Hydrostatics::makeScratch() const {
+  return std::make_unique<Scratch>(hull_);
+}
+
+void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                              Eigen::VectorXd& /*tau*/) const {
   // (X_WB, sea, t) => clipped hull, pressure force and moment about the world origin
-  last_ = integrateSubmerged(hull_, s.data.X_WB[body_], *sea_, s.t, ws_);
+  std::unique_ptr<ProviderScratch> temporary;
+  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
+  const SubmergedProperties p = integrateSubmerged(hull_, s.data.X_WB[body_], *sea_, s.t, ws);
   dynamics::Force F_W;
-  F_W << last_.moment, last_.force;
+  F_W << p.moment, p.force;
   f.addWorldFrame(body_, F_W);
 }
 
 double Hydrostatics::doPotentialEnergy(const Stage& s) const {
-  const SubmergedProperties c = integrateSubmerged(hull_, s.data.X_WB[body_], calm_, s.t, ws_);
+  std::unique_ptr<ProviderScratch> temporary;
+  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
+  const SubmergedProperties c = integrateSubmerged(hull_, s.data.X_WB[body_], calm_, s.t, ws);
   const WaterProperties& w = calm_.water();
   return w.density * w.gravity * c.volume * (w.level - c.centreOfBuoyancy.z());
 }
@@ -60,19 +67,19 @@ double Hydrostatics::doPotentialEnergy(const Stage& s) const {
 double Hydrostatics::doPower(const Stage& s) const {
   if (sea_->calm()) return 0.0;
   const dynamics::Transform& X = s.data.X_WB[body_];
-  const SubmergedProperties c = integrateSubmerged(hull_, X, calm_, s.t, ws_);
-  const SubmergedProperties w = integrateSubmerged(hull_, X, *sea_, s.t, ws_);
+  std::unique_ptr<ProviderScratch> temporary;
+  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
+  const SubmergedProperties c = integrateSubmerged(hull_, X, calm_, s.t, ws);
+  const SubmergedProperties w = integrateSubmerged(hull_, X, *sea_, s.t, ws);
   const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
   return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());
 }
 
-const HydrostaticReport& Hydrostatics::report(const Stage& s) const {
-  if (s.t == reportTime_ && s.q.size() == reportQ_.size() && s.q == reportQ_) return report_;
-  reportTime_ = s.t;
-  if (s.q.size() == reportQ_.size()) reportQ_ = s.q;
+HydrostaticReport Hydrostatics::report(const Stage& s) const {
   const dynamics::Transform& X = s.data.X_WB[body_];
-  HydrostaticReport& r = report_;
-  r.submerged = integrateSubmerged(hull_, X, *sea_, s.t, ws_);
+  HydrostaticReport r;
+  std::unique_ptr<ProviderScratch> temporary;
+  r.submerged = integrateSubmerged(hull_, X, *sea_, s.t, scratchOf<Scratch>(s, temporary).ws);
   const WaterProperties& w = sea_->water();
   r.displacement = w.density * r.submerged.volume;
   r.draft = w.level - X.actPoint(keel_B_).z();
@@ -90,7 +97,8 @@ const HydrostaticReport& Hydrostatics::report(const Stage& s) const {
   const double V = r.submerged.volume;
   if (V > 0.0) {
     const Eigen::Vector2d e(X.R(0, 0), X.R(1, 0));  // the body's x axis, horizontal
-    const Eigen::Vector2d ex = e.norm() > 1e-12 ? Eigen::Vector2d(e.normalized()) : Eigen::Vector2d(1, 0);
+    const Eigen::Vector2d ex =
+        e.norm() > 1e-12 ? Eigen::Vector2d(e.normalized()) : Eigen::Vector2d(1, 0);
     const Eigen::Vector2d ey(-ex.y(), ex.x());
     const Eigen::Matrix2d& J = r.submerged.waterplaneInertia;
     // transverse (rolling about the longitudinal axis): int (distance across)^2 = ey^T J ey

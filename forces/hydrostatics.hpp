@@ -6,8 +6,8 @@
 // hull all work. Calm water: the force is rho g V up through the centre of buoyancy and is
 // conservative with potential energy rho g V (level - z_B). In waves the potential reported is
 // the same calm-water one, and power() is the power of the difference between the wave and the
-// calm-water forces, so the energy balance closes in waves too. Allocation-free after
-// construction. Not thread-safe (one workspace).
+// calm-water forces, so the energy balance closes in waves too. Allocation-free given its
+// scratch (the clipping workspace, makeScratch()).
 #include <memory>
 #include <string>
 
@@ -22,9 +22,9 @@ namespace yardsim::forces {
 struct HydrostaticReport {
   SubmergedProperties submerged;  // volume, centre of buoyancy, waterplane, force, moment (world)
   double displacement = 0.0;      // kg: rho V
-  double draft = 0.0;   // m: still-water level minus z of the keel point (docs/hydrostatics.md)
-  double heel = 0.0;    // rad: roll of the body about its x axis
-  double trim = 0.0;    // rad: pitch of the body about its y axis (bow down > 0)
+  double draft = 0.0;  // m: still-water level minus z of the keel point (docs/hydrostatics.md)
+  double heel = 0.0;   // rad: roll of the body about its x axis
+  double trim = 0.0;   // rad: pitch of the body about its y axis (bow down > 0)
   double gmTransverse = 0.0;    // m: z_B - z_G + I_T / V (0 when dry)
   double gmLongitudinal = 0.0;  // m: z_B - z_G + I_L / V
 };
@@ -42,13 +42,18 @@ class Hydrostatics final : public ForceProvider {
   const AiryWaves& sea() const { return *sea_; }
   // (hull) => its solid's volume, centroid, inertia (body frame; computed once)
   const SolidProperties& solid() const { return solid_; }
-  // the properties of the last evaluate() (the integrator's last stage)
-  const SubmergedProperties& last() const { return last_; }
-  // (stage) => the report there; the same stage twice (time and q) is computed once
-  const HydrostaticReport& report(const Stage& s) const;
+  // (stage) => the report there
+  HydrostaticReport report(const Stage& s) const;
+
+  // the scratch: the workspace the hull is clipped in
+  struct Scratch final : ProviderScratch {
+    explicit Scratch(const TriangleMesh& hull) : ws(hull) {}
+    SubmergedWorkspace ws;
+  };
+  std::unique_ptr<ProviderScratch> makeScratch() const override;
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   // rho g V_calm (level - z_B,calm): the calm-water restoring potential
   double doPotentialEnergy(const Stage& s) const override;
   // waves: (F, M)_waves - (F, M)_calm against the body's velocity; calm water: 0
@@ -60,13 +65,8 @@ class Hydrostatics final : public ForceProvider {
   SolidProperties solid_;
   dynamics::Vector3 keel_B_;  // the keel point: solid centroid x, y at the lowest z of the hull
   std::shared_ptr<const AiryWaves> sea_;
-  AiryWaves calm_;             // the same water without waves
-  std::vector<int> subtree_;   // body and its descendants: G for GM
-  mutable SubmergedWorkspace ws_;
-  SubmergedProperties last_;
-  mutable HydrostaticReport report_;
-  mutable double reportTime_ = std::numeric_limits<double>::quiet_NaN();
-  mutable Eigen::VectorXd reportQ_;
+  AiryWaves calm_;            // the same water without waves
+  std::vector<int> subtree_;  // body and its descendants: G for GM
 };
 
 }  // namespace yardsim::forces

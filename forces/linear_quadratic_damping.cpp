@@ -7,17 +7,20 @@ namespace yardsim::forces {
 
 using dynamics::Vector3;
 
-LinearQuadraticDamping::LinearQuadraticDamping(std::string name, const dynamics::Model& model, int body,
-                                               const Vector3& p_B, const DampingCoefficients& c)
+LinearQuadraticDamping::LinearQuadraticDamping(std::string name, const dynamics::Model& model,
+                                               int body, const Vector3& p_B,
+                                               const DampingCoefficients& c)
     : ForceProvider(std::move(name)), body_(body), p_B_(p_B), c_(c) {
   const std::string me = "damping '" + this->name() + "': ";
   if (body_ < 1 || body_ >= model.nbodies)
-    throw std::invalid_argument(me + "body " + std::to_string(body_) + " is the world or outside the model");
+    throw std::invalid_argument(me + "body " + std::to_string(body_) +
+                                " is the world or outside the model");
   if (!p_B_.allFinite()) throw std::invalid_argument(me + "the point is not finite");
   for (int i = 0; i < 6; ++i)
     if (!(c_.linear[i] >= 0) || !(c_.quadratic[i] >= 0) || !std::isfinite(c_.linear[i]) ||
         !std::isfinite(c_.quadratic[i]))
-      throw std::invalid_argument(me + "coefficient " + std::to_string(i) + " must be finite and >= 0");
+      throw std::invalid_argument(me + "coefficient " + std::to_string(i) +
+                                  " must be finite and >= 0");
 }
 
 std::array<double, 6> LinearQuadraticDamping::velocity(const Stage& s) const {
@@ -31,11 +34,13 @@ std::array<double, 6> LinearQuadraticDamping::velocity(const Stage& s) const {
 std::array<double, 6> LinearQuadraticDamping::load(const Stage& s) const {
   const std::array<double, 6> u = velocity(s);
   std::array<double, 6> f{};
-  for (std::size_t i = 0; i < 6; ++i) f[i] = -(c_.linear[i] * u[i] + c_.quadratic[i] * std::abs(u[i]) * u[i]);
+  for (std::size_t i = 0; i < 6; ++i)
+    f[i] = -(c_.linear[i] * u[i] + c_.quadratic[i] * std::abs(u[i]) * u[i]);
   return f;
 }
 
-void LinearQuadraticDamping::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+void LinearQuadraticDamping::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                                        Eigen::VectorXd& /*tau*/) const {
   // (force at the point, moment) => spatial force about the body origin, body frame
   const std::array<double, 6> l = load(s);
   const Vector3 force(l[0], l[1], l[2]), moment(l[3], l[4], l[5]);

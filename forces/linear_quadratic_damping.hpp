@@ -29,7 +29,7 @@ class LinearQuadraticDamping final : public ForceProvider {
   std::array<double, 6> load(const Stage& s) const;
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   double doPower(const Stage& s) const override;
 
  private:

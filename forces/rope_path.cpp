@@ -26,8 +26,11 @@ RopePath::RopePath(const dynamics::Model& model, std::vector<Attachment> points,
       throw std::invalid_argument("rope '" + owner + "': path point " + std::to_string(i) +
                                   " is not finite");
   }
-  p_W_.assign(points_.size(), Vector3::Zero());
-  u_W_.assign(points_.size() - 1, Vector3::Zero());
+}
+
+PathPoints RopePath::makePoints() const {
+  return {std::vector<Vector3>(points_.size(), Vector3::Zero()),
+          std::vector<Vector3>(points_.size() - 1, Vector3::Zero())};
 }
 
 template <class Visit>
@@ -56,22 +59,23 @@ PathMeasure RopePath::measure(const dynamics::Data& data) const {
   return walk(data, [](std::size_t, const Vector3&, const Vector3*) {});
 }
 
-PathMeasure RopePath::update(const dynamics::Data& data) {
-  return walk(data, [this](std::size_t i, const Vector3& p, const Vector3* u) {
-    p_W_[i] = p;
-    if (u) u_W_[i - 1] = *u;
+PathMeasure RopePath::update(const dynamics::Data& data, PathPoints& out) const {
+  return walk(data, [&out](std::size_t i, const Vector3& p, const Vector3* u) {
+    out.p_W[i] = p;
+    if (u) out.u_W[i - 1] = *u;
   });
 }
 
-void RopePath::applyTension(double tension, dynamics::ExternalForces& f) const {
+void RopePath::applyTension(double tension, const PathPoints& at,
+                            dynamics::ExternalForces& f) const {
   // (T, u) => point i is pulled toward i + 1 by T u_i and toward i - 1 by -T u_(i-1)
   const std::size_t n = points_.size();
   for (std::size_t i = 0; i < n; ++i) {
     if (points_[i].body == 0) continue;
     Vector3 f_W = Vector3::Zero();
-    if (i + 1 < n) f_W += tension * u_W_[i];
-    if (i > 0) f_W -= tension * u_W_[i - 1];
-    f.addPointForceWorld(points_[i].body, p_W_[i], f_W);
+    if (i + 1 < n) f_W += tension * at.u_W[i];
+    if (i > 0) f_W -= tension * at.u_W[i - 1];
+    f.addPointForceWorld(points_[i].body, at.p_W[i], f_W);
   }
 }
 

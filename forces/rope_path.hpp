@@ -3,8 +3,8 @@
 // last end. Length is the sum of the segment lengths; a uniform tension T pulls each point
 // along the rope: an end by T u toward its neighbour, a sheave by T (u_prev + u_next) (unit
 // vectors from the point toward the previous and the next point). Shared by the wire rope and
-// the equalizer. The world-frame buffers are sized in the constructor: update() and
-// applyTension() do not allocate.
+// the equalizer. The path itself is immutable; update() writes the world-frame points into a
+// PathPoints the caller sized with points() once: update() and applyTension() do not allocate.
 #include <string>
 #include <vector>
 
@@ -27,6 +27,13 @@ struct PathMeasure {
   double rate = 0.0;
 };
 
+// A path's points and segment directions in the world frame at one stage (a scratch).
+struct PathPoints {
+  std::vector<dynamics::Vector3> p_W;  // one per point, m
+  std::vector<dynamics::Vector3>
+      u_W;  // one per segment: point i toward i + 1 (zero if zero length)
+};
+
 class RopePath {
  public:
   // (model, points: first end, sheaves..., last end, owner name for messages) => a path; throws
@@ -36,18 +43,16 @@ class RopePath {
 
   // (data after forwardKinematics(q, v)) => length and dL/dt; touches no buffer
   PathMeasure measure(const dynamics::Data& data) const;
-  // (data after forwardKinematics(q, v)) => the same, and keeps p_W and u_W for applyTension()
-  PathMeasure update(const dynamics::Data& data);
-  // (T, after update()) => T u on the ends and T (u_prev + u_next) on the
-  // sheaves, added to f as world-frame point forces (the world, body 0, is skipped)
-  void applyTension(double tension, dynamics::ExternalForces& f) const;
+  // () => a PathPoints sized for this path
+  PathPoints makePoints() const;
+  // (data after forwardKinematics(q, v)) => the same, and p_W, u_W written into out
+  PathMeasure update(const dynamics::Data& data, PathPoints& out) const;
+  // (T, points from update()) => T u on the ends and T (u_prev + u_next) on the sheaves, added
+  // to f as world-frame point forces (the world, body 0, is skipped)
+  void applyTension(double tension, const PathPoints& at, dynamics::ExternalForces& f) const;
 
   const std::vector<Attachment>& points() const { return points_; }
   int size() const { return static_cast<int>(points_.size()); }
-  // after update(): positions of the path points and unit vectors of the segments (point i
-  // toward point i + 1; zero for a segment of zero length), world frame
-  const std::vector<dynamics::Vector3>& pointsWorld() const { return p_W_; }
-  const std::vector<dynamics::Vector3>& segmentDirections() const { return u_W_; }
 
  private:
   // (data, visit(i, p_W of point i, u_W of segment i - 1 or none)) => length and rate: the one
@@ -56,8 +61,6 @@ class RopePath {
   PathMeasure walk(const dynamics::Data& data, Visit&& visit) const;
 
   std::vector<Attachment> points_;
-  std::vector<dynamics::Vector3> p_W_;  // one per point
-  std::vector<dynamics::Vector3> u_W_;  // one per segment
 };
 
 }  // namespace yardsim::forces

@@ -35,12 +35,21 @@ double WireRope::tension(const Stage& s) const {
   return ropeTension(properties_.ea, properties_.damping, strain(s, path_.measure(s.data)));
 }
 
-void WireRope::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) {
+std::unique_ptr<ProviderScratch> WireRope::makeScratch() const {
+  auto s = std::make_unique<Scratch>();
+  s->points = path_.makePoints();
+  return s;
+}
+
+void WireRope::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                          Eigen::VectorXd& /*tau*/) const {
   // (path, L0(t)) => T of one part; n T along the path on every point's body (a NaN T too, so
   // that evaluate() refuses it)
-  const RopeStrain e = strain(s, path_.update(s.data));
-  lastTension_ = ropeTension(properties_.ea, properties_.damping, e);
-  if (lastTension_ != 0.0) path_.applyTension(static_cast<double>(parts_) * lastTension_, f);
+  std::unique_ptr<ProviderScratch> temporary;
+  PathPoints& points = scratchOf<Scratch>(s, temporary).points;
+  const RopeStrain e = strain(s, path_.update(s.data, points));
+  const double tension = ropeTension(properties_.ea, properties_.damping, e);
+  if (tension != 0.0) path_.applyTension(static_cast<double>(parts_) * tension, points, f);
 }
 
 double WireRope::doPotentialEnergy(const Stage& s) const {

@@ -42,13 +42,6 @@ class WireRope final : public ForceProvider {
   // (stage) => the path is longer than L0(t)
   bool isTaut(const Stage& s) const { return length(s) > unstretchedLength(s.t); }
 
-  // the per-part tension of the last evaluate(), N: the integrator's last stage, which is not
-  // the accepted state of a multi-stage method (use tension(stage) for that)
-  double lastTension() const { return lastTension_; }
-  // the last evaluate()'s tension exceeded the minimum breaking load (never if none was given)
-  bool exceedsBreakingLoad() const {
-    return properties_.breakingLoad && lastTension_ > *properties_.breakingLoad;
-  }
   // (stage) => its tension exceeds the minimum breaking load (never if none was given)
   bool exceedsBreakingLoad(const Stage& s) const {
     return properties_.breakingLoad && tension(s) > *properties_.breakingLoad;
@@ -56,11 +49,17 @@ class WireRope final : public ForceProvider {
 
   int parts() const { return parts_; }
   const RopeProperties& properties() const { return properties_; }
-  // the path and, after evaluate(), its world points (for recording and interference checks)
+  // the path (its world points at a stage: path().update(data, points))
   const RopePath& path() const { return path_; }
 
+  // the scratch: the path's world points at the stage
+  struct Scratch final : ProviderScratch {
+    PathPoints points;
+  };
+  std::unique_ptr<ProviderScratch> makeScratch() const override;
+
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   // n EA/(2 L0) (L - L0)^2 while taut, J
   double doPotentialEnergy(const Stage& s) const override;
   // damping and clamping -n (T - T_elastic) dL/dt plus the winch's n dV/dL0 dL0/dt, W
@@ -74,7 +73,6 @@ class WireRope final : public ForceProvider {
   int parts_;
   RopePath path_;
   Winch winch_;
-  double lastTension_ = 0.0;
 };
 
 }  // namespace yardsim::forces

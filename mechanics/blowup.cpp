@@ -70,7 +70,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
                  "its state became NaN or infinite", likelyCause(s, limits.method, limits.dt));
   }
   // (energy balance) => a rise beyond the bound, naming the most energetic body and element
-  const double rise = energy(s, d.scratch, q, v, t) - work - limits.balance0;
+  const double rise = energy(s, d, d.scratch, q, v, t) - work - limits.balance0;
   if (rise > limits.energyBound) {
     int body = 1;
     double most = -1.0;

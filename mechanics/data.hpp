@@ -1,8 +1,11 @@
 #pragma once
 // The mutable workspace of one mechanical system (the System is the immutable side): the
 // multibody kernel as the integrators' acceleration source, kinematics workspaces for channels,
-// power, events and joint reactions, and the set-point forces, all preallocated so that a stage
-// allocates nothing. setPoints points at the set-points in force while a step is integrated.
+// power, events and joint reactions, the set-point forces and every provider's scratch, all
+// preallocated so that a stage allocates nothing. setPoints points at the set-points in force
+// while a step is integrated; stepStart is the start of that step.
+#include <limits>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -10,6 +13,7 @@
 #include "dynamics/data.hpp"
 #include "dynamics/external_forces.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/force_provider.hpp"
 #include "mechanics/set_points.hpp"
 #include "mechanics/system.hpp"
 
@@ -28,6 +32,28 @@ struct Data {
   Eigen::VectorXd prescribedAcc;      // zero: constant-speed ramps and locks
   Eigen::VectorXd accelScratch;       // velocity steps and accelerations, per dof
   const SetPoints* setPoints = nullptr;
+  double stepStart = std::numeric_limits<double>::infinity();  // s (forces::Stage::stepStart)
+  // per provider of the system, in the order of System::providers(): its scratch, or nullptr
+  std::vector<std::unique_ptr<forces::ProviderScratch>> providerScratch;
+
+  // (t, kinematics of (q, v), q, v) => the stage the providers see, with the step start
+  forces::Stage stage(const System& s, double t, const dynamics::Data& kin,
+                      const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+    return forces::Stage{t, s.model(), kin, q, v, nullptr, stepStart};
+  }
+  // (provider of the system) => its scratch here (nullptr when it needs none)
+  forces::ProviderScratch* scratchOf(const System& s, const forces::ForceProvider& p) const;
 };
+
+// (stage, visit(provider, the stage with its scratch)) => every provider of the system, in order
+template <class Visit>
+void forEachProvider(const System& s, const Data& d, const forces::Stage& stage, Visit&& visit) {
+  forces::Stage own = stage;
+  const auto& providers = s.providers();
+  for (std::size_t i = 0; i < providers.size(); ++i) {
+    own.scratch = d.providerScratch[i].get();
+    visit(*providers[i], static_cast<const forces::Stage&>(own));
+  }
+}
 
 }  // namespace yardsim::mechanics

@@ -6,7 +6,7 @@
 
 namespace yardsim::mechanics {
 
-double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q,
+double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::VectorXd& q,
               const Eigen::VectorXd& v, double t) {
   // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
   const auto& m = s.model();
@@ -16,8 +16,10 @@ double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q,
     e += dynamics::bodyKineticEnergy(m, i, kin.V[i]) -  // with the fluid's share (added mass)
          m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
   }
-  const forces::Stage stage{t, m, kin, q, v};
-  for (const forces::ForceProvider* p : s.providers()) e += p->potentialEnergy(stage);
+  forEachProvider(s, d, d.stage(s, t, kin, q, v),
+                  [&](const forces::ForceProvider& p, const forces::Stage& st) {
+                    e += p.potentialEnergy(st);
+                  });
   return e;
 }
 
@@ -25,9 +27,11 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
                             const Eigen::VectorXd& v, double t) {
   const auto& m = s.model();
   dynamics::forwardKinematics(m, d.scratch, q, v);
-  const forces::Stage stage{t, m, d.scratch, q, v};
   double p = 0.0;
-  for (const forces::ForceProvider* f : s.providers()) p += f->power(stage);
+  forEachProvider(s, d, d.stage(s, t, d.scratch, q, v),
+                  [&](const forces::ForceProvider& f, const forces::Stage& st) {
+                    p += f.power(st);
+                  });
   // (drives, loads) => their forces at this state, and the power they deliver
   const SetPoints* saved = d.setPoints;
   d.setPoints = &sp;

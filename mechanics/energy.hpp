@@ -13,9 +13,9 @@
 
 namespace yardsim::mechanics {
 
-// (t, q, v; kin is overwritten with their kinematics) => kinetic + gravity potential + stored
-// energy of every provider, J
-double energy(const System& s, dynamics::Data& kin, const Eigen::VectorXd& q,
+// (t, q, v; kin, one of d's kinematics workspaces, is overwritten with their kinematics) =>
+// kinetic + gravity potential + stored energy of every provider, J
+double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::VectorXd& q,
               const Eigen::VectorXd& v, double t);
 
 // (t, q, v, set-points) => power of the non-conservative forces into the system, W: every

@@ -55,11 +55,11 @@ void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
 void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
                  const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
                  Eigen::VectorXd& tau) {
-  const forces::Stage stage{t, s.model(), kin, q, v};
   const SetPoints& sp = *d.setPoints;
   if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any())
     d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
-  for (forces::ForceProvider* p : s.providers()) p->evaluate(stage, f, tau);
+  forEachProvider(s, d, d.stage(s, t, kin, q, v),
+                  [&](const forces::ForceProvider& p, const forces::Stage& st) { p.evaluate(st, f, tau); });
   setPointForces(s, d, sp, t, q, v, f, tau);
 }
 

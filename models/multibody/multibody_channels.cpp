@@ -76,8 +76,8 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
        system_.contributed()) {  // (providers of registered readers) => energy, power
     const forces::ForceProvider* p = c.get();
     out.push_back(
-        {p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage()); }});
-    out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage()); }});
+        {p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage(p)); }});
+    out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage(p)); }});
   }
   // (system-wide quantities) => under the model's own name when element names are paths
   const std::string own = opt_.elementPaths ? path() + "." : "";
@@ -95,9 +95,7 @@ void MultibodyModel::floatingChannels(std::vector<Channel>& out) const {
   for (const auto& hp : system_.hydrostatics()) {
     const forces::Hydrostatics* h = hp.get();
     const std::string& n = h->name();
-    auto rep = [this, h]() -> const forces::HydrostaticReport& {
-      return h->report(committedStage());
-    };
+    auto rep = [this, h]() -> forces::HydrostaticReport { return h->report(committedStage(h)); };
     out.push_back({n + ".draft", "m", [rep] { return rep().draft; }});
     out.push_back({n + ".heel", "rad", [rep] { return rep().heel; }});
     out.push_back({n + ".trim", "rad", [rep] { return rep().trim; }});

@@ -74,7 +74,7 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
     x0.peakTension[r] = system_.ropes()[r]->tension(stage);
   initialTension_ = x0.peakTension;
   // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
-  limits_.balance0 = mechanics::energy(system_, ws_.data.scratch, x0.q, x0.v, 0.0);
+  limits_.balance0 = mechanics::energy(system_, ws_.data, ws_.data.scratch, x0.q, x0.v, 0.0);
   limits_.energyBound =
       opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
   limits_.loopResidualLimit = opt_.loopResidualLimit;
@@ -116,7 +116,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   // (power at both ends of the step) => the work of non-conservative forces, trapezoidal; the
   // power at the start is the one computed at the end of the previous step when nothing changed
   auto& d = ws_.data;
-  for (auto& l : system_.bodyLoads()) l->setStepStart(t);
+  d.stepStart = t;  // (body loads) => a stage at the step's end sees the value before a jump
   const double p0 = ws_.powerState == &x && ws_.powerTime == t
                         ? ws_.power
                         : mechanics::nonConservativePower(system_, d, x.setPoints, x.q, x.v, t);
@@ -306,12 +306,14 @@ const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
 
 double MultibodyModel::energy() const {
   const auto& s = state();
-  return mechanics::energy(system_, ws_.data.view, s.x.q, s.x.v, s.tx);
+  return mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
 }
 
-forces::Stage MultibodyModel::committedStage() const {
+forces::Stage MultibodyModel::committedStage(const forces::ForceProvider* p) const {
   const auto& s = state();
-  return forces::Stage{s.tx, system_.model(), kinematicsOf(s.x), s.x.q, s.x.v};
+  forces::Stage stage = ws_.data.stage(system_, s.tx, kinematicsOf(s.x), s.x.q, s.x.v);
+  if (p != nullptr) stage.scratch = ws_.data.scratchOf(system_, *p);
+  return stage;
 }
 
 void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {

@@ -104,8 +104,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
   // (committed state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
-  // (committed state) => the stage providers see there, for channels
-  forces::Stage committedStage() const;
+  // (committed state, the provider to read, if it needs its scratch) => the stage it sees there
+  forces::Stage committedStage(const forces::ForceProvider* p = nullptr) const;
   // (floating providers) => their channels (multibody_channels.cpp)
   void floatingChannels(std::vector<Channel>& out) const;
   // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one

@@ -42,7 +42,7 @@ class Damper final : public ForceProvider {
   Damper(double c, double cr) : ForceProvider("damper"), c_(c), cr_(cr) {}
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) override {
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) const override {
     const Vector3 com = s.model.inertias[1].com;
     f.addPointForceWorld(1, dynamics::pointPosition(s.data, 1, com),
                          -c_ * dynamics::pointVelocity(s.data, 1, com));
@@ -95,7 +95,12 @@ TEST_CASE("an uneven load rests on an equalizer with equal tensions carrying its
   CHECK(fA.z() + fB.z() == Approx(kMass * 9.81).epsilon(1e-7));
   CHECK(std::abs(fA.x() + fB.x()) < 1e-7 * kMass * 9.81);
   CHECK(fA.z() / fA.norm() == Approx(fB.z() / fB.norm()).epsilon(1e-7));
-  CHECK(eq.lastTension() == Approx(T).epsilon(1e-7));
+  {  // (evaluate at the same stage) => the block feels the two branches' pull, T each
+    dynamics::ExternalForces f(s.model);
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(s.model.nv);
+    eq.evaluate(s, f, tau);
+    CHECK(f.worldFrame(1)[5] == Approx(fA.z() + fB.z()).epsilon(1e-12));
+  }
   CHECK_FALSE(eq.exceedsBreakingLoad(s));  // no breaking load given
   CHECK(eq.branchLength(s, 0) == Approx((kSheave - pA).norm()).epsilon(1e-14));
   // (rope law) => total length L0 + T / (EA / L0), and the sum of the branches
@@ -164,7 +169,7 @@ TEST_CASE("three branches: the sheave body feels T times the sum of the unit vec
   dynamics::ExternalForces f(m);
   Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
   eq.evaluate(s, f, tau);
-  const double T = eq.lastTension();
+  const double T = eq.tension(s);
   REQUIRE(L > p.l0);
   CHECK(T == Approx(kEA / p.l0 * (L - p.l0) + p.damping * eq.lengthRate(s)).epsilon(1e-12));
   const Vector3 onHook =

@@ -50,7 +50,8 @@ TEST_CASE("the length is the sum of the segments and its rate the derivative alo
                .norm();
   const PathMeasure a = path.measure(d);
   CHECK(a.length == Approx(sum).epsilon(1e-14));
-  const PathMeasure b = path.update(d);
+  PathPoints points = path.makePoints();
+  const PathMeasure b = path.update(d, points);
   CHECK(b.length == a.length);
   CHECK(b.rate == a.rate);
   // (q moved by +-v dt on the manifold) => central difference of the length
@@ -74,12 +75,13 @@ TEST_CASE("a uniform tension pulls each point along the rope and does power -T d
   for (int i = 0; i < m.nv; ++i) v[i] = std::uniform_real_distribution<double>(-1.0, 1.0)(rng);
   dynamics::Data d(m);
   dynamics::forwardKinematics(m, d, q, v);
-  const PathMeasure pm = path.update(d);
+  PathPoints points = path.makePoints();
+  const PathMeasure pm = path.update(d, points);
   const double T = 1234.5;
   dynamics::ExternalForces f(m);
-  path.applyTension(T, f);
+  path.applyTension(T, points, f);
   // (hook, a sheave between two world points) => T (u_prev + u_next)
-  const auto& p = path.pointsWorld();
+  const auto& p = points.p_W;
   const Vector3 onHook = T * ((p[0] - p[1]).normalized() + (p[2] - p[1]).normalized());
   CHECK((f.worldFrame(1).tail<3>() - onHook).norm() < 1e-10 * T);
   CHECK((f.worldFrame(1).head<3>() - p[1].cross(onHook)).norm() < 1e-9 * T);
@@ -90,7 +92,7 @@ TEST_CASE("a uniform tension pulls each point along the rope and does power -T d
   for (int b = 1; b < m.nbodies; ++b)
     power += f.worldFrame(b).dot(dynamics::bodyVelocityWorld(d, b));
   CHECK(power == Approx(-T * pm.rate).epsilon(1e-10));
-  CHECK(path.segmentDirections().size() == kPoints.size() - 1);
+  CHECK(points.u_W.size() == kPoints.size() - 1);
 }
 
 TEST_CASE("a path needs two points on bodies of the model") {

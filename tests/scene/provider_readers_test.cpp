@@ -30,7 +30,7 @@ class TestSpring final : public forces::ForceProvider {
       : forces::ForceProvider(std::move(name)), a_(a), b_(b), k_(k), length_(length) {}
 
  protected:
-  void doEvaluate(const forces::Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) override {
+  void doEvaluate(const forces::Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) const override {
     const dynamics::Vector3 pa = dynamics::pointPosition(s.data, a_.body, a_.p_B);
     const dynamics::Vector3 pb = dynamics::pointPosition(s.data, b_.body, b_.p_B);
     const dynamics::Vector3 d = pb - pa;

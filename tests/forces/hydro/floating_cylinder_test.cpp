@@ -88,7 +88,7 @@ class Hanger final : public ForceProvider {
   explicit Hanger(double k) : ForceProvider("hanger"), k_(k) {}
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces&, Eigen::VectorXd& tau) override { tau[1] -= k_ * s.q[1]; }
+  void doEvaluate(const Stage& s, dynamics::ExternalForces&, Eigen::VectorXd& tau) const override { tau[1] -= k_ * s.q[1]; }
   double doPotentialEnergy(const Stage& s) const override { return 0.5 * k_ * s.q[1] * s.q[1]; }
 
  private:
@@ -103,7 +103,7 @@ class LaggedAddedMassForce final : public ForceProvider {
   double lastAcceleration = 0.0;
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) override {
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd&) const override {
     f.addPointForceWorld(1, dynamics::pointPosition(s.data, 1, Vector3::Zero()), Vector3(0.0, 0.0, -a33_ * lastAcceleration));
   }
 

@@ -16,6 +16,9 @@
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/wind_load.hpp"
+#include "forces/bushing.hpp"
+#include "forces/rotational_spring_damper.hpp"
+#include "forces/spring_damper.hpp"
 
 using yardsim::testing::allocationCount;
 
@@ -117,4 +120,48 @@ TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a st
   CHECK(allocationCount() == before);
   CHECK(waves.last().volume > 0.0);
   CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("spring-dampers, joint springs and bushings do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("a", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(300.0, Vector3(2, 1, 1)));
+  b.addBody("arm", "a", dynamics::Joint::revolute(Vector3::UnitZ()), dynamics::Transform::identity(),
+            dynamics::boxInertia(50.0, Vector3(2, 0.2, 0.2)));
+  const dynamics::Model m = b.build();
+  SpringDamperProperties sp;
+  sp.freeLength = 2.0;
+  sp.curve = SpringCurve::table({-1.0, 0.0, 1.0}, {-1e4, 0.0, 2e3});
+  sp.damping = 50.0;
+  sp.minLength = 1.0;
+  sp.stopStiffness = 1e5;
+  SpringDamper spring("spring", m, {0, Vector3(0, 0, 5)}, {2, Vector3(1, 0, 0)}, sp);
+  JointSpringProperties jp;
+  jp.curve = SpringCurve::linear(300.0);
+  jp.damping = 3.0;
+  RotationalSpringDamper joint("joint", m, 2, 0, jp);
+  BushingProperties bp;
+  bp.stiffness = dynamics::Matrix6::Identity() * 1e4;
+  bp.damping = dynamics::Matrix6::Identity() * 10.0;
+  Bushing bushing("bushing", m, 1, dynamics::Transform::identity(), 2,
+                  dynamics::Transform::translation(Vector3(0.5, 0, 0)), bp);
+  Rig r(m, {&spring, &joint, &bushing});
+  r.q << 0.1, 0.2, 0.3, 1.0, 0.0, 0.0, 0.0, 0.4;
+  r.v.setConstant(0.1);
+  r.step(1e-3);
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&spring, &joint, &bushing}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += spring.state(s).force + spring.axialStiffness(s) + joint.generalizedForce(s) +
+          bushing.state(s).generalizedForce.norm();
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(sink));
+  CHECK(sink != 0.0);
 }

@@ -17,6 +17,7 @@
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/wind_load.hpp"
 #include "forces/bushing.hpp"
+#include "forces/lines/catenary_line.hpp"
 #include "forces/rotational_spring_damper.hpp"
 #include "forces/spring_damper.hpp"
 
@@ -164,4 +165,32 @@ TEST_CASE("spring-dampers, joint springs and bushings do not allocate at a stage
   CHECK(allocationCount() == before);
   CHECK(std::isfinite(sink));
   CHECK(sink != 0.0);
+}
+
+TEST_CASE("catenary lines do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(2e6, Vector3(40, 12, 5)));
+  const dynamics::Model m = b.build();
+  CatenaryLine taut("taut", m, {0, Vector3(-420, 0, -150)}, {1, Vector3(-20, 0, 0)},
+                    {500.0, 7.5e8, 1020.0, true, 0.0});
+  CatenaryLine friction("friction", m, {0, Vector3(420, 0, -150)}, {1, Vector3(20, 0, 0)},
+                        {500.0, 7.5e8, 1020.0, true, 1.0});
+  Rig r(m, {&taut, &friction});
+  r.q << 0.5, 0.2, 0.1, 1.0, 0.0, 0.0, 0.0;
+  r.v.setConstant(0.1);
+  r.step(1e-2);
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&taut, &friction}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += taut.fairleadStiffness(s).norm() + friction.state(s).solution.laidLength;
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(sink));
 }

@@ -18,6 +18,7 @@
 #include "forces/wind_load.hpp"
 #include "forces/bushing.hpp"
 #include "forces/lines/catenary_line.hpp"
+#include "forces/lines/lumped_line.hpp"
 #include "forces/rotational_spring_damper.hpp"
 #include "forces/spring_damper.hpp"
 
@@ -193,4 +194,40 @@ TEST_CASE("catenary lines do not allocate at a stage") {
   sink += taut.fairleadStiffness(s).norm() + friction.state(s).solution.laidLength;
   CHECK(allocationCount() == before);
   CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("a lumped line's node forces and masses do not allocate") {
+  LumpedLineProperties p;
+  p.length = 100.0;
+  p.segments = 10;
+  p.diameter = 0.1;
+  p.massPerLength = 80.0;
+  p.ea = 5e8;
+  p.damping = -0.5;
+  p.cdn = 1.2;
+  p.cdt = 0.4;
+  p.can = 1.0;
+  p.cat = 0.1;
+  p.seabed = true;
+  p.seabedZ = -60.0;
+  p.bedStiffness = 1e6;
+  p.bedFriction = 0.5;
+  WaterProperties water;
+  water.depth = 60.0;
+  const AiryWaves waves(water, {{2.0, 8.0, 0.0, 0.0}});
+  CurrentProperties cp;
+  cp.speed = 0.5;
+  const CurrentField current(cp);
+  const LumpedLine line(p, "line", &waves, &current);
+  Eigen::Matrix3Xd r(3, 11), v(3, 11), f(3, 11);
+  for (int i = 0; i <= 10; ++i) r.col(i) = Vector3(9.0 * i, 0.0, -60.0 + 5.0 * i);
+  v.setConstant(0.1);
+  Eigen::VectorXd tension(10);
+  std::vector<dynamics::Matrix3> m(11);
+  const std::size_t before = allocationCount();
+  line.nodeForces(r, v, 1.0, f, tension);
+  line.nodeMass(r, m);
+  const double e = line.potentialEnergy(r);
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(e + f.sum() + tension.sum() + m[3].sum()));
 }

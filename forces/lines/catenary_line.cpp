@@ -52,6 +52,9 @@ CatenaryLine::CatenaryLine(std::string name, const dynamics::Model& model, const
   if (fairlead_.body == 0)
     throw std::invalid_argument("catenary line '" + this->name() +
                                 "': the fairlead must be on a body, not the ground");
+  if (p_.seabed && anchor_.body != 0)
+    throw std::invalid_argument("catenary line '" + this->name() +
+                                "': a line resting on the sea bed needs its anchor on the ground");
 }
 
 CatenaryLineState CatenaryLine::solveAt(const Vector3& pA, const Vector3& pB,

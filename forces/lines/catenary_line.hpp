@@ -34,8 +34,9 @@ class CatenaryLine final : public ForceProvider {
  public:
   // (name, model (checks only), anchor, fairlead (on a body >= 1), parameters) => the line;
   // throws std::invalid_argument naming it for a body outside the model, a fairlead on the
-  // ground, a non-finite point or bad parameters (catenaryParameterError). With
-  // parameters.seabed the sea bed is the horizontal plane through the anchor.
+  // ground, a non-finite point, bad parameters (catenaryParameterError) or a sea bed with the
+  // anchor on a body. With parameters.seabed the sea bed is the horizontal plane through the
+  // anchor. With the anchor on a body (no sea bed) the ends' 6x6 stiffness is [K -K; -K K].
   CatenaryLine(std::string name, const dynamics::Model& model, const Attachment& anchor,
                const Attachment& fairlead, const CatenaryParameters& parameters);
 

@@ -178,6 +178,9 @@ TEST_CASE("a catenary line refuses bad input, and a fairlead below the sea bed a
                   std::invalid_argument);
   CHECK_THROWS_AS(CatenaryLine("l", model, {2, Vector3::Zero()}, {1, Vector3::Zero()}, chain(true)),
                   std::invalid_argument);
+  CHECK_THROWS_AS(
+      CatenaryLine("l", model, {1, Vector3::Zero()}, {1, Vector3(1, 0, 0)}, chain(true)),
+      std::invalid_argument);  // a sea bed that would move with the anchor's body
   CatenaryParameters p = chain(true);
   p.weight = 0.0;
   CHECK_THROWS_AS(CatenaryLine("l", model, {0, Vector3::Zero()}, {1, Vector3::Zero()}, p),

@@ -268,3 +268,33 @@ TEST_CASE("a warm start converges in a few iterations to the cold start's soluti
   CHECK(solveCatenary({10.0, 1e8, 0.0, false, 0.0}, 1.0, 1.0).status == CatenaryStatus::BadInput);
   CHECK(std::string(catenaryParameterError({10.0, -1.0, 1.0, false, 0.0})).size() > 0);
 }
+
+TEST_CASE("cold starts converge over the whole range of spans, every profile, B above or below A") {
+  // sinking, on the bed, with friction, buoyant, nearly inextensible; XF from 1e-9 L to 1.01 L,
+  // ZF from -0.5 L to 1.01 L (not below the bed)
+  int solves = 0, failed = 0, worstIterations = 0;
+  double worstMiss = 0.0;
+  for (int kind = 0; kind < 5; ++kind) {
+    const CatenaryParameters p{500.0, kind == 4 ? 1e12 : 7.5e8, kind == 3 ? -800.0 : 1020.0,
+                               kind == 1 || kind == 2, kind == 2 ? 1.0 : 0.0};
+    for (int i = 0; i <= 60; ++i) {
+      for (int j = -30; j <= 60; ++j) {
+        const double xf = 5e-7 + 505.0 * i / 60.0, zf = 505.0 * j / 60.0;
+        if (p.seabed && zf < 0.0) continue;
+        const CatenarySolution s = solveCatenary(p, xf, zf);
+        ++solves;
+        if (s.status != CatenaryStatus::Converged) {
+          ++failed;
+          continue;
+        }
+        worstIterations = std::max(worstIterations, s.iterations);
+        const CatenaryPoint b = catenaryPoint(p, s, xf, p.length);
+        worstMiss = std::max(worstMiss, std::abs(b.x - xf) + std::abs(b.z - zf));
+      }
+    }
+  }
+  CHECK(solves > 20000);
+  CHECK(failed == 0);
+  CHECK(worstMiss < 1e-7);  // m, on a 500 m line
+  CHECK(worstIterations <= 40);
+}

@@ -1,10 +1,12 @@
 // The quasi-static catenary's cost per line per stage (issue 17: <= 1 us on a warm start): the
-// fairlead moves 1 mm between calls, as between the stages of a 0.05 s step at 2 cm/s.
+// fairlead moves 1 mm between calls, as between the stages of a 0.05 s step at 2 cm/s; and the
+// lumped-mass line's node forces per evaluation.
 #include <benchmark/benchmark.h>
 
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_builder.hpp"
 #include "forces/lines/catenary_line.hpp"
+#include "forces/lines/lumped_line.hpp"
 
 using namespace yardsim;
 using namespace yardsim::forces;
@@ -68,6 +70,51 @@ void BM_CatenaryLineEvaluate(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CatenaryLineEvaluate);
+
+// (segments) => one LumpedLine::nodeForces of a 500 m chain in a current and a regular wave
+void BM_LumpedLineForces(benchmark::State& state) {
+  LumpedLineProperties p;
+  p.length = 500.0;
+  p.segments = static_cast<int>(state.range(0));
+  p.diameter = 0.12;
+  p.massPerLength = 120.0;
+  p.ea = 7.5e8;
+  p.damping = -0.5;
+  p.cdn = 1.2;
+  p.cdt = 0.4;
+  p.can = 1.0;
+  p.cat = 0.1;
+  p.seabed = true;
+  p.seabedZ = -200.0;
+  p.bedStiffness = 1e7;
+  p.bedFriction = 0.5;
+  WaterProperties water;
+  water.depth = 200.0;
+  const AiryWaves waves(water, {{3.0, 10.0, 0.0, 0.0}});
+  CurrentProperties cp;
+  cp.speed = 0.8;
+  const CurrentField current(cp);
+  const LumpedLine line(p, "chain", &waves, &current);
+  const int n = line.nodes();
+  Eigen::Matrix3Xd r(3, n), v = Eigen::Matrix3Xd::Constant(3, n, 0.01), f(3, n);
+  for (int i = 0; i < n; ++i) {  // the first 40 % on the bed, then straight up to the fairlead
+    const double s = static_cast<double>(i) / p.segments;
+    r.col(i) = s < 0.4
+                   ? dynamics::Vector3(500.0 * s, 0.0, -200.0)
+                   : dynamics::Vector3(200.0 + 200.0 * (s - 0.4), 0.0, -200.0 + 330.0 * (s - 0.4));
+  }
+  Eigen::VectorXd tension(p.segments);
+  double t = 0.0;
+  for (auto _ : state) {
+    line.nodeForces(r, v, t, f, tension);
+    benchmark::DoNotOptimize(f.data());
+    t += 1e-3;
+  }
+  state.counters["per_node_ns"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                     benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_LumpedLineForces)->Arg(20)->Arg(40)->Arg(80);
 
 }  // namespace
 

@@ -129,8 +129,8 @@ TEST_CASE("spring-dampers, joint springs and bushings do not allocate at a stage
   b.setGravity(Vector3::Zero());
   b.addBody("a", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
             dynamics::boxInertia(300.0, Vector3(2, 1, 1)));
-  b.addBody("arm", "a", dynamics::Joint::revolute(Vector3::UnitZ()), dynamics::Transform::identity(),
-            dynamics::boxInertia(50.0, Vector3(2, 0.2, 0.2)));
+  b.addBody("arm", "a", dynamics::Joint::revolute(Vector3::UnitZ()),
+            dynamics::Transform::identity(), dynamics::boxInertia(50.0, Vector3(2, 0.2, 0.2)));
   const dynamics::Model m = b.build();
   SpringDamperProperties sp;
   sp.freeLength = 2.0;

@@ -180,16 +180,20 @@ CatenarySolution solveCatenary(const CatenaryParameters& p, double xf, double zf
       s1 = spans(h1, v1);
       res1 = residual(s1);
     }
-    const bool smallStep = std::abs(alpha * dH) + std::abs(alpha * dV) <= 1e-13 * (H + std::abs(V));
+    // (a step below 1e-13 of the forces, full or cut by the line search) => at the rounding floor
+    // of the spans (which a very taut, nearly inextensible line raises above tolR): converged if
+    // the residual is within 1e-9 of the spans, else stuck
+    const bool atFloor = std::abs(alpha * dH) + std::abs(alpha * dV) <= 1e-13 * (H + std::abs(V));
     H = h1;
     V = v1;
     s = s1;
     res = res1;
     sol.iterations = it;
-    if (res <= tolR || smallStep) {
+    if (res <= tolR || (atFloor && res <= 1e3 * tolR)) {
       sol.status = CatenaryStatus::Converged;
       break;
     }
+    if (atFloor) break;  // stuck: NoConvergence
   }
   // (H, V, J at the solution) => the stiffness J^-1 and the rest of the solution
   sol.hf = H;

@@ -53,8 +53,9 @@ const char* catenaryParameterError(const CatenaryParameters& p);
 
 // (parameters, XF >= 0, ZF, guess (hf, vf) or hf <= 0 for a cold start) => the solution. Newton
 // on (HF, VF) with HF kept positive, step halving when the residual grows, at most 100
-// iterations; converged when the residual is below 1e-12 (L + |XF| + |ZF|) or the step below
-// 1e-13 of the forces. Allocation-free.
+// iterations; converged when the span residual is below 1e-12 (L + XF + |ZF|), or below 1e-9
+// (L + XF + |ZF|) once the step is below 1e-13 of the forces (the rounding floor of a very taut,
+// nearly inextensible line). Allocation-free.
 CatenarySolution solveCatenary(const CatenaryParameters& p, double xf, double zf, double hf0 = 0.0,
                                double vf0 = 0.0);
 

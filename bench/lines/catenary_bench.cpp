@@ -27,8 +27,8 @@ void BM_CatenaryWarm(benchmark::State& state) {
     const double dx = 1e-3 * (k % 200 < 100 ? k % 100 : 100 - k % 100);
     s = solveCatenary(p, 400.0 + dx, 200.0 - 0.5 * dx, s.hf, s.vf);
     iterations += s.iterations;
-    // the whole struct: GCC 12 with benchmark 1.7.1's "+m,r" constraint on a double lvalue
-    // corrupts it (here: every warm start turned into a cold one)
+    // the whole struct: with DoNotOptimize(s.hf) (benchmark 1.7.1's "+m,r" asm on a double,
+    // g++ 12) every warm start here ran like a cold one (docs/performance.md)
     benchmark::DoNotOptimize(s);
     ++k;
   }

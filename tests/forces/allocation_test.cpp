@@ -16,6 +16,11 @@
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/wind_load.hpp"
+#include "forces/bushing.hpp"
+#include "forces/lines/catenary_line.hpp"
+#include "forces/lines/lumped_line.hpp"
+#include "forces/rotational_spring_damper.hpp"
+#include "forces/spring_damper.hpp"
 
 using yardsim::testing::allocationCount;
 
@@ -133,4 +138,112 @@ TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a st
   CHECK(allocationCount() == before);
   CHECK(volume > 0.0);
   CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("spring-dampers, joint springs and bushings do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("a", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(300.0, Vector3(2, 1, 1)));
+  b.addBody("arm", "a", dynamics::Joint::revolute(Vector3::UnitZ()),
+            dynamics::Transform::identity(), dynamics::boxInertia(50.0, Vector3(2, 0.2, 0.2)));
+  const dynamics::Model m = b.build();
+  SpringDamperProperties sp;
+  sp.freeLength = 2.0;
+  sp.curve = SpringCurve::table({-1.0, 0.0, 1.0}, {-1e4, 0.0, 2e3});
+  sp.damping = 50.0;
+  sp.minLength = 1.0;
+  sp.stopStiffness = 1e5;
+  SpringDamper spring("spring", m, {0, Vector3(0, 0, 5)}, {2, Vector3(1, 0, 0)}, sp);
+  JointSpringProperties jp;
+  jp.curve = SpringCurve::linear(300.0);
+  jp.damping = 3.0;
+  RotationalSpringDamper joint("joint", m, 2, 0, jp);
+  BushingProperties bp;
+  bp.stiffness = dynamics::Matrix6::Identity() * 1e4;
+  bp.damping = dynamics::Matrix6::Identity() * 10.0;
+  Bushing bushing("bushing", m, 1, dynamics::Transform::identity(), 2,
+                  dynamics::Transform::translation(Vector3(0.5, 0, 0)), bp);
+  Rig r(m, {&spring, &joint, &bushing});
+  r.q << 0.1, 0.2, 0.3, 1.0, 0.0, 0.0, 0.0, 0.4;
+  r.v.setConstant(0.1);
+  r.step(1e-3);
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&spring, &joint, &bushing}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += spring.state(s).force + spring.axialStiffness(s) + joint.generalizedForce(s) +
+          bushing.state(s).generalizedForce.norm();
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(sink));
+  CHECK(sink != 0.0);
+}
+
+TEST_CASE("catenary lines do not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(2e6, Vector3(40, 12, 5)));
+  const dynamics::Model m = b.build();
+  CatenaryLine taut("taut", m, {0, Vector3(-420, 0, -150)}, {1, Vector3(-20, 0, 0)},
+                    {500.0, 7.5e8, 1020.0, true, 0.0});
+  CatenaryLine friction("friction", m, {0, Vector3(420, 0, -150)}, {1, Vector3(20, 0, 0)},
+                        {500.0, 7.5e8, 1020.0, true, 1.0});
+  Rig r(m, {&taut, &friction});
+  r.q << 0.5, 0.2, 0.1, 1.0, 0.0, 0.0, 0.0;
+  r.v.setConstant(0.1);
+  r.step(1e-2);
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&taut, &friction}) {
+    fp->evaluate(s, f, tau);
+    sink += fp->potentialEnergy(s) + fp->power(s);
+  }
+  sink += taut.fairleadStiffness(s).norm() + friction.state(s).solution.laidLength;
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(sink));
+}
+
+TEST_CASE("a lumped line's node forces and masses do not allocate") {
+  LumpedLineProperties p;
+  p.length = 100.0;
+  p.segments = 10;
+  p.diameter = 0.1;
+  p.massPerLength = 80.0;
+  p.ea = 5e8;
+  p.damping = -0.5;
+  p.cdn = 1.2;
+  p.cdt = 0.4;
+  p.can = 1.0;
+  p.cat = 0.1;
+  p.seabed = true;
+  p.seabedZ = -60.0;
+  p.bedStiffness = 1e6;
+  p.bedFriction = 0.5;
+  WaterProperties water;
+  water.depth = 60.0;
+  const AiryWaves waves(water, {{2.0, 8.0, 0.0, 0.0}});
+  CurrentProperties cp;
+  cp.speed = 0.5;
+  const CurrentField current(cp);
+  const LumpedLine line(p, "line", &waves, &current);
+  Eigen::Matrix3Xd r(3, 11), v(3, 11), f(3, 11);
+  for (int i = 0; i <= 10; ++i) r.col(i) = Vector3(9.0 * i, 0.0, -60.0 + 5.0 * i);
+  v.setConstant(0.1);
+  Eigen::VectorXd tension(10);
+  std::vector<dynamics::Matrix3> m(11);
+  const std::size_t before = allocationCount();
+  line.nodeForces(r, v, 1.0, f, tension);
+  line.nodeMass(r, m);
+  const double e = line.potentialEnergy(r);
+  CHECK(allocationCount() == before);
+  CHECK(std::isfinite(e + f.sum() + tension.sum() + m[3].sum()));
 }

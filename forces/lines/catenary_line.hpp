@@ -1,0 +1,83 @@
+#pragma once
+// A quasi-static catenary mooring line (forces/lines/catenary.hpp) as a force provider: its
+// anchor is a point on the ground or on a body, its fairlead a point on a body. At every stage
+// the spans follow from the world points, x horizontal from the anchor toward the fairlead
+// (unit vector e_h), z up (the world z axis): XF = |horizontal part of p_B - p_A|,
+// ZF = (p_B - p_A).z; the Newton solve is warm-started from the last evaluate() with the same
+// scratch (the caller's, one per system: a temporary one starts cold). The fairlead
+// feels F_B = -HF e_h - VF e_z and the anchor body F_A = HA e_h + VA e_z (world frame, N, at the
+// points); F_A + F_B differs from zero by the line's weight and the sea bed's reaction.
+// Potential energy: the line's stored energy (weight and strain) plus w L z_A, J (zero at the
+// world's z = 0, like Gravity). Power: 0 without sea-bed friction (the line is conservative);
+// with friction the quasi-static model is not, and power() reports F . v + dV/dt (the friction's
+// quasi-static work rate, W) with dV/dt by a central difference along the motion, so the energy
+// balance closes. A fairlead within 1e-9 L horizontally of its anchor is evaluated at 1e-9 L in
+// the last horizontal direction. Conventions: docs/forces.md.
+#include <string>
+
+#include "forces/force_provider.hpp"
+#include "forces/lines/catenary.hpp"
+#include "forces/rope_path.hpp"
+
+namespace yardsim::forces {
+
+// The line at one stage: the solution, the spans (m), e_h, and the forces on the two ends
+// (world frame, N).
+struct CatenaryLineState {
+  CatenarySolution solution;
+  double xf = 0.0, zf = 0.0;
+  dynamics::Vector3 horizontal = dynamics::Vector3::UnitX();
+  dynamics::Vector3 fairleadForce = dynamics::Vector3::Zero();
+  dynamics::Vector3 anchorForce = dynamics::Vector3::Zero();
+};
+
+class CatenaryLine final : public ForceProvider {
+ public:
+  // (name, model (checks only), anchor, fairlead (on a body >= 1), parameters) => the line;
+  // throws std::invalid_argument naming it for a body outside the model, a fairlead on the
+  // ground, a non-finite point, bad parameters (catenaryParameterError) or a sea bed with the
+  // anchor on a body. With parameters.seabed the sea bed is the horizontal plane through the
+  // anchor. With the anchor on a body (no sea bed) the ends' 6x6 stiffness is [K -K; -K K].
+  CatenaryLine(std::string name, const dynamics::Model& model, const Attachment& anchor,
+               const Attachment& fairlead, const CatenaryParameters& parameters);
+
+  // (stage) => the line there (warm-started from the last evaluate() with the stage's scratch,
+  // which it does not change);
+  // throws ForceError naming the line when the solve fails (no convergence, fairlead below the
+  // sea bed)
+  CatenaryLineState state(const Stage& s) const;
+  // (stage) => K = -dF_B/dp_B, the fairlead's 3x3 stiffness in the world frame, N/m (symmetric
+  // without friction)
+  dynamics::Matrix3 fairleadStiffness(const Stage& s) const;
+  const CatenaryParameters& parameters() const { return p_; }
+  const Attachment& anchor() const { return anchor_; }
+  const Attachment& fairlead() const { return fairlead_; }
+
+  // the scratch: the last evaluate()'s solution and horizontal direction (the warm start)
+  struct Scratch final : ProviderScratch {
+    CatenarySolution last;
+    dynamics::Vector3 lastHorizontal = dynamics::Vector3::UnitX();
+  };
+  std::unique_ptr<ProviderScratch> makeScratch() const override;
+
+ protected:
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                  Eigen::VectorXd& tau) const override;
+  double doPotentialEnergy(const Stage& s) const override;
+  double doPower(const Stage& s) const override;
+
+ private:
+  // (anchor and fairlead world points, warm start) => the state
+  CatenaryLineState solveAt(const dynamics::Vector3& pA, const dynamics::Vector3& pB,
+                            const Scratch& warm, double t) const;
+  // (stage) => its scratch, or a cold one
+  const Scratch& warmStart(const Stage& s) const {
+    static const Scratch cold;
+    return s.scratch != nullptr ? static_cast<const Scratch&>(*s.scratch) : cold;
+  }
+
+  Attachment anchor_, fairlead_;
+  CatenaryParameters p_;
+};
+
+}  // namespace yardsim::forces

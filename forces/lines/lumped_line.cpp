@@ -1,0 +1,133 @@
+#include "forces/lines/lumped_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace yardsim::forces {
+
+using dynamics::Matrix3;
+using dynamics::Vector3;
+
+namespace {
+// (properties, name) => properties, checked
+const LumpedLineProperties& checked(const LumpedLineProperties& p, const std::string& name) {
+  auto bad = [&](const std::string& what) {
+    throw std::invalid_argument("lumped line '" + name + "': " + what);
+  };
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  auto nonNegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
+  if (!positive(p.length) || !positive(p.diameter) || !positive(p.massPerLength) || !positive(p.ea))
+    bad("length, diameter, mass per length and EA must be finite and > 0");
+  if (p.segments < 1) bad("it needs at least one segment");
+  if (!std::isfinite(p.damping)) bad("the damping must be finite");
+  if (!nonNegative(p.cdn) || !nonNegative(p.cdt) || !nonNegative(p.can) || !nonNegative(p.cat))
+    bad("drag and added-mass coefficients must be finite and >= 0");
+  if (!positive(p.waterDensity) || !positive(p.gravity))
+    bad("water density and gravity must be > 0");
+  if (!std::isfinite(p.seabedZ) || !nonNegative(p.bedStiffness) || !nonNegative(p.bedDamping) ||
+      !nonNegative(p.bedFriction) || !positive(p.frictionSpeed))
+    bad("sea-bed parameters must be finite and >= 0 (friction speed > 0)");
+  return p;
+}
+}  // namespace
+
+LumpedLine::LumpedLine(const LumpedLineProperties& p, std::string name, const AiryWaves* waves,
+                       const CurrentField* current)
+    : p_(checked(p, name)), name_(std::move(name)), waves_(waves), current_(current) {
+  l_ = p_.length / p_.segments;
+  area_ = 0.25 * std::numbers::pi * p_.diameter * p_.diameter;
+  w_ = (p_.massPerLength - p_.waterDensity * area_) * p_.gravity;
+  // (a segment's axial mode: reduced mass mu l/4, stiffness EA/l) => critical c = l sqrt(EA mu)
+  c_ = p_.damping >= 0.0 ? p_.damping : -p_.damping * l_ * std::sqrt(p_.ea * p_.massPerLength);
+}
+
+Vector3 LumpedLine::tangent(const Eigen::Matrix3Xd& r, int i) const {
+  const int n = p_.segments;
+  const Vector3 d = r.col(std::min(i + 1, n)) - r.col(std::max(i - 1, 0));
+  const double len = d.norm();
+  return len > 0.0 ? Vector3(d / len) : Vector3::UnitZ();
+}
+
+void LumpedLine::nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v, double t,
+                            Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const {
+  const int n = p_.segments;
+  const double rho = p_.waterDensity;
+  // (segments) => tension-only Kelvin-Voigt forces, +T u on node i, -T u on node i + 1
+  f.setZero();
+  for (int i = 0; i < n; ++i) {
+    const Vector3 d = r.col(i + 1) - r.col(i);
+    const double len = d.norm();
+    const double strain = len / l_ - 1.0;
+    double T = 0.0;
+    if (strain > 0.0) {
+      const Vector3 u = d / len;
+      const double rate = u.dot(v.col(i + 1) - v.col(i)) / l_;
+      T = std::max(0.0, p_.ea * strain + c_ * rate);
+      f.col(i) += T * u;
+      f.col(i + 1) -= T * u;
+    }
+    tension[i] = T;
+  }
+  // (nodes) => weight, Morison drag and fluid inertia, sea bed
+  for (int i = 0; i <= n; ++i) {
+    const Vector3 p = r.col(i), vi = v.col(i);
+    const double ln = nodeLength(i);
+    const double ls = 0.5 * ((i > 0 ? (r.col(i) - r.col(i - 1)).norm() : 0.0) +
+                             (i < n ? (r.col(i + 1) - r.col(i)).norm() : 0.0));
+    Vector3 fi(0.0, 0.0, -w_ * ln);
+    const Vector3 q = tangent(r, i);
+    Vector3 uf = current_ ? current_->velocity(p) : Vector3::Zero();
+    if (waves_) uf += waves_->velocity(p, t);
+    const Vector3 vr = uf - vi;
+    const Vector3 vt = vr.dot(q) * q, vn = vr - vt;
+    fi += 0.5 * rho * p_.diameter * ls *
+          (p_.cdn * vn.norm() * vn + p_.cdt * std::numbers::pi * vt.norm() * vt);
+    if (waves_) {
+      const Vector3 a = waves_->acceleration(p, t);
+      const Vector3 at = a.dot(q) * q;
+      fi += rho * area_ * ln * ((1.0 + p_.can) * (a - at) + (1.0 + p_.cat) * at);
+    }
+    if (p_.seabed && p.z() < p_.seabedZ) {
+      const double dl = p_.diameter * ln;
+      const double normal =
+          std::max(0.0, (p_.seabedZ - p.z()) * p_.bedStiffness * dl - vi.z() * p_.bedDamping * dl);
+      fi.z() += normal;
+      const Vector3 vh(vi.x(), vi.y(), 0.0);
+      const double speed = vh.norm();
+      if (speed > 0.0 && p_.bedFriction > 0.0)
+        fi -= p_.bedFriction * normal * std::min(1.0, speed / p_.frictionSpeed) / speed * vh;
+    }
+    f.col(i) += fi;
+  }
+}
+
+void LumpedLine::nodeMass(const Eigen::Matrix3Xd& r, std::vector<Matrix3>& m) const {
+  // (q) => mu l_n I + rho V [Can (I - q q^T) + Cat q q^T]
+  for (int i = 0; i <= p_.segments; ++i) {
+    const double ln = nodeLength(i);
+    const Vector3 q = tangent(r, i);
+    const Matrix3 qq = q * q.transpose();
+    m[static_cast<std::size_t>(i)] =
+        p_.massPerLength * ln * Matrix3::Identity() +
+        p_.waterDensity * area_ * ln * (p_.can * (Matrix3::Identity() - qq) + p_.cat * qq);
+  }
+}
+
+double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r) const {
+  double e = 0.0;
+  for (int i = 0; i < p_.segments; ++i) {
+    const double strain = (r.col(i + 1) - r.col(i)).norm() / l_ - 1.0;
+    if (strain > 0.0) e += 0.5 * p_.ea * l_ * strain * strain;
+  }
+  for (int i = 0; i <= p_.segments; ++i) {
+    const double ln = nodeLength(i), z = r(2, i);
+    e += w_ * ln * z;
+    if (p_.seabed && z < p_.seabedZ)
+      e += 0.5 * p_.bedStiffness * p_.diameter * ln * (p_.seabedZ - z) * (p_.seabedZ - z);
+  }
+  return e;
+}
+
+}  // namespace yardsim::forces

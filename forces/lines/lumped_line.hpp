@@ -1,0 +1,87 @@
+#pragma once
+// A lumped-mass line (MoorDyn's formulation, Hall and Goupee, Ocean Engineering 104, 2015): N
+// straight segments of unstretched length l = L/N between N + 1 nodes, node 0 at the anchor end
+// and node N at the fairlead end. Per segment, tension only: T = max(0, EA e + c de/dt) while
+// the strain e = |r_(i+1) - r_i| / l - 1 > 0, else 0 (c the internal damping, N s, per unit
+// strain rate). Per node (the half segments on either side, length l_n): net weight
+// w l_n (w = (mu - rho pi d^2/4) g, N/m, down the world z), Morison drag
+// 1/2 rho Cdn d l_s |u_n| u_n and 1/2 rho Cdt pi d l_s |u_t| u_t on the relative flow velocity's
+// normal and tangential parts (l_s the stretched node length, the tangent q along the line),
+// fluid inertia rho V [(1 + Can) a_n + (1 + Cat) a_t] of the waves' acceleration (V = pi d^2/4
+// l_n), and a sea bed: a normal force (z_bed - z) kb d l_n - vz cb d l_n (>= 0) while below it,
+// with Coulomb friction mu N against the horizontal velocity (linear below a regularizing
+// speed). Each node's mass is mu l_n plus the added mass rho V [Can (I - q q^T) + Cat q q^T].
+// All world frame, SI units. This is the node-force evaluation as a pure function of node
+// positions and velocities: the nodes are not yet part of a multibody state (the mechanics
+// issue wires them into the integrator); the end nodes' forces are what the attached bodies
+// (anchor, fairlead) would feel, their own weight share included.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "dynamics/spatial.hpp"
+#include "forces/airy_waves.hpp"
+#include "forces/current_profile.hpp"
+
+namespace yardsim::forces {
+
+struct LumpedLineProperties {
+  double length = 0.0;           // L, unstretched, m
+  int segments = 20;             // N >= 1
+  double diameter = 0.0;         // d, volume-equivalent, m
+  double massPerLength = 0.0;    // mu, in air, kg/m
+  double ea = 0.0;               // N
+  double damping = 0.0;          // c, N s (>= 0); < 0: -c is a fraction of a segment's critical
+                                 // damping l sqrt(EA mu)
+  double cdn = 0.0, cdt = 0.0;   // Morison drag coefficients, normal and tangential
+  double can = 0.0, cat = 0.0;   // added-mass coefficients, normal and tangential
+  double waterDensity = 1025.0;  // kg/m^3
+  double gravity = 9.81;         // m/s^2
+  bool seabed = false;           // a flat sea bed at z = seabedZ
+  double seabedZ = 0.0;          // m, world
+  double bedStiffness = 0.0;     // kb, Pa/m
+  double bedDamping = 0.0;       // cb, Pa s/m
+  double bedFriction = 0.0;      // Coulomb coefficient
+  double frictionSpeed = 1e-3;   // the friction grows linearly up to this speed, m/s (> 0)
+};
+
+class LumpedLine {
+ public:
+  // (properties, name, waves and current or null: still water) => the line; throws
+  // std::invalid_argument naming it for a parameter out of range. waves and current must
+  // outlive it.
+  LumpedLine(const LumpedLineProperties& p, std::string name, const AiryWaves* waves = nullptr,
+             const CurrentField* current = nullptr);
+
+  const std::string& name() const { return name_; }
+  const LumpedLineProperties& properties() const { return p_; }
+  int nodes() const { return p_.segments + 1; }
+  double segmentLength() const { return l_; }       // l, m
+  double weightPerLength() const { return w_; }     // w, N/m (< 0: buoyant)
+  double dampingCoefficient() const { return c_; }  // c, N s
+  // (node) => its unstretched length l_n (l/2 at the ends, l inside), m
+  double nodeLength(int i) const { return i == 0 || i == p_.segments ? 0.5 * l_ : l_; }
+
+  // (r, v: 3 x nodes, world, m and m/s; t, s) => f: the net force on every node (segments,
+  // weight, drag, fluid inertia, bed), N, and the tension of every segment, N. f and tension
+  // must be sized 3 x nodes() and segments. Allocation-free.
+  void nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v, double t,
+                  Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const;
+  // (r) => every node's 3x3 mass, structural plus added, kg; m sized nodes(). Allocation-free.
+  void nodeMass(const Eigen::Matrix3Xd& r, std::vector<dynamics::Matrix3>& m) const;
+  // (r) => strain energy of the taut segments + net weight w l_n z + bed springs, J
+  double potentialEnergy(const Eigen::Matrix3Xd& r) const;
+
+ private:
+  // (r, node) => unit tangent: along the chord of its neighbours (the end segment at an end)
+  dynamics::Vector3 tangent(const Eigen::Matrix3Xd& r, int i) const;
+
+  LumpedLineProperties p_;
+  std::string name_;
+  const AiryWaves* waves_;
+  const CurrentField* current_;
+  double l_ = 0.0, w_ = 0.0, c_ = 0.0, area_ = 0.0;
+};
+
+}  // namespace yardsim::forces

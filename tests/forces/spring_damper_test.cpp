@@ -41,7 +41,7 @@ dynamics::Model twoFreeBodies() {
 }  // namespace
 
 TEST_CASE(
-    "a block on a spring oscillates at sqrt(k/m), pushed and pulled; damped as the closed form") {
+    "a block on a spring oscillates at sqrt(k/m), pushed and pulled and damped as the closed form") {
   const dynamics::Model model = verticalBlock(kMass);
   const double w = std::sqrt(kK / kMass), x0 = 0.3;  // starts compressed by 0.3 m
   for (double zeta : {0.0, 0.05}) {

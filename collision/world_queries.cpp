@@ -1,0 +1,206 @@
+// The queries of CollisionWorld: candidate pairs, interference, contacts, distances, watches.
+#include <algorithm>
+#include <limits>
+
+#include "collision/collision_world.hpp"
+#include "collision/detail/world_impl.hpp"
+
+namespace yardsim::collision {
+
+using detail::idOf;
+
+namespace {
+
+// What a broad-phase callback needs: the world, and for the narrow phase how many contacts.
+struct PairContext {
+  CollisionWorld::Impl* m;
+  int maxContacts = 0;  // 0: interference only
+  bool found = false;
+};
+
+// (o1, o2) => (a, b) with a < b
+std::pair<ObjectId, ObjectId> ordered(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2) {
+  const ObjectId i = idOf(o1), j = idOf(o2);
+  return i < j ? std::pair{i, j} : std::pair{j, i};
+}
+
+// (o1, o2, context) => the pair recorded if the filter lets it through; never stops
+bool collectPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+  auto* c = static_cast<PairContext*>(data);
+  const auto [a, b] = ordered(o1, o2);
+  if (!c->m->boxesOverlap(a, b)) return false;
+  ++c->m->stats.broadPhasePairs;
+  if (!c->m->filter.canCollide(a, b)) return false;
+  ++c->m->stats.candidatePairs;
+  c->m->pairs.emplace_back(a, b);
+  return false;
+}
+
+// (o1, o2, context) => narrow phase of a filtered pair: contacts appended (or found set and
+// the traversal stopped when maxContacts == 0)
+bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+  auto* c = static_cast<PairContext*>(data);
+  CollisionWorld::Impl& m = *c->m;
+  const auto [a, b] = ordered(o1, o2);
+  if (!m.boxesOverlap(a, b)) return false;
+  ++m.stats.broadPhasePairs;
+  if (!m.filter.canCollide(a, b)) return false;
+  ++m.stats.candidatePairs;
+  ++m.stats.narrowPhaseCalls;
+  const auto* oa = m.records[static_cast<std::size_t>(a)].object.get();
+  const auto* ob = m.records[static_cast<std::size_t>(b)].object.get();
+  m.result.clear();
+  fcl::collide(oa, ob, m.request, m.result);
+  if (!m.result.isCollision()) return false;
+  if (c->maxContacts == 0) {
+    c->found = true;
+    return true;
+  }
+  for (std::size_t k = 0; k < m.result.numContacts(); ++k) {
+    const auto& fc = m.result.getContact(k);
+    Contact ct;
+    ct.a = a;
+    ct.b = b;
+    ct.p_W = fc.pos;
+    ct.n_W = fc.normal;
+    ct.depth = fc.penetration_depth;
+    m.contacts.push_back(ct);
+  }
+  return false;
+}
+
+}  // namespace
+
+// () => filtered pairs whose boxes overlap
+const std::vector<std::pair<ObjectId, ObjectId>>& CollisionWorld::candidatePairs() {
+  update();
+  Impl& m = *impl_;
+  m.stats = {};
+  m.pairs.clear();
+  PairContext c{&m};
+  m.manager.collide(&c, collectPair);
+  return m.pairs;
+}
+
+// () => first intersecting candidate pair found
+bool CollisionWorld::anyInterference() {
+  update();
+  Impl& m = *impl_;
+  m.stats = {};
+  m.request.num_max_contacts = 1;
+  m.request.enable_contact = false;
+  PairContext c{&m, 0};
+  m.manager.collide(&c, narrowPair);
+  return c.found;
+}
+
+// (max per pair) => contact points of all intersecting candidate pairs
+const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
+  update();
+  Impl& m = *impl_;
+  m.stats = {};
+  m.contacts.clear();
+  m.request.num_max_contacts = static_cast<std::size_t>(std::max(1, maxPerPair));
+  m.request.enable_contact = true;
+  PairContext c{&m, std::max(1, maxPerPair)};
+  m.manager.collide(&c, narrowPair);
+  m.stats.contacts = static_cast<int>(m.contacts.size());
+  return m.contacts;
+}
+
+// (a, b) => FCL distance with nearest points (world frame)
+Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
+  update();
+  Impl& m = *impl_;
+  const auto* oa = m.at(a).object.get();
+  const auto* ob = m.at(b).object.get();
+  m.distanceResult.clear();
+  fcl::distance(oa, ob, m.distanceRequest, m.distanceResult);
+  Distance d;
+  d.a = a;
+  d.b = b;
+  d.distance = m.distanceResult.min_distance;
+  d.pa_W = m.distanceResult.nearest_points[0];
+  d.pb_W = m.distanceResult.nearest_points[1];
+  return d;
+}
+
+// (a, b) => whether they intersect
+bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
+  update();
+  Impl& m = *impl_;
+  m.request.num_max_contacts = 1;
+  m.request.enable_contact = false;
+  m.result.clear();
+  fcl::collide(m.at(a).object.get(), m.at(b).object.get(), m.request, m.result);
+  return m.result.isCollision();
+}
+
+// (sets, margin) => a watch
+int CollisionWorld::addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, double margin) {
+  Impl& m = *impl_;
+  if (!(margin >= 0.0) || !std::isfinite(margin)) {
+    throw CollisionError("collision: a watch margin must be finite and >= 0");
+  }
+  detail::Watch w;
+  w.inB.assign(m.records.size(), 0);
+  for (ObjectId id : a) m.at(id);
+  for (ObjectId id : b) {
+    m.at(id);
+    w.inB[static_cast<std::size_t>(id)] = 1;
+  }
+  w.a = std::move(a);
+  w.margin = margin;
+  m.watches.push_back(std::move(w));
+  return static_cast<int>(m.watches.size()) - 1;
+}
+
+namespace {
+
+struct WatchContext {
+  CollisionWorld* world;
+  CollisionWorld::Impl* m;
+  detail::Watch* w;
+  ObjectId a;
+  Aabb box;  // a's box grown by the margin
+};
+
+// (tree object, probe, context) => a nearby member of set b: its exact distance, kept if closer
+bool watchPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
+  auto* c = static_cast<WatchContext*>(data);
+  const ObjectId b = idOf(o1) >= 0 ? idOf(o1) : idOf(o2);
+  if (b == c->a || !c->w->inB[static_cast<std::size_t>(b)]) return false;
+  if (!c->box.overlaps(c->m->records[static_cast<std::size_t>(b)].box)) return false;
+  if (!c->m->filter.canCollide(c->a, b)) return false;
+  ++c->w->result.pairsQueried;
+  const Distance d = c->world->distance(c->a, b);
+  if (!c->w->result.withinMargin || d.distance < c->w->result.closest.distance) {
+    c->w->result.withinMargin = d.distance <= c->w->margin;
+    if (c->w->result.withinMargin) c->w->result.closest = d;
+  }
+  return false;
+}
+
+}  // namespace
+
+// (watch) => the closest pair within the margin, querying only pairs whose grown boxes overlap
+const Clearance& CollisionWorld::clearance(int watch) {
+  update();
+  Impl& m = *impl_;
+  if (watch < 0 || watch >= static_cast<int>(m.watches.size())) {
+    throw std::out_of_range("collision: no watch " + std::to_string(watch));
+  }
+  detail::Watch& w = m.watches[static_cast<std::size_t>(watch)];
+  if (w.inB.size() < m.records.size()) w.inB.resize(m.records.size(), 0);
+  w.result = {};
+  w.result.closest.distance = w.margin;
+  for (ObjectId a : w.a) {
+    const Aabb grown = m.records[static_cast<std::size_t>(a)].box.inflated(w.margin);
+    m.probe->setAabb(grown);
+    WatchContext c{this, &m, &w, a, grown};
+    m.manager.collide(m.probe.get(), &c, watchPair);
+  }
+  return w.result;
+}
+
+}  // namespace yardsim::collision

@@ -47,22 +47,27 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
   if (!m.filter.canCollide(a, b)) return false;
   ++m.stats.candidatePairs;
   ++m.stats.narrowPhaseCalls;
-  const auto* oa = m.records[static_cast<std::size_t>(a)].object.get();
-  const auto* ob = m.records[static_cast<std::size_t>(b)].object.get();
-  m.result.clear();
-  fcl::collide(oa, ob, m.request, m.result);
+  const double sign = collideOrdered(m, a, b);
   if (!m.result.isCollision()) return false;
   if (c->maxContacts == 0) {
     c->found = true;
     return true;
   }
+  const std::size_t first = m.contacts.size();
   for (std::size_t k = 0; k < m.result.numContacts(); ++k) {
     const auto& fc = m.result.getContact(k);
+    // a mesh reports a vertex once per triangle around it: keep one
+    bool seen = false;
+    for (std::size_t j = first; j < m.contacts.size() && !seen; ++j) {
+      seen = (m.contacts[j].p_W - fc.pos).squaredNorm() < 1e-18 * (1.0 + fc.pos.squaredNorm()) &&
+             m.contacts[j].depth == fc.penetration_depth;
+    }
+    if (seen) continue;
     Contact ct;
     ct.a = a;
     ct.b = b;
     ct.p_W = fc.pos;
-    ct.n_W = fc.normal;
+    ct.n_W = sign * fc.normal;
     ct.depth = fc.penetration_depth;
     m.contacts.push_back(ct);
   }
@@ -70,6 +75,21 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
 }
 
 }  // namespace
+
+// (world, a < b) => m.result of fcl::collide, and the sign that turns its normals into a -> b.
+// FCL 0.7 returns the normal of a shape-mesh pair (shape first) pointing the wrong way (from the
+// mesh to the shape; world_queries_test): a mesh is always passed first and the sign fixes it.
+double collideOrdered(CollisionWorld::Impl& m, ObjectId a, ObjectId b) {
+  const auto* oa = m.records[static_cast<std::size_t>(a)].object.get();
+  const auto* ob = m.records[static_cast<std::size_t>(b)].object.get();
+  m.result.clear();
+  if (oa->getObjectType() == fcl::OT_GEOM && ob->getObjectType() == fcl::OT_BVH) {
+    fcl::collide(ob, oa, m.request, m.result);
+    return -1.0;
+  }
+  fcl::collide(oa, ob, m.request, m.result);
+  return 1.0;
+}
 
 // () => filtered pairs whose boxes overlap
 const std::vector<std::pair<ObjectId, ObjectId>>& CollisionWorld::candidatePairs() {
@@ -131,8 +151,9 @@ bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
   Impl& m = *impl_;
   m.request.num_max_contacts = 1;
   m.request.enable_contact = false;
-  m.result.clear();
-  fcl::collide(m.at(a).object.get(), m.at(b).object.get(), m.request, m.result);
+  m.at(a);
+  m.at(b);
+  collideOrdered(m, a, b);
   return m.result.isCollision();
 }
 

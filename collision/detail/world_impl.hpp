@@ -98,4 +98,7 @@ struct CollisionWorld::Impl {
   detail::Record& at(ObjectId id);
 };
 
+// (world, a, b) => fcl::collide into m.result, a mesh first; the sign that makes normals a -> b
+double collideOrdered(CollisionWorld::Impl& m, ObjectId a, ObjectId b);
+
 }  // namespace yardsim::collision

@@ -43,7 +43,7 @@ struct Item {
 
 // (items, tight) => a world holding them at their current poses
 CollisionWorld build(const std::vector<Item>& items, bool tight = true) {
-  CollisionWorld w(WorldOptions{tight, true});
+  CollisionWorld w(WorldOptions{tight, false});
   for (const Item& it : items) {
     if (it.segment)
       w.addSegment(it.p0, it.p1, 2.0 * it.shape.radius);

@@ -5,7 +5,7 @@
 
 using namespace yardsim::collision;
 
-TEST_CASE("groups and masks: both directions must accept") {
+TEST_CASE("collision: groups and masks: both directions must accept") {
   CollisionFilter f;
   constexpr std::uint32_t kBody = 1u, kRope = 2u;
   f.setEntry(0, {-1, kBody, kAllGroups});
@@ -20,7 +20,7 @@ TEST_CASE("groups and masks: both directions must accept") {
   CHECK_FALSE(f.canCollide(0, 0));
 }
 
-TEST_CASE("same owner never collides; ignored owners and objects are symmetric") {
+TEST_CASE("collision: same owner never collides, ignored owners and objects are symmetric") {
   CollisionFilter f;
   f.setEntry(0, {7, 1u, kAllGroups});   // rope 7, segment 0
   f.setEntry(1, {7, 1u, kAllGroups});   // rope 7, segment 1

@@ -55,7 +55,7 @@ CollisionWorld build(const std::vector<Item>& items, bool tight = true) {
 
 }  // namespace
 
-TEST_CASE("a non-finite pose is refused with the object's name, before it reaches FCL") {
+TEST_CASE("collision: a non-finite pose is refused with the object's name, before it reaches FCL") {
   CollisionWorld w;
   const ObjectId a = w.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
   const ObjectId s = w.addSegment(Vector3(0, 0, 5), Vector3(0, 0, 9), 0.05, {"hoist", {}});
@@ -76,7 +76,8 @@ TEST_CASE("a non-finite pose is refused with the object's name, before it reache
 }
 
 TEST_CASE(
-    "tight boxes: the candidate pairs are exactly the overlapping corner boxes, fewer than FCL's") {
+    "collision: tight boxes give exactly the overlapping corner-box pairs, fewer than FCL "
+    "default") {
   std::mt19937 rng(11);
   std::vector<Item> items;
   for (int i = 0; i < 600; ++i) {
@@ -108,7 +109,7 @@ TEST_CASE(
   CHECK(std::includes(pl.begin(), pl.end(), pt.begin(), pt.end()));
 }
 
-TEST_CASE("incremental updates give the same candidate pairs as a full rebuild") {
+TEST_CASE("collision: incremental updates give the same candidate pairs as a full rebuild") {
   auto mesh = std::make_shared<yardsim::forces::TriangleMesh>(
       yardsim::forces::cylinderMesh(1.5, -2.0, 2.0, 16));
   for (unsigned seed : {1u, 2u, 3u, 4u}) {
@@ -178,7 +179,7 @@ TEST_CASE("incremental updates give the same candidate pairs as a full rebuild")
   }
 }
 
-TEST_CASE("the filter removes pairs in the broad phase") {
+TEST_CASE("collision: the filter removes pairs in the broad phase") {
   CollisionWorld w;
   ObjectOptions body{"body", {1, 1u, kAllGroups}};
   const ObjectId a = w.add(Shape::box(Vector3(2, 2, 2)), Transform::identity(), body);

@@ -23,7 +23,7 @@ Matrix3 randomRotation(std::mt19937& rng) {
 
 }  // namespace
 
-TEST_CASE("checkShape refuses non-positive sizes and names the object") {
+TEST_CASE("collision: checkShape refuses non-positive sizes and names the object") {
   CHECK_THROWS_WITH(checkShape(Shape::box(Vector3(1, 0, 1)), "block A"),
                     Catch::Contains("block A") && Catch::Contains("box size"));
   CHECK_THROWS_AS(checkShape(Shape::sphere(-1.0), "s"), CollisionError);
@@ -33,7 +33,7 @@ TEST_CASE("checkShape refuses non-positive sizes and names the object") {
   CHECK_NOTHROW(checkShape(Shape::capsule(0.1, 0.0), "rope"));
 }
 
-TEST_CASE("a rotated box's world box is the box of its eight corners") {
+TEST_CASE("collision: a rotated box's world box is the box of its eight corners") {
   std::mt19937 rng(3);
   const Shape s = Shape::box(Vector3(4.0, 1.0, 0.5));
   for (int k = 0; k < 50; ++k) {
@@ -50,7 +50,8 @@ TEST_CASE("a rotated box's world box is the box of its eight corners") {
   }
 }
 
-TEST_CASE("cylinder and capsule boxes are tight: the rim and the end spheres touch them") {
+TEST_CASE(
+    "collision: cylinder and capsule boxes are tight: the rim and the end spheres touch them") {
   std::mt19937 rng(5);
   const double r = 0.7, L = 3.0;
   for (int k = 0; k < 20; ++k) {
@@ -79,7 +80,7 @@ TEST_CASE("cylinder and capsule boxes are tight: the rim and the end spheres tou
   }
 }
 
-TEST_CASE("a mesh's world box encloses its vertices and equals the primitive box's") {
+TEST_CASE("collision: a mesh's world box encloses its vertices and equals the primitive box's") {
   std::mt19937 rng(7);
   auto mesh = std::make_shared<yardsim::forces::TriangleMesh>(
       yardsim::forces::boxMesh(Vector3(2.0, 3.0, 4.0), 2, 2, 2));
@@ -92,7 +93,7 @@ TEST_CASE("a mesh's world box encloses its vertices and equals the primitive box
   }
 }
 
-TEST_CASE("a half-space's box is cut on the side its world normal points to") {
+TEST_CASE("collision: a half-space's box is cut on the side its world normal points to") {
   const Shape ground = Shape::halfSpace(Vector3(0, 0, 2.0), 1.0);  // z <= 0.5 in B
   const Aabb a = worldAabb(ground, shapeBound(ground), Transform::translation(Vector3(0, 0, 2)));
   CHECK(a.max.z() == Approx(2.5));

@@ -23,7 +23,7 @@ bool near(const Vector3& a, const Vector3& b, double tol) {
 
 }  // namespace
 
-TEST_CASE("sphere-box distances and witness points against hand computation") {
+TEST_CASE("collision: sphere-box distances and witness points against hand computation") {
   CollisionWorld w;
   const ObjectId box = w.add(Shape::box(Vector3(2, 2, 2)), Transform::identity());
   const ObjectId s = w.add(Shape::sphere(0.5), Transform::translation(Vector3(2.0, 0.5, 0.3)));
@@ -41,7 +41,7 @@ TEST_CASE("sphere-box distances and witness points against hand computation") {
   CHECK(w.distance(box, s).distance == Approx(3.0 - std::sqrt(2.0) - 0.5).margin(1e-6));
 }
 
-TEST_CASE("capsule-box distances against hand computation") {
+TEST_CASE("collision: capsule-box distances against hand computation") {
   CollisionWorld w;
   const ObjectId box = w.add(Shape::box(Vector3(2, 2, 2)), Transform::identity());
   // a capsule along x, 2 m straight part, radius 0.2, 3 m above the centre: 3 - 1 - 0.2
@@ -62,7 +62,7 @@ TEST_CASE("capsule-box distances against hand computation") {
   CHECK(w.distance(r2, box).distance == Approx(0.5).margin(1e-6));
 }
 
-TEST_CASE("rope clearance over a box edge, querying only the pairs within the margin") {
+TEST_CASE("collision: rope clearance over a box edge, querying only the pairs within the margin") {
   CollisionWorld w;
   const ObjectId box = w.add(Shape::box(Vector3(2, 2, 2)), Transform::identity(), {"block", {1}});
   for (int i = 0; i < 50; ++i) {  // far away, must not be queried
@@ -100,7 +100,7 @@ TEST_CASE("rope clearance over a box edge, querying only the pairs within the ma
   CHECK_FALSE(w.clearance(watch).withinMargin);
 }
 
-TEST_CASE("contact normals point from the lower id to the higher; depth by hand") {
+TEST_CASE("collision: contact normals point from the lower id to the higher, depth by hand") {
   for (bool boxFirst : {true, false}) {
     CollisionWorld w;
     const Transform Xs = Transform::translation(Vector3(0.2, -0.1, 1.9));  // 0.1 into the top
@@ -126,7 +126,7 @@ TEST_CASE("contact normals point from the lower id to the higher; depth by hand"
   }
 }
 
-TEST_CASE("boxes from meshes agree with primitive boxes: interference and distance") {
+TEST_CASE("collision: boxes from meshes agree with primitive boxes: interference and distance") {
   const Vector3 size(2.0, 1.0, 0.5);
   auto mesh =
       std::make_shared<yardsim::forces::TriangleMesh>(yardsim::forces::boxMesh(size, 2, 2, 2));
@@ -163,7 +163,7 @@ TEST_CASE("boxes from meshes agree with primitive boxes: interference and distan
   CHECK(misses > 30);
 }
 
-TEST_CASE("a mesh block on the ground: the same deepest contact as the primitive box") {
+TEST_CASE("collision: a mesh block on the ground: the same deepest contact as the primitive box") {
   const Vector3 size(4.0, 2.0, 1.0);
   auto mesh =
       std::make_shared<yardsim::forces::TriangleMesh>(yardsim::forces::boxMesh(size, 3, 3, 3));
@@ -193,7 +193,7 @@ TEST_CASE("a mesh block on the ground: the same deepest contact as the primitive
   }
 }
 
-TEST_CASE("the kernel drives the Hunt-Crossley law: a sphere dropped on the ground") {
+TEST_CASE("collision: the kernel drives the Hunt-Crossley law: a sphere dropped on the ground") {
   using namespace yardsim::forces;
   CollisionWorld w;
   w.add(Shape::halfSpace(Vector3::UnitZ(), 0.0), Transform::identity(), {"ground", {}});
@@ -221,7 +221,8 @@ TEST_CASE("the kernel drives the Hunt-Crossley law: a sphere dropped on the grou
   CHECK(v / v0 == Approx(huntCrossleyRestitution(a)).margin(1e-3));
 }
 
-TEST_CASE("a box resting on the ground through the kernel carries its weight for 100 s") {
+TEST_CASE(
+    "collision: a box resting on the ground through the kernel carries its weight for 100 s") {
   using namespace yardsim::forces;
   CollisionWorld w;
   w.add(Shape::halfSpace(Vector3::UnitZ(), 0.0), Transform::identity(), {"ground", {}});

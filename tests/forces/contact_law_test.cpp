@@ -49,7 +49,7 @@ double bounce(const NormalLaw& law, double mass, double v0, double h) {
 
 }  // namespace
 
-TEST_CASE("the normal law never pulls and is zero out of contact") {
+TEST_CASE("contact_law: the normal law never pulls and is zero out of contact") {
   const NormalLaw hc{NormalLawKind::kHuntCrossley, 1e8, 1e8 * 0.5, 1.5};
   const NormalLaw lin{NormalLawKind::kLinear, 1e6, 1e4, 1.0};
   CHECK(normalForce(hc, -1e-3, 1.0) == 0.0);
@@ -65,7 +65,7 @@ TEST_CASE("the normal law never pulls and is zero out of contact") {
   CHECK(normalPower(hc, 1e-2, -0.2) < 0.0);  // dissipates in both directions
 }
 
-TEST_CASE("Hunt-Crossley restitution of a 1-dof impact matches the exact relation") {
+TEST_CASE("contact_law: Hunt-Crossley restitution of a 1-dof impact matches the exact relation") {
   const double m = 2000.0, v0 = 1.5, k = 5e8;
   for (double n : {1.0, 1.5}) {
     for (double a : {0.05, 0.3, 0.9}) {
@@ -80,7 +80,7 @@ TEST_CASE("Hunt-Crossley restitution of a 1-dof impact matches the exact relatio
   CHECK(huntCrossleyRestitution(1e-3) == Approx(1.0 - 2e-3 / 3.0).margin(1e-6));
 }
 
-TEST_CASE("Lankarani-Nikravesh damping gives the asked restitution near e = 1 only") {
+TEST_CASE("contact_law: Lankarani-Nikravesh damping gives the asked restitution near e = 1 only") {
   const double m = 500.0, v0 = 2.0, k = 1e9;
   const NormalLaw near{NormalLawKind::kHuntCrossley, k, lankaraniNikraveshDamping(k, 0.95, v0),
                        1.5};
@@ -89,7 +89,9 @@ TEST_CASE("Lankarani-Nikravesh damping gives the asked restitution near e = 1 on
   CHECK(bounce(far, m, v0, 5e-8) > 0.7);  // the approximation's known limit: e = 0.5 gives 0.725
 }
 
-TEST_CASE("linear spring-damper restitution: the clamped closed form and the textbook limit") {
+TEST_CASE(
+    "contact_law: linear spring-damper restitution: the clamped closed form and the textbook "
+    "limit") {
   const double m = 1.0, k = 1e4, v0 = 1.0;
   for (double zeta : {0.02, 0.1, 0.3, 0.8}) {
     const double c = 2.0 * zeta * std::sqrt(k * m);
@@ -106,7 +108,7 @@ TEST_CASE("linear spring-damper restitution: the clamped closed form and the tex
         Approx(std::exp(-zeta * M_PI / std::sqrt(1.0 - zeta * zeta))).margin(1e-3));
 }
 
-TEST_CASE("a body resting on the law carries its weight with no drift over 100 s") {
+TEST_CASE("contact_law: a body resting on the law carries its weight with no drift over 100 s") {
   const double m = 920e3, g = 9.81;
   for (const NormalLaw& law :
        {NormalLaw{NormalLawKind::kLinear, 1e9, 2.0 * 0.7 * std::sqrt(1e9 * m), 1.0},
@@ -126,7 +128,8 @@ TEST_CASE("a body resting on the law carries its weight with no drift over 100 s
   }
 }
 
-TEST_CASE("energy balance of a bounce: kinetic + spring + gravity - dissipated = constant") {
+TEST_CASE(
+    "contact_law: energy balance of a bounce: kinetic + spring + gravity - dissipated = constant") {
   const double m = 10.0, g = 9.81, h = 1e-6;
   const NormalLaw law{NormalLawKind::kHuntCrossley, 1e7, 1e7 * 0.4, 1.5};
   auto acc = [&](double x, double v) { return g - normalForce(law, x, v) / m; };
@@ -148,7 +151,8 @@ TEST_CASE("energy balance of a bounce: kinetic + spring + gravity - dissipated =
 }
 
 TEST_CASE(
-    "Coulomb friction: slide with a = g (sin phi - mu cos phi) above tan phi = mu, creep below") {
+    "contact_law: Coulomb friction: slide with a = g (sin phi - mu cos phi) above tan phi = mu, "
+    "creep below") {
   const double g = 9.81, mu = 0.3, vs = 1e-3;
   for (FrictionForm form : {FrictionForm::kSqrt, FrictionForm::kTanh}) {
     const FrictionLaw fr{mu, vs, form};

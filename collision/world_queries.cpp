@@ -4,6 +4,7 @@
 
 #include "collision/collision_world.hpp"
 #include "collision/detail/world_impl.hpp"
+#include "collision/segment_box.hpp"
 
 namespace yardsim::collision {
 
@@ -128,17 +129,54 @@ const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
   return m.contacts;
 }
 
-// (a, b) => FCL distance with nearest points (world frame)
+namespace {
+
+// (capsule record, box record) => their signed distance, closest points on each (world), by
+// segmentBoxDistance in the box frame
+void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, double& distance,
+                        Vector3& onCapsule_W, Vector3& onBox_W) {
+  Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
+  if (!cap.segment) {
+    const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
+    p0 = cap.X_WB.p - half;
+    p1 = cap.X_WB.p + half;
+  }
+  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
+                                                box.bound.halfExtent_B);
+  const double radius = cap.shape.radius;
+  distance = r.distance - radius;
+  const Vector3 out = r.onSegment - r.onBox;  // from the surface to the axis point
+  const double len = out.norm();
+  Vector3 onCap = r.onSegment;
+  if (len > 0.0) onCap -= (r.distance >= 0.0 ? radius : -radius) / len * out;
+  onCapsule_W = box.X_WB.actPoint(onCap);
+  onBox_W = box.X_WB.actPoint(r.onBox);
+}
+
+}  // namespace
+
+// (a, b) => minimum distance with witness points: capsule-box by segmentBoxDistance, the rest by
+// FCL (closed forms where it has them, libccd or its own GJK otherwise)
 Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
   update();
   Impl& m = *impl_;
-  const auto* oa = m.at(a).object.get();
-  const auto* ob = m.at(b).object.get();
-  m.distanceResult.clear();
-  fcl::distance(oa, ob, m.distanceRequest, m.distanceResult);
+  const detail::Record& ra = m.at(a);
+  const detail::Record& rb = m.at(b);
   Distance d;
   d.a = a;
   d.b = b;
+  if (ra.shape.kind == ShapeKind::kCapsule && rb.shape.kind == ShapeKind::kBox) {
+    capsuleBoxDistance(ra, rb, d.distance, d.pa_W, d.pb_W);
+    return d;
+  }
+  if (ra.shape.kind == ShapeKind::kBox && rb.shape.kind == ShapeKind::kCapsule) {
+    capsuleBoxDistance(rb, ra, d.distance, d.pb_W, d.pa_W);
+    return d;
+  }
+  const auto* oa = ra.object.get();
+  const auto* ob = rb.object.get();
+  m.distanceResult.clear();
+  fcl::distance(oa, ob, m.distanceRequest, m.distanceResult);
   d.distance = m.distanceResult.min_distance;
   d.pa_W = m.distanceResult.nearest_points[0];
   d.pb_W = m.distanceResult.nearest_points[1];

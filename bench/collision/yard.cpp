@@ -33,9 +33,8 @@ std::vector<Vector3> ropePath(const Vector3& top, const Vector3& hook, double sw
 }  // namespace
 
 // (parts, options) => sites and stacks until parts are placed; a tenth of them moving
-Yard makeYard(int parts, bool tightAabb, bool independentGjk) {
-  Yard y{
-      collision::CollisionWorld(collision::WorldOptions{tightAabb, independentGjk}), {}, {}, {}, 0};
+Yard makeYard(int parts, bool tightAabb, bool meshBlocks) {
+  Yard y{collision::CollisionWorld(collision::WorldOptions{tightAabb, false}), {}, {}, {}, 0};
   std::mt19937 rng(2026);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto blockMesh = std::make_shared<const forces::TriangleMesh>(
@@ -46,7 +45,7 @@ Yard makeYard(int parts, bool tightAabb, bool independentGjk) {
     // a site, then a stack, while there is room
     const Vector3 c(kSide * u(rng), kSide * u(rng), 0.0);
     const Transform yaw{dynamics::axisRotation(Vector3::UnitZ(), 2.0 * M_PI * u(rng)), c};
-    const bool mesh = site % 3 == 2;
+    const bool mesh = meshBlocks && site % 3 == 2;
     const Vector3 size =
         mesh ? Vector3(10, 8, 4) : Vector3(6 + 8 * u(rng), 4 + 6 * u(rng), 2 + 4 * u(rng));
     for (double sx : {-1.0, 1.0}) {

@@ -1,9 +1,9 @@
 #pragma once
 // A generated shipyard for the collision benchmarks: a square of side 1 km holding work sites (a
-// block, a box or a mesh, resting 1 mm deep on two supports, under a hoist rope of four segments
-// whose hook hangs just above it) and container stacks (three boxes, 1 mm into each other),
-// until the asked number of parts. Deterministic (fixed seed). A tenth of the parts move: the
-// hanging ropes sway and the blocks under them rock by a few centimetres and a fraction of a
+// block, a box or (every third) a mesh, resting 1 mm deep on two supports, under a hoist rope of
+// four segments whose hook hangs just above it) and container stacks (three boxes, 1 mm into each
+// other), until the asked number of parts. Deterministic (fixed seed). A tenth of the parts move:
+// the hanging ropes sway and the blocks under them rock by a few centimetres and a fraction of a
 // degree around their base pose.
 #include <vector>
 
@@ -28,8 +28,8 @@ struct Yard {
   int parts = 0;
 };
 
-// (number of parts, tight boxes, libccd or FCL's GJK) => the yard
-Yard makeYard(int parts, bool tightAabb = true, bool independentGjk = false);
+// (number of parts, tight boxes, every third block a 192-triangle mesh or all boxes) => the yard
+Yard makeYard(int parts, bool tightAabb = true, bool meshBlocks = true);
 // (yard, time s) => the moving parts set to their poses at time t (call update or a query after)
 void moveYard(Yard& yard, double t);
 

@@ -1,8 +1,8 @@
 // The collision kernel's speed (issue 15 targets in docs/performance.md, "Collision kernel"):
 //  BM_BroadPhase/parts/tight: one step of the yard: 10 % of the parts moved, the tree updated,
 //    the filtered candidate pairs collected (tight = 0: FCL's default boxes, for comparison)
-//  BM_FullCheck/parts/meshes: the same step plus the narrow phase of every candidate pair, with
-//    up to 4 contact points per pair (meshes = 0: the mesh blocks replaced by boxes)
+//  BM_FullCheck/parts/meshes/k: the same step plus the narrow phase of every candidate pair, with
+//    up to k contact points per pair (meshes = 0: the mesh blocks replaced by boxes)
 //  BM_RopeBoxDistance: one rope segment moved and its distance to a block with witness points
 //    (segmentBoxDistance, not FCL's GJK)
 //  BM_RopeClearanceWatch/parts: a hoist rope's four segments against every block of the yard,
@@ -55,7 +55,7 @@ void BM_FullCheck(benchmark::State& st) {
   double t = 0.0;
   for (auto _ : st) {
     bench::moveYard(y, t);
-    benchmark::DoNotOptimize(y.world.contacts(4).size());
+    benchmark::DoNotOptimize(y.world.contacts(static_cast<int>(st.range(2))).size());
     t += 0.05;
   }
   st.counters["parts"] = y.parts;
@@ -64,10 +64,11 @@ void BM_FullCheck(benchmark::State& st) {
   st.counters["contacts"] = y.world.stats().contacts;
 }
 BENCHMARK(BM_FullCheck)
-    ->Args({10000, 1})
-    ->Args({10000, 0})
-    ->Args({30000, 1})
-    ->Args({30000, 0})
+    ->Args({10000, 1, 4})
+    ->Args({10000, 0, 4})
+    ->Args({10000, 1, 1})
+    ->Args({30000, 1, 4})
+    ->Args({30000, 0, 4})
     ->Unit(benchmark::kMillisecond);
 
 void BM_RopeBoxDistance(benchmark::State& st) {

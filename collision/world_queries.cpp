@@ -12,6 +12,72 @@ using detail::idOf;
 
 namespace {
 
+// (capsule record, box record) => their signed distance, closest points on each (world), by
+// segmentBoxDistance in the box frame
+void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, double& distance,
+                        Vector3& onCapsule_W, Vector3& onBox_W) {
+  Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
+  if (!cap.segment) {
+    const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
+    p0 = cap.X_WB.p - half;
+    p1 = cap.X_WB.p + half;
+  }
+  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
+                                                box.bound.halfExtent_B);
+  const double radius = cap.shape.radius;
+  distance = r.distance - radius;
+  const Vector3 out = r.onSegment - r.onBox;  // from the surface to the axis point
+  const double len = out.norm();
+  Vector3 onCap = r.onSegment;
+  if (len > 0.0) onCap -= (r.distance >= 0.0 ? radius : -radius) / len * out;
+  onCapsule_W = box.X_WB.actPoint(onCap);
+  onBox_W = box.X_WB.actPoint(r.onBox);
+}
+
+// (capsule record, box record) => whether they overlap; if so the contact: the point half-way
+// between the deepest points, the unit normal from the box into the capsule, the depth
+bool capsuleBoxContact(const detail::Record& cap, const detail::Record& box, Vector3& p_W,
+                       Vector3& n_W, double& depth) {
+  Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
+  if (!cap.segment) {
+    const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
+    p0 = cap.X_WB.p - half;
+    p1 = cap.X_WB.p + half;
+  }
+  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
+                                                box.bound.halfExtent_B);
+  const double radius = cap.shape.radius;
+  if (r.distance >= radius) return false;
+  Vector3 n_B = r.onSegment - r.onBox;
+  const double len = n_B.norm();
+  if (len > 0.0) {
+    n_B *= (r.distance >= 0.0 ? 1.0 : -1.0) / len;  // the axis inside: out through the near face
+  } else {                                          // the axis on the surface: the face normal
+    const Vector3 rel = r.onBox.cwiseQuotient(box.bound.halfExtent_B);
+    int axis = 0;
+    rel.cwiseAbs().maxCoeff(&axis);
+    n_B = Vector3::Zero();
+    n_B[axis] = rel[axis] >= 0.0 ? 1.0 : -1.0;
+  }
+  depth = radius - r.distance;
+  n_W = box.X_WB.R * n_B;
+  p_W = box.X_WB.actPoint(r.onBox - 0.5 * depth * n_B);
+  return true;
+}
+
+// (world, a, b) => 1 when a is the capsule and b the box, -1 the other way, 0 for other kinds
+int capsuleBoxOrder(const CollisionWorld::Impl& m, ObjectId a, ObjectId b) {
+  const ShapeKind ka = m.records[static_cast<std::size_t>(a)].shape.kind;
+  const ShapeKind kb = m.records[static_cast<std::size_t>(b)].shape.kind;
+  if (ka == ShapeKind::kCapsule && kb == ShapeKind::kBox) return 1;
+  if (ka == ShapeKind::kBox && kb == ShapeKind::kCapsule) return -1;
+  return 0;
+}
+
+}  // namespace
+
+namespace {
+
 // What a broad-phase callback needs: the world, and for the narrow phase how many contacts.
 struct PairContext {
   CollisionWorld::Impl* m;
@@ -48,6 +114,23 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
   if (!m.filter.canCollide(a, b)) return false;
   ++m.stats.candidatePairs;
   ++m.stats.narrowPhaseCalls;
+  if (const int order = capsuleBoxOrder(m, a, b)) {  // a rope or capsule on a block: exact
+    const auto& ra = m.records[static_cast<std::size_t>(a)];
+    const auto& rb = m.records[static_cast<std::size_t>(b)];
+    Contact ct;
+    ct.a = a;
+    ct.b = b;
+    const bool hit = order > 0 ? capsuleBoxContact(ra, rb, ct.p_W, ct.n_W, ct.depth)
+                               : capsuleBoxContact(rb, ra, ct.p_W, ct.n_W, ct.depth);
+    if (!hit) return false;
+    if (c->maxContacts == 0) {
+      c->found = true;
+      return true;
+    }
+    if (order > 0) ct.n_W = -ct.n_W;  // box -> capsule turned into a -> b
+    m.contacts.push_back(ct);
+    return false;
+  }
   const double sign = collideOrdered(m, a, b);
   if (!m.result.isCollision()) return false;
   if (c->maxContacts == 0) {
@@ -129,32 +212,6 @@ const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
   return m.contacts;
 }
 
-namespace {
-
-// (capsule record, box record) => their signed distance, closest points on each (world), by
-// segmentBoxDistance in the box frame
-void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, double& distance,
-                        Vector3& onCapsule_W, Vector3& onBox_W) {
-  Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
-  if (!cap.segment) {
-    const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
-    p0 = cap.X_WB.p - half;
-    p1 = cap.X_WB.p + half;
-  }
-  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
-                                                box.bound.halfExtent_B);
-  const double radius = cap.shape.radius;
-  distance = r.distance - radius;
-  const Vector3 out = r.onSegment - r.onBox;  // from the surface to the axis point
-  const double len = out.norm();
-  Vector3 onCap = r.onSegment;
-  if (len > 0.0) onCap -= (r.distance >= 0.0 ? radius : -radius) / len * out;
-  onCapsule_W = box.X_WB.actPoint(onCap);
-  onBox_W = box.X_WB.actPoint(r.onBox);
-}
-
-}  // namespace
-
 // (a, b) => minimum distance with witness points: capsule-box by segmentBoxDistance, the rest by
 // FCL (closed forms where it has them, libccd or its own GJK otherwise)
 Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
@@ -189,8 +246,14 @@ bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
   Impl& m = *impl_;
   m.request.num_max_contacts = 1;
   m.request.enable_contact = false;
-  m.at(a);
-  m.at(b);
+  const detail::Record& ra = m.at(a);
+  const detail::Record& rb = m.at(b);
+  if (const int order = capsuleBoxOrder(m, a, b)) {
+    Vector3 p, n;
+    double depth = 0.0;
+    return order > 0 ? capsuleBoxContact(ra, rb, p, n, depth)
+                     : capsuleBoxContact(rb, ra, p, n, depth);
+  }
   collideOrdered(m, a, b);
   return m.result.isCollision();
 }

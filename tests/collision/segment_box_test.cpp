@@ -85,3 +85,36 @@ TEST_CASE("collision: the world's capsule-box distance against brute force where
     CHECK((d.pa_W - d.pb_W).norm() == Approx(d.distance).margin(1e-9));  // witness gap = distance
   }
 }
+
+TEST_CASE(
+    "collision: a rope pressed onto a block: one exact contact, consistent with the distance") {
+  CollisionWorld w;
+  const ObjectId box = w.add(Shape::box(Vector3(2, 2, 2)), Transform::identity());
+  // radius 0.05, axis 1.03 m above the centre: 0.02 m into the top face
+  const ObjectId seg = w.addSegment(Vector3(-0.5, 0.2, 1.03), Vector3(0.5, 0.2, 1.03), 0.1);
+  const auto& cs = w.contacts(4);
+  REQUIRE(cs.size() == 1);
+  CHECK(cs[0].a == box);
+  CHECK(cs[0].depth == Approx(0.02).margin(1e-12));
+  CHECK((cs[0].n_W - Vector3::UnitZ()).norm() < 1e-12);  // from the block (a) to the rope (b)
+  CHECK(cs[0].p_W.z() == Approx(0.99).margin(1e-12));
+  CHECK(cs[0].p_W.y() == Approx(0.2).margin(1e-12));
+  CHECK(w.anyInterference());
+  // random poses around the block: intersects, contacts and the signed distance agree
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(-1.6, 1.6);
+  int hits = 0;
+  for (int k = 0; k < 500; ++k) {
+    const Vector3 p0(u(rng), u(rng), u(rng)), p1(u(rng), u(rng), u(rng));
+    w.setSegment(seg, p0, p1);
+    const double d = w.distance(seg, box).distance;
+    CHECK(w.intersects(box, seg) == (d < 0.0));
+    const auto& c = w.contacts(4);
+    CHECK(c.size() == (d < 0.0 ? 1u : 0u));
+    if (!c.empty()) {
+      ++hits;
+      CHECK(c[0].depth == Approx(-d).margin(1e-12));
+    }
+  }
+  CHECK(hits > 50);
+}

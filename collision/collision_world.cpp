@@ -232,6 +232,7 @@ void CollisionWorld::update() {
     Record& r = m.records[static_cast<std::size_t>(id)];
     m.refresh(r);
     r.dirty = false;
+    ++r.version;
     if (r.registered) m.moved.push_back(r.object.get());
   }
   m.dirty.clear();

@@ -35,6 +35,9 @@ struct WorldOptions {
   // distance): false libccd (default), true FCL's own GST_INDEP, which in FCL 0.7 returns wrong
   // box-box distances for some poses (world_queries_test: 0.1370 m for an exact 0.1275 m)
   bool independentGjk = false;
+  // contacts(): a pair whose two objects have not been moved (setPose / setSegment) since the last
+  // contacts() query with the same limit gets last query's contacts without a narrow phase
+  bool reuseUnmovedPairs = true;
 };
 
 // One contact point between objects a and b (a < b).
@@ -67,6 +70,7 @@ struct QueryStats {
   int broadPhasePairs = 0;  // pairs whose boxes overlap (before the filter)
   int candidatePairs = 0;   // of those, pairs the filter lets through
   int narrowPhaseCalls = 0;
+  int reusedPairs = 0;  // contacts(): pairs answered from the last query (nothing moved)
   int contacts = 0;
 };
 

@@ -103,6 +103,8 @@ bool collectPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* dat
   return false;
 }
 
+void narrowPhase(PairContext* c, ObjectId a, ObjectId b);
+
 // (o1, o2, context) => narrow phase of a filtered pair: contacts appended (or found set and
 // the traversal stopped when maxContacts == 0)
 bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data) {
@@ -113,7 +115,24 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
   ++m.stats.broadPhasePairs;
   if (!m.filter.canCollide(a, b)) return false;
   ++m.stats.candidatePairs;
+  const bool cached = c->maxContacts > 0 && m.options.reuseUnmovedPairs;
+  const std::uint64_t va = m.records[static_cast<std::size_t>(a)].version;
+  const std::uint64_t vb = m.records[static_cast<std::size_t>(b)].version;
+  if (cached && m.pairCache.reuse(a, b, va, vb, c->maxContacts, m.contacts)) {
+    ++m.stats.reusedPairs;
+    return false;
+  }
   ++m.stats.narrowPhaseCalls;
+  const std::size_t first = m.contacts.size();
+  narrowPhase(c, a, b);
+  if (cached) m.pairCache.record(a, b, va, vb, c->maxContacts, first, m.contacts.size() - first);
+  return c->found;
+}
+
+// (context, a < b) => the pair's contacts appended to m.contacts (or found set when
+// maxContacts == 0)
+void narrowPhase(PairContext* c, ObjectId a, ObjectId b) {
+  CollisionWorld::Impl& m = *c->m;
   if (const int order = capsuleBoxOrder(m, a, b)) {  // a rope or capsule on a block: exact
     const auto& ra = m.records[static_cast<std::size_t>(a)];
     const auto& rb = m.records[static_cast<std::size_t>(b)];
@@ -122,20 +141,20 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
     ct.b = b;
     const bool hit = order > 0 ? capsuleBoxContact(ra, rb, ct.p_W, ct.n_W, ct.depth)
                                : capsuleBoxContact(rb, ra, ct.p_W, ct.n_W, ct.depth);
-    if (!hit) return false;
+    if (!hit) return;
     if (c->maxContacts == 0) {
       c->found = true;
-      return true;
+      return;
     }
     if (order > 0) ct.n_W = -ct.n_W;  // box -> capsule turned into a -> b
     m.contacts.push_back(ct);
-    return false;
+    return;
   }
   const double sign = collideOrdered(m, a, b);
-  if (!m.result.isCollision()) return false;
+  if (!m.result.isCollision()) return;
   if (c->maxContacts == 0) {
     c->found = true;
-    return true;
+    return;
   }
   const std::size_t first = m.contacts.size();
   for (std::size_t k = 0; k < m.result.numContacts(); ++k) {
@@ -155,7 +174,7 @@ bool narrowPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data
     ct.depth = fc.penetration_depth;
     m.contacts.push_back(ct);
   }
-  return false;
+  return;
 }
 
 }  // namespace
@@ -203,7 +222,11 @@ const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
   update();
   Impl& m = *impl_;
   m.stats = {};
-  m.contacts.clear();
+  if (m.options.reuseUnmovedPairs) {
+    m.pairCache.begin(m.contacts);  // keeps last query's contacts for the pairs that did not move
+  } else {
+    m.contacts.clear();
+  }
   m.request.num_max_contacts = static_cast<std::size_t>(std::max(1, maxPerPair));
   m.request.enable_contact = true;
   PairContext c{&m, std::max(1, maxPerPair)};

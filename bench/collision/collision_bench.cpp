@@ -1,8 +1,9 @@
 // The collision kernel's speed (issue 15 targets in docs/performance.md, "Collision kernel"):
 //  BM_BroadPhase/parts/tight: one step of the yard: 10 % of the parts moved, the tree updated,
 //    the filtered candidate pairs collected (tight = 0: FCL's default boxes, for comparison)
-//  BM_FullCheck/parts/meshes/k: the same step plus the narrow phase of every candidate pair, with
-//    up to k contact points per pair (meshes = 0: the mesh blocks replaced by boxes)
+//  BM_FullCheck/parts/meshes/k/reuse: the same step plus the contacts of every candidate pair, up
+//    to k points per pair (meshes = 0: the mesh blocks replaced by boxes; reuse = 0: every pair
+//    through the narrow phase, 1: pairs whose objects did not move keep last step's contacts)
 //  BM_RopeBoxDistance: one rope segment moved and its distance to a block with witness points
 //    (segmentBoxDistance, not FCL's GJK)
 //  BM_RopeClearanceWatch/parts: a hoist rope's four segments against every block of the yard,
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "dynamics/rotation.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
@@ -50,8 +52,10 @@ BENCHMARK(BM_BroadPhase)
     ->Unit(benchmark::kMillisecond);
 
 void BM_FullCheck(benchmark::State& st) {
-  bench::Yard y = bench::makeYard(static_cast<int>(st.range(0)), true, st.range(1) != 0);
-  st.SetLabel(st.range(1) != 0 ? "meshes" : "boxes only");
+  bench::Yard y =
+      bench::makeYard(static_cast<int>(st.range(0)), true, st.range(1) != 0, st.range(3) != 0);
+  st.SetLabel(std::string(st.range(1) != 0 ? "meshes" : "boxes only") +
+              (st.range(3) != 0 ? ", reuse" : ", no reuse"));
   double t = 0.0;
   for (auto _ : st) {
     bench::moveYard(y, t);
@@ -61,14 +65,17 @@ void BM_FullCheck(benchmark::State& st) {
   st.counters["parts"] = y.parts;
   st.counters["candidates"] = y.world.stats().candidatePairs;
   st.counters["narrow_calls"] = y.world.stats().narrowPhaseCalls;
+  st.counters["reused"] = y.world.stats().reusedPairs;
   st.counters["contacts"] = y.world.stats().contacts;
 }
 BENCHMARK(BM_FullCheck)
-    ->Args({10000, 1, 4})
-    ->Args({10000, 0, 4})
-    ->Args({10000, 1, 1})
-    ->Args({30000, 1, 4})
-    ->Args({30000, 0, 4})
+    ->Args({10000, 1, 4, 1})
+    ->Args({10000, 1, 4, 0})
+    ->Args({10000, 0, 4, 0})
+    ->Args({10000, 1, 1, 0})
+    ->Args({30000, 1, 4, 1})
+    ->Args({30000, 1, 4, 0})
+    ->Args({30000, 0, 4, 0})
     ->Unit(benchmark::kMillisecond);
 
 void BM_RopeBoxDistance(benchmark::State& st) {

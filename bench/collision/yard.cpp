@@ -33,8 +33,9 @@ std::vector<Vector3> ropePath(const Vector3& top, const Vector3& hook, double sw
 }  // namespace
 
 // (parts, options) => sites and stacks until parts are placed; a tenth of them moving
-Yard makeYard(int parts, bool tightAabb, bool meshBlocks) {
-  Yard y{collision::CollisionWorld(collision::WorldOptions{tightAabb, false}), {}, {}, {}, 0};
+Yard makeYard(int parts, bool tightAabb, bool meshBlocks, bool reuse) {
+  Yard y{
+      collision::CollisionWorld(collision::WorldOptions{tightAabb, false, reuse}), {}, {}, {}, 0};
   std::mt19937 rng(2026);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto blockMesh = std::make_shared<const forces::TriangleMesh>(

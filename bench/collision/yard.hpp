@@ -28,8 +28,9 @@ struct Yard {
   int parts = 0;
 };
 
-// (number of parts, tight boxes, every third block a 192-triangle mesh or all boxes) => the yard
-Yard makeYard(int parts, bool tightAabb = true, bool meshBlocks = true);
+// (number of parts, tight boxes, every third block a 192-triangle mesh or all boxes, contacts of
+// unmoved pairs reused) => the yard
+Yard makeYard(int parts, bool tightAabb = true, bool meshBlocks = true, bool reuse = true);
 // (yard, time s) => the moving parts set to their poses at time t (call update or a query after)
 void moveYard(Yard& yard, double t);
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "collision/collision_world.hpp"
+#include "collision/pair_cache.hpp"
 
 namespace yardsim::collision::detail {
 
@@ -44,6 +45,7 @@ struct Record {
   Aabb box;
   bool dirty = true;
   bool registered = false;
+  std::uint64_t version = 0;  // pose updates so far (PairCache)
 };
 
 struct Watch {
@@ -84,6 +86,7 @@ struct CollisionWorld::Impl {
   fcl::DistanceRequestd distanceRequest;
   fcl::DistanceResultd distanceResult;
   QueryStats stats;
+  PairCache pairCache;  // contacts of pairs that did not move (WorldOptions::reuseUnmovedPairs)
 
   // (record) => its FCL transform and world box from X_WB
   void refresh(detail::Record& r) const;

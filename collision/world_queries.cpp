@@ -1,6 +1,8 @@
 // The queries of CollisionWorld: candidate pairs, interference, contacts, distances, watches.
 #include <algorithm>
-#include <limits>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "collision/collision_world.hpp"
 #include "collision/detail/world_impl.hpp"
@@ -12,18 +14,23 @@ using detail::idOf;
 
 namespace {
 
-// (capsule record, box record) => their signed distance, closest points on each (world), by
-// segmentBoxDistance in the box frame
-void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, double& distance,
-                        Vector3& onCapsule_W, Vector3& onBox_W) {
+// (capsule record, box record) => segmentBoxDistance of the capsule's axis, in the box frame
+SegmentBoxResult capsuleAxisToBox(const detail::Record& cap, const detail::Record& box) {
   Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
   if (!cap.segment) {
     const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
     p0 = cap.X_WB.p - half;
     p1 = cap.X_WB.p + half;
   }
-  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
-                                                box.bound.halfExtent_B);
+  return segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
+                            box.bound.halfExtent_B);
+}
+
+// (capsule record, box record) => their signed distance and the closest (apart) or deepest
+// (overlapping) points on each, world frame
+void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, double& distance,
+                        Vector3& onCapsule_W, Vector3& onBox_W) {
+  const SegmentBoxResult r = capsuleAxisToBox(cap, box);
   const double radius = cap.shape.radius;
   distance = r.distance - radius;
   const Vector3 out = r.onSegment - r.onBox;  // from the surface to the axis point
@@ -38,14 +45,7 @@ void capsuleBoxDistance(const detail::Record& cap, const detail::Record& box, do
 // between the deepest points, the unit normal from the box into the capsule, the depth
 bool capsuleBoxContact(const detail::Record& cap, const detail::Record& box, Vector3& p_W,
                        Vector3& n_W, double& depth) {
-  Vector3 p0 = cap.p0_W, p1 = cap.p1_W;
-  if (!cap.segment) {
-    const Vector3 half = 0.5 * cap.shape.length * cap.X_WB.R.col(2);
-    p0 = cap.X_WB.p - half;
-    p1 = cap.X_WB.p + half;
-  }
-  const SegmentBoxResult r = segmentBoxDistance(box.X_WB.invActPoint(p0), box.X_WB.invActPoint(p1),
-                                                box.bound.halfExtent_B);
+  const SegmentBoxResult r = capsuleAxisToBox(cap, box);
   const double radius = cap.shape.radius;
   if (r.distance >= radius) return false;
   Vector3 n_B = r.onSegment - r.onBox;
@@ -73,10 +73,6 @@ int capsuleBoxOrder(const CollisionWorld::Impl& m, ObjectId a, ObjectId b) {
   if (ka == ShapeKind::kBox && kb == ShapeKind::kCapsule) return -1;
   return 0;
 }
-
-}  // namespace
-
-namespace {
 
 // What a broad-phase callback needs: the world, and for the narrow phase how many contacts.
 struct PairContext {
@@ -174,7 +170,6 @@ void narrowPhase(PairContext* c, ObjectId a, ObjectId b) {
     ct.depth = fc.penetration_depth;
     m.contacts.push_back(ct);
   }
-  return;
 }
 
 }  // namespace

@@ -67,7 +67,9 @@ void CollisionWorld::Impl::refresh(Record& r) const {
     if (!options.tightAabb) cap.computeLocalAABB();
   }
   r.object->setTransform(toFcl(r.X_WB));
-  if (options.tightAabb) {
+  // a half-space keeps our finite box even in the loose mode: FCL's spans +-DBL_MAX, whose
+  // volume overflows in the tree's balancing
+  if (options.tightAabb || r.shape.kind == ShapeKind::kHalfSpace) {
     r.box = r.segment ? segmentAabb(r.p0_W, r.p1_W, r.shape.radius)
                       : worldAabb(r.shape, r.bound, r.X_WB);
     r.object->setAabb(r.box);

@@ -202,3 +202,14 @@ TEST_CASE("collision: the filter removes pairs in the broad phase") {
   CHECK(w.stats().broadPhasePairs >= 4);
   CHECK_FALSE(w.anyInterference());
 }
+
+TEST_CASE("collision: FCL's default boxes still bound a half-space finitely") {
+  CollisionWorld w(WorldOptions{false, false, false});
+  w.add(Shape::halfSpace(Vector3::UnitZ(), 0.0), Transform::identity());
+  const ObjectId s = w.add(Shape::sphere(0.5), Transform::translation(Vector3(3, 4, 0.4)));
+  CHECK(w.aabb(0).max.z() == 0.0);
+  CHECK(std::isfinite(w.aabb(0).min.x()));
+  CHECK(w.candidatePairs().size() == 1);
+  w.setPose(s, Transform::translation(Vector3(3, 4, 0.6)));
+  CHECK(w.candidatePairs().empty());
+}

@@ -12,6 +12,7 @@
 //
 // Frames and units: X_WB is the pose of the object's body frame B in the world W; points p_W and
 // normals n_W in the world frame; m. Objects are added at assembly and never removed.
+// Not thread-safe: the queries reuse the world's scratch (no allocation after warm-up).
 #include <memory>
 #include <string>
 #include <utility>
@@ -115,13 +116,16 @@ class CollisionWorld {
   const CollisionFilter& filter() const;
 
   // --- queries (world_queries.cpp); each calls update() first ---
-  // () => pairs a < b whose boxes overlap and that pass the filter, sorted
+  // () => pairs a < b whose boxes overlap and that pass the filter, in no particular order
   const std::vector<std::pair<ObjectId, ObjectId>>& candidatePairs();
   // () => whether any candidate pair intersects (stops at the first)
   bool anyInterference();
-  // (at most this many points per pair) => all contact points of all intersecting pairs
+  // (at most this many points per pair) => all contact points of all intersecting candidate
+  // pairs; pairs whose objects did not move since the last call keep their contacts
+  // (WorldOptions::reuseUnmovedPairs). The reference stays valid until the next call.
   const std::vector<Contact>& contacts(int maxPerPair = 4);
-  // (a, b) => minimum distance and witness points (no filter, no broad phase)
+  // (a, b) => minimum distance and witness points (no filter, no broad phase); capsule-box
+  // exact (segment_box.hpp), other pairs by FCL
   Distance distance(ObjectId a, ObjectId b);
   // (a, b) => whether the two intersect (no filter)
   bool intersects(ObjectId a, ObjectId b);

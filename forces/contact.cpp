@@ -1,0 +1,85 @@
+#include "forces/contact.hpp"
+
+#include <stdexcept>
+
+#include "dynamics/kinematics.hpp"
+
+namespace yardsim::forces {
+
+ContactForce::ContactForce(std::string name, ContactSource source, NormalLaw law,
+                           FrictionLaw friction, std::size_t reserve)
+    : ForceProvider(std::move(name)),
+      source_(std::move(source)),
+      law_(law),
+      friction_(friction),
+      reserve_(reserve) {
+  if (!source_) throw std::invalid_argument("contact '" + this->name() + "': no contact source");
+  if (!(law_.stiffness >= 0.0) || !(law_.damping >= 0.0) || !(law_.exponent > 0.0)) {
+    throw std::invalid_argument("contact '" + this->name() +
+                                "': stiffness and damping must be >= 0, the exponent > 0");
+  }
+  if (!(friction_.mu >= 0.0) || !(friction_.slipSpeed > 0.0)) {
+    throw std::invalid_argument("contact '" + this->name() +
+                                "': friction needs mu >= 0 and a slip speed > 0");
+  }
+}
+
+std::unique_ptr<ProviderScratch> ContactForce::makeScratch() const {
+  auto s = std::make_unique<Scratch>();
+  s->points.reserve(reserve_);
+  s->responses.reserve(reserve_);
+  return s;
+}
+
+// (stage) => the source's points and the law's response at each
+void ContactForce::collect(const Stage& s, Scratch& out) const {
+  out.points.clear();
+  out.responses.clear();
+  source_(s, out.points);
+  for (const ContactPoint& c : out.points) {
+    const auto velocity = [&](int body) {
+      if (body == 0) return dynamics::Vector3::Zero().eval();
+      return dynamics::pointVelocity(s.data, body, s.data.X_WB[body].invActPoint(c.p_W));
+    };
+    const dynamics::Vector3 v = velocity(c.bodyB) - velocity(c.bodyA);
+    const double vn = v.dot(c.n_W);
+    out.responses.push_back(contactResponse(law_, friction_, c.depth, -vn, v - vn * c.n_W));
+  }
+}
+
+// (stage) => F = F_n n + F_t on B at p_W, -F on A
+void ContactForce::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                              Eigen::VectorXd&) const {
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& at = scratchOf<Scratch>(s, temporary);
+  collect(s, at);
+  for (std::size_t i = 0; i < at.points.size(); ++i) {
+    const ContactPoint& c = at.points[i];
+    const dynamics::Vector3 F =
+        at.responses[i].normalForce * c.n_W + at.responses[i].tangentialForce;
+    if (c.bodyB != 0) f.addPointForceWorld(c.bodyB, c.p_W, F);
+    if (c.bodyA != 0) f.addPointForceWorld(c.bodyA, c.p_W, -F);
+  }
+}
+
+// (stage) => sum of k delta^(n+1) / (n+1)
+double ContactForce::doPotentialEnergy(const Stage& s) const {
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& at = scratchOf<Scratch>(s, temporary);
+  collect(s, at);
+  double e = 0.0;
+  for (const ContactResponse& r : at.responses) e += r.potentialEnergy;
+  return e;
+}
+
+// (stage) => sum of the law's non-conservative power
+double ContactForce::doPower(const Stage& s) const {
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& at = scratchOf<Scratch>(s, temporary);
+  collect(s, at);
+  double p = 0.0;
+  for (const ContactResponse& r : at.responses) p += r.power;
+  return p;
+}
+
+}  // namespace yardsim::forces

@@ -20,12 +20,12 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
   for (int i = 1; i < m.nbodies; ++i) points.push_back(d.scratch.X_WB[i].p);
   const forces::Stage stage{0.0, m, d.scratch, q, v};
   double stored = 0.0;
-  for (const auto& r : s.ropes()) {
-    for (const auto& a : r->path().points())
-      points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
+  for (const auto& r : s.ropes()) {  // (every branch's points) => the system's extent
+    for (int j = 0; j < r->branchCount(); ++j)
+      for (const auto& a : r->branch(j).points())
+        points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
     stored += r->potentialEnergy(stage);
   }
-  for (const auto& e : s.equalizers()) stored += e->potentialEnergy(stage);
   double size = 1.0;
   for (const auto& a : points)
     for (const auto& b : points) size = std::max(size, (a - b).norm());
@@ -83,10 +83,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
     const forces::Stage stage{t, m, d.scratch, q, v};
     for (const auto& r : s.ropes())
       if (const double u = r->potentialEnergy(stage); u > strain)
-        strain = u, element = "rope '" + r->name() + "'";
-    for (const auto& e : s.equalizers())
-      if (const double u = e->potentialEnergy(stage); u > strain)
-        strain = u, element = "equalizer '" + e->name() + "'";
+        strain = u, element = (r->branchCount() > 1 ? "equalizer '" : "rope '") + r->name() + "'";
     std::ostringstream what;
     what.precision(3);
     what << "the energy balance rose by " << rise << " J (bound " << limits.energyBound

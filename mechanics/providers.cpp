@@ -21,7 +21,7 @@ Providers makeProviders(const BuiltMechanics& mech, const dynamics::Model& model
   for (const auto& r : mech.ropes) {
     std::vector<forces::Attachment> path;
     for (const auto& p : r.path) path.push_back(attach(p));
-    out.ropes.push_back(std::make_unique<forces::WireRope>(r.name, model, path,
+    out.ropes.push_back(std::make_unique<forces::Rope>(r.name, model, path,
                                                            ropeProperties(r.material), r.parts));
   }
   for (const auto& e : mech.equalizers) {
@@ -30,7 +30,7 @@ Providers makeProviders(const BuiltMechanics& mech, const dynamics::Model& model
       branches.emplace_back();
       for (const auto& p : b) branches.back().push_back(attach(p));
     }
-    out.equalizers.push_back(std::make_unique<forces::Equalizer>(
+    out.ropes.push_back(std::make_unique<forces::Rope>(
         e.name, model, attach(e.sheave), branches, ropeProperties(e.material)));
   }
   return out;

@@ -32,10 +32,9 @@ BuiltMechanics tautened(const BuiltMechanics& mech) {
     mat.l0 = std::min(mat.l0, length / (1.0 + kTautStrain));
     mat.minLength = std::min(mat.minLength, mat.l0);
   };
+  const std::size_t nw = m.ropes.size();  // (ropes) => the wire ropes, then the equalizers
   for (std::size_t i = 0; i < p.ropes.size(); ++i)
-    tighten(m.ropes[i].material, p.ropes[i]->length(s));
-  for (std::size_t i = 0; i < p.equalizers.size(); ++i)
-    tighten(m.equalizers[i].material, p.equalizers[i]->length(s));
+    tighten(i < nw ? m.ropes[i].material : m.equalizers[i - nw].material, p.ropes[i]->length(s));
   return m;
 }
 
@@ -52,7 +51,7 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
   Data data(system);
   SetPoints held{std::vector<JointDrive>(static_cast<std::size_t>(model.nbodies)),
                  std::vector<ActorLoad>(static_cast<std::size_t>(model.nbodies)),
-                 std::vector<WinchJob>(mech.ropes.size())};
+                 std::vector<WinchJob>(system.ropes().size())};
   if (servo.bandwidth > 0)
     for (int i = 1; i < model.nbodies; ++i)
       if (mech.hold[static_cast<std::size_t>(i)]) {
@@ -114,18 +113,15 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
     }
   };
   for (const auto& r : system.ropes())
-    consider("rope '" + r->name() + "'", r->parts() * r->properties().ea / r->properties().l0,
+    consider((r->branchCount() > 1 ? "equalizer '" : "rope '") + r->name() + "'",
+             r->parts() * r->properties().ea / r->properties().l0,
              (r->length(sp) - r->length(sm)) / (2 * h));
-  for (const auto& e : system.equalizers())
-    consider("equalizer '" + e->name() + "'", e->properties().ea / e->properties().l0,
-             (e->length(sp) - e->length(sm)) / (2 * h));
   // (any other provider that stores energy) => its strain energy along the mode, by the second
   // difference of its potential energy
   dynamics::Data d0(model);
   dynamics::forwardKinematics(model, d0, mech.q0, mech.v0);
   const forces::Stage s0{0.0, model, d0, mech.q0, mech.v0};
-  for (std::size_t k = system.ropes().size() + system.equalizers().size();
-       k < system.providers().size(); ++k) {
+  for (std::size_t k = system.ropes().size(); k < system.providers().size(); ++k) {
     const forces::ForceProvider& p = *system.providers()[k];
     const double curvature =
         (p.potentialEnergy(sp) - 2.0 * p.potentialEnergy(s0) + p.potentialEnergy(sm)) / (h * h);

@@ -13,10 +13,8 @@ namespace yardsim::mechanics {
 System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::string& name)
     : mech_(std::move(mechanics)), servo_(servo) {
   const auto& model = mech_.model;
-  // (rope and equalizer specs) => providers, evaluated at every stage
-  Providers providers = makeProviders(mech_, model);
-  ropes_ = std::move(providers.ropes);
-  equalizers_ = std::move(providers.equalizers);
+  // (rope and equalizer specs) => ropes, evaluated at every stage
+  ropes_ = std::move(makeProviders(mech_, model).ropes);
   for (const auto& l : mech_.loads) {
     bodyLoads_.push_back(std::make_unique<forces::BodyLoad>(
         l.name, model, model.bodyIndex(l.body), l.point,
@@ -82,7 +80,6 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   }
   // (typed providers) => the one list, in the order every stage evaluates them
   for (auto& r : ropes_) providers_.push_back(r.get());
-  for (auto& e : equalizers_) providers_.push_back(e.get());
   for (auto& h : hydros_) providers_.push_back(h.get());
   for (auto& f : flows_) providers_.push_back(f.get());
   for (auto& d : dampers_) providers_.push_back(d.get());

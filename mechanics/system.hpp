@@ -1,22 +1,24 @@
 #pragma once
 // One mechanically connected system at run time (DESIGN.md, mechanics/): the built mechanics
 // (the immutable dynamics::Model, q0, v0, names, rope and load specs, the environment), the one
-// list of force providers built from them in evaluation order (ropes, equalizers, hydrostatics,
-// wind and current loads, damping, body loads from time series), the watched quantities and the
+// list of force providers built from them in evaluation order (ropes: the wire ropes, then the
+// equalizers; hydrostatics, wind and current loads, damping, body loads from time series, the
+// providers of registered readers), the watched quantities and the
 // joint servos' settings. Built once; the stage function (stage.hpp), the energy balance
 // (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp) and the stiffness
-// estimate all iterate the same list. Providers keep per-stage caches and the winches' payout
-// set-points, so a System serves one run at a time.
+// estimate all iterate the same list. Providers are const while they are evaluated (their
+// scratch is in mechanics::Data); the ropes' winches take payout set-points between steps, so a
+// System serves one run at a time.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "forces/body_load.hpp"
-#include "forces/equalizer.hpp"
+#include "forces/rope.hpp"
 #include "forces/flow_load.hpp"
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
-#include "forces/wire_rope.hpp"
+#include "forces/rope.hpp"
 #include "mechanics/description.hpp"
 
 namespace yardsim::mechanics {
@@ -49,9 +51,9 @@ class System {
   const ServoSettings& servo() const { return servo_; }
   // the one list, in evaluation order
   const std::vector<forces::ForceProvider*>& providers() const { return providers_; }
-  // typed views of the same providers, for channels, events and replay
-  const std::vector<std::unique_ptr<forces::WireRope>>& ropes() const { return ropes_; }
-  const std::vector<std::unique_ptr<forces::Equalizer>>& equalizers() const { return equalizers_; }
+  // typed views of the same providers, for channels, events and replay; ropes: the wire ropes
+  // of description().ropes, then the equalizers of description().equalizers
+  const std::vector<std::unique_ptr<forces::Rope>>& ropes() const { return ropes_; }
   const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const { return hydros_; }
   const std::vector<std::unique_ptr<forces::FlowLoad>>& flows() const { return flows_; }
   const std::vector<std::unique_ptr<forces::LinearQuadraticDamping>>& dampers() const {
@@ -73,8 +75,7 @@ class System {
  private:
   BuiltMechanics mech_;
   ServoSettings servo_;
-  std::vector<std::unique_ptr<forces::WireRope>> ropes_;
-  std::vector<std::unique_ptr<forces::Equalizer>> equalizers_;
+  std::vector<std::unique_ptr<forces::Rope>> ropes_;
   std::vector<std::unique_ptr<forces::Hydrostatics>> hydros_;
   std::vector<std::unique_ptr<forces::FlowLoad>> flows_;
   std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;

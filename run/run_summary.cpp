@@ -73,7 +73,7 @@ void ropes(const devs::Model& m, const Scene& scene, std::string& out) {
   if (mb == nullptr) return;
   const auto& x = mb->state().x;
   for (std::size_t r = 0; r < mb->system().ropes().size(); ++r) {
-    const forces::WireRope& rope = mb->rope(r);
+    const forces::Rope& rope = mb->rope(r);
     const std::string name = (mb->channelNamesArePaths() ? "" : mb->path() + ".") + rope.name();
     double statical = mb->initialTension()[r];
     for (const auto& [channel, level] : scene.report.staticLevels)

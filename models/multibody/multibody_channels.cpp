@@ -49,18 +49,11 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back({n + ".unstretched_length", "m",
                    [this, r] { return system_.ropes()[r]->unstretchedLength(state().tx); }});
     out.push_back({n + ".peak_tension", "N", [this, r] { return state().x.peakTension[r]; }});
-  }
-  for (std::size_t k = 0; k < system_.equalizers().size(); ++k) {
-    const forces::Equalizer& e = *system_.equalizers()[k];
-    auto stage = [this] {
-      const auto& s = state();
-      return forces::Stage{s.tx, system_.model(), kinematicsOf(s.x), s.x.q, s.x.v};
-    };
-    out.push_back({e.name() + ".tension", "N", [&e, stage] { return e.tension(stage()); }});
-    out.push_back({e.name() + ".length", "m", [&e, stage] { return e.length(stage()); }});
-    for (int j = 0; j < e.branchCount(); ++j)
-      out.push_back({e.name() + ".branch" + std::to_string(j) + ".length", "m",
-                     [&e, stage, j] { return e.branchLength(stage(), j); }});
+    const forces::Rope& rope = *system_.ropes()[r];
+    if (rope.branchCount() > 1)  // (an equalizer) => each branch's length too
+      for (int j = 0; j < rope.branchCount(); ++j)
+        out.push_back({n + ".branch" + std::to_string(j) + ".length", "m",
+                       [&rope, stage, j] { return rope.branchLength(stage(), j); }});
   }
   for (std::size_t k = 0; k < system_.bodyLoads().size(); ++k) {
     const forces::BodyLoad& l = *system_.bodyLoads()[k];

@@ -24,13 +24,14 @@ namespace {
 // (mechanics) => initial state; held joints (brakes) start with a drive holding q0
 MultibodyState initialState(const mechanics::BuiltMechanics& m) {
   const auto n = static_cast<std::size_t>(m.model.nbodies);
+  const std::size_t ropes = m.ropes.size() + m.equalizers.size();  // (System::ropes())
   MultibodyState x{m.q0,
                    m.v0,
                    {std::vector<mechanics::JointDrive>(n), std::vector<mechanics::ActorLoad>(n),
-                    std::vector<mechanics::WinchJob>(m.ropes.size())},
+                    std::vector<mechanics::WinchJob>(ropes)},
                    0.0,
-                   std::vector<double>(m.ropes.size(), 0.0),
-                   std::vector<double>(m.ropes.size(), 0.0)};
+                   std::vector<double>(ropes, 0.0),
+                   std::vector<double>(ropes, 0.0)};
   for (std::size_t i = 1; i < n; ++i)
     if (m.hold[i]) {
       const double q = m.q0[m.model.idxQ[i]];

@@ -61,8 +61,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   bool channelNamesArePaths() const override { return opt_.elementPaths; }
   // (committed state) => kinetic + gravity potential + stored energy, J
   double energy() const;
-  const forces::WireRope& rope(std::size_t i) const { return *system_.ropes()[i]; }
-  const forces::Equalizer& equalizer(std::size_t i) const { return *system_.equalizers()[i]; }
+  // rope i of system().ropes(): the wire ropes, then the equalizers
+  const forces::Rope& rope(std::size_t i) const { return *system_.ropes()[i]; }
   // per rope: the tension of one part at the start (after equilibrium, if asked for), N
   const std::vector<double>& initialTension() const { return initialTension_; }
   const std::vector<std::unique_ptr<forces::Hydrostatics>>& hydrostatics() const {

@@ -8,9 +8,9 @@
 
 #include "force_rig.hpp"
 #include "forces/body_load.hpp"
-#include "forces/equalizer.hpp"
+#include "forces/rope.hpp"
 #include "forces/gravity.hpp"
-#include "forces/wire_rope.hpp"
+#include "forces/rope.hpp"
 #include "forces/current_load.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydrostatics.hpp"
@@ -42,11 +42,11 @@ TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at 
   p.damping = 1e5;
   p.breakingLoad = 1e7;
   Gravity gravity("gravity", Vector3(0.0, 0.0, -9.81));
-  WireRope wire("hoist", m,
+  Rope wire("hoist", m,
                 {{0, Vector3(0, 0, 40)}, {0, Vector3(1, 0, 40)}, {1, Vector3(0, 0, 0.5)}}, p, 4);
   wire.setPayoutRate(0.0, 0.083);
   p.l0 = 10.0;
-  Equalizer eq("eq", m, {1, Vector3(0, 0, -0.5)},
+  Rope eq("eq", m, {1, Vector3(0, 0, -0.5)},
                {{{2, Vector3(-3, 0, 1)}}, {{2, Vector3(0, 1, 1)}, {2, Vector3(3, 0, 1)}}}, p);
   BodyLoad load("wind", m, 2, Vector3(1, 0, 0), LoadFrame::Body);
   load.setTable({{0.0, 1, 2, 3, 4, 5, 6}, {1.0, 0, 0, 0, 0, 0, 0}, {2.0, 5, 5, 5, 5, 5, 5}});

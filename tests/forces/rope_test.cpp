@@ -9,7 +9,7 @@
 
 #include "force_rig.hpp"
 #include "forces/gravity.hpp"
-#include "forces/wire_rope.hpp"
+#include "forces/rope.hpp"
 
 using namespace yardsim;
 using namespace yardsim::forces;
@@ -47,7 +47,7 @@ struct HangingBlock {
 
   dynamics::Model model;
   Gravity gravity;
-  WireRope wire;
+  Rope wire;
   Rig rig;
 };
 
@@ -182,7 +182,7 @@ TEST_CASE("over a sheave: the length sums the segments and the sheave body feels
   const Vector3 drum(-20.0, 0.0, 30.0), sheave(0.0, 0.5, -0.5);
   RopeProperties p = rope(0.0);
   p.l0 = 50.0;
-  WireRope wire("hoist", m, {{0, drum}, {1, sheave}, {2, kLug}}, p);
+  Rope wire("hoist", m, {{0, drum}, {1, sheave}, {2, kLug}}, p);
   Rig r(m, {&wire});
   r.q << 1.5, 5.0;
   r.v << 0.3, -0.7;
@@ -214,7 +214,7 @@ TEST_CASE("a block over a fixed sheave settles at T = m g with the total stretch
   const double l1 = (sheave - drum).norm();
   RopeProperties p = rope(0.2);
   p.l0 = l1 + kL0;
-  WireRope wire("hoist", m, {{0, drum}, {0, sheave}, {1, kLug}}, p);
+  Rope wire("hoist", m, {{0, drum}, {0, sheave}, {1, kLug}}, p);
   Rig r(m, {&gravity, &wire});
   r.q[0] = HangingBlock::heightFor(kL0);
   for (int k = 0; k < 8000; ++k) r.step(1e-3);
@@ -269,22 +269,22 @@ TEST_CASE("bad parameters and a non-finite state are refused naming the rope") {
   const std::vector<Attachment> path{{0, Vector3(0.0, 0.0, kTop)}, {1, kLug}};
   RopeProperties p = rope(0.1);
   p.ea = std::nan("");
-  CHECK_THROWS_WITH(WireRope("hoist-7", m, path, p), Contains("hoist-7") && Contains("EA"));
+  CHECK_THROWS_WITH(Rope("hoist-7", m, path, p), Contains("hoist-7") && Contains("EA"));
   p = rope(0.1);
   p.l0 = -1.0;
-  CHECK_THROWS_AS(WireRope("hoist-7", m, path, p), std::invalid_argument);
+  CHECK_THROWS_AS(Rope("hoist-7", m, path, p), std::invalid_argument);
   p = rope(0.1);
   p.damping = -1.0;
-  CHECK_THROWS_AS(WireRope("hoist-7", m, path, p), std::invalid_argument);
+  CHECK_THROWS_AS(Rope("hoist-7", m, path, p), std::invalid_argument);
   p = rope(0.1);
   p.breakingLoad = 0.0;
-  CHECK_THROWS_AS(WireRope("hoist-7", m, path, p), std::invalid_argument);
-  CHECK_THROWS_WITH(WireRope("hoist-7", m, path, rope(0.1), 0),
+  CHECK_THROWS_AS(Rope("hoist-7", m, path, p), std::invalid_argument);
+  CHECK_THROWS_WITH(Rope("hoist-7", m, path, rope(0.1), 0),
                     Contains("hoist-7") && Contains("parts"));
-  CHECK_THROWS_WITH(WireRope("hoist-7", m, {{0, Vector3::Zero()}, {2, kLug}}, rope(0.1)),
+  CHECK_THROWS_WITH(Rope("hoist-7", m, {{0, Vector3::Zero()}, {2, kLug}}, rope(0.1)),
                     Contains("hoist-7"));
   // (NaN position) => evaluate throws ForceError naming the provider and the body
-  WireRope wire("hoist-7", m, path, rope(0.1));
+  Rope wire("hoist-7", m, path, rope(0.1));
   Rig r(m, {&wire});
   r.q[0] = std::nan("");
   CHECK_THROWS_AS(evaluate(wire, r.stage()), ForceError);

@@ -9,7 +9,7 @@
 
 #include "dynamics/rotation.hpp"
 #include "force_rig.hpp"
-#include "forces/equalizer.hpp"
+#include "forces/rope.hpp"
 #include "forces/gravity.hpp"
 
 using namespace yardsim;
@@ -71,7 +71,7 @@ TEST_CASE("an uneven load rests on an equalizer with equal tensions carrying its
   p.ea = kEA;
   p.l0 = l0;
   p.damping = 1e6;
-  Equalizer eq("equalizer", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
+  Rope eq("equalizer", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
   Damper damper(2.0 * kMass, 2.0 * kMass * 10.0);
   Rig r(m, {&gravity, &eq, &damper});
   r.q << 0.0, 0.0, zBeam, 1.0, 0.0, 0.0, 0.0;
@@ -116,7 +116,7 @@ TEST_CASE("an undamped equalizer conserves kinetic plus potential energy") {
   RopeProperties p;
   p.ea = kEA;
   p.l0 = 2.0 * std::hypot(3.0, 8.0) - 0.01;  // a little stretched at the start
-  Equalizer eq("equalizer", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
+  Rope eq("equalizer", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
   Rig r(m, {&gravity, &eq});
   r.q << 0.0, 0.0, 12.0, 1.0, 0.0, 0.0, 0.0;
   r.v << 0.1, -0.2, 0.05, 0.3, 0.0, 0.0;
@@ -148,7 +148,7 @@ TEST_CASE("three branches: the sheave body feels T times the sum of the unit vec
   p.ea = kEA;
   p.l0 = 40.0;
   p.damping = 2e5;
-  Equalizer eq("equalizer", m, {1, sheave_H}, branches, p);
+  Rope eq("equalizer", m, {1, sheave_H}, branches, p);
   Rig r(m, {&eq});
   r.q << 0.3, -0.2, 20.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 5.0, 0.0, 0.0, 0.0, 0.0;
   dynamics::matrixToQuaternion(dynamics::axisRotation(Vector3(0.2, 1.0, 0.1).normalized(), 0.3),
@@ -192,16 +192,16 @@ TEST_CASE("an equalizer needs two branches each with an end and valid properties
   RopeProperties p;
   p.ea = kEA;
   p.l0 = 10.0;
-  CHECK_THROWS_WITH(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}}, p), Contains("eq-1"));
-  CHECK_THROWS_AS(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {}}, p), std::invalid_argument);
-  CHECK_THROWS_AS(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{2, kLugB}}}, p),
+  CHECK_THROWS_WITH(Rope("eq-1", m, {0, kSheave}, {{{1, kLugA}}}, p), Contains("eq-1"));
+  CHECK_THROWS_AS(Rope("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {}}, p), std::invalid_argument);
+  CHECK_THROWS_AS(Rope("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{2, kLugB}}}, p),
                   std::invalid_argument);
   p.ea = std::nan("");
-  CHECK_THROWS_WITH(Equalizer("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p),
+  CHECK_THROWS_WITH(Rope("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p),
                     Contains("eq-1") && Contains("EA"));
   // (a NaN state) => ForceError naming the equalizer
   p.ea = kEA;
-  Equalizer eq("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
+  Rope eq("eq-1", m, {0, kSheave}, {{{1, kLugA}}, {{1, kLugB}}}, p);
   Rig r(m, {&eq});
   r.q[2] = std::nan("");
   dynamics::ExternalForces f(m);

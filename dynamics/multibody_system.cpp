@@ -32,7 +32,7 @@ namespace {
   std::ostringstream s;
   s << "yardsim::dynamics: " << what << " of body '" << m.names[body] << "' is not finite at t = " << t
     << " s; the integration has diverged: try a smaller step, or an implicit integrator for stiff forces";
-  throw SimulationError(s.str());
+  throw IntegrationError(s.str());
 }
 
 int firstNonFinite(const Eigen::VectorXd& x) {
@@ -65,7 +65,7 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
   const ExternalForces* f = stageForces(t, q, v);
   // (q, v, tau, f) => ddq by hybrid dynamics (prescribed dofs), ABA (tree) or with loop multipliers
   if (hybrid_.any()) {
-    if (model_.nc > 0) throw SimulationError("yardsim::dynamics: prescribed motion needs a tree (no loop closures)");
+    if (model_.nc > 0) throw IntegrationError("yardsim::dynamics: prescribed motion needs a tree (no loop closures)");
     a = aPrescribed_;
     hybrid_.compute(data_, q, v, tauStage_, f, a, effort_);
   } else if (model_.nc == 0) {

@@ -31,7 +31,7 @@ class MultibodySystem final : public AccelerationSource {
     projectTol_ = tol;
   }
 
-  /// (t, q, v) => a; throws SimulationError naming the first body whose state or acceleration is
+  /// (t, q, v) => a; throws IntegrationError naming the first body whose state or acceleration is
   /// not finite.
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;

@@ -120,7 +120,7 @@ void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::Vect
     std::ostringstream m;
     m << name() << " failed at t = " << tret << " s (flag " << flag << ")" << (error_.empty() ? "" : ": ") << error_
       << "; try looser tolerances, a smaller max_step, or an implicit method (cvode_bdf, arkode_dirk)";
-    throw SimulationError(m.str());
+    throw IntegrationError(m.str());
   }
   chart_.scatter(N_VGetArrayPointer(y_), q, v);
   t = tret;

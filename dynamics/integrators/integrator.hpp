@@ -13,7 +13,7 @@ namespace yardsim::dynamics {
 
 /// Thrown when the state or the accelerations stop being finite (the message names the body), or
 /// an implicit method's Newton iteration fails.
-class SimulationError : public std::runtime_error {
+class IntegrationError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

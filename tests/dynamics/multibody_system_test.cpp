@@ -58,7 +58,7 @@ TEST_CASE("a diverging integration stops with a diagnosis naming the body") {
   auto run = [&] {
     for (int k = 0; k < 1000; ++k) rk.step(sys, t, q, v, 0.1);
   };
-  CHECK_THROWS_AS(run(), SimulationError);
+  CHECK_THROWS_AS(run(), IntegrationError);
   q.setConstant(0.1);
   v.setZero();
   t = 0.0;

@@ -1,0 +1,87 @@
+#pragma once
+// The DEVS state of a discrete-time model (a plain value: the committed state, the look-ahead
+// state and what it reaches), how it goes into a trace and into a checkpoint.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "devs/checkpoint_archive.hpp"
+#include "devs/time.hpp"
+#include "devs/trace_format.hpp"
+
+namespace yardsim::dtss {
+
+using devs::Time;
+
+// What the look-ahead target of a step is: a grid point, a time event, a located state
+// event, or several of them at once (a time event on a grid point).
+struct Reached {
+  bool grid = false;
+  bool timeEvent = false;
+  int stateEvent = -1;  // index of the state-event function, -1 when none
+  // other state-event functions that crossed the way they are declared to between the start of
+  // the step and the located event (within the location tolerance of it): reached at the same
+  // time, reported and reacted to with it
+  std::vector<int> coincident = {};
+  bool operator==(const Reached&) const = default;
+};
+
+// The DEVS state of a DTSS model: a plain value type.
+template <class X>
+struct State {
+  X x;                     // committed continuous state
+  Time tx = 0.0;           // its time (also the time of the last transition)
+  X xNext;                 // look-ahead state at tNext
+  Time tNext = 0.0;        // next transition time
+  Reached reached;         // what tNext is
+  std::int64_t steps = 0;  // grid steps committed
+};
+
+}  // namespace yardsim::dtss
+
+namespace yardsim::devs {
+// A DTSS state in a checkpoint: the committed and the look-ahead state, their times, what the
+// look-ahead reaches and the step count (the model's X needs a StateCodec of its own)
+template <class X>
+requires HasStateCodec<X>
+struct StateCodec<dtss::State<X>> {
+  static void save(CheckpointWriter& w, const dtss::State<X>& s) {
+    w.section("dtss");
+    devs::save(w, s.x);
+    devs::save(w, s.tx);
+    devs::save(w, s.xNext);
+    devs::save(w, s.tNext);
+    devs::save(w, s.reached.grid);
+    devs::save(w, s.reached.timeEvent);
+    devs::save(w, s.reached.stateEvent);
+    devs::save(w, s.reached.coincident);
+    devs::save(w, s.steps);
+  }
+  static void load(CheckpointReader& r, dtss::State<X>& s) {
+    r.section("dtss");
+    devs::load(r, s.x);
+    devs::load(r, s.tx);
+    devs::load(r, s.xNext);
+    devs::load(r, s.tNext);
+    devs::load(r, s.reached.grid);
+    devs::load(r, s.reached.timeEvent);
+    devs::load(r, s.reached.stateEvent);
+    devs::load(r, s.reached.coincident);
+    devs::load(r, s.steps);
+  }
+};
+
+// A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}
+template <class X>
+struct TraceFormat<dtss::State<X>> {
+  static void write(std::string& out, const dtss::State<X>& s) {
+    out += "{\"t\":";
+    appendJsonNumber(out, s.tx);
+    out += ",\"steps\":";
+    out += std::to_string(s.steps);
+    out += ",\"x\":";
+    TraceFormat<X>::write(out, s.x);
+    out += '}';
+  }
+};
+}  // namespace yardsim::devs

@@ -1,5 +1,6 @@
 #include "dynamics/aba.hpp"
 
+#include "dynamics/checks.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::dynamics {
@@ -37,15 +38,15 @@ template <bool kPlaced>
     }
     d.V_W[i] = d.V_W[p] + vJ;
     d.C_W[i] += crossMotion(d.V_W[i], vJ);
-    d.IA[i] = m.inertias[i].matrixIn(X);
+    d.IA_W[i] = m.inertias[i].matrixIn(X);
     if (m.hasAddedMass[i]) {
       // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
       // not act on it: its share A_W (0, -g) goes back as an external force
       const Matrix6 A_W = actInertia(X, m.addedMass[i]);
-      d.IA[i] += A_W;
-      d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
+      d.IA_W[i] += A_W;
+      d.PA_W[i] = crossForce(d.V_W[i], d.IA_W[i] * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {
-      d.PA_W[i] = crossForce(d.V_W[i], d.IA[i] * d.V_W[i]);
+      d.PA_W[i] = crossForce(d.V_W[i], d.IA_W[i] * d.V_W[i]);
     }
     if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }
@@ -57,7 +58,7 @@ template <bool kPlaced>
     const Motion& c = d.C_W[i];
     if (nv == 1) {
       const Motion s = d.S_W.col(iv);
-      const Vector6 U = d.IA[i] * s;
+      const Vector6 U = d.IA_W[i] * s;
       const double Dinv = 1.0 / s.dot(U);
       const double ui = tau[iv] - s.dot(d.PA_W[i]);
       d.U[i].col(0) = U;
@@ -65,23 +66,23 @@ template <bool kPlaced>
       d.u[i][0] = ui;
       if (p == 0) continue;
       // pa = PA + Ia c + U D^-1 u with Ia = IA - U D^-1 U^T
-      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c + U * (Dinv * (ui - U.dot(c)));
-      d.IA[p] += d.IA[i];
-      d.IA[p].noalias() -= (Dinv * U) * U.transpose();
+      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + U * (Dinv * (ui - U.dot(c)));
+      d.IA_W[p] += d.IA_W[i];
+      d.IA_W[p].noalias() -= (Dinv * U) * U.transpose();
     } else if (nv > 0) {
       const auto S = d.S_W.middleCols(iv, nv);
-      d.U[i].noalias() = d.IA[i] * S;
+      d.U[i].noalias() = d.IA_W[i] * S;
       d.Dinv[i] = (S.transpose() * d.U[i]).inverse();
       d.u[i].noalias() = tau.segment(iv, nv) - S.transpose() * d.PA_W[i];
       if (p == 0) continue;
       const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * c);
-      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c + d.U[i] * w;
-      d.IA[p] += d.IA[i];
-      d.IA[p].noalias() -= d.U[i] * d.Dinv[i] * d.U[i].transpose();
+      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + d.U[i] * w;
+      d.IA_W[p] += d.IA_W[i];
+      d.IA_W[p].noalias() -= d.U[i] * d.Dinv[i] * d.U[i].transpose();
     } else {
       if (p == 0) continue;
-      d.PA_W[p] += d.PA_W[i] + d.IA[i] * c;
-      d.IA[p] += d.IA[i];
+      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c;
+      d.IA_W[p] += d.IA_W[i];
     }
   }
   // (IA, PA, U, D, u) => ddq, A_W (including -g)
@@ -110,12 +111,14 @@ template <bool kPlaced>
 
 const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &tau, "aba");
   return abaPasses<false>(m, d, q, v, tau, fext);
 }
 
 const Eigen::VectorXd& abaAfterKinematics(const Model& m, Data& d, const Eigen::VectorXd& q,
                                           const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
                                           const ExternalForces* fext) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &tau, "abaAfterKinematics");
   return abaPasses<true>(m, d, q, v, tau, fext);
 }
 

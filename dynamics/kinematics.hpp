@@ -14,9 +14,9 @@ inline void updateJointPlacement(const Model& model, Data& data, int i, const Ei
 
 /// (q) => data.X_PB, data.X_WB, data.S.
 void forwardKinematics(const Model& model, Data& data, const Eigen::VectorXd& q);
-/// (q, v) => also data.V (body frame) and data.C.
+/// (q, v) => also data.V_B (body frame) and data.C_B.
 void forwardKinematics(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
-/// (q, v, ddq) => also data.A (body frame spatial acceleration, gravity not included).
+/// (q, v, ddq) => also data.A_B (body frame spatial acceleration, gravity not included).
 void forwardKinematics(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                        const Eigen::VectorXd& ddq);
 

@@ -86,8 +86,8 @@ void loopJacobianAndBias(const Model& m, Data& d, const Eigen::VectorXd& q, cons
   forwardKinematics(m, d, q, v, d.dv);
   for (int i = 1; i < m.nbodies; ++i) {
     for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
-    d.V_W[i] = d.X_WB[i].actMotion(d.V[i]);
-    d.A0_W[i] = d.X_WB[i].actMotion(d.A[i]);
+    d.V_W[i] = d.X_WB[i].actMotion(d.V_B[i]);
+    d.A0_W[i] = d.X_WB[i].actMotion(d.A_B[i]);
   }
   for (const LoopConstraint& c : m.loops) {
     fillJacobian(m, d, c);

@@ -1,5 +1,6 @@
 #include "dynamics/rnea.hpp"
 
+#include "dynamics/checks.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::dynamics {
@@ -69,6 +70,7 @@ template <bool kZeroAcc>
 
 const Eigen::VectorXd& rnea(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                             const Eigen::VectorXd& ddq, const ExternalForces* fext) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &ddq, "rnea");
   rneaImpl<false>(m, d, q, v, &ddq, fext, d.tau);
   return d.tau;
 }

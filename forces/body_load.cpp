@@ -109,7 +109,7 @@ void BodyLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
 double BodyLoad::doPower(const Stage& s) const {
   Vector3 f_W, m_W;
   worldLoad(s, f_W, m_W);
-  const Vector3 omega_W = s.data.X_WB[body_].R * s.data.V[body_].head<3>();
+  const Vector3 omega_W = s.data.X_WB[body_].R * s.data.V_B[body_].head<3>();
   return f_W.dot(dynamics::pointVelocity(s.data, body_, p_B_)) + m_W.dot(omega_W);
 }
 

@@ -62,8 +62,8 @@ Bushing::Frames Bushing::frames(const Stage& s) const {
   const Matrix3 R_FG = fr.X_WF.R.transpose() * fr.X_WG.R;
   const Vector3 theta = dynamics::logSO3(R_FG);
   const Vector3 r_W = fr.X_WG.p - fr.X_WF.p;
-  const Vector3 w_A = s.data.X_WB[bodyA_].R * s.data.V[bodyA_].head<3>();
-  const Vector3 w_B = s.data.X_WB[bodyB_].R * s.data.V[bodyB_].head<3>();
+  const Vector3 w_A = s.data.X_WB[bodyA_].R * s.data.V_B[bodyA_].head<3>();
+  const Vector3 w_B = s.data.X_WB[bodyB_].R * s.data.V_B[bodyB_].head<3>();
   const Vector3 vF = dynamics::pointVelocity(s.data, bodyA_, X_AF_.p);
   const Vector3 vG = dynamics::pointVelocity(s.data, bodyB_, X_BG_.p);
   fr.JrInv = dynamics::rightJacobianInverse(theta);

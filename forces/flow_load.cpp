@@ -104,7 +104,7 @@ void FlowLoad::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
 
 double FlowLoad::doPower(const Stage& s) const {
   const FlowLoadState r = load(s);
-  const Vector3 omega_W = s.data.X_WB[body_].R * s.data.V[body_].head<3>();
+  const Vector3 omega_W = s.data.X_WB[body_].R * s.data.V_B[body_].head<3>();
   return r.force.dot(dynamics::pointVelocity(s.data, body_, p_B_)) + r.yawMoment * omega_W.z();
 }
 

@@ -25,7 +25,7 @@ LinearQuadraticDamping::LinearQuadraticDamping(std::string name, const dynamics:
 
 std::array<double, 6> LinearQuadraticDamping::velocity(const Stage& s) const {
   // (V body frame [omega; v_O]) => v at the point and omega, body axes
-  const dynamics::Motion& V = s.data.V[body_];
+  const dynamics::Motion& V = s.data.V_B[body_];
   const Vector3 w = V.head<3>();
   const Vector3 v = V.tail<3>() + w.cross(p_B_);
   return {v.x(), v.y(), v.z(), w.x(), w.y(), w.z()};

@@ -31,7 +31,7 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
     for (const auto& b : points) size = std::max(size, (a - b).norm());
   double kinetic = 0.0;
   for (int i = 1; i < m.nbodies; ++i)
-    kinetic += 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
+    kinetic += 0.5 * d.scratch.V_B[i].dot(m.inertias[i].apply(d.scratch.V_B[i]));
   return m.totalMass() * std::max(m.gravity.norm(), 1.0) * size + kinetic + stored;
 }
 
@@ -75,7 +75,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
     int body = 1;
     double most = -1.0;
     for (int i = 1; i < m.nbodies; ++i) {
-      const double k = 0.5 * d.scratch.V[i].dot(m.inertias[i].apply(d.scratch.V[i]));
+      const double k = 0.5 * d.scratch.V_B[i].dot(m.inertias[i].apply(d.scratch.V_B[i]));
       if (k > most) most = k, body = i;
     }
     std::string element;

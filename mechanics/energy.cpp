@@ -13,7 +13,7 @@ double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::
   dynamics::forwardKinematics(m, kin, q, v);
   double e = 0.0;
   for (int i = 1; i < m.nbodies; ++i) {
-    e += dynamics::bodyKineticEnergy(m, i, kin.V[i]) -  // with the fluid's share (added mass)
+    e += dynamics::bodyKineticEnergy(m, i, kin.V_B[i]) -  // with the fluid's share (added mass)
          m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
   }
   forEachProvider(s, d, d.stage(s, t, kin, q, v),
@@ -45,7 +45,7 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
     p += d.kernel.prescribedEffort().dot(v);
   }
   d.setPoints = saved;
-  for (int b = 1; b < m.nbodies; ++b) p += d.spForces.inBodyFrame(d.scratch, b).dot(d.scratch.V[b]);
+  for (int b = 1; b < m.nbodies; ++b) p += d.spForces.inBodyFrame(d.scratch, b).dot(d.scratch.V_B[b]);
   return p;
 }
 

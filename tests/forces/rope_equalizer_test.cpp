@@ -56,7 +56,7 @@ class Damper final : public ForceProvider {
   }
 
  private:
-  static Vector3 omega(const Stage& s) { return s.data.X_WB[1].R * s.data.V[1].head<3>(); }
+  static Vector3 omega(const Stage& s) { return s.data.X_WB[1].R * s.data.V_B[1].head<3>(); }
   double c_, cr_;
 };
 

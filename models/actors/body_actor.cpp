@@ -20,7 +20,7 @@ class BodyActor final : public Actor {
  private:
   SetPoint load(bool on) const {
     SetPoint s;
-    s.kind = SetPoint::Kind::BodyLoad;
+    s.kind = SetPoint::Kind::ActorLoad;
     s.element = body_;
     for (int k = 0; k < 3; ++k) {
       s.force[k] = on ? f_[static_cast<std::size_t>(k)] : 0.0;

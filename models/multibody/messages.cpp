@@ -8,7 +8,7 @@ std::ostream& operator<<(std::ostream& os, const SetPoint& s) {
       return os << s.element << " -> " << s.target << " at " << s.speed;
     case SetPoint::Kind::WinchPayout:
       return os << s.element << " payout " << s.amount << " at " << s.speed;
-    case SetPoint::Kind::BodyLoad:
+    case SetPoint::Kind::ActorLoad:
       return os << s.element << " load (" << s.force[0] << "," << s.force[1] << "," << s.force[2]
                 << ")";
   }

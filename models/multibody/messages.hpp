@@ -9,7 +9,7 @@ namespace yardsim::models {
 // A set-point for one mechanical element, applied by the multibody model at the exact time it
 // arrives.
 struct SetPoint {
-  enum class Kind { JointTarget, WinchPayout, BodyLoad };
+  enum class Kind { JointTarget, WinchPayout, ActorLoad };
   Kind kind = Kind::JointTarget;
   std::string element;  // joint, rope or body name inside the multibody model
   std::string actor;    // path of the actor that sent it (echoed in the events it causes)
@@ -19,7 +19,7 @@ struct SetPoint {
   // JointTarget: true: the joint's motion is prescribed (the ramp exactly, whatever it takes);
   // false: a bounded servo follows the ramp
   bool prescribed = false;
-  // BodyLoad: force (N) and moment (N m) in the world frame at the body origin (zero: release)
+  // ActorLoad: force (N) and moment (N m) in the world frame at the body origin (zero: release)
   double force[3] = {0, 0, 0}, moment[3] = {0, 0, 0};
 };
 

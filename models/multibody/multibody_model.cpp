@@ -187,7 +187,7 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         }
         break;
       }
-      case SetPoint::Kind::BodyLoad: {
+      case SetPoint::Kind::ActorLoad: {
         const int i = model.bodyIndex(s.element);
         if (i <= 0)
           throw devs::SimulationError("multibody '" + path() + "': load from '" + s.actor +

@@ -147,7 +147,7 @@ bodies:
     devs::Time timeAdvance(const int& s) const override { return s < 2 ? 1.0 : devs::kInfinity; }
     void output(const int& s) const override {
       models::SetPoint p;
-      p.kind = models::SetPoint::Kind::BodyLoad;
+      p.kind = models::SetPoint::Kind::ActorLoad;
       p.element = "block";
       p.force[0] = s == 0 ? 8.0 : 0.0;  // 8 N along x from t = 1 s to t = 2 s
       out.add(p);

@@ -1,5 +1,7 @@
 // The channels of the multibody model (docs/scenes.md): joints, bodies, ropes, equalizers, body
 // loads, floating providers and the energy balance, read from the committed state.
+#include <limits>
+
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rotation.hpp"
@@ -83,12 +85,31 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
                    }});
 }
 
+const forces::HydrostaticReport& MultibodyModel::hydrostaticReport(std::size_t k) const {
+  // (committed state) => the report, recomputed when the time or q changed
+  const auto& s = state();
+  const std::size_t n = system_.hydrostatics().size();
+  if (ws_.reports.size() != n) {
+    ws_.reports.assign(n, {});
+    ws_.reportTime.assign(n, std::numeric_limits<double>::quiet_NaN());
+    ws_.reportQ.assign(n, Eigen::VectorXd());
+  }
+  const Eigen::VectorXd& q = ws_.reportQ[k];
+  if (ws_.reportTime[k] != s.tx || q.size() != s.x.q.size() || q != s.x.q) {
+    const forces::Hydrostatics& h = *system_.hydrostatics()[k];
+    ws_.reports[k] = h.report(committedStage(&h));
+    ws_.reportTime[k] = s.tx;
+    ws_.reportQ[k] = s.x.q;
+  }
+  return ws_.reports[k];
+}
+
 void MultibodyModel::floatingChannels(std::vector<Channel>& out) const {
   const char* xyz[3] = {"x", "y", "z"};
-  for (const auto& hp : system_.hydrostatics()) {
-    const forces::Hydrostatics* h = hp.get();
+  for (std::size_t hk = 0; hk < system_.hydrostatics().size(); ++hk) {
+    const forces::Hydrostatics* h = system_.hydrostatics()[hk].get();
     const std::string& n = h->name();
-    auto rep = [this, h]() -> forces::HydrostaticReport { return h->report(committedStage(h)); };
+    auto rep = [this, hk]() -> const forces::HydrostaticReport& { return hydrostaticReport(hk); };
     out.push_back({n + ".draft", "m", [rep] { return rep().draft; }});
     out.push_back({n + ".heel", "rad", [rep] { return rep().heel; }});
     out.push_back({n + ".trim", "rad", [rep] { return rep().trim; }});

@@ -108,6 +108,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   forces::Stage committedStage(const forces::ForceProvider* p = nullptr) const;
   // (floating providers) => their channels (multibody_channels.cpp)
   void floatingChannels(std::vector<Channel>& out) const;
+  // (hydrostatics k) => its report at the committed state, computed once per time and q
+  const forces::HydrostaticReport& hydrostaticReport(std::size_t k) const;
   // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one
   void checkBlowUp(const MultibodyState& x, double t) const;
 
@@ -129,6 +131,10 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     // the power at the end of the last step, reused at the start of the next one
     const MultibodyState* powerState = nullptr;
     double powerTime = -1.0, power = 0.0;
+    // per hydrostatics provider: the report of the committed state (time, q), for its channels
+    std::vector<forces::HydrostaticReport> reports;
+    std::vector<double> reportTime;
+    std::vector<Eigen::VectorXd> reportQ;
   };
   mutable Workspace ws_;
 };

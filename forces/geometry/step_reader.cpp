@@ -10,6 +10,9 @@
 #include <GProp_GProps.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Reader.hxx>
@@ -104,6 +107,8 @@ StepModel readStep(const std::string& path, const StepTolerance& tolerance) {
   try {
     // (file) => its shapes in metres: the session unit set before the transfer
     STEPControl_Controller::Init();
+    // (OCCT's own console messages) => silenced: the error we throw says what went wrong
+    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
     Interface_Static::SetCVal("xstep.cascade.unit", "M");
     STEPControl_Reader reader;
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)

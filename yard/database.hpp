@@ -55,8 +55,9 @@ class Database {
   const std::string& path() const { return path_; }
   int schemaVersion() const;
 
+  struct Handle;  // the SQLite connection, opaque here
+
  private:
-  struct Handle;
   Database(std::unique_ptr<Handle> handle, std::string path);
   std::unique_ptr<Handle> handle_;
   std::string path_;

@@ -69,12 +69,12 @@ TEST_CASE("files that are not our database are refused with what they are") {
   CHECK_THROWS_WITH(Database::openForWriting(dir.file("other.sqlite")), Contains("another program's"));
   raw(dir.file("empty.sqlite"), "PRAGMA user_version = 0;");
   CHECK_THROWS_WITH(Database::openReadOnly(dir.file("empty.sqlite")), Contains("empty SQLite file"));
-  // a database of ours whose pages were overwritten in the middle
+  // a database of ours whose first page was overwritten after its header
   const std::string damaged = dir.file("damaged.sqlite");
   { Database::create(damaged); }
   {
     std::fstream f(damaged, std::ios::in | std::ios::out | std::ios::binary);
-    f.seekp(4096 + 100);
+    f.seekp(100);  // page 1 past the file header: the schema table's b-tree
     const std::string junk(2000, '\x5a');
     f.write(junk.data(), static_cast<std::streamsize>(junk.size()));
   }

@@ -7,15 +7,15 @@
 namespace yardsim::cli {
 
 struct DbArgs {
-  std::string db;                                    // -d/--db or $YARDSIM_DB
-  std::string file, name, what, outdir = ".";        // positionals of the subcommands
-  std::string step, obj, stl;                        // import-block geometry (one of them)
-  double density = 0, mass = 0;                      // kg/m^3 | kg
-  std::vector<double> cog, inertia;                  // m | kg m^2 (3 or 6 values)
-  std::vector<std::string> lugs;                     // NAME:x,y,z:dx,dy,dz:swl
-  std::string project, weightStatus = "";            // import-block
-  double chord = 1e-3, angleDeg = 20;                // STEP tessellation
-  std::string kind = "goliath", model, curve;        // add-facility
+  std::string db;                              // -d/--db or $YARDSIM_DB
+  std::string file, name, what, outdir = ".";  // positionals of the subcommands
+  std::string step, obj, stl;                  // import-block geometry (one of them)
+  double density = 0, mass = 0;                // kg/m^3 | kg
+  std::vector<double> cog, inertia;            // m | kg m^2 (3 or 6 values)
+  std::vector<std::string> lugs;               // NAME:x,y,z:dx,dy,dz:swl
+  std::string project, weightStatus = "";      // import-block
+  double chord = 1e-3, angleDeg = 20;          // STEP tessellation
+  std::string kind = "goliath", model, curve;  // add-facility
   double capacity = 0, hoistSpeed = 0, hoistAcceleration = 0, maxOutreach = 0;
 };
 

@@ -21,7 +21,8 @@ Block blockFromSource(const std::string& name, const BlockSource& s) {
   // (geometry file) => the mesh and the unit-density solid (the B-rep's for STEP)
   std::optional<forces::SolidProperties> solid;
   if (!s.geometry.empty()) {
-    if (!std::filesystem::is_regular_file(s.geometry)) throw DatabaseError(s.geometry + ": no such file");
+    if (!std::filesystem::is_regular_file(s.geometry))
+      throw DatabaseError(s.geometry + ": no such file");
     try {
       const std::string ext = std::filesystem::path(s.geometry).extension().string();
       if (ext == ".step" || ext == ".stp" || ext == ".STEP" || ext == ".STP") {
@@ -42,7 +43,8 @@ Block blockFromSource(const std::string& name, const BlockSource& s) {
   if (s.density) {
     if (!(*s.density > 0) || !std::isfinite(*s.density))
       throw DatabaseError(what + ": the density must be > 0 kg/m^3");
-    if (!solid) throw DatabaseError(what + ": --density needs a geometry file (--step, --obj or --stl)");
+    if (!solid)
+      throw DatabaseError(what + ": --density needs a geometry file (--step, --obj or --stl)");
     b.mass = *s.density * solid->volume;
     b.cog = solid->centroid;
     b.inertia = *s.density * solid->inertia;
@@ -58,9 +60,11 @@ Block blockFromSource(const std::string& name, const BlockSource& s) {
     } else if (solid) {
       // (solid scaled to the mass, about its centroid) => about the stated cog
       const Vector3 d = solid->centroid - b.cog;
-      b.inertia = b.mass / solid->volume * solid->inertia + b.mass * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose());
+      b.inertia = b.mass / solid->volume * solid->inertia +
+                  b.mass * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose());
     } else {
-      throw DatabaseError(what + ": --mass without a geometry file needs --inertia (kg m^2 about the cog)");
+      throw DatabaseError(
+          what + ": --mass without a geometry file needs --inertia (kg m^2 about the cog)");
     }
     b.source += b.source.empty() ? "stated mass and cog" : ", stated mass and cog";
   }

@@ -10,12 +10,12 @@
 namespace yardsim::yard {
 
 struct BlockSource {
-  std::string geometry;                          // .step/.stp/.obj/.stl file; empty: none
-  std::optional<double> density;                 // kg/m^3: mass = density x volume, cog = centroid
-  std::optional<double> mass;                    // kg, with cog (instead of density)
-  std::optional<dynamics::Vector3> cog;          // m, block frame
-  std::optional<dynamics::Matrix3> inertia;      // kg m^2 about the cog; else from the geometry
-  forces::StepTolerance tolerance;               // for STEP files
+  std::string geometry;                      // .step/.stp/.obj/.stl file; empty: none
+  std::optional<double> density;             // kg/m^3: mass = density x volume, cog = centroid
+  std::optional<double> mass;                // kg, with cog (instead of density)
+  std::optional<dynamics::Vector3> cog;      // m, block frame
+  std::optional<dynamics::Matrix3> inertia;  // kg m^2 about the cog; else from the geometry
+  forces::StepTolerance tolerance;           // for STEP files
 };
 
 // (name, source) => the block: with a density, mass, cog and inertia of the homogeneous solid;

@@ -21,6 +21,7 @@ Block getBlock(const Database& db, const std::string& name);
 std::vector<std::string> blockNames(const Database& db);
 
 // (known names, what, name) => "unknown <what> 'name' (the <what>s are a, b, c)"
-std::string unknownName(const std::vector<std::string>& known, const std::string& what, const std::string& name);
+std::string unknownName(const std::vector<std::string>& known, const std::string& what,
+                        const std::string& name);
 
 }  // namespace yardsim::yard

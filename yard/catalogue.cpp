@@ -39,10 +39,12 @@ double positive(const std::string& text, const std::string& where) {
 }
 
 Rope ropeFrom(const Row& r) {
-  return {asText(r[0]), asNumber(r[1]), asText(r[2]), asNumber(r[3]), asNumber(r[4]), asNumber(r[5])};
+  return {asText(r[0]),   asNumber(r[1]), asText(r[2]),
+          asNumber(r[3]), asNumber(r[4]), asNumber(r[5])};
 }
 
-const char* kRopeColumns = "SELECT name, diameter, construction, ea, mbl, mass_per_metre FROM ropes";
+const char* kRopeColumns =
+    "SELECT name, diameter, construction, ea, mbl, mass_per_metre FROM ropes";
 
 }  // namespace
 
@@ -50,15 +52,17 @@ int importRopeCatalogue(const Database& db, const std::string& csvPath) {
   std::ifstream in(csvPath);
   if (!in) throw DatabaseError(csvPath + ": cannot open the rope catalogue");
   std::string line;
-  if (!std::getline(in, line)) throw DatabaseError(csvPath + ":1: empty; expected the header " +
-                                                   "name,diameter,construction,EA,MBL,mass_per_metre");
+  if (!std::getline(in, line))
+    throw DatabaseError(csvPath + ":1: empty; expected the header " +
+                        "name,diameter,construction,EA,MBL,mass_per_metre");
   const std::vector<std::string> header = fields(line);
   std::map<std::string, std::size_t> column;
   for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
   for (const char* c : {"name", "diameter", "construction", "EA", "MBL", "mass_per_metre"})
     if (!column.count(c))
-      throw DatabaseError(csvPath + ":1: the header has no column '" + c +
-                          "' (expected name,diameter,construction,EA,MBL,mass_per_metre in m, N, kg/m)");
+      throw DatabaseError(
+          csvPath + ":1: the header has no column '" + c +
+          "' (expected name,diameter,construction,EA,MBL,mass_per_metre in m, N, kg/m)");
   int added = 0;
   db.transaction([&] {
     for (std::size_t n = 2; std::getline(in, line); ++n) {
@@ -68,12 +72,16 @@ int importRopeCatalogue(const Database& db, const std::string& csvPath) {
       if (f.size() != header.size())
         throw DatabaseError(at + ": " + std::to_string(f.size()) + " fields, the header has " +
                             std::to_string(header.size()));
-      Rope r{f[column["name"]], positive(f[column["diameter"]], at + ": diameter"), f[column["construction"]],
-             positive(f[column["EA"]], at + ": EA"), positive(f[column["MBL"]], at + ": MBL"),
+      Rope r{f[column["name"]],
+             positive(f[column["diameter"]], at + ": diameter"),
+             f[column["construction"]],
+             positive(f[column["EA"]], at + ": EA"),
+             positive(f[column["MBL"]], at + ": MBL"),
              positive(f[column["mass_per_metre"]], at + ": mass_per_metre")};
       if (r.name.empty()) throw DatabaseError(at + ": a rope needs a name");
       if (!db.query("SELECT 1 FROM ropes WHERE name = ?", {r.name}).empty())
-        throw DatabaseError(at + ": rope '" + r.name + "' is already in the catalogue of " + db.path());
+        throw DatabaseError(at + ": rope '" + r.name + "' is already in the catalogue of " +
+                            db.path());
       db.execute("INSERT INTO ropes VALUES (?, ?, ?, ?, ?, ?)",
                  {r.name, r.diameter, r.construction, r.ea, r.mbl, r.massPerMetre});
       ++added;
@@ -92,7 +100,8 @@ Rope getRope(const Database& db, const std::string& name) {
 
 std::vector<Rope> ropes(const Database& db) {
   std::vector<Rope> out;
-  for (const Row& r : db.query(std::string(kRopeColumns) + " ORDER BY name")) out.push_back(ropeFrom(r));
+  for (const Row& r : db.query(std::string(kRopeColumns) + " ORDER BY name"))
+    out.push_back(ropeFrom(r));
   return out;
 }
 
@@ -101,39 +110,44 @@ void insertFacility(const Database& db, const Facility& f) {
   if (!(f.capacity > 0)) throw DatabaseError(what + ": the capacity must be > 0 N");
   for (std::size_t i = 0; i < f.hookLoadCurve.size(); ++i) {
     const CurvePoint& p = f.hookLoadCurve[i];
-    if (!(p.capacity > 0) || p.outreach < 0 || (i > 0 && !(p.outreach > f.hookLoadCurve[i - 1].outreach)))
-      throw DatabaseError(what + ": the hook-load curve needs outreach >= 0 m ascending and capacity > 0 N");
+    if (!(p.capacity > 0) || p.outreach < 0 ||
+        (i > 0 && !(p.outreach > f.hookLoadCurve[i - 1].outreach)))
+      throw DatabaseError(
+          what + ": the hook-load curve needs outreach >= 0 m ascending and capacity > 0 N");
   }
   db.transaction([&] {
     if (!db.query("SELECT 1 FROM facilities WHERE name = ?", {f.name}).empty())
       throw DatabaseError(what + " already exists");
     auto optional = [](double v) { return v > 0 ? Value(v) : Value(); };
     db.execute("INSERT INTO facilities VALUES (?, ?, ?, ?, ?, ?, ?)",
-               {f.name, f.kind, f.modelFile, f.capacity, optional(f.hoistSpeed), optional(f.hoistAcceleration),
-                optional(f.maxOutreach)});
+               {f.name, f.kind, f.modelFile, f.capacity, optional(f.hoistSpeed),
+                optional(f.hoistAcceleration), optional(f.maxOutreach)});
     for (const CurvePoint& p : f.hookLoadCurve)
       db.execute("INSERT INTO hook_load_curves VALUES (?, ?, ?)", {f.name, p.outreach, p.capacity});
   });
 }
 
 std::optional<Facility> findFacility(const Database& db, const std::string& name) {
-  const auto rows = db.query("SELECT name, kind, model_file, capacity, hoist_speed, hoist_acceleration, max_outreach "
-                             "FROM facilities WHERE name = ?",
-                             {name});
+  const auto rows = db.query(
+      "SELECT name, kind, model_file, capacity, hoist_speed, hoist_acceleration, max_outreach "
+      "FROM facilities WHERE name = ?",
+      {name});
   if (rows.empty()) return std::nullopt;
   const Row& r = rows[0];
   auto optional = [](const Value& v) { return isNull(v) ? 0.0 : asNumber(v); };
-  Facility f{asText(r[0]), asText(r[1]), asText(r[2]), asNumber(r[3]), optional(r[4]), optional(r[5]),
-             optional(r[6]), {}};
-  for (const Row& p : db.query("SELECT outreach, capacity FROM hook_load_curves WHERE facility = ? ORDER BY outreach",
-                               {name}))
+  Facility f{asText(r[0]),   asText(r[1]),   asText(r[2]),   asNumber(r[3]),
+             optional(r[4]), optional(r[5]), optional(r[6]), {}};
+  for (const Row& p : db.query(
+           "SELECT outreach, capacity FROM hook_load_curves WHERE facility = ? ORDER BY outreach",
+           {name}))
     f.hookLoadCurve.push_back({asNumber(p[0]), asNumber(p[1])});
   return f;
 }
 
 std::vector<Facility> facilities(const Database& db) {
   std::vector<Facility> out;
-  for (const Row& r : db.query("SELECT name FROM facilities ORDER BY name")) out.push_back(*findFacility(db, asText(r[0])));
+  for (const Row& r : db.query("SELECT name FROM facilities ORDER BY name"))
+    out.push_back(*findFacility(db, asText(r[0])));
   return out;
 }
 

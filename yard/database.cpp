@@ -16,7 +16,8 @@ struct Database::Handle {
 namespace {
 
 // (handle, SQL, values) => the statement prepared and bound; throws with SQLite's message
-sqlite3_stmt* prepare(sqlite3* db, const std::string& path, const std::string& sql, const Row& values) {
+sqlite3_stmt* prepare(sqlite3* db, const std::string& path, const std::string& sql,
+                      const Row& values) {
   sqlite3_stmt* st = nullptr;
   if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) != SQLITE_OK)
     throw DatabaseError(path + ": " + sqlite3_errmsg(db));
@@ -24,9 +25,12 @@ sqlite3_stmt* prepare(sqlite3* db, const std::string& path, const std::string& s
     const int k = static_cast<int>(i) + 1;
     const Value& v = values[i];
     int rc = SQLITE_OK;
-    if (std::holds_alternative<std::monostate>(v)) rc = sqlite3_bind_null(st, k);
-    else if (const auto* n = std::get_if<std::int64_t>(&v)) rc = sqlite3_bind_int64(st, k, *n);
-    else if (const auto* x = std::get_if<double>(&v)) rc = sqlite3_bind_double(st, k, *x);
+    if (std::holds_alternative<std::monostate>(v))
+      rc = sqlite3_bind_null(st, k);
+    else if (const auto* n = std::get_if<std::int64_t>(&v))
+      rc = sqlite3_bind_int64(st, k, *n);
+    else if (const auto* x = std::get_if<double>(&v))
+      rc = sqlite3_bind_double(st, k, *x);
     else if (const auto* s = std::get_if<std::string>(&v))
       rc = sqlite3_bind_text(st, k, s->c_str(), static_cast<int>(s->size()), SQLITE_TRANSIENT);
     else {
@@ -46,8 +50,12 @@ Row readRow(sqlite3_stmt* st) {
   Row row;
   for (int c = 0; c < sqlite3_column_count(st); ++c) {
     switch (sqlite3_column_type(st, c)) {
-      case SQLITE_INTEGER: row.emplace_back(static_cast<std::int64_t>(sqlite3_column_int64(st, c))); break;
-      case SQLITE_FLOAT: row.emplace_back(sqlite3_column_double(st, c)); break;
+      case SQLITE_INTEGER:
+        row.emplace_back(static_cast<std::int64_t>(sqlite3_column_int64(st, c)));
+        break;
+      case SQLITE_FLOAT:
+        row.emplace_back(sqlite3_column_double(st, c));
+        break;
       case SQLITE_TEXT:
         row.emplace_back(std::string(reinterpret_cast<const char*>(sqlite3_column_text(st, c)),
                                      static_cast<std::size_t>(sqlite3_column_bytes(st, c))));
@@ -57,7 +65,8 @@ Row readRow(sqlite3_stmt* st) {
         row.emplace_back(std::vector<unsigned char>(p, p + sqlite3_column_bytes(st, c)));
         break;
       }
-      default: row.emplace_back(std::monostate{});
+      default:
+        row.emplace_back(std::monostate{});
     }
   }
   return row;
@@ -85,7 +94,9 @@ std::vector<Row> Database::query(const std::string& sql, const Row& values) cons
   return rows;
 }
 
-void Database::execute(const std::string& sql, const Row& values) const { query(sql, values); }
+void Database::execute(const std::string& sql, const Row& values) const {
+  query(sql, values);
+}
 
 void Database::script(const std::string& sql) const {
   char* error = nullptr;
@@ -116,7 +127,8 @@ namespace {
 std::unique_ptr<Database::Handle> connect(const std::string& path, int flags) {
   auto h = std::make_unique<Database::Handle>();
   if (sqlite3_open_v2(path.c_str(), &h->db, flags, nullptr) != SQLITE_OK)
-    throw DatabaseError(path + ": cannot open the database: " + (h->db ? sqlite3_errmsg(h->db) : "out of memory"));
+    throw DatabaseError(
+        path + ": cannot open the database: " + (h->db ? sqlite3_errmsg(h->db) : "out of memory"));
   sqlite3_busy_timeout(h->db, 5000);
   sqlite3_exec(h->db, "PRAGMA foreign_keys = ON", nullptr, nullptr, nullptr);
   return h;
@@ -130,24 +142,30 @@ void checkOurs(const Database& db, bool allowOlder) {
     app = static_cast<std::int64_t>(asNumber(db.query("PRAGMA application_id").at(0).at(0)));
     const auto check = db.query("PRAGMA quick_check");
     if (check.empty() || asText(check[0][0]) != "ok")
-      throw DatabaseError(path + ": " + (check.empty() ? std::string("no answer") : asText(check[0][0])));
+      throw DatabaseError(path + ": " +
+                          (check.empty() ? std::string("no answer") : asText(check[0][0])));
   } catch (const DatabaseError& e) {
-    throw DatabaseError(path + ": not a readable yardsim database (damaged or not SQLite): " + e.what());
+    throw DatabaseError(path +
+                        ": not a readable yardsim database (damaged or not SQLite): " + e.what());
   }
   if (app != kApplicationId) {
     const bool empty = db.query("SELECT 1 FROM sqlite_schema LIMIT 1").empty();
-    throw DatabaseError(path + (empty ? ": an empty SQLite file, not a yardsim database (make one with "
-                                        "yardsim db init)"
-                                      : ": another program's SQLite database (its application_id is " +
-                                            std::to_string(app) + ", not yardsim's)"));
+    throw DatabaseError(path +
+                        (empty ? ": an empty SQLite file, not a yardsim database (make one with "
+                                 "yardsim db init)"
+                               : ": another program's SQLite database (its application_id is " +
+                                     std::to_string(app) + ", not yardsim's)"));
   }
   const int v = db.schemaVersion();
   if (v > kSchemaVersion)
-    throw DatabaseError(path + ": schema version " + std::to_string(v) + " was written by a newer yardsim (this one "
-                        "reads up to " + std::to_string(kSchemaVersion) + ")");
+    throw DatabaseError(path + ": schema version " + std::to_string(v) +
+                        " was written by a newer yardsim (this one "
+                        "reads up to " +
+                        std::to_string(kSchemaVersion) + ")");
   if (v < kSchemaVersion && !allowOlder)
     throw DatabaseError(path + ": schema version " + std::to_string(v) + " is older than " +
-                        std::to_string(kSchemaVersion) + "; migrate it with yardsim db init " + path);
+                        std::to_string(kSchemaVersion) + "; migrate it with yardsim db init " +
+                        path);
 }
 
 // (database at version v) => every later migration applied, user_version set, in one transaction
@@ -155,7 +173,8 @@ void migrate(const Database& db) {
   const int from = db.schemaVersion();
   if (from == kSchemaVersion) return;
   db.transaction([&] {
-    for (int k = from; k < kSchemaVersion; ++k) db.script(migrations()[static_cast<std::size_t>(k)]);
+    for (int k = from; k < kSchemaVersion; ++k)
+      db.script(migrations()[static_cast<std::size_t>(k)]);
     db.execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   });
 }
@@ -163,7 +182,8 @@ void migrate(const Database& db) {
 }  // namespace
 
 Database Database::create(const std::string& path) {
-  if (std::filesystem::exists(path)) throw DatabaseError(path + ": already exists (yardsim db init makes a new database)");
+  if (std::filesystem::exists(path))
+    throw DatabaseError(path + ": already exists (yardsim db init makes a new database)");
   Database db(connect(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE), path);
   db.execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   migrate(db);
@@ -171,14 +191,16 @@ Database Database::create(const std::string& path) {
 }
 
 Database Database::openReadOnly(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw DatabaseError(path + ": no such database file");
+  if (!std::filesystem::is_regular_file(path))
+    throw DatabaseError(path + ": no such database file");
   Database db(connect(path, SQLITE_OPEN_READONLY), path);
   checkOurs(db, false);
   return db;
 }
 
 Database Database::openForWriting(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw DatabaseError(path + ": no such database file (yardsim db init " + path + " makes one)");
+  if (!std::filesystem::is_regular_file(path))
+    throw DatabaseError(path + ": no such database file (yardsim db init " + path + " makes one)");
   Database db(connect(path, SQLITE_OPEN_READWRITE), path);
   checkOurs(db, true);
   migrate(db);

@@ -23,7 +23,8 @@ class DatabaseError : public std::runtime_error {
 };
 
 // One SQL value: NULL, an integer, a real, text or a blob.
-using Value = std::variant<std::monostate, std::int64_t, double, std::string, std::vector<unsigned char>>;
+using Value =
+    std::variant<std::monostate, std::int64_t, double, std::string, std::vector<unsigned char>>;
 using Row = std::vector<Value>;
 
 // ('Y','A','R','D') as PRAGMA application_id; the schema version this build writes
@@ -68,6 +69,8 @@ double asNumber(const Value& v);
 std::string asText(const Value& v);
 const std::vector<unsigned char>& asBlob(const Value& v);
 // (value) => whether it is NULL
-inline bool isNull(const Value& v) { return std::holds_alternative<std::monostate>(v); }
+inline bool isNull(const Value& v) {
+  return std::holds_alternative<std::monostate>(v);
+}
 
 }  // namespace yardsim::yard

@@ -29,7 +29,8 @@ std::vector<unsigned char> meshToBlob(const forces::TriangleMesh& mesh) {
   return out;
 }
 
-forces::TriangleMesh meshFromBlob(const std::vector<unsigned char>& blob, const std::string& source) {
+forces::TriangleMesh meshFromBlob(const std::vector<unsigned char>& blob,
+                                  const std::string& source) {
   std::uint32_t nv = 0, nt = 0;
   if (blob.size() < 12 || std::memcmp(blob.data(), "YSM1", 4) != 0)
     throw DatabaseError(source + ": the stored mesh is not a yardsim mesh blob");
@@ -49,7 +50,8 @@ forces::TriangleMesh meshFromBlob(const std::vector<unsigned char>& blob, const 
       std::int32_t i = 0;
       std::memcpy(&i, p, 4);
       p += 4;
-      if (i < 0 || static_cast<std::uint32_t>(i) >= nv) throw DatabaseError(source + ": the stored mesh has a bad index");
+      if (i < 0 || static_cast<std::uint32_t>(i) >= nv)
+        throw DatabaseError(source + ": the stored mesh has a bad index");
       k = i;
     }
   return m;

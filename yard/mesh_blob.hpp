@@ -10,6 +10,7 @@ namespace yardsim::yard {
 // (mesh) => its blob
 std::vector<unsigned char> meshToBlob(const forces::TriangleMesh& mesh);
 // (blob, source for errors) => the mesh; DatabaseError when the blob is not one of ours
-forces::TriangleMesh meshFromBlob(const std::vector<unsigned char>& blob, const std::string& source);
+forces::TriangleMesh meshFromBlob(const std::vector<unsigned char>& blob,
+                                  const std::string& source);
 
 }  // namespace yardsim::yard

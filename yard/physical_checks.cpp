@@ -10,7 +10,8 @@ namespace yardsim::yard {
 
 void checkMass(double mass, const std::string& what) {
   if (!std::isfinite(mass) || !(mass > 0))
-    throw DatabaseError(what + ": the mass must be a finite number > 0 kg, got " + std::to_string(mass));
+    throw DatabaseError(what + ": the mass must be a finite number > 0 kg, got " +
+                        std::to_string(mass));
 }
 
 void checkInertia(const dynamics::Matrix3& inertia, const std::string& what) {
@@ -26,8 +27,11 @@ void checkInertia(const dynamics::Matrix3& inertia, const std::string& what) {
   if (!(p[0] > 1e-12 * scale) || !(scale > 0))
     throw DatabaseError(what + ": the inertia is not positive definite (" + moments.str() + ")");
   if (p[2] > (p[0] + p[1]) * (1 + 1e-9))
-    throw DatabaseError(what + ": the inertia is not physical: the largest principal moment exceeds the sum of "
-                               "the other two (" + moments.str() + ")");
+    throw DatabaseError(
+        what +
+        ": the inertia is not physical: the largest principal moment exceeds the sum of "
+        "the other two (" +
+        moments.str() + ")");
 }
 
 }  // namespace yardsim::yard

@@ -21,14 +21,14 @@ struct Lug {
 // A hull block (or any lifted body) with its weight-control figures.
 struct Block {
   std::string name, project;
-  double mass = 0.0;                                         // kg
-  dynamics::Vector3 cog = dynamics::Vector3::Zero();         // m, block frame
-  dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();     // kg m^2 about the cog
-  std::shared_ptr<const forces::TriangleMesh> mesh;          // block frame; null: none
-  std::string meshPath;                                      // a file instead (relative to the db)
+  double mass = 0.0;                                      // kg
+  dynamics::Vector3 cog = dynamics::Vector3::Zero();      // m, block frame
+  dynamics::Matrix3 inertia = dynamics::Matrix3::Zero();  // kg m^2 about the cog
+  std::shared_ptr<const forces::TriangleMesh> mesh;       // block frame; null: none
+  std::string meshPath;                                   // a file instead (relative to the db)
   std::vector<Lug> lugs;
-  std::string weightStatus = "estimated";                    // estimated | calculated | weighed
-  std::string source;                                        // where the figures came from
+  std::string weightStatus = "estimated";  // estimated | calculated | weighed
+  std::string source;                      // where the figures came from
 };
 
 // A point of a crane's hook-load curve: the capacity at an outreach.
@@ -39,23 +39,23 @@ struct CurvePoint {
 
 // A crane (goliath, floating, overhead): its YAML model and its particulars.
 struct Facility {
-  std::string name, kind = "goliath";  // goliath | floating | overhead | other
-  std::string modelFile;               // YAML model, relative to the database file
-  double capacity = 0.0;               // N at the hook
-  double hoistSpeed = 0.0;             // m/s; 0: not stated
-  double hoistAcceleration = 0.0;      // m/s^2; 0: not stated
-  double maxOutreach = 0.0;            // m; 0: not stated
+  std::string name, kind = "goliath";     // goliath | floating | overhead | other
+  std::string modelFile;                  // YAML model, relative to the database file
+  double capacity = 0.0;                  // N at the hook
+  double hoistSpeed = 0.0;                // m/s; 0: not stated
+  double hoistAcceleration = 0.0;         // m/s^2; 0: not stated
+  double maxOutreach = 0.0;               // m; 0: not stated
   std::vector<CurvePoint> hookLoadCurve;  // outreach ascending
 };
 
 // A wire rope or sling from a catalogue.
 struct Rope {
-  std::string name;          // e.g. "6x36 IWRC 64 mm"
-  double diameter = 0.0;     // m
-  std::string construction;  // e.g. "6x36 IWRC"
-  double ea = 0.0;           // axial stiffness, N
-  double mbl = 0.0;          // minimum breaking load, N
-  double massPerMetre = 0.0; // kg/m
+  std::string name;           // e.g. "6x36 IWRC 64 mm"
+  double diameter = 0.0;      // m
+  std::string construction;   // e.g. "6x36 IWRC"
+  double ea = 0.0;            // axial stiffness, N
+  double mbl = 0.0;           // minimum breaking load, N
+  double massPerMetre = 0.0;  // kg/m
 };
 
 }  // namespace yardsim::yard

@@ -50,7 +50,8 @@ class Welder {
         for (long long dz = -1; dz <= 1; ++dz) {
           const auto range = cells_.equal_range(key(cx + dx, cy + dy, cz + dz));
           for (auto it = range.first; it != range.second; ++it)
-            if ((vertices[static_cast<std::size_t>(it->second)] - p).norm() <= tol_) return it->second;
+            if ((vertices[static_cast<std::size_t>(it->second)] - p).norm() <= tol_)
+              return it->second;
         }
     const int index = static_cast<int>(vertices.size());
     vertices.push_back(p);
@@ -87,7 +88,8 @@ void appendSolid(const TopoDS_Shape& solid, double weldTolerance, TriangleMesh& 
       int a = 0, b = 0, c = 0;
       tri->Triangle(i).Get(a, b, c);
       if (reversed) std::swap(b, c);
-      const std::array<int, 3> t{index[static_cast<std::size_t>(a)], index[static_cast<std::size_t>(b)],
+      const std::array<int, 3> t{index[static_cast<std::size_t>(a)],
+                                 index[static_cast<std::size_t>(b)],
                                  index[static_cast<std::size_t>(c)]};
       if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;  // collapsed at a pole or apex
       mesh.triangles.push_back(t);
@@ -98,7 +100,8 @@ void appendSolid(const TopoDS_Shape& solid, double weldTolerance, TriangleMesh& 
 }  // namespace
 
 StepModel readStep(const std::string& path, const StepTolerance& tolerance) {
-  if (!std::filesystem::is_regular_file(path)) throw MeshError(path + ": cannot open the STEP file");
+  if (!std::filesystem::is_regular_file(path))
+    throw MeshError(path + ": cannot open the STEP file");
   if (!(tolerance.chord > 0) || !(tolerance.angle > 0))
     throw MeshError(path + ": the tessellation's chord and angle tolerances must be > 0");
   StepModel model;
@@ -124,8 +127,9 @@ StepModel readStep(const std::string& path, const StepTolerance& tolerance) {
       ++model.solids;
     }
     if (model.solids == 0)
-      throw MeshError(path + ": the STEP file holds no solid (only surfaces, curves or nothing); "
-                             "export closed solids from the CAD system");
+      throw MeshError(path +
+                      ": the STEP file holds no solid (only surfaces, curves or nothing); "
+                      "export closed solids from the CAD system");
     BRepMesh_IncrementalMesh mesher(solids, tolerance.chord, false, tolerance.angle, false);
     if (!mesher.IsDone()) throw MeshError(path + ": the tessellation failed");
     Bnd_Box box;
@@ -151,17 +155,22 @@ StepModel readStep(const std::string& path, const StepTolerance& tolerance) {
   return model;
 }
 
-bool stepSupported() { return true; }
+bool stepSupported() {
+  return true;
+}
 
 #else
 
 StepModel readStep(const std::string& path, const StepTolerance&) {
-  throw MeshError(path + ": this yardsim was built without STEP support; configure it with "
-                         "-DYARDSIM_WITH_STEP=ON (Debian packages libocct-data-exchange-dev and "
-                         "libocct-modeling-algorithms-dev)");
+  throw MeshError(path +
+                  ": this yardsim was built without STEP support; configure it with "
+                  "-DYARDSIM_WITH_STEP=ON (Debian packages libocct-data-exchange-dev and "
+                  "libocct-modeling-algorithms-dev)");
 }
 
-bool stepSupported() { return false; }
+bool stepSupported() {
+  return false;
+}
 
 #endif
 

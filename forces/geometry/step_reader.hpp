@@ -17,8 +17,8 @@ namespace yardsim::forces {
 // height, m, absolute) and the largest angle between neighbouring facets along a curved
 // surface (rad). Planar faces are split only as their outlines need.
 struct StepTolerance {
-  double chord = 1e-3;   // m
-  double angle = 0.35;   // rad (about 20 degrees)
+  double chord = 1e-3;  // m
+  double angle = 0.35;  // rad (about 20 degrees)
 };
 
 // A STEP file's solids: the mesh (m, the file's global frame) and the exact properties.

@@ -9,10 +9,10 @@
 #include "yard/database.hpp"
 
 using namespace yardsim::yard;
+using Catch::Matchers::Contains;
 using yardsim::dynamics::Matrix3;
 using yardsim::dynamics::Vector3;
 using yardsim::testing::SceneDir;
-using Catch::Matchers::Contains;
 
 TEST_CASE("a box mesh with a density gives the closed-form mass, cog and inertia") {
   SceneDir dir;

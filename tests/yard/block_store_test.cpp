@@ -6,10 +6,10 @@
 #include "yard/block_store.hpp"
 
 using namespace yardsim::yard;
+using Catch::Matchers::Contains;
 using yardsim::dynamics::Matrix3;
 using yardsim::dynamics::Vector3;
 using yardsim::testing::SceneDir;
-using Catch::Matchers::Contains;
 
 namespace {
 Block sample() {
@@ -19,8 +19,10 @@ Block sample() {
   b.mass = 920e3;
   b.cog = Vector3(1.5, -0.25, 3.0);
   b.inertia << 4e7, 1e5, 2e5, 1e5, 5e7, 3e5, 2e5, 3e5, 6e7;
-  b.mesh = std::make_shared<const yardsim::forces::TriangleMesh>(yardsim::forces::boxMesh(Vector3(20, 15, 6)));
-  b.lugs = {{"L1", Vector3(8, 5, 3), Vector3(0, 0, 2), 120e4}, {"L2", Vector3(-8, 5, 3), Vector3(0, 0, 1), 120e4}};
+  b.mesh = std::make_shared<const yardsim::forces::TriangleMesh>(
+      yardsim::forces::boxMesh(Vector3(20, 15, 6)));
+  b.lugs = {{"L1", Vector3(8, 5, 3), Vector3(0, 0, 2), 120e4},
+            {"L2", Vector3(-8, 5, 3), Vector3(0, 0, 1), 120e4}};
   b.weightStatus = "weighed";
   b.source = "test";
   return b;
@@ -47,10 +49,13 @@ TEST_CASE("a block with mesh and lugs reads back exactly, lug directions made un
   CHECK(b.weightStatus == "weighed");
   CHECK(blockNames(db) == std::vector<std::string>{"P0025-S03S"});
   CHECK_FALSE(findBlock(db, "nothing"));
-  CHECK_THROWS_WITH(getBlock(db, "P0025-S3S"), Contains("unknown block 'P0025-S3S'") && Contains("P0025-S03S"));
+  CHECK_THROWS_WITH(getBlock(db, "P0025-S3S"),
+                    Contains("unknown block 'P0025-S3S'") && Contains("P0025-S03S"));
 }
 
-TEST_CASE("duplicates, negative masses, unphysical inertias and bad lugs are refused, nothing half-stored") {
+TEST_CASE(
+    "duplicates, negative masses, unphysical inertias and bad lugs are refused, nothing "
+    "half-stored") {
   SceneDir dir;
   const Database db = Database::create(dir.file("yard.sqlite"));
   insertBlock(db, sample());

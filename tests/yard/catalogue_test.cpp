@@ -6,8 +6,8 @@
 #include "yard/catalogue.hpp"
 
 using namespace yardsim::yard;
-using yardsim::testing::SceneDir;
 using Catch::Matchers::Contains;
+using yardsim::testing::SceneDir;
 
 TEST_CASE("a rope catalogue imports, lists sorted and finds ropes by name") {
   SceneDir dir;
@@ -26,28 +26,44 @@ TEST_CASE("a rope catalogue imports, lists sorted and finds ropes by name") {
   CHECK(r.mbl == 3.2e6);
   CHECK(r.massPerMetre == 17.6);
   CHECK(r.construction == "6x36 IWRC");
-  CHECK_THROWS_WITH(getRope(db, "6x36 64"), Contains("unknown rope") && Contains("6x36 IWRC 52 mm"));
+  CHECK_THROWS_WITH(getRope(db, "6x36 64"),
+                    Contains("unknown rope") && Contains("6x36 IWRC 52 mm"));
 }
 
 TEST_CASE("a bad catalogue is refused at its line and adds nothing") {
   SceneDir dir;
   const Database db = Database::create(dir.file("yard.sqlite"));
-  dir.write("bad.csv", "name,diameter,construction,EA,MBL,mass_per_metre\na,0.05,x,1e8,2e6,10\nb,0.05,x,-1e8,2e6,10\n");
-  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("bad.csv")), Contains("bad.csv:3: EA") && Contains("> 0"));
+  dir.write("bad.csv",
+            "name,diameter,construction,EA,MBL,mass_per_metre\na,0.05,x,1e8,2e6,10\nb,0.05,x,-1e8,"
+            "2e6,10\n");
+  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("bad.csv")),
+                    Contains("bad.csv:3: EA") && Contains("> 0"));
   CHECK(ropes(db).empty());  // the good first line rolled back with the bad one
   dir.write("word.csv", "name,diameter,construction,EA,MBL,mass_per_metre\na,thick,x,1e8,2e6,10\n");
-  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("word.csv")), Contains("word.csv:2: diameter"));
+  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("word.csv")),
+                    Contains("word.csv:2: diameter"));
   dir.write("cols.csv", "name,diameter,EA\n");
-  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("cols.csv")), Contains("no column 'construction'"));
+  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("cols.csv")),
+                    Contains("no column 'construction'"));
   CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("none.csv")), Contains("cannot open"));
-  dir.write("dup.csv", "name,diameter,construction,EA,MBL,mass_per_metre\na,0.05,x,1e8,2e6,10\na,0.05,x,1e8,2e6,10\n");
-  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("dup.csv")), Contains("dup.csv:3") && Contains("already"));
+  dir.write("dup.csv",
+            "name,diameter,construction,EA,MBL,mass_per_metre\na,0.05,x,1e8,2e6,10\na,0.05,x,1e8,"
+            "2e6,10\n");
+  CHECK_THROWS_WITH(importRopeCatalogue(db, dir.file("dup.csv")),
+                    Contains("dup.csv:3") && Contains("already"));
 }
 
 TEST_CASE("facilities keep their particulars and hook-load curve") {
   SceneDir dir;
   const Database db = Database::create(dir.file("yard.sqlite"));
-  Facility f{"GOC201", "goliath", "cranes/goliath.yaml", 4.5e6, 0.083, 0.05, 0, {{0, 4.5e6}, {10, 4.0e6}, {20, 3e6}}};
+  Facility f{"GOC201",
+             "goliath",
+             "cranes/goliath.yaml",
+             4.5e6,
+             0.083,
+             0.05,
+             0,
+             {{0, 4.5e6}, {10, 4.0e6}, {20, 3e6}}};
   insertFacility(db, f);
   const auto back = findFacility(db, "GOC201");
   REQUIRE(back);

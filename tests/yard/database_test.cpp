@@ -1,8 +1,8 @@
 // The database file: created with the current schema and our application_id, opened read-only
 // by runs (writes refused), writes in transactions (rolled back on error), and foreign, damaged,
 // empty, newer and older files told apart with clear messages.
-#include <catch2/catch.hpp>
 #include <sqlite3.h>
+#include <catch2/catch.hpp>
 
 #include <fstream>
 
@@ -11,8 +11,8 @@
 #include "yard/schema.hpp"
 
 using namespace yardsim::yard;
-using yardsim::testing::SceneDir;
 using Catch::Matchers::Contains;
+using yardsim::testing::SceneDir;
 
 namespace {
 // (path, SQL) => the SQL run by plain SQLite, as another program would
@@ -35,8 +35,8 @@ TEST_CASE("a new database has the current schema, our application_id and its tab
   std::vector<std::string> tables;
   for (const Row& r : db.query("SELECT name FROM sqlite_schema WHERE type = 'table' ORDER BY name"))
     tables.push_back(asText(r[0]));
-  CHECK(tables == std::vector<std::string>{"blocks", "facilities", "friction_pairs", "hook_load_curves", "lugs",
-                                           "materials", "ropes"});
+  CHECK(tables == std::vector<std::string>{"blocks", "facilities", "friction_pairs",
+                                           "hook_load_curves", "lugs", "materials", "ropes"});
   CHECK_THROWS_WITH(Database::create(path), Contains("already exists"));
 }
 
@@ -45,7 +45,8 @@ TEST_CASE("a read-only database refuses writes, and a failed transaction leaves 
   const std::string path = dir.file("yard.sqlite");
   { Database::create(path); }
   const Database ro = Database::openReadOnly(path);
-  CHECK_THROWS_WITH(ro.execute("INSERT INTO materials VALUES ('steel', 7850)"), Contains("readonly"));
+  CHECK_THROWS_WITH(ro.execute("INSERT INTO materials VALUES ('steel', 7850)"),
+                    Contains("readonly"));
   const Database rw = Database::openForWriting(path);
   CHECK_THROWS_AS(rw.transaction([&] {
     rw.execute("INSERT INTO materials VALUES ('steel', 7850)");
@@ -53,8 +54,11 @@ TEST_CASE("a read-only database refuses writes, and a failed transaction leaves 
   }),
                   DatabaseError);
   CHECK(rw.query("SELECT * FROM materials").empty());
-  rw.transaction([&] { rw.execute("INSERT INTO materials VALUES (?, ?)", {std::string("steel"), 7850.0}); });
-  CHECK(asNumber(ro.query("SELECT density FROM materials")[0][0]) == 7850.0);  // a second reader sees it
+  rw.transaction([&] {
+    rw.execute("INSERT INTO materials VALUES (?, ?)", {std::string("steel"), 7850.0});
+  });
+  CHECK(asNumber(ro.query("SELECT density FROM materials")[0][0]) ==
+        7850.0);  // a second reader sees it
   // the schema's own checks hold too: a density <= 0 is refused by SQLite
   CHECK_THROWS_WITH(rw.execute("INSERT INTO materials VALUES ('air', -1)"), Contains("CHECK"));
 }
@@ -63,12 +67,16 @@ TEST_CASE("files that are not our database are refused with what they are") {
   SceneDir dir;
   CHECK_THROWS_WITH(Database::openReadOnly(dir.file("none.sqlite")), Contains("no such database"));
   dir.write("text.sqlite", std::string(4096, 'x'));
-  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("text.sqlite")), Contains("not a readable yardsim database"));
+  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("text.sqlite")),
+                    Contains("not a readable yardsim database"));
   raw(dir.file("other.sqlite"), "CREATE TABLE t(x); PRAGMA application_id = 1234;");
-  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("other.sqlite")), Contains("another program's") && Contains("1234"));
-  CHECK_THROWS_WITH(Database::openForWriting(dir.file("other.sqlite")), Contains("another program's"));
+  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("other.sqlite")),
+                    Contains("another program's") && Contains("1234"));
+  CHECK_THROWS_WITH(Database::openForWriting(dir.file("other.sqlite")),
+                    Contains("another program's"));
   raw(dir.file("empty.sqlite"), "PRAGMA user_version = 0;");
-  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("empty.sqlite")), Contains("empty SQLite file"));
+  CHECK_THROWS_WITH(Database::openReadOnly(dir.file("empty.sqlite")),
+                    Contains("empty SQLite file"));
   // a database of ours whose first page was overwritten after its header
   const std::string damaged = dir.file("damaged.sqlite");
   { Database::create(damaged); }

@@ -7,9 +7,9 @@
 #include "yard/physical_checks.hpp"
 
 using namespace yardsim::yard;
+using Catch::Matchers::Contains;
 using yardsim::dynamics::Matrix3;
 using yardsim::dynamics::Vector3;
-using Catch::Matchers::Contains;
 
 TEST_CASE("masses must be finite and positive") {
   CHECK_NOTHROW(checkMass(920e3, "b"));
@@ -28,8 +28,10 @@ TEST_CASE("inertias: a box, a rod and a thin plate pass, a triangle-inequality b
   CHECK_THROWS_WITH(checkInertia(Vector3(1, 2, 3.5).asDiagonal(), "b"),
                     Contains("largest principal moment exceeds") && Contains("3.5"));
   // the same breach hidden by a rotation is still found (principal moments, not the diagonal)
-  CHECK_THROWS_AS(checkInertia(R * Matrix3(Vector3(1, 2, 3.5).asDiagonal()) * R.transpose(), "b"), DatabaseError);
-  CHECK_THROWS_WITH(checkInertia(Vector3(1, -2, 3).asDiagonal(), "b"), Contains("not positive definite"));
+  CHECK_THROWS_AS(checkInertia(R * Matrix3(Vector3(1, 2, 3.5).asDiagonal()) * R.transpose(), "b"),
+                  DatabaseError);
+  CHECK_THROWS_WITH(checkInertia(Vector3(1, -2, 3).asDiagonal(), "b"),
+                    Contains("not positive definite"));
   CHECK_THROWS_WITH(checkInertia(Matrix3::Zero(), "b"), Contains("not positive definite"));
   Matrix3 skew = box;
   skew(0, 1) = 5;

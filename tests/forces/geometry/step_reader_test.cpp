@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
@@ -28,10 +28,10 @@
 #include "support/scene_files.hpp"
 
 using namespace yardsim::forces;
+using Catch::Matchers::Contains;
 using yardsim::dynamics::Matrix3;
 using yardsim::dynamics::Vector3;
 using yardsim::testing::SceneDir;
-using Catch::Matchers::Contains;
 
 namespace {
 
@@ -49,14 +49,17 @@ void writeStep(const TopoDS_Shape& shape, const std::string& path, const char* u
 
 // (corner, size) => an axis-aligned box solid
 TopoDS_Shape box(const Vector3& corner, const Vector3& size) {
-  return BRepPrimAPI_MakeBox(gp_Pnt(corner.x(), corner.y(), corner.z()), size.x(), size.y(), size.z()).Shape();
+  return BRepPrimAPI_MakeBox(gp_Pnt(corner.x(), corner.y(), corner.z()), size.x(), size.y(),
+                             size.z())
+      .Shape();
 }
 
 // (size, density 1) => the inertia of a box about its centre, m^5
 Matrix3 boxInertia(const Vector3& s) {
   const double V = s.prod();
-  return (V / 12.0 * Vector3(s.y() * s.y() + s.z() * s.z(), s.x() * s.x() + s.z() * s.z(),
-                             s.x() * s.x() + s.y() * s.y()))
+  return (V / 12.0 *
+          Vector3(s.y() * s.y() + s.z() * s.z(), s.x() * s.x() + s.z() * s.z(),
+                  s.x() * s.x() + s.y() * s.y()))
       .asDiagonal();
 }
 
@@ -102,7 +105,8 @@ TEST_CASE("a STEP box turned about two axes: B-rep and mesh inertia agree off th
   SceneDir dir;
   gp_Trsf turn;
   turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 0.5)), 0.7);
-  writeStep(box(Vector3(0, 0, 0), Vector3(5, 2, 1)).Moved(TopLoc_Location(turn)), dir.file("turned.step"));
+  writeStep(box(Vector3(0, 0, 0), Vector3(5, 2, 1)).Moved(TopLoc_Location(turn)),
+            dir.file("turned.step"));
   const StepModel m = readStep(dir.file("turned.step"));
   const SolidProperties mesh = solidProperties(m.mesh);
   CHECK(std::abs(m.brep.inertia(0, 1)) > 1.0);  // a real product of inertia to compare
@@ -116,10 +120,12 @@ TEST_CASE("a STEP box turned about two axes: B-rep and mesh inertia agree off th
   CHECK((eig.eigenvalues() - sorted).norm() < 1e-8);
 }
 
-TEST_CASE("a STEP cylinder: closed forms, and a finer chord gives more triangles and a closer mesh") {
+TEST_CASE(
+    "a STEP cylinder: closed forms, and a finer chord gives more triangles and a closer mesh") {
   SceneDir dir;
   const double r = 1.5, h = 4.0;
-  writeStep(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp_Dir(0, 0, 1)), r, h).Shape(), dir.file("cyl.step"));
+  writeStep(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp_Dir(0, 0, 1)), r, h).Shape(),
+            dir.file("cyl.step"));
   const double V = M_PI * r * r * h, area = 2 * M_PI * r * (r + h);
   std::size_t previous = 0;
   double previousError = 1e9;
@@ -155,7 +161,8 @@ TEST_CASE("a hollow STEP block open at the top: one closed surface, composite cl
   // (box of size s and centre p) => its inertia about c, parallel axes
   auto about = [&](const Vector3& s, const Vector3& p) {
     const Vector3 d = p - c;
-    return Matrix3(boxInertia(s) + s.prod() * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()));
+    return Matrix3(boxInertia(s) +
+                   s.prod() * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()));
   };
   const Matrix3 I = about(outer, outer / 2) - about(inside, insideCentre);
   CHECK(m.solids == 1);
@@ -199,11 +206,15 @@ TEST_CASE("broken, empty, solid-less and missing STEP files are refused naming t
   SceneDir dir;
   dir.write("empty.step", "");
   dir.write("broken.step", "ISO-10303-21;\nHEADER;\nthis is not STEP\n");
-  CHECK_THROWS_WITH(readStep(dir.file("empty.step")), Contains("empty.step") && Contains("not a readable STEP"));
+  CHECK_THROWS_WITH(readStep(dir.file("empty.step")),
+                    Contains("empty.step") && Contains("not a readable STEP"));
   CHECK_THROWS_WITH(readStep(dir.file("broken.step")), Contains("broken.step"));
   CHECK_THROWS_WITH(readStep(dir.file("none.step")), Contains("cannot open"));
   // a single planar face: a surface, no solid
-  writeStep(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0), true).Wire()).Face(),
+  writeStep(BRepBuilderAPI_MakeFace(
+                BRepBuilderAPI_MakePolygon(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0), gp_Pnt(1, 1, 0), true)
+                    .Wire())
+                .Face(),
             dir.file("face.step"));
   CHECK_THROWS_WITH(readStep(dir.file("face.step")), Contains("no solid"));
   CHECK_THROWS_WITH(readStep(dir.file("face.step"), {0.0, 0.5}), Contains("must be > 0"));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/db_command.hpp"
 #include "cli/exit_codes.hpp"
 #include "cli/logging.hpp"
 #include "models/diagnostics.hpp"
@@ -100,6 +101,9 @@ int yardsimMain(int argc, char** argv) {
   auto* channels = app.add_subcommand("list-channels", "list the channels a scene can record");
   channels->add_option("scene", channelsScene, "scene file (YAML)")->required();
 
+  DbArgs dbArgs;
+  auto* dbCmd = addDbCommand(app, dbArgs);
+
   // (a first word that is no command) => named, with the commands there are
   if (argc > 1 && argv[1][0] != '-') {
     std::vector<std::string> names;
@@ -130,6 +134,7 @@ int yardsimMain(int argc, char** argv) {
     if (validate->parsed()) return validateCommand(validateScene, printResolved);
     if (traceCmd->parsed()) return traceCommand(trace);
     if (channels->parsed()) return listChannelsCommand(channelsScene);
+    if (dbCmd->parsed()) return dbCommand(*dbCmd, dbArgs);
     return listTypesCommand();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "yardsim: internal error: %s\n", e.what());

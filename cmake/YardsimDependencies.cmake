@@ -22,6 +22,26 @@ if(NOT OpenSSL_FOUND)
   message(FATAL_ERROR "yardsim: OpenSSL's libcrypto not found. Install the Debian package 'libssl-dev' "
     "(sudo apt-get install --no-install-recommends libssl-dev), or run scripts/setup.sh.")
 endif()
+# the yard's database (yard/): SQLite through CMake's own find module
+find_package(SQLite3 QUIET)
+if(NOT SQLite3_FOUND)
+  message(FATAL_ERROR "yardsim: SQLite3 not found. Install the Debian package 'libsqlite3-dev' "
+    "(sudo apt-get install --no-install-recommends libsqlite3-dev), or run scripts/setup.sh.")
+endif()
+# STEP import (forces/geometry/step_reader) through OpenCASCADE 7.6: large, so behind an option;
+# ON by default (CI and scripts/setup.sh install it); OFF builds a yardsim that refuses .step files.
+option(YARDSIM_WITH_STEP "Read STEP files through OpenCASCADE (libocct-data-exchange-dev)" ON)
+if(YARDSIM_WITH_STEP)
+  find_package(OpenCASCADE CONFIG QUIET)
+  if(NOT OpenCASCADE_FOUND)
+    message(FATAL_ERROR
+      "yardsim: OpenCASCADE not found for YARDSIM_WITH_STEP=ON. Install the Debian packages "
+      "'libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev "
+      "libocct-foundation-dev' (or run scripts/setup.sh), or configure with -DYARDSIM_WITH_STEP=OFF.")
+  endif()
+  # the OCCT toolkits the reader uses (STEP translation, tessellation, global properties)
+  set(YARDSIM_OCCT_LIBRARIES TKSTEP TKXSBase TKMesh TKTopAlgo TKBRep TKG3d TKMath TKernel)
+endif()
 if(YARDSIM_BUILD_TESTS)
   yardsim_require(Catch2 catch2)
 endif()

@@ -6,6 +6,10 @@ packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
   libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev libssl-dev
+  libsqlite3-dev  # the yard's database (yard/)
+  # STEP import (YARDSIM_WITH_STEP): OpenCASCADE 7.6, about 37 MB download, 188 MB installed
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
+  libtbb-dev  # OCCT's CMake targets name libtbb.so, which only the -dev package has
   chromium  # the report's browser test (tests/report)
 )
 missing=()

@@ -10,6 +10,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "forces/geometry/step_reader.hpp"
+
 namespace yardsim::forces {
 
 using dynamics::Vector3;
@@ -92,7 +94,8 @@ TriangleMesh readMesh(const std::string& path) {
   const std::string ext = lower(std::filesystem::path(path).extension().string());
   if (ext == ".obj") return readObj(path);
   if (ext == ".stl") return readStl(path);
-  throw MeshError(path + ": unknown mesh format '" + ext + "' (expected .obj or .stl)");
+  if (ext == ".step" || ext == ".stp") return readStep(path).mesh;
+  throw MeshError(path + ": unknown mesh format '" + ext + "' (expected .obj, .stl, .step or .stp)");
 }
 
 TriangleMesh readClosedMesh(const std::string& path) {

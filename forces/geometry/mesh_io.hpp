@@ -10,7 +10,8 @@
 
 namespace yardsim::forces {
 
-// (path) => the mesh, by extension (.obj, .stl; any case); source = path. Throws MeshError.
+// (path) => the mesh, by extension (.obj, .stl, .step/.stp through readStep with its default
+// tolerance; any case); source = path. Throws MeshError.
 TriangleMesh readMesh(const std::string& path);
 // (path) => readMesh(path), then checkClosedMesh: a hull ready for clipping
 TriangleMesh readClosedMesh(const std::string& path);

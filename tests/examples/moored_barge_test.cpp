@@ -54,18 +54,35 @@ TEST_CASE(
               << " m, simulated " << r0[y] << " m");
   CHECK(r0[draft] == Approx(T).epsilon(2e-3));
   CHECK(F < -1.0e5);
-  CHECK(r0[y] == Approx(offset).epsilon(0.03));  // linear stiffness, 2.5 m offset
+  // (the lines' pull towards +y at a sway offset d, spans and headings by hand) => the nonlinear
+  // offset, where that pull balances F
+  const double fair[4][2] = {{28, 10}, {-28, 10}, {-28, -10}, {28, -10}};
+  auto pull = [&](double d) {
+    double sum = 0;
+    for (const auto& f : fair) {
+      const double ax = f[0] + std::copysign(X0 * std::sqrt(0.5), f[0]);
+      const double ay = f[1] + std::copysign(X0 * std::sqrt(0.5), f[1]);
+      const double dx = ax - f[0], dy = ay - (f[1] + d), X = std::hypot(dx, dy);
+      sum += forces::solveCatenary(chain, X, depth - T + 1.0).hf * dy / X;
+    }
+    return sum;
+  };
+  double d = offset;
+  for (int k = 0; k < 20; ++k) d -= (pull(d) + F) / ((pull(d + 1e-4) - pull(d - 1e-4)) / 2e-4);
+  INFO("nonlinear offset " << d << " m");
+  CHECK(r0[y] == Approx(d).epsilon(0.01));
+  CHECK(r0[y] == Approx(offset).epsilon(0.04));  // the linear stiffness: 3 % too soft here
   CHECK(std::abs(r0[x]) < 1e-3);
   CHECK(std::abs(r0[yaw]) < 1e-5);
-  // (each line) => H0 + k dX, dX = e . (0, offset) the change of its span (linear), and the
-  // catenary solved at the simulated span (nonlinear): the tensions of the channels
+  // (each line) => H0 + k dX, dX = e . (0, offset) the change of its span (linear, 5 % low on
+  // the windward lines at this offset), and the catenary solved at the span (nonlinear)
   for (int i = 0; i < 4; ++i) {
     const double dX = -ySide[i] * std::sqrt(0.5) * r0[y];
     const double h = r0[col(std::string(lines[i]) + ".horizontal_tension[N]")];
     const auto exact = forces::solveCatenary(chain, X0 + dX, depth - T + 1.0);
     INFO(lines[i] << ": H = " << h << " N, linear " << c0.hf + c0.k11 * dX << " N, at the span "
                   << exact.hf << " N");
-    CHECK(h == Approx(c0.hf + c0.k11 * dX).epsilon(0.03));
+    CHECK(h == Approx(c0.hf + c0.k11 * dX).epsilon(0.07));
     CHECK(h == Approx(exact.hf).epsilon(0.01));
     CHECK(r0[col(std::string(lines[i]) + ".fairlead_tension[N]")] ==
           Approx(std::hypot(exact.hf, exact.vf)).epsilon(0.01));

@@ -49,7 +49,7 @@ mechanics:
 }
 
 // (scene text, until) => its timeseries.csv after a run
-testing::CsvFile run(const testing::SceneDir& dir, const std::string& text, double until) {
+testing::CsvFile simulate(const testing::SceneDir& dir, const std::string& text, double until) {
   auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", text));
   auto root = scene::assemble(*scene);
   run::runScene(*scene, *root, {dir.path() / "out", until, {}, {}, 0.1});
@@ -60,7 +60,7 @@ testing::CsvFile run(const testing::SceneDir& dir, const std::string& text, doub
 
 TEST_CASE("mooring: channels equal an independent catenary solve at the fairlead") {
   testing::SceneDir dir;
-  const auto csv = run(dir, moored(0.0, 3.0, false), 0.0);
+  const auto csv = simulate(dir, moored(0.0, 3.0, false), 0.5);
   REQUIRE(!csv.rows.empty());
   const auto c = forces::solveCatenary(kChain, 403.0, 100.0);  // west: the span grew by 3 m
   REQUIRE(c.status == forces::CatenaryStatus::Converged);
@@ -88,7 +88,7 @@ TEST_CASE("mooring: channels equal an independent catenary solve at the fairlead
 TEST_CASE("mooring: a moored body's static offset under a steady force balances the lines") {
   testing::SceneDir dir;
   const double F = 2.0e4;  // N
-  const auto csv = run(dir, moored(F, 0.0, true), 0.0);
+  const auto csv = simulate(dir, moored(F, 0.0, true), 0.5);
   const int q = csv.column("surge.q[m]"), hw = csv.column("west.horizontal_tension[N]"),
             he = csv.column("east.horizontal_tension[N]");
   REQUIRE(std::min({q, hw, he}) > 0);
@@ -107,7 +107,7 @@ TEST_CASE("mooring: a moored body's static offset under a steady force balances 
 
 TEST_CASE("mooring: a released moored body oscillates with its energy balance closed") {
   testing::SceneDir dir;
-  const auto csv = run(dir, moored(0.0, 2.0, false), 60.0);
+  const auto csv = simulate(dir, moored(0.0, 2.0, false), 60.0);
   const int q = csv.column("surge.q[m]"), balance = csv.column("mechanics.energy_balance[J]"),
             energy = csv.column("west.energy[J]");
   REQUIRE(std::min({q, balance, energy}) > 0);

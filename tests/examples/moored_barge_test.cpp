@@ -74,27 +74,35 @@ TEST_CASE(
   CHECK(r0[y] == Approx(offset).epsilon(0.04));  // the linear stiffness: 3 % too soft here
   CHECK(std::abs(r0[x]) < 1e-3);
   CHECK(std::abs(r0[yaw]) < 1e-5);
-  // (each line) => H0 + k dX, dX = e . (0, offset) the change of its span (linear, 5 % low on
-  // the windward lines at this offset), and the catenary solved at the span (nonlinear)
+  // (each line) => the catenary solved at its span X0 + dX, dX = e . (0, offset) (nonlinear),
+  // and the linear stiffness k from the windward / lee difference (H_w - H_l) / (2 dX) = k
+  // + O(dX^2) (3 % above k at dX = 1.77 m: the catenary stiffens; their mean is 6 % above H0)
+  double hw = 0, hl = 0, dXw = 0;
   for (int i = 0; i < 4; ++i) {
     const double dX = -ySide[i] * std::sqrt(0.5) * r0[y];
     const double h = r0[col(std::string(lines[i]) + ".horizontal_tension[N]")];
     const auto exact = forces::solveCatenary(chain, X0 + dX, depth - T + 1.0);
     INFO(lines[i] << ": H = " << h << " N, linear " << c0.hf + c0.k11 * dX << " N, at the span "
                   << exact.hf << " N");
-    CHECK(h == Approx(c0.hf + c0.k11 * dX).epsilon(0.07));
     CHECK(h == Approx(exact.hf).epsilon(0.01));
     CHECK(r0[col(std::string(lines[i]) + ".fairlead_tension[N]")] ==
           Approx(std::hypot(exact.hf, exact.vf)).epsilon(0.01));
+    (ySide[i] > 0 ? hw : hl) += h / 2.0;
+    if (ySide[i] > 0) dXw = dX;
   }
+  INFO("windward " << hw << " N, lee " << hl << " N, dX " << dXw << " m");
+  CHECK((hw - hl) / (2.0 * dXw) == Approx(c0.k11).epsilon(0.04));
   // (wind and current steady until 60 s) => still at the equilibrium; waves then move it
-  double drift = 0, moved = 0, worst = 0;
+  double drift = 0, moved = 0, worst = 0, largest = 0;
   for (const auto& r : csv.rows) {
     if (r[0] < 60.0) drift = std::max(drift, std::abs(r[y] - r0[y]));
     if (r[0] > 75.0) moved = std::max(moved, std::abs(r[y] - r0[y]));
     worst = std::max(worst, std::abs(r[balance] - r0[balance]));
+    largest = std::max(largest, std::abs(r[work]));
   }
   CHECK(drift < 1e-3);
   CHECK(moved > 0.05);
-  CHECK(worst < 1e-6 * (std::abs(csv.rows.back()[work]) + m * g * 1.0));
+  // (the waves' work swings by 3e6 J each period: its trapezoidal sum per step) => the balance
+  // closes like examples/floating_barge's (28 J over 90 s there)
+  CHECK(worst < 2e-5 * largest);
 }

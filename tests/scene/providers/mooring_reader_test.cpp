@@ -44,7 +44,7 @@ mechanics:
     west: {anchor: [-400, 0, -100], fairlead: {body: buoy, point: [0, 0, 0]}, length: 450, EA: 1.0e9, weight: 1000}
     east: {anchor: [400, 0, -100], fairlead: {body: buoy}, length: 450, EA: 1.0e9, weight: 1000}
 )" + extra +
-         R"(record: {interval: 0.5, channels: ["surge.q", "west.*", "east.*", "mechanics.energy_balance"]}
+         R"(record: {interval: 0.5, channels: ["surge.q", "west.*", "east.*", "mechanics.energy_balance", "mechanics.work"]}
 )";
 }
 
@@ -123,6 +123,40 @@ TEST_CASE("mooring: a released moored body oscillates with its energy balance cl
   REQUIRE(up.size() >= 2);
   CHECK((up.back() - up.front()) / static_cast<double>(up.size() - 1) ==
         Approx(period).epsilon(0.03));
+}
+
+TEST_CASE("mooring: sea-bed friction lowers the anchor tension and the energy balance closes") {
+  testing::SceneDir dir;
+  // (CB = 1 on both lines, fully mobilised toward the fairlead: the FAST assumption) => the
+  // anchor feels max(0, HF - CB w LB); the line force stays a function of the fairlead position,
+  // so in surge alone it does not damp, and the line's power F . v + dV/dt keeps the balance
+  std::string text = moored(0.0, 2.0, false);
+  const std::string from = "weight: 1000}", to = "weight: 1000, friction: 1.0}";
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  REQUIRE(text.find("friction") != std::string::npos);
+  const auto csv = simulate(dir, text, 60.0);
+  const int q = csv.column("surge.q[m]"), balance = csv.column("mechanics.energy_balance[J]"),
+            anchor = csv.column("west.anchor_tension[N]"),
+            hf = csv.column("west.horizontal_tension[N]"), laid = csv.column("west.laid_length[m]");
+  REQUIRE(std::min({q, balance, anchor, hf, laid}) > 0);
+  forces::CatenaryParameters rough = kChain;
+  rough.friction = 1.0;
+  const auto c = forces::solveCatenary(rough, 402.0, 100.0);
+  const auto& r0 = csv.rows[0];
+  CHECK(r0[hf] == Approx(c.hf).epsilon(1e-9));
+  CHECK(r0[laid] == Approx(c.laidLength).epsilon(1e-9));
+  CHECK(r0[anchor] == Approx(std::max(0.0, c.hf - 1.0 * 1000.0 * c.laidLength)).margin(1e-6));
+  CHECK(r0[anchor] < r0[hf]);
+  double worst = 0, energy = 0;
+  const int e = csv.column("west.energy[J]");
+  REQUIRE(e > 0);
+  for (const auto& r : csv.rows) {
+    worst = std::max(worst, std::abs(r[balance] - r0[balance]));
+    energy = std::max(energy, std::abs(r[e] - r0[e]));
+  }
+  INFO("worst balance " << worst << " J, line energy swing " << energy << " J");
+  CHECK(worst < 1e-6 * energy);
 }
 
 TEST_CASE("mooring: problems at their nodes, with did you mean") {

@@ -168,6 +168,46 @@ record: {interval: 0.02, channels: ["float.x", "float.yaw", "mount.*"]}
   CHECK(csv.rows[0][mz] == Approx(300 * 0.1).epsilon(1e-9));
 }
 
+TEST_CASE("bushings: frames turned by rpy_deg and by a fragment's placement orient the stiffness") {
+  testing::SceneDir dir;
+  // (the frames turned 90 deg about z in a fragment placed turned another 90 deg) => F's x is
+  // the world's -x: the surge stiffness kx = 1e4 N/m acts along world x (w = 10 rad/s); a
+  // reader that lost the placement's turn would put ky = 2e4 there (w = 14.1 rad/s)
+  dir.write("mount.yaml", R"(schema_version: 1
+mechanics:
+  bodies:
+    float:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0.05, 0]}}
+      mass: 100
+      inertia: [10, 20, 30]
+  bushings:
+    mount:
+      frame_a: {rpy_deg: [0, 0, 90]}
+      body_b: float
+      frame_b: {rpy_deg: [0, 0, 90]}
+      stiffness: [1.0e4, 2.0e4, 3.0e4, 100, 200, 300]
+)");
+  const auto turned = simulate(dir, R"(schema_version: 1
+integrator: {method: rk4, dt: 0.001}
+mechanics:
+  gravity: [0, 0, 0]
+components:
+  rig: {include: mount.yaml, placement: {xyz: [0, 0, 0], rpy_deg: [0, 0, 90]}}
+record: {interval: 0.02, channels: ["rig.float.x", "rig.float.y"]}
+)",
+                               1.0);
+  const int x = turned.column("rig.float.x[m]"), y = turned.column("rig.float.y[m]");
+  REQUIRE(std::min(x, y) > 0);
+  // (the body placed at world (-0.05, 0) by the fragment) => x = -0.05 cos(10 t), y = 0
+  double worst = 0;
+  for (const auto& r : turned.rows) {
+    worst = std::max(worst, std::abs(r[x] - oscillation(-0.05, 10.0, 0.0, r[0])));
+    CHECK(std::abs(r[y]) < 1e-9);
+  }
+  CHECK(worst < 1e-8);
+}
+
 TEST_CASE("springs, joint springs and bushings: problems at their nodes, with did you mean") {
   testing::SceneDir dir;
   const auto typo = scene::loadScene(

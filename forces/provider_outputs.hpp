@@ -39,6 +39,7 @@ class ObservedProvider final : public ForceProvider, public ProviderOutputs {
                    const std::function<std::vector<ProviderOutput>(const P&)>& list)
       : ForceProvider(inner->name()), inner_(std::move(inner)), outputs_(list(*inner_)) {}
 
+  // () => the provider, its outputs, and its scratch (the wrapper's is the provider's own)
   const P& inner() const { return *inner_; }
   const std::vector<ProviderOutput>& outputs() const override { return outputs_; }
   std::unique_ptr<ProviderScratch> makeScratch() const override { return inner_->makeScratch(); }
@@ -49,6 +50,7 @@ class ObservedProvider final : public ForceProvider, public ProviderOutputs {
                   Eigen::VectorXd& tau) const override {
     inner_->evaluate(s, f, tau);
   }
+  // (stage) => the provider's energy and power, unchanged
   double doPotentialEnergy(const Stage& s) const override { return inner_->potentialEnergy(s); }
   double doPower(const Stage& s) const override { return inner_->power(s); }
 

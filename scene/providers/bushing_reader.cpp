@@ -80,6 +80,7 @@ MechanicsSpec::ProviderSpec readBushing(const std::string&, const YAML::Node& n,
   else if (Eigen::SelfAdjointEigenSolver<Matrix6>(p.damping).eigenvalues().minCoeff() <
            -1e-12 * p.damping.norm())
     r.fail(n["damping"], key + ".damping", "must be positive semidefinite (it dissipates)");
+  // (name, the system's model, the attachments placed) => the provider with its channels
   out.build = [p](const std::string& name, const dynamics::Model& model,
                   const std::vector<forces::Attachment>& at) {
     const dynamics::Transform X_AF = frameFrom(at.at(0), at.at(1), at.at(2));

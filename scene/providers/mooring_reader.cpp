@@ -109,6 +109,7 @@ MechanicsSpec::ProviderSpec readMooring(const std::string&, const YAML::Node& n,
   if (n["friction"] && !p.seabed)
     r.fail(n["friction"], key + ".friction", "friction acts on the sea bed: set seabed: true");
   if (const std::string e = forces::catenaryParameterError(p); !e.empty()) r.fail(n, key, e);
+  // (name, the system's model, the attachments placed) => the provider with its channels
   out.build = [p](const std::string& name, const dynamics::Model& model,
                   const std::vector<forces::Attachment>& at) {
     return forces::withOutputs<CatenaryLine>(

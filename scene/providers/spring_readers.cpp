@@ -44,6 +44,7 @@ MechanicsSpec::ProviderSpec readSpring(const std::string&, const YAML::Node& n,
     if (p.minLength > p.maxLength)
       r.fail(s, key + ".stops", "min_length must not exceed max_length");
   }
+  // (name, the system's model, the attachments placed) => the provider with its channels
   out.build = [p](const std::string& name, const dynamics::Model& model,
                   const std::vector<forces::Attachment>& at) {
     auto spring = std::make_unique<forces::SpringDamper>(name, model, at.at(0), at.at(1), p);
@@ -80,6 +81,7 @@ MechanicsSpec::ProviderSpec readJointSpring(const std::string&, const YAML::Node
   const double c = nonNegative(r, n["coordinate"], key + ".coordinate", 0.0);
   if (c != std::floor(c)) r.fail(n["coordinate"], key + ".coordinate", "expected a whole number");
   const int coordinate = static_cast<int>(c);
+  // (name, the system's model, the attachments placed) => the provider with its channels
   out.build = [p, coordinate](const std::string& name, const dynamics::Model& model,
                               const std::vector<forces::Attachment>& at) {
     const int body = at.at(0).body;

@@ -253,7 +253,8 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       else if (c == "axis") l.mask = dynamics::kAxisConstraint;
       else if (c == "cylinder") l.mask = dynamics::kCylinderConstraint;
       else if (c == "weld") l.mask = dynamics::kAxisConstraint | dynamics::kRotZ;
-      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis, cylinder or weld, got '" + c + "'");
+      else if (c == "planar_point") l.mask = dynamics::kPlanarPointConstraint;  // x, y of frame_a
+      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis, cylinder, weld or planar_point, got '" + c + "'");
       spec.loops.push_back(std::move(l));
     }
   } else if (loops.IsDefined() && !loops.IsNull()) {

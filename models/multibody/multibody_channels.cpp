@@ -5,6 +5,7 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rotation.hpp"
+#include "forces/provider_outputs.hpp"
 #include "models/multibody/multibody_model.hpp"
 
 namespace yardsim::models {
@@ -73,6 +74,11 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back(
         {p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage(p)); }});
     out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage(p)); }});
+    // (outputs the provider declares) => <name>.<output>, read with its scratch
+    if (const auto* o = dynamic_cast<const forces::ProviderOutputs*>(p))
+      for (const forces::ProviderOutput& v : o->outputs())
+        out.push_back({p->name() + "." + v.name, v.unit,
+                       [this, p, &v] { return v.read(committedStage(p)); }});
   }
   // (system-wide quantities) => under the model's own name when element names are paths
   const std::string own = opt_.elementPaths ? path() + "." : "";

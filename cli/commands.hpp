@@ -30,6 +30,18 @@ struct WpArgs {
 };
 int wpCommand(const WpArgs& a);
 
+struct SweepArgs {
+  std::string sweep, outdir = "sweep-out";
+  std::size_t jobs = 1;       // cases at once (local engine, array task)
+  bool slurmArray = false;    // write OUTDIR/sweep.sbatch (a job array) instead of running
+  bool arrayTask = false;     // run the chunk SLURM_ARRAY_TASK_ID picks
+  std::size_t chunk = 0;      // cases per array task (0: about 100 tasks)
+  std::string collect;        // OUTDIR to gather (no sweep file needed)
+  bool dryRun = false;        // check, count the cases, run none
+  bool quiet = false;
+};
+int sweepCommand(const SweepArgs& a);
+
 int validateCommand(const std::string& scene, bool printResolved);
 
 struct TraceArgs {

@@ -22,6 +22,17 @@ if(NOT OpenSSL_FOUND)
   message(FATAL_ERROR "yardsim: OpenSSL's libcrypto not found. Install the Debian package 'libssl-dev' "
     "(sudo apt-get install --no-install-recommends libssl-dev), or run scripts/setup.sh.")
 endif()
+# Sweep results (HDF5, C API) and the MPI sweep engine (Open MPI): Debian's module packages
+find_package(HDF5 QUIET COMPONENTS C)
+if(NOT HDF5_FOUND)
+  message(FATAL_ERROR "yardsim: HDF5 not found. Install the Debian package 'libhdf5-dev' "
+    "(sudo apt-get install --no-install-recommends libhdf5-dev), or run scripts/setup.sh.")
+endif()
+find_package(MPI QUIET COMPONENTS C)
+if(NOT MPI_C_FOUND)
+  message(FATAL_ERROR "yardsim: MPI not found. Install the Debian packages 'libopenmpi-dev openmpi-bin' "
+    "(sudo apt-get install --no-install-recommends libopenmpi-dev openmpi-bin), or run scripts/setup.sh.")
+endif()
 if(YARDSIM_BUILD_TESTS)
   yardsim_require(Catch2 catch2)
 endif()

@@ -6,7 +6,9 @@ packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
   libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev libssl-dev
+  libhdf5-dev libopenmpi-dev openmpi-bin  # sweep results in HDF5, the MPI sweep engine
   chromium  # the report's browser test (tests/report)
+  python3-h5py  # the sweep tests' independent HDF5 reader (tests/studies)
 )
 missing=()
 for p in "${packages[@]}"; do

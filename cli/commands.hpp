@@ -17,6 +17,7 @@ struct RunArgs {
   std::uint64_t maxTransitionsPerInstant = 1000000;  // then the run stops (a zero-time loop)
   double checkpointEvery = 0.0;  // s; > 0: OUTDIR/checkpoints/tXXXXXX.XXX.ckpt at its multiples
   std::string restart;           // a checkpoint of this scene to continue from
+  std::string format = "csv";    // hdf5: also OUTDIR/timeseries.h5 (the series under /series)
 };
 int runCommand(const RunArgs& a);
 

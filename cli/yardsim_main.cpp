@@ -58,6 +58,9 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--checkpoint-every", run.checkpointEvery,
                      "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
       ->check(finiteNonNegative("s"));
+  runCmd->add_option("--format", run.format, "csv, or hdf5: also OUTDIR/timeseries.h5 (the series under /series)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"csv", "hdf5"}));
   runCmd->add_option("--restart", run.restart,
                      "continue from a checkpoint of this scene (OUTDIR gets what follows it)");
 

@@ -12,6 +12,7 @@
 #include "output/hdf5_file.hpp"
 #include "output/report_writer.hpp"
 #include "output/sweep_page.hpp"
+#include "output/timeseries_hdf5.hpp"
 #include "output/timeseries_reader.hpp"
 #include "run/timeseries_writer.hpp"
 #include "scene/sha256.hpp"
@@ -114,14 +115,7 @@ void writeHdf5(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const f
     for (const auto& r : rs) {
       const fs::path csv = caseDir(out, r.id) / "timeseries.csv";
       if (!fs::exists(csv)) continue;
-      const output::Timeseries ts = output::readTimeseries(csv);
-      const std::string g = "/cases/" + caseDir(out, r.id).filename().string();
-      h.group(g);
-      for (std::size_t c = 0; c < ts.columns.size(); ++c) {
-        const std::string path = g + "/" + (c == 0 ? std::string("time") : ts.columns[c].name);
-        h.doubles(path, ts.columns[c].values);
-        h.attribute(path, "unit", ts.columns[c].unit);
-      }
+      output::writeTimeseriesGroup(h, "/cases/" + caseDir(out, r.id).filename().string(), output::readTimeseries(csv));
     }
 }
 

@@ -22,7 +22,9 @@ if(NOT OpenSSL_FOUND)
   message(FATAL_ERROR "yardsim: OpenSSL's libcrypto not found. Install the Debian package 'libssl-dev' "
     "(sudo apt-get install --no-install-recommends libssl-dev), or run scripts/setup.sh.")
 endif()
-# Sweep results (HDF5, C API) and the MPI sweep engine (Open MPI): Debian's module packages
+# Sweep results (HDF5, C API) and the MPI sweep engine (Open MPI): Debian's module packages,
+# whose find modules test-compile C
+enable_language(C)
 find_package(HDF5 QUIET COMPONENTS C)
 if(NOT HDF5_FOUND)
   message(FATAL_ERROR "yardsim: HDF5 not found. Install the Debian package 'libhdf5-dev' "

@@ -141,6 +141,7 @@ CaseRecord runCase(const SweepSpec& spec, const SweepCase& c, const fs::path& ou
         auto root = scene::assemble(sc);
         const run::RunResult res = run::runScene(sc, *root, opt);
         r.tEnd = res.tEnd;
+        r.runWall = res.wall;
         r.status = "ok";
       } catch (const devs::SimulationError& e) {
         r.status = "failed";
@@ -192,6 +193,7 @@ std::optional<CaseRecord> readCaseRecord(const fs::path& file) {
     r.status = n["status"].as<std::string>();
     r.message = n["message"].as<std::string>();
     r.wall = n["wall"].as<double>();
+    r.runWall = n["run_wall"].as<double>();
     r.tEnd = n["t_end"].as<double>();
     r.rank = n["rank"].as<int>();
     for (const auto& v : n["collected"]) r.collected.push_back(v.as<double>());

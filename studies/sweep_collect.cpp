@@ -52,14 +52,14 @@ void writeCsv(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const fs
   std::ofstream os(out / "cases.csv", std::ios::trunc);
   os << "id";
   for (const auto& p : spec.params) os << "," << csvField(p.name);
-  os << ",status,wall_s,t_end_s";
+  os << ",status,wall_s,run_wall_s,t_end_s";
   for (const auto& c : spec.collect) os << "," << csvField(c.text);
   os << ",pass,rank,message\n";
   for (const auto& r : rs) {
     os << r.id;
     for (std::size_t k = 0; k < r.values.size(); ++k)
       os << "," << formatValue(r.values[k], spec.params[k].integer);
-    os << "," << r.status << "," << num(r.wall) << "," << num(r.tEnd);
+    os << "," << r.status << "," << num(r.wall) << "," << num(r.runWall) << "," << num(r.tEnd);
     for (double v : r.collected) os << "," << num(v);
     os << "," << (passes(spec, r) ? 1 : 0) << "," << r.rank << "," << csvField(r.message) << "\n";
   }
@@ -76,7 +76,7 @@ void writeHdf5(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const f
   h.attribute("/", "yardsim", run::kVersion);
   std::vector<std::int64_t> ids, ranks, pass;
   std::vector<std::string> status, message;
-  std::vector<double> wall, tEnd;
+  std::vector<double> wall, runWall, tEnd;
   for (const auto& r : rs) {
     ids.push_back(static_cast<std::int64_t>(r.id));
     ranks.push_back(r.rank);
@@ -84,6 +84,7 @@ void writeHdf5(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const f
     status.push_back(r.status);
     message.push_back(r.message);
     wall.push_back(r.wall);
+    runWall.push_back(r.runWall);
     tEnd.push_back(r.tEnd);
   }
   h.integers("/table/id", ids);
@@ -91,6 +92,8 @@ void writeHdf5(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const f
   h.strings("/table/message", message);
   h.doubles("/table/wall", wall);
   h.attribute("/table/wall", "unit", "s");
+  h.doubles("/table/run_wall", runWall);
+  h.attribute("/table/run_wall", "unit", "s");
   h.doubles("/table/t_end", tEnd);
   h.attribute("/table/t_end", "unit", "s");
   h.integers("/table/pass", pass);

@@ -1,5 +1,8 @@
 #include "studies/sweep_mpi.hpp"
 
+// the C API only: no C++ bindings (deprecated, and warnings under -Werror)
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
 #include <mpi.h>
 #include <cstdlib>
 #include <deque>

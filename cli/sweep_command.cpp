@@ -29,11 +29,13 @@ std::optional<std::pair<SweepSpec, std::vector<SweepCase>>> readChecked(const st
   std::vector<SweepCase> cases;
   if (!d.hasErrors()) cases = expandCases(spec);
   if (!d.hasErrors() && cases.empty()) d.error({file, 1, 1}, "sweep.vary", "the sweep has no case");
-  if (!d.hasErrors())
-    for (const auto& e : checkCase(spec, cases.front()).all())
+  if (!d.hasErrors()) {
+    const models::Diagnostics first = checkCase(spec, cases.front());
+    for (const auto& e : first.all())
       e.severity == models::Diagnostic::Severity::Error
           ? d.error(e.where, e.keyPath, e.message, e.hint)
           : d.warning(e.where, e.keyPath, e.message, e.hint);
+  }
   if (print)
     for (const auto& e : d.all()) std::fprintf(stderr, "%s\n", models::format(e).c_str());
   if (d.hasErrors()) {

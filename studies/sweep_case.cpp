@@ -166,8 +166,9 @@ void writeCaseRecord(const CaseRecord& r, const fs::path& file) {
   for (double v : r.values) e << v;
   e << YAML::EndSeq << YAML::Key << "status" << YAML::Value << r.status;
   e << YAML::Key << "message" << YAML::Value << YAML::DoubleQuoted << r.message;
-  e << YAML::Key << "wall" << YAML::Value << r.wall << YAML::Key << "t_end" << YAML::Value
-    << r.tEnd;
+  e << YAML::Key << "wall" << YAML::Value << r.wall << YAML::Key << "run_wall" << YAML::Value
+    << r.runWall;
+  e << YAML::Key << "t_end" << YAML::Value << r.tEnd;
   e << YAML::Key << "rank" << YAML::Value << r.rank;
   e << YAML::Key << "collected" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   for (double v : r.collected) e << v;

@@ -16,10 +16,11 @@ struct CaseRecord {
   std::size_t id = 0;
   std::vector<double> values;  // the varied params, SweepSpec::params order
   std::string status =
-      "missing";        // ok | failed (numerical) | refused (scene) | timeout | crashed | missing
-  std::string message;  // the diagnosis when not ok
-  double wall = 0.0;    // s: load, assembly, run and collection of the case
-  double tEnd = 0.0;    // s simulated
+      "missing";         // ok | failed (numerical) | refused (scene) | timeout | crashed | missing
+  std::string message;   // the diagnosis when not ok
+  double wall = 0.0;     // s: load, assembly, run and collection of the case
+  double runWall = 0.0;  // s: the run alone (run::RunResult::wall)
+  double tEnd = 0.0;     // s simulated
   std::vector<double> collected;  // SweepSpec::collect order; NaN where nothing was recorded
   int rank = 0;                   // the MPI rank or array task that ran it
 };

@@ -118,7 +118,8 @@ void writeHdf5(const SweepSpec& spec, const std::vector<CaseRecord>& rs, const f
     for (const auto& r : rs) {
       const fs::path csv = caseDir(out, r.id) / "timeseries.csv";
       if (!fs::exists(csv)) continue;
-      output::writeTimeseriesGroup(h, "/cases/" + caseDir(out, r.id).filename().string(), output::readTimeseries(csv));
+      output::writeTimeseriesGroup(h, "/cases/" + caseDir(out, r.id).filename().string(),
+                                   output::readTimeseries(csv));
     }
 }
 

@@ -2,18 +2,18 @@
 // (-j 2), on two MPI ranks (mpirun -n 2) and as a Slurm job array (its batch script run once
 // per task with SLURM_ARRAY_TASK_ID set, then --collect) gives the same HDF5 case table, read
 // back by h5py; a sweep killed part-way and resumed gives that table too, running no case twice.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
-#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
-#include <fcntl.h>
 #include <map>
 #include <set>
-#include <spawn.h>
 #include <sstream>
-#include <sys/wait.h>
 #include <thread>
 
 #include "support/scene_files.hpp"
@@ -42,7 +42,8 @@ Result shell(const std::string& command) {
 }
 
 const std::string kExe = YARDSIM_EXE;
-const std::string kSweep = std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data/pendulum_sweep/sweep.yaml";
+const std::string kSweep =
+    std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data/pendulum_sweep/sweep.yaml";
 const std::string kDump = std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/sweep_h5_dump.py";
 
 // (OUT) => the case table of OUT/sweep.h5 as h5py reads it
@@ -81,7 +82,8 @@ TEST_CASE("Local cores, MPI ranks and a Slurm array give the same HDF5 case tabl
   const std::string expected = table(local);
   CHECK(std::count(expected.begin(), expected.end(), '\n') == 10);
 
-  const Result m = shell("mpirun --allow-run-as-root --oversubscribe -n 2 " + kExe + " sweep " + kSweep + " -o " + mpi);
+  const Result m = shell("mpirun --allow-run-as-root --oversubscribe -n 2 " + kExe + " sweep " +
+                         kSweep + " -o " + mpi);
   INFO(m.out);
   REQUIRE(m.status == 0);
   CHECK_THAT(m.out, Catch::Contains("9 to run on 2 MPI rank(s)"));
@@ -95,14 +97,16 @@ TEST_CASE("Local cores, MPI ranks and a Slurm array give the same HDF5 case tabl
   INFO(s.out);
   REQUIRE(s.status == 0);
   std::ifstream script(array + "/sweep.sbatch");
-  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(script)),
+                         std::istreambuf_iterator<char>());
   CHECK_THAT(text, Catch::Contains("#SBATCH --array=0-2\n"));
   for (int task = 2; task >= 0; --task) {  // (the scheduler's order is any order)
-    const Result t = shell("env SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " SLURM_CPUS_PER_TASK=1 bash " + array +
-                           "/sweep.sbatch");
+    const Result t = shell("env SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
+                           " SLURM_CPUS_PER_TASK=1 bash " + array + "/sweep.sbatch");
     INFO(t.out);
     REQUIRE(t.status == 0);
-    CHECK_THAT(t.out, Catch::Contains("array task " + std::to_string(task) + " ran " + (task == 2 ? "1" : "4")));
+    CHECK_THAT(t.out, Catch::Contains("array task " + std::to_string(task) + " ran " +
+                                      (task == 2 ? "1" : "4")));
   }
   const Result c = shell(kExe + " sweep --collect " + array);
   INFO(c.out);
@@ -126,13 +130,15 @@ TEST_CASE("A sweep killed part-way resumes with the missing cases only and the s
   posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
   REQUIRE(posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ) == 0);
   const auto start = std::chrono::steady_clock::now();
-  while (records(killed).size() < 3 && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+  while (records(killed).size() < 3 &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   kill(pid, SIGKILL);
   int status = 0;
   waitpid(pid, &status, 0);
   posix_spawn_file_actions_destroy(&fa);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the running case dies with its parent
+  std::this_thread::sleep_for(
+      std::chrono::milliseconds(200));  // the running case dies with its parent
   const auto before = records(killed);
   REQUIRE(before.size() >= 3);
   REQUIRE(before.size() < 9);
@@ -144,21 +150,25 @@ TEST_CASE("A sweep killed part-way resumes with the missing cases only and the s
                                     std::to_string(9 - before.size()) + " to run"));
   const auto after = records(killed);
   CHECK(after.size() == 9);
-  for (const auto& [name, text] : before) CHECK(after.at(name) == text);  // not run again (wall time differs)
+  for (const auto& [name, text] : before)
+    CHECK(after.at(name) == text);  // not run again (wall time differs)
   CHECK(table(killed) == table(whole));
   // a third run has nothing left to run
-  CHECK_THAT(shell(kExe + " sweep " + kSweep + " -o " + killed + " --quiet").out, Catch::Contains("9 recorded, 0 to run"));
+  CHECK_THAT(shell(kExe + " sweep " + kSweep + " -o " + killed + " --quiet").out,
+             Catch::Contains("9 recorded, 0 to run"));
 }
 
 TEST_CASE("A bad sweep file is refused at the door with exit 1 and file:line:col") {
   yardsim::testing::SceneDir dir;
-  const auto bad = dir.write("bad.yaml", "sweep:\n  scene: " + std::string(YARDSIM_SOURCE_DIR) +
-                                             "/tests/studies/data/pendulum_sweep/scene.yaml\n"
-                                             "  vary: {speed: [1, 2]}\n  collect: [max(pendulum.nothing)]\n");
+  const auto bad =
+      dir.write("bad.yaml", "sweep:\n  scene: " + std::string(YARDSIM_SOURCE_DIR) +
+                                "/tests/studies/data/pendulum_sweep/scene.yaml\n"
+                                "  vary: {speed: [1, 2]}\n  collect: [max(pendulum.nothing)]\n");
   const Result r = shell(kExe + " sweep " + bad.string() + " -o " + dir.file("out"));
   INFO(r.out);
   CHECK(r.status == 1);
-  CHECK_THAT(r.out, Catch::Contains(bad.string() + ":3:9: error: sweep.vary.speed: no root parameter 'speed'"));
+  CHECK_THAT(r.out, Catch::Contains(bad.string() +
+                                    ":3:9: error: sweep.vary.speed: no root parameter 'speed'"));
   CHECK_THAT(r.out, Catch::Contains("did you mean 'speed_deg'?"));
   CHECK_FALSE(fs::exists(dir.path() / "out"));
   const Result collect = shell(kExe + " sweep --collect " + dir.file("nowhere"));

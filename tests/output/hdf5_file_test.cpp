@@ -1,8 +1,8 @@
 // The HDF5 writer, read back by h5py (an independent reader): every dataset type, nested
 // groups, attributes, and a file that cannot be created.
+#include <sys/wait.h>
 #include <catch2/catch.hpp>
 #include <cstdio>
-#include <sys/wait.h>
 
 #include "output/hdf5_file.hpp"
 #include "support/scene_files.hpp"
@@ -53,5 +53,6 @@ TEST_CASE("Datasets and attributes written by Hdf5File read back with h5py") {
 }
 
 TEST_CASE("An HDF5 file that cannot be created throws naming it") {
-  CHECK_THROWS_WITH(Hdf5File("/nonexistent-folder/x.h5"), Catch::Contains("/nonexistent-folder/x.h5"));
+  CHECK_THROWS_WITH(Hdf5File("/nonexistent-folder/x.h5"),
+                    Catch::Contains("/nonexistent-folder/x.h5"));
 }

@@ -21,10 +21,14 @@ TEST_CASE("The sweep page carries the case table, limits and operability pair as
             {1, {6, 0.5}, "failed", "NaN \"here\"", 0.5, {std::nan("")}, false, ""}};
   const std::string j = sweepJson(p);
   CHECK_THAT(j, Catch::StartsWith("{\"kind\":\"sweep\",\"title\":\"yardsim sweep: s.yaml\""));
-  CHECK_THAT(j, Catch::Contains("\"params\":[\"speed\",\"mass\"],\"collect\":[\"max(x.q)\"],\"operability\":[\"speed\",\"mass\"]"));
-  CHECK_THAT(j, Catch::Contains("\"limits\":[{\"collect\":\"max(x.q)\",\"bound\":0.5,\"upper\":true}]"));
-  CHECK_THAT(j, Catch::Contains("{\"id\":0,\"values\":[4,0.5],\"status\":\"ok\",\"message\":\"\",\"wall\":0.25,"
-                                "\"collected\":[0.41999999999999998],\"pass\":true,\"link\":\"cases/000000/report.html\"}"));
+  CHECK_THAT(j, Catch::Contains("\"params\":[\"speed\",\"mass\"],\"collect\":[\"max(x.q)\"],"
+                                "\"operability\":[\"speed\",\"mass\"]"));
+  CHECK_THAT(
+      j, Catch::Contains("\"limits\":[{\"collect\":\"max(x.q)\",\"bound\":0.5,\"upper\":true}]"));
+  CHECK_THAT(j, Catch::Contains(
+                    "{\"id\":0,\"values\":[4,0.5],\"status\":\"ok\",\"message\":\"\",\"wall\":0.25,"
+                    "\"collected\":[0.41999999999999998],\"pass\":true,\"link\":\"cases/000000/"
+                    "report.html\"}"));
   CHECK_THAT(j, Catch::Contains("\"message\":\"NaN \\\"here\\\"\""));
   CHECK_THAT(j, Catch::Contains("\"collected\":[null],\"pass\":false"));
 

@@ -69,12 +69,14 @@ TEST_CASE("A case record keeps NaN and the diagnosis, and a torn one reads as mi
 
 TEST_CASE("At the door a collect glob that matches no recorded channel is an error") {
   yardsim::testing::SceneDir dir;
-  dir.write("sweep.yaml", "sweep:\n  scene: " + kData + "scene.yaml\n  vary: {speed_deg: [4]}\n"
-                          "  collect: [max(pendulum.joint0.q), max(pendulum.hook.z)]\n");
+  dir.write("sweep.yaml", "sweep:\n  scene: " + kData +
+                              "scene.yaml\n  vary: {speed_deg: [4]}\n"
+                              "  collect: [max(pendulum.joint0.q), max(pendulum.hook.z)]\n");
   yardsim::models::Diagnostics d;
   const SweepSpec s = readSweepSpec(dir.path() / "sweep.yaml", d);
   REQUIRE_FALSE(d.hasErrors());
   const std::string report = checkCase(s, expandCases(s)[0]).report();
-  CHECK_THAT(report, Catch::Contains(":4:38: error: sweep.collect.max(pendulum.hook.z): no recorded channel"));
+  CHECK_THAT(report, Catch::Contains(
+                         ":4:38: error: sweep.collect.max(pendulum.hook.z): no recorded channel"));
   CHECK_THAT(report, !Catch::Contains("joint0"));
 }

@@ -1,10 +1,10 @@
 // The results of a sweep: OUT/cases.csv, OUT/sweep.h5 (read back by h5py, an independent
 // reader) and OUT/sweep.html; the plan that keeps OUT to one sweep.
+#include <sys/wait.h>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 #include "studies/sweep_collect.hpp"
 #include "studies/sweep_pool.hpp"
@@ -79,9 +79,12 @@ TEST_CASE("sweep.h5 read by h5py holds the case table of cases.csv and each case
     const std::size_t k = static_cast<std::size_t>(at - csv[0].begin());
     for (std::size_t r = 1; r < h5.size(); ++r) {
       INFO(h5[0][c] << " of case " << r - 1 << ": " << h5[r][c] << " and " << csv[r][k]);
-      if (h5[0][c] == "status") CHECK(h5[r][c] == csv[r][k]);
-      else if (h5[r][c] == "nan") CHECK(csv[r][k] == "nan");
-      else CHECK(std::stod(h5[r][c]) == std::stod(csv[r][k]));
+      if (h5[0][c] == "status")
+        CHECK(h5[r][c] == csv[r][k]);
+      else if (h5[r][c] == "nan")
+        CHECK(csv[r][k] == "nan");
+      else
+        CHECK(std::stod(h5[r][c]) == std::stod(csv[r][k]));
     }
   }
   CHECK(h5[5][std::find(h5[0].begin(), h5[0].end(), "status") - h5[0].begin()] == "missing");
@@ -95,7 +98,8 @@ TEST_CASE("sweep.h5 read by h5py holds the case table of cases.csv and each case
     for (std::size_t j = 0; j < ts.header.size(); ++j)
       if (ts.header[j].rfind(series[0][c] + "[", 0) == 0) k = static_cast<int>(j);
     REQUIRE(k > 0);
-    for (std::size_t r = 0; r < ts.rows.size(); ++r) CHECK(std::stod(series[r + 1][c]) == ts.rows[r][k]);
+    for (std::size_t r = 0; r < ts.rows.size(); ++r)
+      CHECK(std::stod(series[r + 1][c]) == ts.rows[r][k]);
   }
   CHECK(fs::exists(out / "sweep.html"));
 }
@@ -109,5 +113,6 @@ TEST_CASE("A sweep folder holds one sweep: another sweep file is refused") {
   CHECK(planSweepFile(dir.path() / "out") == fs::absolute(kData + "sweep.yaml"));
   SweepSpec other = s;
   other.file = dir.write("other.yaml", "sweep: {}\n");
-  CHECK_THROWS_WITH(writePlan(other, dir.path() / "out"), Catch::Contains("holds the results of another sweep"));
+  CHECK_THROWS_WITH(writePlan(other, dir.path() / "out"),
+                    Catch::Contains("holds the results of another sweep"));
 }

@@ -8,7 +8,8 @@
 using namespace yardsim::studies;
 
 TEST_CASE("A process is an MPI rank when mpirun or srun started several") {
-  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"}) unsetenv(v);
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"})
+    unsetenv(v);
   CHECK_FALSE(launchedByMpi());
   setenv("OMPI_COMM_WORLD_SIZE", "1", 1);
   CHECK_FALSE(launchedByMpi());  // a singleton needs no scheduler

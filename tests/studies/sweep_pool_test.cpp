@@ -9,14 +9,17 @@
 using namespace yardsim::studies;
 
 namespace {
-const std::string kScene = std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data/pendulum_sweep/scene.yaml";
+const std::string kScene =
+    std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data/pendulum_sweep/scene.yaml";
 
 // (vary block, time-out) => the spec of a sweep file over the tests' pendulum
-SweepSpec spec(const yardsim::testing::SceneDir& dir, const std::string& vary, const std::string& extra = "") {
+SweepSpec spec(const yardsim::testing::SceneDir& dir, const std::string& vary,
+               const std::string& extra = "") {
   yardsim::models::Diagnostics d;
-  SweepSpec s = readSweepSpec(dir.write("sweep.yaml", "sweep:\n  scene: " + kScene + "\n  vary: " + vary +
-                                                          "\n  collect: [max(pendulum.joint0.q)]\n" + extra),
-                              d);
+  SweepSpec s =
+      readSweepSpec(dir.write("sweep.yaml", "sweep:\n  scene: " + kScene + "\n  vary: " + vary +
+                                                "\n  collect: [max(pendulum.joint0.q)]\n" + extra),
+                    d);
   INFO(d.report());
   REQUIRE_FALSE(d.hasErrors());
   return s;
@@ -27,7 +30,8 @@ TEST_CASE("The pool runs every case in its own process and records each") {
   yardsim::testing::SceneDir dir;
   const SweepSpec s = spec(dir, "{speed_deg: [2, 4, 6, 8]}");
   std::vector<CaseRecord> done;
-  runLocalPool(s, expandCases(s), dir.path() / "out", {2, 5, [&](const CaseRecord& r) { done.push_back(r); }});
+  runLocalPool(s, expandCases(s), dir.path() / "out",
+               {2, 5, [&](const CaseRecord& r) { done.push_back(r); }});
   REQUIRE(done.size() == 4);
   for (const auto& r : done) {
     CHECK(r.status == "ok");
@@ -36,14 +40,17 @@ TEST_CASE("The pool runs every case in its own process and records each") {
   }
 }
 
-TEST_CASE("A case past its case_timeout is killed and recorded, a failing one too, and the rest run") {
+TEST_CASE(
+    "A case past its case_timeout is killed and recorded, a failing one too, and the rest run") {
   yardsim::testing::SceneDir dir;
   // dt 1e-6 s: six million steps, far beyond 0.5 s; dt 0: refused by the scene; dt 0.002: runs
   const SweepSpec s = spec(dir, "{dt: [1.0e-6, 0, 0.002]}", "  case_timeout: 0.5\n");
   std::vector<CaseRecord> done(3);
   const auto start = std::chrono::steady_clock::now();
-  runLocalPool(s, expandCases(s), dir.path() / "out", {3, 0, [&](const CaseRecord& r) { done[r.id] = r; }});
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  runLocalPool(s, expandCases(s), dir.path() / "out",
+               {3, 0, [&](const CaseRecord& r) { done[r.id] = r; }});
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(wall < 5.0);
   CHECK(done[0].status == "timeout");
   CHECK_THAT(done[0].message, Catch::Contains("case_timeout of 0.5 s"));

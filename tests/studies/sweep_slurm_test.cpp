@@ -20,8 +20,11 @@ TEST_CASE("A Slurm array has one task per chunk and each task picks its chunk") 
   CHECK_THAT(s, Catch::Contains("#SBATCH --array=0-2\n"));
   CHECK_THAT(s, Catch::Contains("#SBATCH --cpus-per-task=2\n"));
   CHECK_THAT(s, Catch::Contains("#SBATCH --time=7\n"));  // 60 s x 4 / 2 + 300 s => 7 min
-  CHECK_THAT(s, Catch::Contains("exec '/opt/yardsim/bin/yardsim' sweep '/home/u/it'\\''s/sweep.yaml' -o '/scratch/out' "
-                                "--array-task --chunk 4 -j \"${SLURM_CPUS_PER_TASK:-2}\"\n"));
+  CHECK_THAT(
+      s,
+      Catch::Contains(
+          "exec '/opt/yardsim/bin/yardsim' sweep '/home/u/it'\\''s/sweep.yaml' -o '/scratch/out' "
+          "--array-task --chunk 4 -j \"${SLURM_CPUS_PER_TASK:-2}\"\n"));
   std::vector<SweepCase> cases;
   for (std::size_t i = 0; i < 10; ++i) cases.push_back({i, {double(i)}});
   CHECK(chunkOf(cases, 4, 0).front().id == 0);

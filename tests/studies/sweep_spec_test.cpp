@@ -8,10 +8,12 @@
 using namespace yardsim::studies;
 
 namespace {
-const std::string kScene = "schema_version: 1\nname: s\nparams: {speed: 1.0, mass: 2.0}\ncomponents: {}\n";
+const std::string kScene =
+    "schema_version: 1\nname: s\nparams: {speed: 1.0, mass: 2.0}\ncomponents: {}\n";
 
 // (sweep text) => the spec read from a folder holding it and the scene, and its diagnostics text
-std::pair<SweepSpec, std::string> readText(const yardsim::testing::SceneDir& dir, const std::string& text) {
+std::pair<SweepSpec, std::string> readText(const yardsim::testing::SceneDir& dir,
+                                           const std::string& text) {
   dir.write("scene.yaml", kScene);
   yardsim::models::Diagnostics d;
   SweepSpec s = readSweepSpec(dir.write("sweep.yaml", text), d);
@@ -21,9 +23,10 @@ std::pair<SweepSpec, std::string> readText(const yardsim::testing::SceneDir& dir
 
 TEST_CASE("A grid sweep is the product of its lists and ranges, the last parameter fastest") {
   yardsim::testing::SceneDir dir;
-  const auto [s, diags] = readText(dir, "sweep:\n  scene: scene.yaml\n  vary:\n    speed: [4, 6, 8]\n"
-                                        "    mass: {from: 0.5, to: 1.5, step: 0.5}\n"
-                                        "  collect: [max(a*.tension), min(gap.distance)]\n");
+  const auto [s, diags] = readText(dir,
+                                   "sweep:\n  scene: scene.yaml\n  vary:\n    speed: [4, 6, 8]\n"
+                                   "    mass: {from: 0.5, to: 1.5, step: 0.5}\n"
+                                   "  collect: [max(a*.tension), min(gap.distance)]\n");
   INFO(diags);
   REQUIRE(diags.empty());
   CHECK(s.mode == "grid");
@@ -44,8 +47,10 @@ TEST_CASE("A grid sweep is the product of its lists and ranges, the last paramet
 
 TEST_CASE("Seeds by count go to the scene seed and list mode pairs the i-th values") {
   yardsim::testing::SceneDir dir;
-  const auto [s, diags] = readText(dir, "sweep:\n  scene: scene.yaml\n  mode: list\n  vary:\n    speed: [1, 2, 3]\n"
-                                        "    seed: {count: 3}\n  limits: {max(x.tension): 5.0e6, min(gap.d): {min: 0.5}}\n");
+  const auto [s, diags] =
+      readText(dir,
+               "sweep:\n  scene: scene.yaml\n  mode: list\n  vary:\n    speed: [1, 2, 3]\n"
+               "    seed: {count: 3}\n  limits: {max(x.tension): 5.0e6, min(gap.d): {min: 0.5}}\n");
   INFO(diags);
   REQUIRE(diags.empty());
   CHECK(s.params[1].sceneSeed);
@@ -62,9 +67,11 @@ TEST_CASE("Seeds by count go to the scene seed and list mode pairs the i-th valu
 
 TEST_CASE("A latin hypercube puts one case in every stratum of every parameter") {
   yardsim::testing::SceneDir dir;
-  const auto [s, diags] = readText(dir, "sweep:\n  scene: scene.yaml\n  mode: latin_hypercube\n  samples: 20\n"
-                                        "  seed: 7\n  vary:\n    speed: {from: 0, to: 10, count: 2}\n"
-                                        "    mass: {from: 1, to: 3, step: 1}\n");
+  const auto [s, diags] =
+      readText(dir,
+               "sweep:\n  scene: scene.yaml\n  mode: latin_hypercube\n  samples: 20\n"
+               "  seed: 7\n  vary:\n    speed: {from: 0, to: 10, count: 2}\n"
+               "    mass: {from: 1, to: 3, step: 1}\n");
   INFO(diags);
   REQUIRE(diags.empty());
   const auto cases = expandCases(s);
@@ -81,14 +88,16 @@ TEST_CASE("A latin hypercube puts one case in every stratum of every parameter")
 
 TEST_CASE("Mistakes in a sweep file are reported with file, line and column") {
   yardsim::testing::SceneDir dir;
-  const auto [s, diags] = readText(dir, "sweep:\n  scene: scene.yaml\n  vary:\n    sped: [1, 2]\n"
-                                        "    mass: {from: 1, to: 0, step: 1}\n  mode: gird\n"
-                                        "  collect: [peak(x.tension)]\n  case_timeout: -1\n");
+  const auto [s, diags] = readText(dir,
+                                   "sweep:\n  scene: scene.yaml\n  vary:\n    sped: [1, 2]\n"
+                                   "    mass: {from: 1, to: 0, step: 1}\n  mode: gird\n"
+                                   "  collect: [peak(x.tension)]\n  case_timeout: -1\n");
   const std::string f = (dir.path() / "sweep.yaml").string();
   CHECK_THAT(diags, Catch::Contains(f + ":4:11: error: sweep.vary.sped: no root parameter 'sped'"));
   CHECK_THAT(diags, Catch::Contains("did you mean 'speed'?"));
   CHECK_THAT(diags, Catch::Contains(f + ":5:33: error: sweep.vary.mass.step"));
-  CHECK_THAT(diags, Catch::Contains(f + ":6:9: error: sweep.mode: expected grid, latin_hypercube or list"));
+  CHECK_THAT(diags, Catch::Contains(
+                        f + ":6:9: error: sweep.mode: expected grid, latin_hypercube or list"));
   CHECK_THAT(diags, Catch::Contains(f + ":7:13: error: sweep.collect[0]"));
   CHECK_THAT(diags, Catch::Contains(f + ":8:17: error: sweep.case_timeout"));
 }

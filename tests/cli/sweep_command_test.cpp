@@ -48,7 +48,7 @@ const std::string kDump = std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/swee
 
 // (OUT) => the case table of OUT/sweep.h5 as h5py reads it
 std::string table(const std::string& out) {
-  const Result r = shell("python3 " + kDump + " " + out + "/sweep.h5 table");
+  const Result r = shell(std::string(YARDSIM_PYTHON3) + " " + kDump + " " + out + "/sweep.h5 table");
   INFO(r.out);
   REQUIRE(r.status == 0);
   return r.out;

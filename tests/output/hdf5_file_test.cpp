@@ -12,7 +12,7 @@ using yardsim::output::Hdf5File;
 namespace {
 // (python program) => its output, killed after 60 s
 std::string python(const std::string& program, const std::string& file) {
-  const std::string cmd = "timeout -s KILL 60 python3 -c '" + program + "' " + file + " 2>&1";
+  const std::string cmd = "timeout -s KILL 60 " + std::string(YARDSIM_PYTHON3) + " -c '" + program + "' " + file + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);
   std::string out;

@@ -14,7 +14,7 @@ TEST_CASE("timeseries.h5 holds every column of timeseries.csv with its unit, rea
                 "0,1.5e6,nan\n0.5,-2,0.1\n");
   yardsim::output::writeTimeseriesHdf5(csv, dir.path() / "timeseries.h5");
   const std::string cmd =
-      "timeout -s KILL 60 python3 -c 'import sys, h5py\n"
+      "timeout -s KILL 60 " + std::string(YARDSIM_PYTHON3) + " -c 'import sys, h5py\n"
       "g = h5py.File(sys.argv[1], \"r\")[\"series\"]\n"
       "print(sorted(g.keys()), g.attrs[\"scene\"], g[\"crane.hoist.tension\"].attrs[\"unit\"])\n"
       "print([repr(float(v)) for v in g[\"x\"][:]], [float(v) for v in g[\"time\"][:]])' " +

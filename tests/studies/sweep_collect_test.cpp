@@ -19,7 +19,7 @@ const std::string kData = std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data
 
 // (arguments) => the output of the tests' h5py reader
 std::string dump(const std::string& args) {
-  const std::string cmd = "timeout -s KILL 60 python3 " + std::string(YARDSIM_SOURCE_DIR) +
+  const std::string cmd = "timeout -s KILL 60 " + std::string(YARDSIM_PYTHON3) + " " + std::string(YARDSIM_SOURCE_DIR) +
                           "/tests/studies/sweep_h5_dump.py " + args + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   REQUIRE(p);

@@ -95,7 +95,7 @@ TEST_CASE("Mistakes in a sweep file are reported with file, line and column") {
   const std::string f = (dir.path() / "sweep.yaml").string();
   CHECK_THAT(diags, Catch::Contains(f + ":4:11: error: sweep.vary.sped: no root parameter 'sped'"));
   CHECK_THAT(diags, Catch::Contains("did you mean 'speed'?"));
-  CHECK_THAT(diags, Catch::Contains(f + ":5:33: error: sweep.vary.mass.step"));
+  CHECK_THAT(diags, Catch::Contains(f + ":5:34: error: sweep.vary.mass.step"));
   CHECK_THAT(diags, Catch::Contains(
                         f + ":6:9: error: sweep.mode: expected grid, latin_hypercube or list"));
   CHECK_THAT(diags, Catch::Contains(f + ":7:13: error: sweep.collect[0]"));

@@ -56,7 +56,7 @@ function caseTable(data, root) {
   const filter = el('input', { type: 'search', id: 'case-filter', placeholder: 'filter cases (text in any column)' });
   const table = el('table', { id: 'cases', class: 'cases' });
   const head = el('tr', {});
-  let key = 0, dir = 1;
+  let key = -1, dir = 1;  // -1: the cases in their order
   cols.forEach(([name], k) => {
     const th = el('th', { 'data-col': String(k) }, name);
     th.addEventListener('click', () => { dir = key === k ? -dir : 1; key = k; draw(); });
@@ -67,7 +67,7 @@ function caseTable(data, root) {
   const cell = v => (typeof v === 'number' || v === null ? el('td', { class: 'num' }, fmt(v, 5)) : el('td', {}, v));
   function draw() {
     const q = filter.value.trim().toLowerCase();
-    const rows = data.rows.slice().sort((a, b) => {
+    const rows = key < 0 ? data.rows : data.rows.slice().sort((a, b) => {
       const x = cols[key][1](a), y = cols[key][1](b);
       return (x < y ? -1 : x > y ? 1 : 0) * dir;
     });

@@ -168,7 +168,7 @@ TEST_CASE("A bad sweep file is refused at the door with exit 1 and file:line:col
   INFO(r.out);
   CHECK(r.status == 1);
   CHECK_THAT(r.out, Catch::Contains(bad.string() +
-                                    ":3:9: error: sweep.vary.speed: no root parameter 'speed'"));
+                                    ":3:17: error: sweep.vary.speed: no root parameter 'speed'"));
   CHECK_THAT(r.out, Catch::Contains("did you mean 'speed_deg'?"));
   CHECK_FALSE(fs::exists(dir.path() / "out"));
   const Result collect = shell(kExe + " sweep --collect " + dir.file("nowhere"));

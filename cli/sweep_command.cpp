@@ -56,15 +56,33 @@ std::vector<SweepCase> missing(const SweepSpec& spec, const std::vector<SweepCas
   return todo;
 }
 
+// (spec, cases, OUT, cases to run, workers) => an estimate of their run time from the cases
+// already recorded (a resume), printed; whether there was one
+bool doorEstimate(const SweepSpec& spec, const std::vector<SweepCase>& cases, const fs::path& out,
+                  std::size_t todo, std::size_t workers) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const auto& r : gatherRecords(spec, cases, out))
+    if (r.status == "ok") sum += r.wall, ++n;
+  if (n == 0 || todo == 0) return false;
+  std::printf(
+      "sweep: estimate %.3g s for the %zu case(s) to run on %zu worker(s) (%.3g s a case, the "
+      "mean of %zu recorded)\n",
+      sum / static_cast<double>(n) * static_cast<double>(todo) / static_cast<double>(workers), todo,
+      workers, sum / static_cast<double>(n), n);
+  return true;
+}
+
 // Per finished case: a line, and after the first one the estimate for the rest.
 struct Reporter {
   std::size_t total, todo, workers;
   bool quiet;
+  bool estimated = false;  // at the door already
   std::size_t done = 0;
   // (record) => printed
   void operator()(const CaseRecord& r) {
     ++done;
-    if (done == 1 && todo > 1)
+    if (done == 1 && todo > 1 && !estimated)
       std::printf(
           "sweep: estimate %.3g s for the remaining %zu case(s) on %zu worker(s) (the first took "
           "%.3g s)\n",
@@ -178,8 +196,9 @@ int sweepCommand(const SweepArgs& a) {
     const auto todo = missing(spec, cases, a.outdir);
     std::printf("sweep: %zu case(s), %zu recorded, %zu to run with -j %zu\n", cases.size(),
                 cases.size() - todo.size(), todo.size(), a.jobs);
+    const bool estimated = doorEstimate(spec, cases, a.outdir, todo.size(), a.jobs);
     if (a.dryRun) return kOk;
-    Reporter rep{cases.size(), todo.size(), a.jobs, a.quiet};
+    Reporter rep{cases.size(), todo.size(), a.jobs, a.quiet, estimated};
     runLocalPool(spec, todo, a.outdir, {a.jobs, 0, std::ref(rep)});
     return collectAndReport(spec, cases, a.outdir);
   } catch (const std::runtime_error& e) {

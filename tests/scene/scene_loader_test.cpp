@@ -71,7 +71,7 @@ until: 30
   CHECK(r.scene->until == 30.0);
 }
 
-TEST_CASE("root params overridden from outside reach every $name, an unknown one is refused where given") {
+TEST_CASE("root params overridden from outside reach every $name, an unknown one is refused") {
   testing::SceneDir dir;
   const auto file = dir.write("scene.yaml", R"(schema_version: 1
 params: {t: 2.5, unused: 1}
@@ -97,7 +97,8 @@ components:
   give("tt", "1", 5);
   const auto bad = scene::loadScene(file, o);
   CHECK_FALSE(bad.scene);
-  CHECK_THAT(bad.diagnostics.report(), Catch::Contains("sweep.yaml:5:9: error: sweep.vary.tt: no parameter 'tt'"));
+  CHECK_THAT(bad.diagnostics.report(),
+             Catch::Contains("sweep.yaml:5:9: error: sweep.vary.tt: no parameter 'tt'"));
 }
 
 TEST_CASE("unknown keys are errors with their position and a suggestion") {

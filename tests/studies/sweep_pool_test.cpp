@@ -2,6 +2,7 @@
 // failing case recorded with its diagnosis while the others go on.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 
 #include "studies/sweep_pool.hpp"
 #include "support/scene_files.hpp"
@@ -43,12 +44,13 @@ TEST_CASE("The pool runs every case in its own process and records each") {
 TEST_CASE(
     "A case past its case_timeout is killed and recorded, a failing one too, and the rest run") {
   yardsim::testing::SceneDir dir;
-  // dt 1e-6 s: six million steps, far beyond 0.5 s; dt 0: refused by the scene; dt 0.002: runs
-  const SweepSpec s = spec(dir, "{dt: [1.0e-6, 0, 0.002]}", "  case_timeout: 0.5\n");
-  std::vector<CaseRecord> done(3);
+  // dt 1e-6 s: six million steps, far beyond 0.5 s; dt 0: refused by the scene; dt 0.5: RK4
+  // unstable (a numerical failure); dt 0.002: runs
+  const SweepSpec s = spec(dir, "{dt: [1.0e-6, 0, 0.5, 0.002]}", "  case_timeout: 0.5\n");
+  std::vector<CaseRecord> done(4);
   const auto start = std::chrono::steady_clock::now();
   runLocalPool(s, expandCases(s), dir.path() / "out",
-               {3, 0, [&](const CaseRecord& r) { done[r.id] = r; }});
+               {4, 0, [&](const CaseRecord& r) { done[r.id] = r; }});
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(wall < 5.0);
@@ -58,5 +60,8 @@ TEST_CASE(
   CHECK(readCaseRecord(caseDir(dir.path() / "out", 0) / "case.yaml")->status == "timeout");
   CHECK(done[1].status == "refused");
   CHECK_THAT(done[1].message, Catch::Contains("dt"));
-  CHECK(done[2].status == "ok");
+  CHECK(done[2].status == "failed");
+  CHECK_THAT(done[2].message, Catch::Contains("the integration is unstable"));
+  CHECK(std::isfinite(done[2].collected[0]));  // from what was recorded until the failure
+  CHECK(done[3].status == "ok");
 }

@@ -1,5 +1,6 @@
 #include "studies/sweep_collect.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -204,10 +205,12 @@ void writePlan(const SweepSpec& spec, const fs::path& out) {
     return;
   }
   fs::create_directories(out);
-  std::ofstream os(file.string() + ".tmp", std::ios::trunc);
+  // (array tasks starting at once) => each writes its own temporary file; the renames agree
+  const std::string tmp = file.string() + "." + std::to_string(getpid()) + ".tmp";
+  std::ofstream os(tmp, std::ios::trunc);
   os << "sweep: " << YAML::Node(fs::absolute(spec.file).string()) << "\nsha256: " << hash << "\n";
   os.close();
-  fs::rename(file.string() + ".tmp", file);
+  fs::rename(tmp, file);
 }
 
 fs::path planSweepFile(const fs::path& out) {

@@ -17,6 +17,7 @@ struct RunArgs {
   std::uint64_t maxTransitionsPerInstant = 1000000;  // then the run stops (a zero-time loop)
   double checkpointEvery = 0.0;  // s; > 0: OUTDIR/checkpoints/tXXXXXX.XXX.ckpt at its multiples
   std::string restart;           // a checkpoint of this scene to continue from
+  std::string format = "csv";    // hdf5: also OUTDIR/timeseries.h5 (the series under /series)
 };
 int runCommand(const RunArgs& a);
 
@@ -29,6 +30,18 @@ struct WpArgs {
   bool quiet = false;
 };
 int wpCommand(const WpArgs& a);
+
+struct SweepArgs {
+  std::string sweep, outdir = "sweep-out";
+  std::size_t jobs = 1;       // cases at once (local engine, array task)
+  bool slurmArray = false;    // write OUTDIR/sweep.sbatch (a job array) instead of running
+  bool arrayTask = false;     // run the chunk SLURM_ARRAY_TASK_ID picks
+  std::size_t chunk = 0;      // cases per array task (0: about 100 tasks)
+  std::string collect;        // OUTDIR to gather (no sweep file needed)
+  bool dryRun = false;        // check, count the cases, run none
+  bool quiet = false;
+};
+int sweepCommand(const SweepArgs& a);
 
 int validateCommand(const std::string& scene, bool printResolved);
 

@@ -11,6 +11,7 @@
 #include "devs/coupled.hpp"
 #include "models/channels.hpp"
 #include "models/diagnostics.hpp"
+#include "output/timeseries_hdf5.hpp"
 #include "scene/assembler.hpp"
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
@@ -101,6 +102,9 @@ int runCommand(const RunArgs& a) {
         std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g\n",
                      al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
                      al.worst);
+    if (a.format == "hdf5" && r.samples > 0)
+      output::writeTimeseriesHdf5(std::filesystem::path(a.outdir) / "timeseries.csv",
+                                  std::filesystem::path(a.outdir) / "timeseries.h5");
     const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [](const auto& al) { return al.severity == "alarm"; });
     const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
     if (status == kOk && alarmed && a.failOn == "alarm") return kAlarm;

@@ -59,6 +59,9 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--checkpoint-every", run.checkpointEvery,
                      "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
       ->check(finiteNonNegative("s"));
+  runCmd->add_option("--format", run.format, "csv, or hdf5: also OUTDIR/timeseries.h5 (the series under /series)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"csv", "hdf5"}));
   runCmd->add_option("--restart", run.restart,
                      "continue from a checkpoint of this scene (OUTDIR gets what follows it)");
 
@@ -81,6 +84,18 @@ int yardsimMain(int argc, char** argv) {
           },
           "whole number >= 1"));
   wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
+
+  SweepArgs sw;
+  auto* sweepCmd = app.add_subcommand("sweep", "run a parameter sweep (local cores, MPI ranks or a Slurm array)");
+  sweepCmd->add_option("sweep", sw.sweep, "sweep file (YAML, docs/sweeps.md)");
+  sweepCmd->add_option("-o,--outdir", sw.outdir, "output folder (cases.csv, sweep.h5, sweep.html)")->capture_default_str();
+  sweepCmd->add_option("-j,--jobs", sw.jobs, "cases run at once")->capture_default_str()->check(CLI::PositiveNumber);
+  sweepCmd->add_flag("--slurm-array", sw.slurmArray, "write OUTDIR/sweep.sbatch, a Slurm job array, and run nothing");
+  sweepCmd->add_flag("--array-task", sw.arrayTask, "run the chunk of cases SLURM_ARRAY_TASK_ID picks (the batch script)");
+  sweepCmd->add_option("--chunk", sw.chunk, "cases per array task")->check(CLI::PositiveNumber);
+  sweepCmd->add_option("--collect", sw.collect, "gather what the cases of OUTDIR recorded into its results");
+  sweepCmd->add_flag("--dry-run", sw.dryRun, "check the sweep and count its cases; run none");
+  sweepCmd->add_flag("--quiet", sw.quiet, "no line per case");
 
   std::string validateScene;
   bool printResolved = false;
@@ -131,6 +146,7 @@ int yardsimMain(int argc, char** argv) {
     }
     if (reportCmd->parsed()) return reportCommand(reportDir, reportQuiet);
     if (wpCmd->parsed()) return wpCommand(wp);
+    if (sweepCmd->parsed()) return sweepCommand(sw);
     if (validate->parsed()) return validateCommand(validateScene, printResolved);
     if (traceCmd->parsed()) return traceCommand(trace);
     if (channels->parsed()) return listChannelsCommand(channelsScene);

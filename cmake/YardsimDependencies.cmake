@@ -42,6 +42,19 @@ if(YARDSIM_WITH_STEP)
   # the OCCT toolkits the reader uses (STEP translation, tessellation, global properties)
   set(YARDSIM_OCCT_LIBRARIES TKSTEP TKXSBase TKMesh TKTopAlgo TKBRep TKG3d TKMath TKernel)
 endif()
+# Sweep results (HDF5, C API) and the MPI sweep engine (Open MPI): Debian's module packages,
+# whose find modules test-compile C
+enable_language(C)
+find_package(HDF5 QUIET COMPONENTS C)
+if(NOT HDF5_FOUND)
+  message(FATAL_ERROR "yardsim: HDF5 not found. Install the Debian package 'libhdf5-dev' "
+    "(sudo apt-get install --no-install-recommends libhdf5-dev), or run scripts/setup.sh.")
+endif()
+find_package(MPI QUIET COMPONENTS C)
+if(NOT MPI_C_FOUND)
+  message(FATAL_ERROR "yardsim: MPI not found. Install the Debian packages 'libopenmpi-dev openmpi-bin' "
+    "(sudo apt-get install --no-install-recommends libopenmpi-dev openmpi-bin), or run scripts/setup.sh.")
+endif()
 if(YARDSIM_BUILD_TESTS)
   yardsim_require(Catch2 catch2)
 endif()

@@ -49,7 +49,8 @@ function(yardsim_test name)
   target_link_libraries(${name} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${name} PRIVATE
-    YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
+    YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    YARDSIM_PYTHON3="${YARDSIM_PYTHON3}")
   # --warn NoTests: a test whose name Catch cannot match fails instead of passing empty
   catch_discover_tests(${name} EXTRA_ARGS --warn NoTests PROPERTIES TIMEOUT 300)
 endfunction()

@@ -44,12 +44,8 @@ const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
                                               "placement", "description"};
 
-struct Override {
-  YAML::Node value;
-  SourceMark where;
-  std::string keyPath;
-};
-using Overrides = std::map<std::string, Override>;
+using Override = ParamOverride;
+using Overrides = ParamOverrides;
 
 bool validName(const std::string& n) {
   return !n.empty() && n.find_first_of(". \t\"") == std::string::npos;
@@ -59,7 +55,7 @@ class Loader {
  public:
   explicit Loader(Diagnostics& d) : d_(d) {}
 
-  std::unique_ptr<Scene> root(const fs::path& file) {
+  std::unique_ptr<Scene> root(const fs::path& file, const Overrides& overrides) {
     auto scene = std::make_unique<Scene>();
     scene->file = file;
     std::string text;
@@ -71,7 +67,7 @@ class Loader {
     scene->root.where = {file.string(), 1, 1};
     stack_.push_back(fs::weakly_canonical(file));
     Scope scope;
-    fileBody(scene->root, doc, file, scope, {}, true);
+    fileBody(scene->root, doc, file, scope, overrides, true);
     readRunSettings(*scene, doc, file.string(), d_);
     stack_.pop_back();
     return scene;
@@ -456,10 +452,12 @@ const PortSpec* Instance::port(const std::string& n) const {
   return nullptr;
 }
 
-LoadResult loadScene(const fs::path& file) {
+LoadResult loadScene(const fs::path& file) { return loadScene(file, {}); }
+
+LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   LoadResult r;
   Loader loader(r.diagnostics);
-  auto scene = loader.root(file);
+  auto scene = loader.root(file, overrides);
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);

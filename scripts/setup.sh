@@ -10,7 +10,9 @@ packages=(
   # STEP import (YARDSIM_WITH_STEP): OpenCASCADE 7.6, about 37 MB download, 188 MB installed
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
   libtbb-dev  # OCCT's CMake targets name libtbb.so, which only the -dev package has
+  libhdf5-dev libopenmpi-dev openmpi-bin  # sweep results in HDF5, the MPI sweep engine
   chromium  # the report's browser test (tests/report)
+  python3-h5py  # the sweep tests' independent HDF5 reader (tests/studies)
 )
 missing=()
 for p in "${packages[@]}"; do

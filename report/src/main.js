@@ -1,4 +1,4 @@
-// yardsim's pages (report.html; wp.html, see loglog.js): reads the data the yardsim binary put in the page and
+// yardsim's pages (report.html; wp.html, see loglog.js; sweep.html, see sweep.js): reads the data the yardsim binary put in the page and
 // draws the header, the 3D replay, the actor timeline and the plots, all on one time shared
 // both ways (slider and play, plot cursor, timeline). window.yardsim exposes the parts for the
 // browser test (report/test/browser_test.mjs).
@@ -10,6 +10,7 @@ import { makeTimeline } from './timeline.js';
 import { makeReplay } from './replay3d.js';
 import { renderLogLog } from './loglog.js';
 import { renderFigure } from './figure.js';
+import { renderSweep } from './sweep.js';
 
 function header(data, tEnd, root) {
   const run = data.run || {};
@@ -44,6 +45,12 @@ async function main() {
   if (window.yardsimFigure) {
     document.body.style.background = '#fff';
     window.yardsim = { data, plots: [renderFigure(data, window.yardsimFigure, document.body)], ready: true };
+    return;
+  }
+  if (data.kind === 'sweep') {
+    const root = el('div', { id: 'report' });
+    document.body.append(root);
+    window.yardsim = { data, table: renderSweep(data, root), ready: true };
     return;
   }
   if (data.kind === 'loglog') {

@@ -76,8 +76,9 @@ try {
   const pageError = await page.evaluate(() => window.yardsim.error);
   check('the page is ready', !pageError, pageError || `${ms} ms`);
   if (data.kind === 'loglog') await checkLogLog(page);
+  else if (data.kind === 'sweep') await checkSweep(page);
   else await checkReport(page);
-  if (data.kind !== 'loglog' && data.series.length) await checkFigure(url);
+  if (data.kind !== 'loglog' && data.kind !== 'sweep' && data.series.length) await checkFigure(url);
   check('no console errors', errors.length === 0, errors.join(' | '));
   check('no network requests', requests.length === 0, requests.join(' '));
   await page.screenshot({ path: screenshot, fullPage: true });
@@ -124,6 +125,30 @@ async function checkLogLog(page) {
   const charts = await page.evaluate(() => window.yardsim.plots.map(u => ({ series: u.series.length - 1, distr: [u.scales.x.distr, u.scales.y.distr] })));
   check('one series per curve, log-log', charts.every((c, i) => c.series === data.plots[i].curves.length && c.distr[0] === 3 && c.distr[1] === 3),
     JSON.stringify(charts));
+}
+
+// (sweep.html) => the case table sorts and filters, one plot per collected quantity and varied
+// parameter with its limit line, and the operability map with a point per case run
+async function checkSweep(page) {
+  const rows = () => page.evaluate(() => [...document.querySelectorAll('#cases tbody tr')].map(tr => tr.children[0].textContent));
+  const all = await rows();
+  check('one table row per case', all.length === data.rows.length, `${all.length} rows, ${data.rows.length} cases`);
+  await page.click('#cases th[data-col="0"]');
+  await page.click('#cases th[data-col="0"]');
+  const down = await rows();
+  check('a click on a column sorts by it, a second one reverses', down[0] === String(Math.max(...data.rows.map(r => r.id))), down.slice(0, 3).join(','));
+  await page.type('#case-filter', 'fail');
+  const failing = data.rows.filter(r => !r.pass).length;
+  const filtered = await rows();
+  check('the filter keeps the matching cases', filtered.length === failing, `${filtered.length} shown, ${failing} failing`);
+  const plots = await page.evaluate(() => document.querySelectorAll('#plots svg').length);
+  check('one plot per collected quantity and varied parameter', plots === data.collect.length * data.params.length, `${plots} plots`);
+  const limits = await page.evaluate(() => document.querySelectorAll('#plots line.limit').length);
+  const limited = data.collect.filter(c => data.limits.some(l => l.collect === c)).length * data.params.length;
+  check('a limit line where a quantity has a limit', limits === limited, `${limits} lines, ${limited} expected`);
+  const map = await page.evaluate(() => ({ pass: document.querySelectorAll('#operability circle.pass').length, fail: document.querySelectorAll('#operability circle.fail').length }));
+  const ran = data.rows.filter(r => r.status !== 'missing');
+  check('the operability map has a point per case, green where it passes', map.pass === ran.filter(r => r.pass).length && map.pass + map.fail === ran.length, JSON.stringify(map));
 }
 
 // (report.html) => plots, replay, slider, cursor and timeline as a person uses them

@@ -367,3 +367,22 @@ TEST_CASE("yardsim run --checkpoint-every and --restart continue a run, and anot
   CHECK(missing.status == 1);
   CHECK_THAT(missing.out, Catch::Contains("cannot open the checkpoint"));
 }
+
+TEST_CASE("yardsim run --format hdf5 writes timeseries.h5 with the columns of timeseries.csv") {
+  yardsim::testing::SceneDir dir;
+  const auto r = runYardsim("run " + kGpt + " -o " + dir.file("out") + " --until 5 --quiet --format hdf5");
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  const yardsim::testing::CsvFile csv(dir.file("out/timeseries.csv"));
+  const std::string cmd = "timeout -s KILL 60 " + std::string(YARDSIM_PYTHON3) + " -c 'import sys, h5py\n"
+                          "g = h5py.File(sys.argv[1], \"r\")[\"series\"]\n"
+                          "print(len(g.keys()), len(g[\"time\"]), float(g[\"time\"][-1]))' " +
+                          dir.file("out/timeseries.h5") + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p);
+  char buf[256] = {};
+  const std::size_t n = fread(buf, 1, sizeof buf - 1, p);
+  pclose(p);
+  CHECK(std::string(buf, n) == std::to_string(csv.header.size()) + " " + std::to_string(csv.rows.size()) + " 5.0\n");
+  CHECK(runYardsim("run " + kGpt + " -o " + dir.file("x") + " --format xml").status == 1);
+}

@@ -71,6 +71,36 @@ until: 30
   CHECK(r.scene->until == 30.0);
 }
 
+TEST_CASE("root params overridden from outside reach every $name, an unknown one is refused") {
+  testing::SceneDir dir;
+  const auto file = dir.write("scene.yaml", R"(schema_version: 1
+params: {t: 2.5, unused: 1}
+components:
+  proc: {type: processor, params: {processing_time: $t}}
+)");
+  // (name, value, line) => an override as a sweep file gives it
+  scene::ParamOverrides o;
+  const auto give = [&o](const std::string& name, const std::string& value, int line) {
+    scene::ParamOverride& v = o[name];
+    v.value = YAML::Node(value);
+    v.where.file = "sweep.yaml";
+    v.where.line = line;
+    v.where.column = 9;
+    v.keyPath = "sweep.vary." + name;
+  };
+  give("t", "0.75", 4);
+  const auto r = scene::loadScene(file, o);
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  CHECK(r.scene->root.child("proc")->params.number("processing_time") == 0.75);
+  CHECK(scene::loadScene(file).scene->root.child("proc")->params.number("processing_time") == 2.5);
+  give("tt", "1", 5);
+  const auto bad = scene::loadScene(file, o);
+  CHECK_FALSE(bad.scene);
+  CHECK_THAT(bad.diagnostics.report(),
+             Catch::Contains("sweep.yaml:5:9: error: sweep.vary.tt: no parameter 'tt'"));
+}
+
 TEST_CASE("unknown keys are errors with their position and a suggestion") {
   testing::SceneDir dir;
   const auto r = load(dir, R"(schema_version: 1

@@ -14,7 +14,10 @@ double startDrive(SetPoints& sp, int body, double q, double v, double target, do
 
 double startWinch(SetPoints& sp, int rope, double t, double speed, double amount,
                   const std::string& actor) {
-  sp.winches[static_cast<std::size_t>(rope)] = WinchJob{true, t + std::abs(amount) / speed, actor};
+  WinchJob& job = sp.winches[static_cast<std::size_t>(rope)];
+  job.active = true;
+  job.tEnd = t + std::abs(amount) / speed;
+  job.actor = actor;
   return amount >= 0 ? speed : -speed;
 }
 

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "forces/winch.hpp"
+
 namespace yardsim::mechanics {
 
 // A joint driven towards a target along a ramp at a given speed: by a bounded servo, or with its
@@ -23,11 +25,14 @@ struct JointDrive {
   double tEnd() const { return t0 + std::max(std::abs(target - start) / speed, 1e-9); }
 };
 
-// A winch job on a rope: paying out (or hauling in) until tEnd, s.
+// A winch job on a rope: paying out (or hauling in) until tEnd, s; and the rope's winch so far:
+// the pieces of its unstretched length L0(t) (forces::Winch::history(), m and m/s), which the
+// rope's provider mirrors.
 struct WinchJob {
   bool active = false;
   double tEnd = 0.0;
   std::string actor;
+  std::vector<forces::Winch::SetPoint> pieces;
 };
 
 // A force and moment an actor puts on a body: world frame, N and N m, the moment about the

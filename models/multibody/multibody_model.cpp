@@ -67,8 +67,10 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   if (model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, ws_.data.kernel);
   mechanics::connectStage(system_, ws_.data);
   if (opt_.equilibrium) settle();
-  // (initial state) => the rope tensions it starts with are the first peaks
+  // (initial state) => each rope's winch as it starts; the rope tensions are the first peaks
   MultibodyState& x0 = mutableState().x;
+  for (std::size_t r = 0; r < system_.ropes().size(); ++r)
+    x0.setPoints.winches[r].pieces = system_.ropes()[r]->winch().history();
   dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
   const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
   for (std::size_t r = 0; r < system_.ropes().size(); ++r)
@@ -202,8 +204,9 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           throw devs::SimulationError("multibody '" + path() + "': winch set-point from '" +
                                       s.actor + "' names '" + s.element +
                                       "', which is not a rope here, or has no positive speed");
-        system_.ropes()[static_cast<std::size_t>(r)]->setPayoutRate(
-            t, mechanics::startWinch(sp, r, t, s.speed, s.amount, s.actor));
+        forces::Rope& rope = *system_.ropes()[static_cast<std::size_t>(r)];
+        rope.setPayoutRate(t, mechanics::startWinch(sp, r, t, s.speed, s.amount, s.actor));
+        sp.winches[static_cast<std::size_t>(r)].pieces = rope.winch().history();  // (state)
         break;
       }
     }
@@ -236,6 +239,7 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
     if (winches[r].active && winches[r].tEnd <= t) {
       system_.ropes()[r]->setPayoutRate(t, 0.0);
       winches[r].active = false;
+      winches[r].pieces = system_.ropes()[r]->winch().history();
     }
 }
 
@@ -318,18 +322,8 @@ forces::Stage MultibodyModel::committedStage(const forces::ForceProvider* p) con
 }
 
 void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
-  // (providers, caches) => each rope's winch pieces; the power the next step starts from
+  // (caches) => the power the next step starts from (the winches are in the state)
   w.section("multibody");
-  w.list(system_.ropes().size());
-  for (const auto& rope : system_.ropes()) {
-    const auto& pieces = rope->winch().history();
-    w.list(pieces.size());
-    for (const auto& p : pieces) {
-      w.f64(p.t);
-      w.f64(p.l0);
-      w.f64(p.rate);
-    }
-  }
   w.boolean(ws_.powerState == &state().xNext);
   w.f64(ws_.powerTime);
   w.f64(ws_.power);
@@ -337,17 +331,13 @@ void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
 
 void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   r.section("multibody");
-  if (r.list() != system_.ropes().size())
-    throw devs::CheckpointError("multibody '" + path() + "': the checkpoint has another number of ropes");
-  for (const auto& rope : system_.ropes()) {
-    std::vector<forces::Winch::SetPoint> pieces(r.list());
-    for (auto& p : pieces) {
-      p.t = r.f64();
-      p.l0 = r.f64();
-      p.rate = r.f64();
-    }
-    rope->winch().restoreHistory(std::move(pieces));
-  }
+  // (restored state) => every rope's winch as the state has it
+  const MultibodyState& x = state().x;
+  if (x.setPoints.winches.size() != system_.ropes().size())
+    throw devs::CheckpointError("multibody '" + path() +
+                                "': the checkpoint has another number of ropes");
+  for (std::size_t k = 0; k < system_.ropes().size(); ++k)
+    system_.ropes()[k]->winch().restoreHistory(x.setPoints.winches[k].pieces);
   // (caches of the run that wrote it) => the same reuse of the power at the next step
   ws_.powerState = r.boolean() ? &state().xNext : nullptr;
   ws_.powerTime = r.f64();

@@ -90,9 +90,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void onStateEvent(MultibodyState& x, devs::Time t, int event) const override;
   devs::Time nextTimeEvent(const MultibodyState& x, devs::Time t) const override;
   void onTimeEvent(MultibodyState& x, devs::Time t) const override;
-  // checkpoints: the winches' histories and the power carried into the next step; an
-  // integrator with a history restarts it at the checkpoint (in the run that writes it and in
-  // the run restarted from it alike)
+  // checkpoints: the power carried into the next step (the winches' pieces are in the state and
+  // restored into the ropes); an integrator with a history restarts it at the checkpoint (in the
+  // run that writes it and in the run restarted from it alike)
   void saveWorkspace(devs::CheckpointWriter& w) const override;
   void loadWorkspace(devs::CheckpointReader& r) override;
   void afterCheckpoint() override;

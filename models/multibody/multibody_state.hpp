@@ -14,7 +14,8 @@
 namespace yardsim::models {
 
 // The DTSS state, a plain value: configuration q and velocity v (joint coordinates, SI), the
-// set-points in force, the work of the non-conservative forces and each rope part's peak tension.
+// set-points in force (joint drives, actor loads, winch jobs with every rope's winch pieces), the
+// work of the non-conservative forces and each rope part's peak tension.
 struct MultibodyState {
   Eigen::VectorXd q, v;
   mechanics::SetPoints setPoints;
@@ -54,8 +55,12 @@ struct StateCodec<mechanics::JointDrive> : FieldCodec<mechanics::JointDrive> {
   }
 };
 template <>
+struct StateCodec<forces::Winch::SetPoint> : FieldCodec<forces::Winch::SetPoint> {
+  static auto fields(auto& s) { return std::tie(s.t, s.l0, s.rate); }
+};
+template <>
 struct StateCodec<mechanics::WinchJob> : FieldCodec<mechanics::WinchJob> {
-  static auto fields(auto& s) { return std::tie(s.active, s.tEnd, s.actor); }
+  static auto fields(auto& s) { return std::tie(s.active, s.tEnd, s.actor, s.pieces); }
 };
 template <>
 struct StateCodec<mechanics::ActorLoad> : FieldCodec<mechanics::ActorLoad> {

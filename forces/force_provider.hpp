@@ -16,8 +16,10 @@
 // (a test, a one-off evaluation) gets a temporary one, made, used and dropped in that call.
 #include <limits>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -31,6 +33,11 @@ namespace yardsim::forces {
 class ProviderScratch {
  public:
   virtual ~ProviderScratch() = default;
+  // What of the scratch carries over from one stage to the next and changes results (a Newton
+  // solve's warm start), for checkpoints: () => its values appended to out; (values that
+  // carried() gave) => restored. Default: nothing carries over.
+  virtual void carried(std::vector<double>& /*out*/) const {}
+  virtual void restoreCarried(std::span<const double> /*values*/) {}
 };
 
 // What a provider sees at one integrator stage: data holds forwardKinematics(q, v) (X_WB, V).

@@ -57,12 +57,22 @@ class CatenaryLine final : public ForceProvider {
   struct Scratch final : ProviderScratch {
     CatenarySolution last;
     dynamics::Vector3 lastHorizontal = dynamics::Vector3::UnitX();
+    // (warm start) => HF, VF, e_h: all that the next solve starts from
+    void carried(std::vector<double>& out) const override {
+      out.insert(out.end(),
+                 {last.hf, last.vf, lastHorizontal.x(), lastHorizontal.y(), lastHorizontal.z()});
+    }
+    void restoreCarried(std::span<const double> v) override {
+      if (v.size() != 5) return;
+      last.hf = v[0];
+      last.vf = v[1];
+      lastHorizontal = dynamics::Vector3(v[2], v[3], v[4]);
+    }
   };
   std::unique_ptr<ProviderScratch> makeScratch() const override;
 
  protected:
-  void doEvaluate(const Stage& s, dynamics::ExternalForces& f,
-                  Eigen::VectorXd& tau) const override;
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
   double doPotentialEnergy(const Stage& s) const override;
   double doPower(const Stage& s) const override;
 

@@ -322,11 +322,19 @@ forces::Stage MultibodyModel::committedStage(const forces::ForceProvider* p) con
 }
 
 void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
-  // (caches) => the power the next step starts from (the winches are in the state)
+  // (caches) => the power the next step starts from (the winches are in the state), and what
+  // each provider's scratch carries to the next stage (a warm start)
   w.section("multibody");
   w.boolean(ws_.powerState == &state().xNext);
   w.f64(ws_.powerTime);
   w.f64(ws_.power);
+  w.list(ws_.data.providerScratch.size());
+  std::vector<double> carried;
+  for (const auto& scratch : ws_.data.providerScratch) {
+    carried.clear();
+    if (scratch) scratch->carried(carried);
+    devs::save(w, carried);
+  }
 }
 
 void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
@@ -342,6 +350,14 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   ws_.powerState = r.boolean() ? &state().xNext : nullptr;
   ws_.powerTime = r.f64();
   ws_.power = r.f64();
+  if (r.list() != ws_.data.providerScratch.size())
+    throw devs::CheckpointError("multibody '" + path() +
+                                "': the checkpoint has another number of force providers");
+  std::vector<double> carried;
+  for (const auto& scratch : ws_.data.providerScratch) {
+    devs::load(r, carried);
+    if (scratch) scratch->restoreCarried(carried);
+  }
   ws_.accelTime = ws_.viewTime = ws_.reactionTime = -1.0;
   ws_.viewState = nullptr;
   ws_.integrator->reset();

@@ -126,3 +126,12 @@ TEST_CASE("an adaptive CVODE scene restarted from a checkpoint equals the run th
                                     dir.path() / "whole/checkpoints/t000060.000.ckpt");
   checkConcatenation(whole, restarted, 60.0);
 }
+
+TEST_CASE("the moored barge restarted in waves equals the whole run (the catenaries' warm start)") {
+  testing::SceneDir dir;
+  const fs::path scene = kExamples / "moored_barge/scene.yaml";
+  const Output whole = runScene(scene, dir.path() / "whole", 35.0);
+  const Output restarted = runScene(scene, dir.path() / "restarted", 0.0,
+                                    dir.path() / "whole/checkpoints/t000070.000.ckpt");
+  checkConcatenation(whole, restarted, 70.0);
+}

@@ -7,26 +7,14 @@
 #include <sstream>
 
 #include "support/scene_files.hpp"
+#include "support/shell_command.hpp"
 
 using Catch::Matchers::Contains;
 
 namespace {
 
-struct Result {
-  int status;
-  std::string out;  // stdout and stderr together
-};
-
-// (shell command) => exit status and output
-Result shell(const std::string& cmd) {
-  FILE* p = popen(("timeout -s KILL 120 " + cmd + " 2>&1").c_str(), "r");
-  REQUIRE(p);
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int raw = pclose(p);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
+using Result = yardsim::testing::ShellResult;
+using yardsim::testing::shell;
 
 const std::string kYardsim = YARDSIM_EXE;
 

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "support/scene_files.hpp"
+#include "support/shell_command.hpp"
 
 extern char** environ;
 
@@ -24,22 +25,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status;
-  std::string out;  // stdout and stderr together
-};
+using Result = yardsim::testing::ShellResult;
 
 // (shell command) => exit status and output, killed after 300 s
-Result shell(const std::string& command) {
-  const std::string cmd = "timeout -s KILL 300 " + command + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p);
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int raw = pclose(p);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
+Result shell(const std::string& command) { return yardsim::testing::shell(command, 300); }
 
 const std::string kExe = YARDSIM_EXE;
 const std::string kSweep =

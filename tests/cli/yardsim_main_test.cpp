@@ -7,25 +7,15 @@
 
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
+#include "support/shell_command.hpp"
 
 namespace {
 
-struct Result {
-  int status;
-  std::string out;  // stdout and stderr together
-};
+using Result = yardsim::testing::ShellResult;
 
-// (arguments) => exit status and output of `yardsim arguments`
+// (arguments) => exit status and output of `yardsim arguments`, killed after 120 s
 Result runYardsim(const std::string& args) {
-  // a time-out of its own: a command that never ends fails its test instead of hanging the suite
-  const std::string cmd = "timeout -s KILL 120 " + std::string(YARDSIM_EXE) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p);
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int raw = pclose(p);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  return yardsim::testing::shell(std::string(YARDSIM_EXE) + " " + args);
 }
 
 const std::string kGpt = std::string(YARDSIM_SOURCE_DIR) + "/examples/gpt/scene.yaml";

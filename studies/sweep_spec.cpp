@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <regex>
 
 #include "scene/yaml_source.hpp"
 
@@ -36,7 +35,11 @@ std::optional<double> number(const YAML::Node& n) {
 
 // (scalar node) => whether it is written as a whole number ("3", "-2")
 bool wholeText(const YAML::Node& n) {
-  return n.IsScalar() && std::regex_match(n.Scalar(), std::regex("-?[0-9]+"));
+  if (!n.IsScalar()) return false;
+  const std::string& t = n.Scalar();
+  const std::size_t first = !t.empty() && t[0] == '-' ? 1 : 0;
+  return t.size() > first && std::all_of(t.begin() + static_cast<std::ptrdiff_t>(first), t.end(),
+                                         [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // (node under vary.NAME) => the parameter's values; mistakes in diags
@@ -106,13 +109,36 @@ SweepParam readParam(const std::string& name, const YAML::Node& v, const std::st
 
 // (text "op(glob)") => the collect spec, or nullopt
 std::optional<CollectSpec> parseCollect(const std::string& text) {
-  std::smatch m;
-  if (!std::regex_match(text, m, std::regex(R"(\s*([a-z]+)\s*\(\s*([^()\s]+)\s*\)\s*)")))
-    return std::nullopt;
-  if (std::find(kOps.begin(), kOps.end(), m[1].str()) == kOps.end()) return std::nullopt;
+  // (text) => blanks? op(lowercase letters) blanks? "(" blanks? glob(no blank, no paren)
+  // blanks? ")" blanks?, read by hand (std::regex trips GCC 12's -Wmaybe-uninitialized)
+  auto blank = [](char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+  };
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  auto skip = [&] {
+    while (i < n && blank(text[i])) ++i;
+  };
+  skip();
+  const std::size_t opBegin = i;
+  while (i < n && text[i] >= 'a' && text[i] <= 'z') ++i;
+  const std::string op = text.substr(opBegin, i - opBegin);
+  skip();
+  if (op.empty() || i >= n || text[i] != '(') return std::nullopt;
+  ++i;
+  skip();
+  const std::size_t globBegin = i;
+  while (i < n && !blank(text[i]) && text[i] != '(' && text[i] != ')') ++i;
+  const std::string glob = text.substr(globBegin, i - globBegin);
+  skip();
+  if (glob.empty() || i >= n || text[i] != ')') return std::nullopt;
+  ++i;
+  skip();
+  if (i != n) return std::nullopt;
+  if (std::find(kOps.begin(), kOps.end(), op) == kOps.end()) return std::nullopt;
   CollectSpec c;
-  c.op = m[1].str();
-  c.glob = m[2].str();
+  c.op = op;
+  c.glob = glob;
   c.text = c.op + "(" + c.glob + ")";
   return c;
 }

@@ -3,6 +3,7 @@
 // state and what it reaches), how it goes into a trace and into a checkpoint.
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "devs/checkpoint_archive.hpp"
@@ -44,30 +45,10 @@ namespace yardsim::devs {
 // look-ahead reaches and the step count (the model's X needs a StateCodec of its own)
 template <class X>
 requires HasStateCodec<X>
-struct StateCodec<dtss::State<X>> {
-  static void save(CheckpointWriter& w, const dtss::State<X>& s) {
-    w.section("dtss");
-    devs::save(w, s.x);
-    devs::save(w, s.tx);
-    devs::save(w, s.xNext);
-    devs::save(w, s.tNext);
-    devs::save(w, s.reached.grid);
-    devs::save(w, s.reached.timeEvent);
-    devs::save(w, s.reached.stateEvent);
-    devs::save(w, s.reached.coincident);
-    devs::save(w, s.steps);
-  }
-  static void load(CheckpointReader& r, dtss::State<X>& s) {
-    r.section("dtss");
-    devs::load(r, s.x);
-    devs::load(r, s.tx);
-    devs::load(r, s.xNext);
-    devs::load(r, s.tNext);
-    devs::load(r, s.reached.grid);
-    devs::load(r, s.reached.timeEvent);
-    devs::load(r, s.reached.stateEvent);
-    devs::load(r, s.reached.coincident);
-    devs::load(r, s.steps);
+struct StateCodec<dtss::State<X>> : FieldCodec<dtss::State<X>> {
+  static auto fields(auto& s) {
+    return std::tie(s.x, s.tx, s.xNext, s.tNext, s.reached.grid, s.reached.timeEvent,
+                    s.reached.stateEvent, s.reached.coincident, s.steps);
   }
 };
 

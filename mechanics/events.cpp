@@ -98,8 +98,9 @@ void reportTimeEvents(const System& s, const SetPoints& sp, const Eigen::VectorX
 
 double nextTimeEvent(const System& s, const SetPoints& sp, double t) {
   double next = std::numeric_limits<double>::infinity();
-  for (const auto& w : sp.winches)
-    if (w.active && w.tEnd > t) next = std::min(next, w.tEnd);
+  for (std::size_t r = 0; r < sp.winches.size(); ++r)  // (a job's end, and its profile's breaks)
+    if (const WinchJob& w = sp.winches[r]; w.active && w.tEnd > t)
+      next = std::min({next, w.tEnd, s.ropes()[r]->winch().nextBreak(t)});
   for (const auto& d : sp.drives)
     if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
   for (const auto& l : s.bodyLoads()) next = std::min(next, l->nextBreak(t));  // kinks and jumps

@@ -12,13 +12,15 @@ double startDrive(SetPoints& sp, int body, double q, double v, double target, do
   return (target >= q ? 1.0 : -1.0) * std::abs(speed) - v;
 }
 
-double startWinch(SetPoints& sp, int rope, double t, double speed, double amount,
-                  const std::string& actor) {
+double startWinch(SetPoints& sp, int rope, forces::Winch& winch, double t, double amount,
+                  const forces::WinchDrive& drive, const std::string& actor) {
   WinchJob& job = sp.winches[static_cast<std::size_t>(rope)];
+  winch.dropPlannedAfter(t);
   job.active = true;
-  job.tEnd = t + std::abs(amount) / speed;
+  job.tEnd = winch.setPayoutProfile(t, forces::winchProfile(amount, drive));
   job.actor = actor;
-  return amount >= 0 ? speed : -speed;
+  job.pieces = winch.history();
+  return job.tEnd;
 }
 
 }  // namespace yardsim::mechanics

@@ -53,9 +53,11 @@ struct SetPoints {
 double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed,
                   double t, const std::string& actor, bool prescribed);
 
-// (a winch request at t on rope r: change of unstretched length `amount` m (< 0 hoists) at
-// `speed` m/s) => the job in sp, ending at t + |amount| / speed; returns the payout rate, m/s
-double startWinch(SetPoints& sp, int rope, double t, double speed, double amount,
-                  const std::string& actor);
+// (a winch request at t on rope r with its winch: change of unstretched length `amount` m
+// (< 0 hoists) by the drive (speed, and accel/jerk limits or none)) => the profile planned on the
+// winch (replacing what was planned after t), the job in sp with its pieces; returns the time
+// the job ends, s
+double startWinch(SetPoints& sp, int rope, forces::Winch& winch, double t, double amount,
+                  const forces::WinchDrive& drive, const std::string& actor);
 
 }  // namespace yardsim::mechanics

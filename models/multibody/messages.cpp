@@ -7,7 +7,10 @@ std::ostream& operator<<(std::ostream& os, const SetPoint& s) {
     case SetPoint::Kind::JointTarget:
       return os << s.element << " -> " << s.target << " at " << s.speed;
     case SetPoint::Kind::WinchPayout:
-      return os << s.element << " payout " << s.amount << " at " << s.speed;
+      os << s.element << " payout " << s.amount << " at " << s.speed;
+      if (s.accel > 0) os << " accel " << s.accel;
+      if (s.jerk > 0) os << " jerk " << s.jerk;
+      return os;
     case SetPoint::Kind::ActorLoad:
       return os << s.element << " load (" << s.force[0] << "," << s.force[1] << "," << s.force[2]
                 << ")";

@@ -16,6 +16,9 @@ struct SetPoint {
   // JointTarget: drive the joint to `target` (rad or m) at `speed` (rad/s or m/s, > 0)
   // WinchPayout: change the rope's unstretched length by `amount` (m, < 0 hoists) at `speed`
   double target = 0.0, speed = 0.0, amount = 0.0;
+  // WinchPayout: the drive's acceleration (m/s^2) and jerk (m/s^3) limits; 0: none (the speed
+  // steps at once, or ramps as a trapezoid)
+  double accel = 0.0, jerk = 0.0;
   // JointTarget: true: the joint's motion is prescribed (the ramp exactly, whatever it takes);
   // false: a bounded servo follows the ramp
   bool prescribed = false;

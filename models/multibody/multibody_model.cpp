@@ -205,8 +205,7 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
                                       s.actor + "' names '" + s.element +
                                       "', which is not a rope here, or has no positive speed");
         forces::Rope& rope = *system_.ropes()[static_cast<std::size_t>(r)];
-        rope.setPayoutRate(t, mechanics::startWinch(sp, r, t, s.speed, s.amount, s.actor));
-        sp.winches[static_cast<std::size_t>(r)].pieces = rope.winch().history();  // (state)
+        mechanics::startWinch(sp, r, rope.winch(), t, s.amount, {s.speed, s.accel, s.jerk}, s.actor);
         break;
       }
     }

@@ -56,7 +56,7 @@ struct StateCodec<mechanics::JointDrive> : FieldCodec<mechanics::JointDrive> {
 };
 template <>
 struct StateCodec<forces::Winch::SetPoint> : FieldCodec<forces::Winch::SetPoint> {
-  static auto fields(auto& s) { return std::tie(s.t, s.l0, s.rate); }
+  static auto fields(auto& s) { return std::tie(s.t, s.l0, s.rate, s.accel, s.jerk); }
 };
 template <>
 struct StateCodec<mechanics::WinchJob> : FieldCodec<mechanics::WinchJob> {

@@ -130,3 +130,70 @@ TEST_CASE("goliath turnover: statics, hoisting overshoot, action order, turnover
   // fraction of the work done
   CHECK(std::abs(read("mechanics.energy_balance") - balance0) < 1e-3 * std::abs(read("mechanics.work")));
 }
+
+namespace {
+// (hoist drive acceleration and jerk limits, 0: none) => the whole operation run; each rope's
+// static tension while the block hangs still, its peak over the operation, the peak of the
+// summed hoist tension over the weight while the hoists start, and when the hoists finish
+struct Operation {
+  std::vector<double> still, peak;
+  double startOvershoot = 0.0, hoisted = 0.0;
+};
+Operation runWithDrive(double accel, double jerk) {
+  scene::ParamOverrides o;
+  for (const auto& [name, value] : {std::pair{"hoist_accel", accel}, std::pair{"hoist_jerk", jerk}}) {
+    scene::ParamOverride& p = o[name];
+    p.value = YAML::Node(value);
+    p.keyPath = name;
+  }
+  auto loaded =
+      scene::loadScene(std::string(YARDSIM_SOURCE_DIR) + "/examples/goliath_turnover/scene.yaml", o);
+  REQUIRE(loaded.scene);
+  auto root = scene::assemble(*loaded.scene);
+  devs::Simulator sim(*root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  const auto& mb = static_cast<const models::MultibodyModel&>(*root->findComponent("mechanics"));
+  const Reader read(mb);
+  Operation op;
+  sim.runUntil(4.0);
+  double weight = 0.0;
+  for (const char* r : kRopes) {
+    op.still.push_back(read(std::string(r) + ".tension"));
+    weight += 4 * op.still.back();
+  }
+  for (double t = 5.0; t <= 15.0; t += 0.005) {
+    sim.runUntil(t);
+    double s = 0.0;
+    for (const char* r : kRopes) s += 4 * read(std::string(r) + ".tension");
+    op.startOvershoot = std::max(op.startOvershoot, s / weight - 1.0);
+  }
+  sim.runUntil(loaded.scene->until);
+  for (const char* r : kRopes) op.peak.push_back(read(std::string(r) + ".peak_tension"));
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "finished" && r.model.find("hoist") != std::string::npos) op.hoisted = std::max(op.hoisted, r.t);
+  return op;
+}
+}  // namespace
+
+TEST_CASE("goliath turnover with ramped hoist drives: smaller dynamic peaks than speed steps") {
+  const double v = 0.083, a = 0.02;  // m/s, m/s^2: full speed in 4.15 s
+  const Operation step = runWithDrive(0.0, 0.0), ramp = runWithDrive(a, 0.0);
+  // (trapezoidal hoist) => it ends v/a later than at a constant speed
+  CHECK(ramp.hoisted == Approx(5.0 + 3.9 / v + v / a).margin(1e-6));
+  CHECK(step.hoisted == Approx(5.0 + 3.9 / v).margin(1e-6));
+  // (the hung mass on the hoists, 1-dof) => a speed step overshoots by about v omega / g, a ramp
+  // by at most 2 a / g (a / g while accelerating plus an oscillation of at most a / g)
+  INFO("start overshoot: step " << step.startOvershoot << ", ramp " << ramp.startOvershoot);
+  CHECK(ramp.startOvershoot < 2.0 * a / kG);
+  CHECK(ramp.startOvershoot > 0.5 * a / kG);
+  CHECK(step.startOvershoot > 10.0 * ramp.startOvershoot);
+  // (whole operation) => every rope's peak / static is lower with the ramps, and still above 1
+  for (std::size_t r = 0; r < 8; ++r) {
+    const double rs = step.peak[r] / step.still[r], rr = ramp.peak[r] / ramp.still[r];
+    INFO(kRopes[r] << " peak / static: speed steps " << rs << ", ramped " << rr);
+    CHECK(ramp.still[r] == Approx(step.still[r]).epsilon(1e-12));
+    CHECK(rr < rs);
+    CHECK(rr > 1.0);
+  }
+}

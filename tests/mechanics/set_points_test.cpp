@@ -5,6 +5,8 @@
 #include "mechanics/set_points.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <limits>
 #include <random>
 
 using namespace yardsim::mechanics;
@@ -36,12 +38,30 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "startWinch: the job ends after |amount| / speed, pays out positive and hauls in negative") {
+    "startWinch: the job ends after |amount| / speed and pays out positive and hauls in negative") {
   SetPoints sp{{}, {}, std::vector<WinchJob>(2)};
-  CHECK(startWinch(sp, 1, 10.0, 0.5, 2.0, "w") == 0.5);
+  yardsim::forces::Winch w1(20.0, 1.0), w0(20.0, 1.0);
+  CHECK(startWinch(sp, 1, w1, 10.0, 2.0, {0.5}, "w") == Approx(14.0));
   CHECK(sp.winches[1].tEnd == Approx(14.0));
   CHECK(sp.winches[1].actor == "w");
-  CHECK(startWinch(sp, 0, 3.0, 0.25, -1.0, "h") == -0.25);
-  CHECK(sp.winches[0].tEnd == Approx(7.0));
+  CHECK(w1.rate(12.0) == 0.5);
+  CHECK(sp.winches[1].pieces.size() == w1.history().size());  // (state) mirrors the winch
+  CHECK(startWinch(sp, 0, w0, 3.0, -1.0, {0.25}, "h") == Approx(7.0));
+  CHECK(w0.rate(5.0) == -0.25);
   CHECK(sp.winches[0].active);
+}
+
+TEST_CASE("startWinch: a new request replaces the rest of a ramped profile under way") {
+  SetPoints sp{{}, {}, std::vector<WinchJob>(1)};
+  yardsim::forces::Winch w(20.0, 1.0);
+  // (10 m at 1 m/s, 0.5 m/s^2) => ramps of 2 s, ends at 12 s
+  CHECK(startWinch(sp, 0, w, 0.0, 10.0, {1.0, 0.5}, "a") == Approx(12.0));
+  CHECK(w.nextBreak(1.0) == Approx(2.0));
+  // (at 5 s, while cruising: haul in 1 m at 0.1 m/s) => the planned ramp down is dropped
+  const double l5 = w.length(5.0);
+  CHECK(startWinch(sp, 0, w, 5.0, -1.0, {0.1}, "b") == Approx(15.0));
+  CHECK(w.nextBreak(5.0) == std::numeric_limits<double>::infinity());
+  CHECK(w.rate(6.0) == -0.1);
+  CHECK(w.length(15.0) == Approx(l5 - 1.0).epsilon(1e-14));
+  CHECK(sp.winches[0].actor == "b");
 }

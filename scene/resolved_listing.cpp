@@ -68,6 +68,10 @@ std::string resolvedListing(const Scene& s) {
     for (const auto& d : sys->spec.dampers) os << " damping:" << d.name;
     os << "\n";
   }
+  if (!s.database.empty()) {  // where each value from the yard database came from
+    os << "database " << s.database << "\n";
+    for (const auto& pv : s.provenance) os << "  " << pv.key << " = " << pv.value << "  <- " << pv.source << "\n";
+  }
   os << "recorder: ";
   if (s.record.interval > 0) {
     os << "every " << s.record.interval << " s, channels";

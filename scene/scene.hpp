@@ -74,6 +74,14 @@ struct ReportSpec {
 
 struct MechanicalSystem;  // models/mechanical_systems.hpp
 
+// A value a scene took from the yard's database (scene/yard_reader.hpp), or a scene key that
+// overrode one: for `validate --print-resolved`.
+struct Provenance {
+  std::string key;     // full path: GOC201.lower_fore.EA, block.mass
+  std::string value;   // as used, with its unit
+  std::string source;  // "blocks row 1 'GT-BLOCK-920'", or "the scene (the database has ...)"
+};
+
 struct Scene {
   std::filesystem::path file;
   std::string name;
@@ -94,6 +102,10 @@ struct Scene {
   // the mechanics of every coupled model, merged and split into mechanically connected
   // systems (each becomes one multibody model)
   std::vector<std::shared_ptr<const MechanicalSystem>> systems;
+  // the yard database the scene names (`database:`): its file and schema ("" when none), and
+  // every value taken from it
+  std::string database;
+  std::vector<Provenance> provenance;
 };
 
 }  // namespace yardsim::scene

@@ -53,6 +53,7 @@ bool numeric(const YAML::Node& n) {
 
 void SceneYard::open(const YAML::Node& node, const fs::path& sceneFile, Diagnostics& d) {
   const std::string f = sceneFile.string();
+  named_ = true;
   fs::path path;
   if (node.IsScalar() && !node.Scalar().empty()) {
     path = sceneFile.parent_path() / node.Scalar();
@@ -87,6 +88,7 @@ void SceneYard::open(const YAML::Node& node, const fs::path& sceneFile, Diagnost
 bool SceneYard::need(const YAML::Node& n, const std::string& file, const std::string& keyPath,
                      const std::string& key, Diagnostics& d) const {
   if (db_) return true;
+  if (named_) return false;  // the database named could not be opened: already reported
   d.error(markOf(n, file), keyPath,
           "'" + key + "' takes its values from the yard database: name it at the scene root "
           "(database: yard.sqlite)");

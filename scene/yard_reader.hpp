@@ -75,6 +75,7 @@ class SceneYard {
   std::string source(const std::string& table, const std::string& name, std::int64_t row) const;
 
   std::shared_ptr<yard::Database> db_;
+  bool named_ = false;                    // the scene has `database:` (opened or not)
   std::string label_;                     // the file as shown: path, schema version
   std::map<std::string, DbBody> bodies_;  // full body path => its block
   std::vector<Provenance> provenance_;

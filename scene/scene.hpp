@@ -74,6 +74,20 @@ struct ReportSpec {
 
 struct MechanicalSystem;  // models/mechanical_systems.hpp
 
+// A crane of the yard database whose hook-load curve the run checks (run/hook_load_monitor.hpp):
+// the hook load is the sum of tension x parts over its hoist ropes (those hanging from one of its
+// bodies and holding a body outside it), the outreach the largest horizontal distance from its
+// root body (the one on world, e.g. the gantry) to a body a hoist rope hangs from.
+struct HookLoadCheck {
+  std::string crane;                              // the facility's instance path: GOC201
+  std::string facility;                           // its name in the database
+  std::vector<std::pair<double, double>> curve;   // (outreach m, capacity N), outreach ascending
+  std::string system;                             // the multibody model that holds its ropes
+  std::string root;                               // its root body: GOC201.gantry
+  std::vector<std::pair<std::string, int>> ropes; // hoist rope full names and their parts
+  std::vector<std::string> hoists;                // the bodies they hang from
+};
+
 // A value a scene took from the yard's database (scene/yard_reader.hpp), or a scene key that
 // overrode one: for `validate --print-resolved`.
 struct Provenance {
@@ -106,6 +120,7 @@ struct Scene {
   // every value taken from it
   std::string database;
   std::vector<Provenance> provenance;
+  std::vector<HookLoadCheck> hookLoads;  // cranes of the database with a hook-load curve
 };
 
 }  // namespace yardsim::scene

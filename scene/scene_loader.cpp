@@ -476,6 +476,7 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   Loader loader(r.diagnostics);
   auto scene = loader.root(file, overrides);
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) completeHookLoadChecks(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);

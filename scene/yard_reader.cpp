@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cstdlib>
+#include <functional>
 
 #include "forces/geometry/mesh_io.hpp"
 #include "scene/mechanical_systems.hpp"
@@ -128,12 +129,17 @@ void SceneYard::addParticulars(const FacilityUse& use, const YAML::Node& params,
   const yard::Facility& f = use.facility;
   const std::string src = source("facilities", f.name, use.row);
   provenance_.push_back({instPath, use.modelFile.string(), src + " (model file)"});
+  if (!f.hookLoadCurve.empty()) {
+    HookLoadCheck check{instPath, f.name, {}, {}, {}, {}, {}};
+    for (const auto& p : f.hookLoadCurve) check.curve.emplace_back(p.outreach, p.capacity);
+    hookLoads_.push_back(std::move(check));
+  }
   const std::pair<const char*, double> particulars[] = {{"capacity", f.capacity},
                                                         {"hoist_speed", f.hoistSpeed},
                                                         {"hoist_acceleration", f.hoistAcceleration},
                                                         {"max_outreach", f.maxOutreach}};
   for (const auto& [key, value] : particulars) {
-    if (!params.IsMap() || !params[key]) continue;  // the model does not take it
+    if (!params || !params.IsMap() || !params[key]) continue;  // the model does not take it
     const std::string full = instPath + ".params." + key;
     if (overrides.count(key)) {
       provenance_.push_back({full, shownList(overrides.at(key).value),
@@ -310,6 +316,44 @@ void SceneYard::resolveLugPoints(Instance& inst, Diagnostics& d) {
 void SceneYard::describe(Scene& scene) const {
   scene.database = label_;
   scene.provenance = provenance_;
+  scene.hookLoads = hookLoads_;
+}
+
+void completeHookLoadChecks(Scene& scene, Diagnostics& d) {
+  auto inside = [](const std::string& name, const std::string& crane) {
+    return name.size() > crane.size() && name.compare(0, crane.size() + 1, crane + ".") == 0;
+  };
+  std::vector<HookLoadCheck> kept;
+  for (HookLoadCheck c : scene.hookLoads) {
+    for (const auto& sys : scene.systems) {
+      for (const auto& r : sys->spec.ropes) {
+        if (r.path.empty() || !inside(r.name, c.crane)) continue;
+        if (!inside(r.path.front().first, c.crane) || inside(r.path.back().first, c.crane)) continue;
+        c.system = sys->name;
+        c.ropes.emplace_back(r.name, r.parts);
+        c.hoists.push_back(r.path.front().first);
+      }
+      for (const auto& b : sys->spec.bodies)
+        if (inside(b.name, c.crane) && !inside(b.parent, c.crane)) c.root = b.name;
+    }
+    // (instance tree) => the crane's instance, for the warning's place
+    std::function<const Instance*(const Instance&)> find = [&](const Instance& i) -> const Instance* {
+      if (i.path == c.crane) return &i;
+      for (const auto& child : i.children)
+        if (const Instance* f = find(*child)) return f;
+      return nullptr;
+    };
+    const Instance* inst = find(scene.root);
+    if (c.ropes.empty() || c.root.empty()) {
+      d.warning(inst ? inst->where : SourceMark{scene.file.string(), 1, 1},
+                inst ? inst->keyPath : c.crane,
+                "facility '" + c.facility + "' has a hook-load curve but no hoist rope (a rope from "
+                "one of its bodies to a body outside it): its curve is not checked");
+      continue;
+    }
+    kept.push_back(std::move(c));
+  }
+  scene.hookLoads = std::move(kept);
 }
 
 std::shared_ptr<const forces::TriangleMesh> databaseBlockMesh(const std::string& databaseFile,

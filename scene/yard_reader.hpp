@@ -56,7 +56,7 @@ class SceneYard {
   // position on its block (the body resolved as the mechanics resolves names)
   void resolveLugPoints(Instance& root, Diagnostics& d);
 
-  // (scene) => its `database` line and provenance filled in
+  // (scene) => its `database` line, provenance and the facilities' hook-load curves filled in
   void describe(Scene& scene) const;
 
  private:
@@ -79,7 +79,12 @@ class SceneYard {
   std::string label_;                     // the file as shown: path, schema version
   std::map<std::string, DbBody> bodies_;  // full body path => its block
   std::vector<Provenance> provenance_;
+  std::vector<HookLoadCheck> hookLoads_;
 };
+
+// (scene with its mechanical systems) => each hook-load check given its system, root body and
+// hoist ropes; a crane without hoist ropes is dropped with a warning at its component
+void completeHookLoadChecks(Scene& scene, Diagnostics& d);
 
 // (database file, block name) => the block's stored mesh (or its mesh file), in the block frame;
 // forces::MeshError when it has none or it cannot be read

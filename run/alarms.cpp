@@ -15,7 +15,8 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
   if (events == nullptr || port.name() != "event") return;
   for (const models::MechanicsEvent& e : events->values()) {
     const bool alarm = e.what == "over_mbl" || e.what == "crossed";
-    if (alarm || e.what == "slack" || e.what == "taut") raise(m.path(), e.element, e.what, alarm, t, e.value);
+    if (alarm || e.what == "slack" || e.what == "taut")
+      raise(m.path(), e.element, e.what, alarm, t, e.value);
   }
 }
 

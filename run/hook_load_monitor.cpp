@@ -17,8 +17,7 @@ double hookLoadCapacity(const std::vector<std::pair<double, double>>& curve, dou
 }
 
 HookLoadMonitor::HookLoadMonitor(const std::vector<scene::HookLoadCheck>& checks,
-                                 const std::vector<models::Channel>& channels,
-                                 AlarmMonitor& alarms)
+                                 const std::vector<models::Channel>& channels, AlarmMonitor& alarms)
     : alarms_(alarms) {
   // (full channel name) => its read function
   auto read = [&](const std::string& name) {
@@ -28,8 +27,10 @@ HookLoadMonitor::HookLoadMonitor(const std::vector<scene::HookLoadCheck>& checks
   };
   for (const auto& check : checks) {
     Crane c{&check, {}, read(check.root + ".x"), read(check.root + ".y"), {}, false};
-    for (const auto& [rope, parts] : check.ropes) c.tensions.emplace_back(read(rope + ".tension"), parts);
-    for (const auto& body : check.hoists) c.hoists.emplace_back(read(body + ".x"), read(body + ".y"));
+    for (const auto& [rope, parts] : check.ropes)
+      c.tensions.emplace_back(read(rope + ".tension"), parts);
+    for (const auto& body : check.hoists)
+      c.hoists.emplace_back(read(body + ".x"), read(body + ".y"));
     cranes_.push_back(std::move(c));
   }
 }
@@ -42,7 +43,8 @@ void HookLoadMonitor::onTransition(devs::Time t, const devs::AtomicBase& m, devs
     double load = 0.0, outreach = 0.0;
     for (const auto& [tension, parts] : c.tensions) load += tension() * parts;
     const double x0 = c.rootX(), y0 = c.rootY();
-    for (const auto& [x, y] : c.hoists) outreach = std::max(outreach, std::hypot(x() - x0, y() - y0));
+    for (const auto& [x, y] : c.hoists)
+      outreach = std::max(outreach, std::hypot(x() - x0, y() - y0));
     const bool over = load > hookLoadCapacity(c.check->curve, outreach);
     if (over) alarms_.raise(m.path(), c.check->crane, "over_hook_load", true, t, load, !c.over);
     c.over = over;

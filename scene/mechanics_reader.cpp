@@ -7,8 +7,8 @@
 #include <set>
 
 #include "dynamics/model_builder.hpp"
-#include "forces/geometry/mesh_io.hpp"
 #include "dynamics/rotation.hpp"
+#include "forces/geometry/mesh_io.hpp"
 #include "models/diagnostics.hpp"
 #include "scene/added_mass_reader.hpp"
 #include "scene/floating_reader.hpp"
@@ -144,9 +144,11 @@ MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::st
       if (m.IsMap() && m["database"] && m["block"]) {  // a block's mesh from the yard database
         v.file = m["block"].Scalar();
         v.mesh = databaseBlockMesh(m["database"].Scalar(), v.file);
-      } else if (v.file.empty()) throw forces::MeshError("expected a file name (OBJ or STL, relative to this YAML file)");
+      } else if (v.file.empty())
+        throw forces::MeshError("expected a file name (OBJ or STL, relative to this YAML file)");
       else
-        v.mesh = std::make_shared<const forces::TriangleMesh>(forces::readMesh((dir / v.file).lexically_normal().string()));
+        v.mesh = std::make_shared<const forces::TriangleMesh>(
+            forces::readMesh((dir / v.file).lexically_normal().string()));
     } catch (const forces::MeshError& e) {
       r.fail(m, key + ".mesh", e.what());
     }

@@ -79,13 +79,13 @@ struct MechanicalSystem;  // models/mechanical_systems.hpp
 // bodies and holding a body outside it), the outreach the largest horizontal distance from its
 // root body (the one on world, e.g. the gantry) to a body a hoist rope hangs from.
 struct HookLoadCheck {
-  std::string crane;                              // the facility's instance path: GOC201
-  std::string facility;                           // its name in the database
-  std::vector<std::pair<double, double>> curve;   // (outreach m, capacity N), outreach ascending
-  std::string system;                             // the multibody model that holds its ropes
-  std::string root;                               // its root body: GOC201.gantry
-  std::vector<std::pair<std::string, int>> ropes; // hoist rope full names and their parts
-  std::vector<std::string> hoists;                // the bodies they hang from
+  std::string crane;                               // the facility's instance path: GOC201
+  std::string facility;                            // its name in the database
+  std::vector<std::pair<double, double>> curve;    // (outreach m, capacity N), outreach ascending
+  std::string system;                              // the multibody model that holds its ropes
+  std::string root;                                // its root body: GOC201.gantry
+  std::vector<std::pair<std::string, int>> ropes;  // hoist rope full names and their parts
+  std::vector<std::string> hoists;                 // the bodies they hang from
 };
 
 // A value a scene took from the yard's database (scene/yard_reader.hpp), or a scene key that

@@ -5,14 +5,14 @@
 #include <set>
 #include <sstream>
 
+#include "models/port_types.hpp"
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/provider_readers.hpp"
 #include "scene/run_settings_reader.hpp"
-#include "scene/stiffness_guard.hpp"
-#include "models/port_types.hpp"
 #include "scene/sha256.hpp"
+#include "scene/stiffness_guard.hpp"
 #include "scene/yaml_source.hpp"
 #include "scene/yard_reader.hpp"
 
@@ -39,12 +39,12 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
                                          "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "report",     "until", "seed",
-                                         "integrator", "trace", "wp",    "database"};
+const std::vector<std::string> kRootKeys{"record",     "report", "until", "seed",
+                                         "integrator", "trace",  "wp",    "database"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
-const std::vector<std::string> kComponentKeys{"type",      "include",     "coupled", "facility",
-                                              "params",    "placement",   "description"};
+const std::vector<std::string> kComponentKeys{"type",   "include",   "coupled",    "facility",
+                                              "params", "placement", "description"};
 
 using Override = ParamOverride;
 using Overrides = ParamOverrides;

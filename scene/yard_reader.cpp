@@ -21,7 +21,9 @@ std::string exact(double x) {
   return std::string(buf, r.ptr);
 }
 
-YAML::Node scalar(double x) { return YAML::Node(exact(x)); }
+YAML::Node scalar(double x) {
+  return YAML::Node(exact(x));
+}
 
 YAML::Node list(std::initializer_list<double> xs) {
   YAML::Node n(YAML::NodeType::Sequence);
@@ -62,8 +64,10 @@ void SceneYard::open(const YAML::Node& node, const fs::path& sceneFile, Diagnost
     if (!checkKeys(node, {"env", "default"}, f, "database", d)) return;
     const YAML::Node env = node["env"], def = node["default"];
     const char* value = env && env.IsScalar() ? std::getenv(env.Scalar().c_str()) : nullptr;
-    if (value && *value) path = value;
-    else if (def && def.IsScalar()) path = sceneFile.parent_path() / def.Scalar();
+    if (value && *value)
+      path = value;
+    else if (def && def.IsScalar())
+      path = sceneFile.parent_path() / def.Scalar();
     else {
       d.error(markOf(node, f), "database",
               env && env.IsScalar() ? "the environment variable " + env.Scalar() +
@@ -80,7 +84,8 @@ void SceneYard::open(const YAML::Node& node, const fs::path& sceneFile, Diagnost
   path = path.lexically_normal();
   try {
     db_ = std::make_shared<yard::Database>(yard::Database::openReadOnly(path.string()));
-    label_ = path.string() + " (yardsim database, schema " + std::to_string(db_->schemaVersion()) + ")";
+    label_ =
+        path.string() + " (yardsim database, schema " + std::to_string(db_->schemaVersion()) + ")";
   } catch (const yard::DatabaseError& e) {
     d.error(markOf(node, f), "database", e.what());
   }
@@ -91,8 +96,9 @@ bool SceneYard::need(const YAML::Node& n, const std::string& file, const std::st
   if (db_) return true;
   if (named_) return false;  // the database named could not be opened: already reported
   d.error(markOf(n, file), keyPath,
-          "'" + key + "' takes its values from the yard database: name it at the scene root "
-          "(database: yard.sqlite)");
+          "'" + key +
+              "' takes its values from the yard database: name it at the scene root "
+              "(database: yard.sqlite)");
   return false;
 }
 
@@ -242,9 +248,9 @@ void SceneYard::expandRope(YAML::Node rope, const std::string& name, const std::
       rope[key] = scalar(value);
       provenance_.push_back({full + "." + key, exact(value) + " N", src});
     }
-    provenance_.push_back({full + ".rope", r.construction + ", diameter " + exact(r.diameter) +
-                                               " m, " + exact(r.massPerMetre) +
-                                               " kg/m (not modelled: the rope is massless)",
+    provenance_.push_back({full + ".rope",
+                           r.construction + ", diameter " + exact(r.diameter) + " m, " +
+                               exact(r.massPerMetre) + " kg/m (not modelled: the rope is massless)",
                            src});
   } catch (const yard::DatabaseError& e) {
     std::vector<std::string> names;
@@ -264,7 +270,8 @@ void SceneYard::lugPoint(YAML::Node point, const Instance& inst, const std::stri
   if (!point.IsMap()) return;
   const YAML::Node p = point["point"];
   if (!p || !p.IsScalar() || numeric(p)) return;
-  const std::string body = point["body"] && point["body"].IsScalar() ? point["body"].Scalar() : "world";
+  const std::string body =
+      point["body"] && point["body"].IsScalar() ? point["body"].Scalar() : "world";
   std::vector<std::string> known;
   for (const auto& [k, v] : bodies_) known.push_back(k);
   const std::string full = resolveName(instPath, body, known);
@@ -301,7 +308,8 @@ void SceneYard::resolveLugPoints(Instance& inst, Diagnostics& d) {
   };
   if (YAML::Node ropes = inst.mechanics["ropes"]; ropes.IsMap())
     for (auto it = ropes.begin(); it != ropes.end(); ++it)
-      if (it->second.IsMap()) points(it->second["path"], "ropes." + it->first.as<std::string>() + ".path");
+      if (it->second.IsMap())
+        points(it->second["path"], "ropes." + it->first.as<std::string>() + ".path");
   if (YAML::Node eqs = inst.mechanics["equalizers"]; eqs.IsMap())
     for (auto it = eqs.begin(); it != eqs.end(); ++it) {
       if (!it->second.IsMap()) continue;
@@ -328,7 +336,8 @@ void completeHookLoadChecks(Scene& scene, Diagnostics& d) {
     for (const auto& sys : scene.systems) {
       for (const auto& r : sys->spec.ropes) {
         if (r.path.empty() || !inside(r.name, c.crane)) continue;
-        if (!inside(r.path.front().first, c.crane) || inside(r.path.back().first, c.crane)) continue;
+        if (!inside(r.path.front().first, c.crane) || inside(r.path.back().first, c.crane))
+          continue;
         c.system = sys->name;
         c.ropes.emplace_back(r.name, r.parts);
         c.hoists.push_back(r.path.front().first);
@@ -337,7 +346,8 @@ void completeHookLoadChecks(Scene& scene, Diagnostics& d) {
         if (inside(b.name, c.crane) && !inside(b.parent, c.crane)) c.root = b.name;
     }
     // (instance tree) => the crane's instance, for the warning's place
-    std::function<const Instance*(const Instance&)> find = [&](const Instance& i) -> const Instance* {
+    std::function<const Instance*(const Instance&)> find =
+        [&](const Instance& i) -> const Instance* {
       if (i.path == c.crane) return &i;
       for (const auto& child : i.children)
         if (const Instance* f = find(*child)) return f;
@@ -347,8 +357,9 @@ void completeHookLoadChecks(Scene& scene, Diagnostics& d) {
     if (c.ropes.empty() || c.root.empty()) {
       d.warning(inst ? inst->where : SourceMark{scene.file.string(), 1, 1},
                 inst ? inst->keyPath : c.crane,
-                "facility '" + c.facility + "' has a hook-load curve but no hoist rope (a rope from "
-                "one of its bodies to a body outside it): its curve is not checked");
+                "facility '" + c.facility +
+                    "' has a hook-load curve but no hoist rope (a rope from "
+                    "one of its bodies to a body outside it): its curve is not checked");
       continue;
     }
     kept.push_back(std::move(c));
@@ -357,14 +368,16 @@ void completeHookLoadChecks(Scene& scene, Diagnostics& d) {
 }
 
 std::shared_ptr<const forces::TriangleMesh> databaseBlockMesh(const std::string& databaseFile,
-                                                             const std::string& block) {
+                                                              const std::string& block) {
   try {
     const yard::Database db = yard::Database::openReadOnly(databaseFile);
     const yard::Block b = yard::getBlock(db, block);
     if (b.mesh) return b.mesh;
-    if (b.meshPath.empty()) throw forces::MeshError("block '" + block + "' has no mesh in " + databaseFile);
+    if (b.meshPath.empty())
+      throw forces::MeshError("block '" + block + "' has no mesh in " + databaseFile);
     const fs::path file = fs::path(databaseFile).parent_path() / b.meshPath;
-    return std::make_shared<const forces::TriangleMesh>(forces::readMesh(file.lexically_normal().string()));
+    return std::make_shared<const forces::TriangleMesh>(
+        forces::readMesh(file.lexically_normal().string()));
   } catch (const yard::DatabaseError& e) {
     throw forces::MeshError(e.what());
   }

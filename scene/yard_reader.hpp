@@ -46,7 +46,8 @@ class SceneYard {
   // (capacity N, hoist_speed m/s, hoist_acceleration m/s^2, max_outreach m) added to the
   // overrides for the parameters the model declares and the scene does not set itself
   void addParticulars(const FacilityUse& use, const YAML::Node& params, const std::string& instPath,
-                      const SourceMark& where, const std::string& keyPath, ParamOverrides& overrides);
+                      const SourceMark& where, const std::string& keyPath,
+                      ParamOverrides& overrides);
 
   // (a fragment's mechanics, $references resolved; file; its key path; instance path) =>
   // bodies with from_db and ropes/equalizers with catalogue filled in, those keys removed
@@ -89,6 +90,6 @@ void completeHookLoadChecks(Scene& scene, Diagnostics& d);
 // (database file, block name) => the block's stored mesh (or its mesh file), in the block frame;
 // forces::MeshError when it has none or it cannot be read
 std::shared_ptr<const forces::TriangleMesh> databaseBlockMesh(const std::string& databaseFile,
-                                                             const std::string& block);
+                                                              const std::string& block);
 
 }  // namespace yardsim::scene

@@ -37,13 +37,15 @@ std::string withoutSceneLines(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("the goliath turnover from the yard database equals the hand-typed scene to the last digit") {
+TEST_CASE(
+    "the goliath turnover from the yard database equals the hand-typed scene to the last digit") {
   yardsim::testing::SceneDir dir;
   const std::string db = dir.file("yard.sqlite");
   auto r = shell(kSource + "/examples/yard/build_fixture.sh " + kYardsim + " " + db);
   INFO(r.out);
   REQUIRE(r.status == 0);
-  r = shell(kYardsim + " run " + kSource + "/examples/goliath_turnover/scene.yaml -o " + dir.file("typed"));
+  r = shell(kYardsim + " run " + kSource + "/examples/goliath_turnover/scene.yaml -o " +
+            dir.file("typed"));
   INFO(r.out);
   REQUIRE(r.status == 0);
   r = shell("env YARDSIM_DB=" + db + " " + kYardsim + " run " + kSource +
@@ -62,13 +64,15 @@ TEST_CASE("the goliath turnover from the yard database equals the hand-typed sce
   std::ofstream(dir.file("typed.csv")) << withoutSceneLines(typedSeries);
   std::ofstream(dir.file("db.csv")) << withoutSceneLines(dbSeries);
   CHECK(shell("cmp " + dir.file("typed.csv") + " " + dir.file("db.csv")).status == 0);
-  CHECK(shell("cmp " + dir.file("typed/trace.jsonl") + " " + dir.file("db/trace.jsonl")).status == 0);
+  CHECK(shell("cmp " + dir.file("typed/trace.jsonl") + " " + dir.file("db/trace.jsonl")).status ==
+        0);
   // and where the values came from
   r = shell("env YARDSIM_DB=" + db + " " + kYardsim + " validate --print-resolved " + kSource +
             "/examples/yard/goliath_turnover.yaml");
   CHECK(r.status == 0);
-  CHECK_THAT(r.out, Contains("block.mass = 920000 kg  <- blocks row 1 'GT-BLOCK-920'") &&
-                        Contains("GOC202.lower_aft.EA = 2e+08 N  <- ropes row 1") &&
-                        Contains("GOC201.params.hoist_speed = 0.083  <- facilities row 1 'GOC201'") &&
-                        Contains("(lug L202A)"));
+  CHECK_THAT(r.out,
+             Contains("block.mass = 920000 kg  <- blocks row 1 'GT-BLOCK-920'") &&
+                 Contains("GOC202.lower_aft.EA = 2e+08 N  <- ropes row 1") &&
+                 Contains("GOC201.params.hoist_speed = 0.083  <- facilities row 1 'GOC201'") &&
+                 Contains("(lug L202A)"));
 }

@@ -27,7 +27,8 @@ std::string hanging(const std::string& database, const std::string& body, const 
     box:
       parent: world
       joint: {type: free}
-)" + body + R"(  ropes:
+)" + body +
+         R"(  ropes:
     sling: {path: [{body: world, point: [1, 1.5, 10]}, {body: box, point: )" +
          top + R"(}], EA: 1.0e9, L0: 6.0, damping: 1.0e4}
 record: {interval: 0.1, channels: ["sling.tension"]}
@@ -48,7 +49,8 @@ void check(const yardsim::testing::SceneDir& dir, const std::string& out) {
   std::size_t indices = 0;
   for (const auto& mesh : glb.json["meshes"])
     for (const auto& prim : mesh["primitives"])
-      if (prim["indices"]) indices += glb.json["accessors"][prim["indices"].as<int>()]["count"].as<std::size_t>();
+      if (prim["indices"])
+        indices += glb.json["accessors"][prim["indices"].as<int>()]["count"].as<std::size_t>();
   CHECK(indices >= 12 * 3);  // at least the box's 12 triangles (ropes may add their own)
 }
 
@@ -76,7 +78,8 @@ TEST_CASE("a STEP block imported into the database runs by from_db with its lug"
             " --density 1000 --lug TOP:1,1.5,4:0,0,1:5e5");
   INFO(r.out);
   REQUIRE(r.status == 0);
-  const auto scene = dir.write("scene.yaml", hanging("database: yard.sqlite\n", "      from_db: BOX\n", "TOP"));
+  const auto scene =
+      dir.write("scene.yaml", hanging("database: yard.sqlite\n", "      from_db: BOX\n", "TOP"));
   r = shell(kYardsim + " run " + scene.string() + " -o " + dir.file("out"));
   INFO(r.out);
   REQUIRE(r.status == 0);

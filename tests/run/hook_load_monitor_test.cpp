@@ -32,7 +32,8 @@ mechanics:
 )";
 
 // (folder, the curve's capacity at 0 m and at 10 m, whether the trolley moves) => the run's alarms
-std::vector<run::Alarm> craneRun(const testing::SceneDir& dir, double at0, double at10, bool moves) {
+std::vector<run::Alarm> craneRun(const testing::SceneDir& dir, double at0, double at10,
+                                 bool moves) {
   std::filesystem::remove(dir.path() / "yard.sqlite");
   {
     const yard::Database db = yard::Database::create(dir.file("yard.sqlite"));
@@ -50,7 +51,9 @@ components:
   crane: {facility: C}
 )";
   if (moves)
-    text += "  go: {type: joint_actor, params: {joint: crane.trolley_travel, target: 9, speed: 0.5, start_at: 1}}\n";
+    text +=
+        "  go: {type: joint_actor, params: {joint: crane.trolley_travel, target: 9, speed: 0.5, "
+        "start_at: 1}}\n";
   text += R"(mechanics:
   equilibrium: true
   drive_bandwidth: 5.0

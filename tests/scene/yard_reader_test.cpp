@@ -34,8 +34,9 @@ void makeDatabase(const SceneDir& dir) {
   b.mesh = std::make_shared<const forces::TriangleMesh>(forces::boxMesh({2, 2, 2}));
   b.lugs = {{"L1", {1, 0, 1}, {0, 0, 1}, 1e5}, {"L2", {-1, 0, 1}, {0, 0, 1}, 1e5}};
   yard::insertBlock(db, b);
-  dir.write("ropes.csv", "name,diameter,construction,EA,MBL,mass_per_metre\n"
-                         "R 20 mm,0.02,6x19,3.1e7,2.6e5,1.6\n");
+  dir.write("ropes.csv",
+            "name,diameter,construction,EA,MBL,mass_per_metre\n"
+            "R 20 mm,0.02,6x19,3.1e7,2.6e5,1.6\n");
   yard::importRopeCatalogue(db, dir.file("ropes.csv"));
   yard::Facility c;
   c.name = "C1";
@@ -122,7 +123,8 @@ TEST_CASE("a block from the database brings its figures and lugs and the scene o
   CHECK_THAT(provenance(r, "sling.mbl").source, Contains("the scene"));
   CHECK_THAT(provenance(r, "ropes.sling.path[1].point").value, Contains("lug L1"));
   const std::string listing = scene::resolvedListing(*r.scene);
-  CHECK_THAT(listing, Contains("database ") && Contains("b.inertia = [3000, 3200, 3400, -10, 5, 7]") &&
+  CHECK_THAT(listing, Contains("database ") &&
+                          Contains("b.inertia = [3000, 3200, 3400, -10, 5, 7]") &&
                           Contains("<- blocks row 1 'B'"));
 }
 
@@ -135,7 +137,9 @@ mechanics:
   bodies:
     hook: {parent: world, joint: {type: prismatic, axis: [0, 0, 1]}, mass: $capacity, inertia: [1, 1, 1]}
 )");
-  auto r = load(dir, "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n  crane: {facility: C1}\nuntil: 1\nintegrator: {method: rk4, dt: 0.01}\n");
+  auto r = load(dir,
+                "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n  crane: {facility: "
+                "C1}\nuntil: 1\nintegrator: {method: rk4, dt: 0.01}\n");
   INFO(r.diagnostics.report());
   REQUIRE(r.scene);
   REQUIRE(r.scene->root.children.size() == 1);
@@ -143,8 +147,10 @@ mechanics:
   CHECK(r.scene->systems[0]->spec.bodies[0].mass == 2.5e5);  // capacity passed as the parameter
   CHECK_THAT(provenance(r, "crane.params.capacity").source, Contains("facilities row 1 'C1'"));
   // the scene's own parameter wins over the particular
-  r = load(dir, "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n"
-                "  crane: {facility: C1, params: {capacity: 7}}\nuntil: 1\nintegrator: {method: rk4, dt: 0.01}\n");
+  r = load(dir,
+           "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n"
+           "  crane: {facility: C1, params: {capacity: 7}}\nuntil: 1\nintegrator: {method: rk4, "
+           "dt: 0.01}\n");
   INFO(r.diagnostics.report());
   REQUIRE(r.scene);
   CHECK(r.scene->systems[0]->spec.bodies[0].mass == 7.0);
@@ -172,7 +178,8 @@ TEST_CASE("unknown blocks grades lugs and facilities are refused at their place"
   CHECK(d.where.line == 12);
   CHECK(d.keyPath == "mechanics.ropes.sling.path[1].point");
   CHECK_THAT(d.message, Contains("unknown lug 'L3'") && Contains("the lugs are L1, L2"));
-  d = only(load(dir, "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n  crane: {facility: C2}\n"));
+  d = only(load(
+      dir, "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n  crane: {facility: C2}\n"));
   CHECK(d.where.line == 4);
   CHECK(d.keyPath == "components.crane.facility");
   CHECK_THAT(d.message, Contains("unknown facility 'C2'") && Contains("C1"));

@@ -74,5 +74,8 @@ TEST_CASE(
              Contains("block.mass = 920000 kg  <- blocks row 1 'GT-BLOCK-920'") &&
                  Contains("GOC202.lower_aft.EA = 2e+08 N  <- ropes row 1") &&
                  Contains("GOC201.params.hoist_speed = 0.083  <- facilities row 1 'GOC201'") &&
-                 Contains("(lug L202A)"));
+                 Contains("(lug L202A)") &&
+                 Contains("hook-load check GOC202 (facility GOC202, from GOC202.gantry)"));
+  // both cranes' hook loads (about 4.8 MN each, peaks 1.18 x) stay under their curves (7.36 MN)
+  CHECK_THAT(slurp(dir.path() / "db/run.json"), !Contains("over_hook_load"));
 }

@@ -146,6 +146,10 @@ mechanics:
   CHECK_THAT(r.scene->root.children[0]->source, Contains("crane.yaml"));
   CHECK(r.scene->systems[0]->spec.bodies[0].mass == 2.5e5);  // capacity passed as the parameter
   CHECK_THAT(provenance(r, "crane.params.capacity").source, Contains("facilities row 1 'C1'"));
+  // C1 has a hook-load curve, but this model has no hoist rope: said, and not checked
+  CHECK(r.scene->hookLoads.empty());
+  CHECK_THAT(r.diagnostics.report(), Contains("warning") && Contains("components.crane") &&
+                                         Contains("has a hook-load curve but no hoist rope"));
   // the scene's own parameter wins over the particular
   r = load(dir,
            "schema_version: 1\ndatabase: yard.sqlite\ncomponents:\n"

@@ -47,8 +47,11 @@ int runCommand(const RunArgs& a) {
   opt.onAlarm = [&](const run::Alarm& al) {
     if (al.severity != "alarm") return;
     printer.finish();
-    std::fprintf(stderr, "ALARM t = %.6g s: %s '%s' %s (%.6g)\n", al.first, al.model.c_str(), al.element.c_str(),
-                 al.kind == "over_mbl" ? "passed its minimum breaking load, tension [N]" : "crossed its threshold, value",
+    std::fprintf(stderr, "ALARM t = %.6g s: %s '%s' %s (%.6g)\n", al.first, al.model.c_str(),
+                 al.element.c_str(),
+                 al.kind == "over_mbl"         ? "passed its minimum breaking load, tension [N]"
+                 : al.kind == "over_hook_load" ? "passed its hook-load curve, hook load [N]"
+                                               : "crossed its threshold, value",
                  al.worst);
   };
   std::unique_ptr<devs::Coupled> root;

@@ -15,18 +15,24 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
   if (events == nullptr || port.name() != "event") return;
   for (const models::MechanicsEvent& e : events->values()) {
     const bool alarm = e.what == "over_mbl" || e.what == "crossed";
-    if (!alarm && e.what != "slack" && e.what != "taut") continue;
-    auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
-      return a.model == m.path() && a.element == e.element && a.kind == e.what;
-    });
-    if (it == alarms_.end()) {
-      alarms_.push_back({m.path(), e.element, e.what, alarm ? "alarm" : "notice", t, 1, e.value});
-      if (onFirst_) onFirst_(alarms_.back());
-      continue;
-    }
-    ++it->count;
-    if (std::abs(e.value) > std::abs(it->worst)) it->worst = e.value;
+    if (alarm || e.what == "slack" || e.what == "taut")
+      raise(m.path(), e.element, e.what, alarm, t, e.value);
   }
+}
+
+void AlarmMonitor::raise(const std::string& model, const std::string& element,
+                         const std::string& kind, bool alarm, double t, double value,
+                         bool occurrence) {
+  auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
+    return a.model == model && a.element == element && a.kind == kind;
+  });
+  if (it == alarms_.end()) {
+    alarms_.push_back({model, element, kind, alarm ? "alarm" : "notice", t, 1, value});
+    if (onFirst_) onFirst_(alarms_.back());
+    return;
+  }
+  if (occurrence) ++it->count;
+  if (std::abs(value) > std::abs(it->worst)) it->worst = value;
 }
 
 std::size_t AlarmMonitor::alarmCount() const {

@@ -1,8 +1,9 @@
 #pragma once
 // Safety events made visible (docs/scenes.md, "Alarms"): a listener on every multibody model's
 // `event` port that keeps, per element and kind, the first time, the count and the worst value:
-// a rope over its minimum breaking load (over_mbl) and a watched quantity past its threshold
-// (crossed) are alarms; a rope going slack or taut is a notice. The runner calls back at each
+// a rope over its minimum breaking load (over_mbl), a watched quantity past its threshold
+// (crossed) and a crane's hook load over its curve (over_hook_load, run/hook_load_monitor.hpp)
+// are alarms; a rope going slack or taut is a notice. The runner calls back at each
 // first occurrence (the console line) and writes the list into run.json.
 #include <cstddef>
 #include <functional>
@@ -16,11 +17,12 @@ namespace yardsim::run {
 struct Alarm {
   std::string model;     // the multibody model's path
   std::string element;   // rope or watch name
-  std::string kind;      // over_mbl, crossed, slack, taut
-  std::string severity;  // alarm (over_mbl, crossed) or notice (slack, taut)
+  std::string kind;      // over_mbl, crossed, over_hook_load, slack, taut
+  std::string severity;  // alarm (over_mbl, crossed, over_hook_load) or notice (slack, taut)
   double first = 0.0;    // s: the first occurrence, as located
   std::size_t count = 0;
-  double worst = 0.0;  // SI: the largest value reported (tension in N for over_mbl)
+  double worst = 0.0;  // SI: the largest value reported (tension in N for over_mbl, hook load
+                       // in N for over_hook_load)
 };
 
 class AlarmMonitor final : public devs::Listener {
@@ -29,6 +31,11 @@ class AlarmMonitor final : public devs::Listener {
   explicit AlarmMonitor(std::function<void(const Alarm&)> onFirst = {})
       : onFirst_(std::move(onFirst)) {}
   void onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& port) override;
+  // (model path, element, kind, whether an alarm or a notice, time, value, whether a new
+  // occurrence or the same one going on) => a new (model, element, kind) reported through
+  // onFirst, a known one counted (a new occurrence) and its worst value kept
+  void raise(const std::string& model, const std::string& element, const std::string& kind,
+             bool alarm, double t, double value, bool occurrence = true);
   // every (element, kind) seen, in order of first occurrence
   const std::vector<Alarm>& alarms() const { return alarms_; }
   // (alarms of the run a checkpoint was taken in) => counted on from there (restarts)

@@ -13,6 +13,7 @@
 #include "output/gltf_writer.hpp"
 #include "output/replay_recorder.hpp"
 #include "run/checkpoint_file.hpp"
+#include "run/hook_load_monitor.hpp"
 #include "run/run_summary.hpp"
 #include "run/timeseries_writer.hpp"
 
@@ -153,6 +154,10 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       sim.addListener(*sinks.back());
     }
     sim.addListener(alarms);
+    // (cranes of the yard database with a hook-load curve) => checked after every step
+    std::optional<HookLoadMonitor> hookLoads;
+    if (!scene.hookLoads.empty())
+      sim.addListener(hookLoads.emplace(scene.hookLoads, collectChannels(root), alarms));
     if (restored) {
       if (position.sequences.size() == records.size())
         for (std::size_t i = 0; i < records.size(); ++i) records[i]->continueAt(position.sequences[i]);

@@ -7,13 +7,14 @@
 #include <set>
 
 #include "dynamics/model_builder.hpp"
-#include "forces/geometry/mesh_io.hpp"
 #include "dynamics/rotation.hpp"
+#include "forces/geometry/mesh_io.hpp"
 #include "models/diagnostics.hpp"
 #include "scene/added_mass_reader.hpp"
 #include "scene/floating_reader.hpp"
 #include "scene/provider_readers.hpp"
 #include "scene/spec_reader.hpp"
+#include "scene/yard_reader.hpp"
 
 namespace yardsim::scene {
 
@@ -140,8 +141,14 @@ MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::st
     const YAML::Node m = n["mesh"];
     v.file = m.IsScalar() ? m.Scalar() : "";
     try {
-      if (v.file.empty()) throw forces::MeshError("expected a file name (OBJ or STL, relative to this YAML file)");
-      v.mesh = std::make_shared<const forces::TriangleMesh>(forces::readMesh((dir / v.file).lexically_normal().string()));
+      if (m.IsMap() && m["database"] && m["block"]) {  // a block's mesh from the yard database
+        v.file = m["block"].Scalar();
+        v.mesh = databaseBlockMesh(m["database"].Scalar(), v.file);
+      } else if (v.file.empty())
+        throw forces::MeshError("expected a file name (OBJ or STL, relative to this YAML file)");
+      else
+        v.mesh = std::make_shared<const forces::TriangleMesh>(
+            forces::readMesh((dir / v.file).lexically_normal().string()));
     } catch (const forces::MeshError& e) {
       r.fail(m, key + ".mesh", e.what());
     }

@@ -68,6 +68,19 @@ std::string resolvedListing(const Scene& s) {
     for (const auto& d : sys->spec.dampers) os << " damping:" << d.name;
     os << "\n";
   }
+  if (!s.database.empty()) {  // where each value from the yard database came from
+    os << "database " << s.database << "\n";
+    for (const auto& pv : s.provenance)
+      os << "  " << pv.key << " = " << pv.value << "  <- " << pv.source << "\n";
+  }
+  for (const auto& h : s.hookLoads) {  // cranes whose hook-load curve the run checks
+    os << "hook-load check " << h.crane << " (facility " << h.facility << ", from " << h.root
+       << "):";
+    for (const auto& [rope, parts] : h.ropes) os << " " << rope << " x" << parts;
+    os << "; curve";
+    for (const auto& [r, c] : h.curve) os << " " << r << " m: " << c << " N";
+    os << "\n";
+  }
   os << "recorder: ";
   if (s.record.interval > 0) {
     os << "every " << s.record.interval << " s, channels";

@@ -74,6 +74,28 @@ struct ReportSpec {
 
 struct MechanicalSystem;  // models/mechanical_systems.hpp
 
+// A crane of the yard database whose hook-load curve the run checks (run/hook_load_monitor.hpp):
+// the hook load is the sum of tension x parts over its hoist ropes (those hanging from one of its
+// bodies and holding a body outside it), the outreach the largest horizontal distance from its
+// root body (the one on world, e.g. the gantry) to a body a hoist rope hangs from.
+struct HookLoadCheck {
+  std::string crane;                               // the facility's instance path: GOC201
+  std::string facility;                            // its name in the database
+  std::vector<std::pair<double, double>> curve;    // (outreach m, capacity N), outreach ascending
+  std::string system;                              // the multibody model that holds its ropes
+  std::string root;                                // its root body: GOC201.gantry
+  std::vector<std::pair<std::string, int>> ropes;  // hoist rope full names and their parts
+  std::vector<std::string> hoists;                 // the bodies they hang from
+};
+
+// A value a scene took from the yard's database (scene/yard_reader.hpp), or a scene key that
+// overrode one: for `validate --print-resolved`.
+struct Provenance {
+  std::string key;     // full path: GOC201.lower_fore.EA, block.mass
+  std::string value;   // as used, with its unit
+  std::string source;  // "blocks row 1 'GT-BLOCK-920'", or "the scene (the database has ...)"
+};
+
 struct Scene {
   std::filesystem::path file;
   std::string name;
@@ -94,6 +116,11 @@ struct Scene {
   // the mechanics of every coupled model, merged and split into mechanically connected
   // systems (each becomes one multibody model)
   std::vector<std::shared_ptr<const MechanicalSystem>> systems;
+  // the yard database the scene names (`database:`): its file and schema ("" when none), and
+  // every value taken from it
+  std::string database;
+  std::vector<Provenance> provenance;
+  std::vector<HookLoadCheck> hookLoads;  // cranes of the database with a hook-load curve
 };
 
 }  // namespace yardsim::scene

@@ -5,15 +5,16 @@
 #include <set>
 #include <sstream>
 
+#include "models/port_types.hpp"
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/provider_readers.hpp"
 #include "scene/run_settings_reader.hpp"
-#include "scene/stiffness_guard.hpp"
-#include "models/port_types.hpp"
 #include "scene/sha256.hpp"
+#include "scene/stiffness_guard.hpp"
 #include "scene/yaml_source.hpp"
+#include "scene/yard_reader.hpp"
 
 namespace yardsim::scene {
 
@@ -38,11 +39,12 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
                                          "params",         "inputs",     "outputs",
                                          "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "report", "until", "seed", "integrator", "trace", "wp"};
+const std::vector<std::string> kRootKeys{"record",     "report", "until", "seed",
+                                         "integrator", "trace",  "wp",    "database"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
-const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
-                                              "placement", "description"};
+const std::vector<std::string> kComponentKeys{"type",   "include",   "coupled",    "facility",
+                                              "params", "placement", "description"};
 
 using Override = ParamOverride;
 using Overrides = ParamOverrides;
@@ -66,9 +68,12 @@ class Loader {
     scene->root.name = file.stem().string();
     scene->root.where = {file.string(), 1, 1};
     stack_.push_back(fs::weakly_canonical(file));
+    if (doc.IsMap() && doc["database"]) yard_.open(doc["database"], file, d_);
     Scope scope;
     fileBody(scene->root, doc, file, scope, overrides, true);
     readRunSettings(*scene, doc, file.string(), d_);
+    yard_.resolveLugPoints(scene->root, d_);
+    yard_.describe(*scene);
     stack_.pop_back();
     return scene;
   }
@@ -160,6 +165,7 @@ class Loader {
                  "hydrostatics, wind_loads, current_loads, damping");
       } else {
         inst.mechanics = resolveRefs(mech, scope, f, joinKey(kp, "mechanics"), d_);
+        yard_.expandMechanics(inst.mechanics, f, joinKey(kp, "mechanics"), inst.path, d_);
         inst.mechanicsWhere = markOf(mech, f);
         checkKeys(mech, mechanicsKeys(), f, joinKey(kp, "mechanics"), d_);
       }
@@ -174,12 +180,14 @@ class Loader {
       return false;
     }
     checkKeys(def, kComponentKeys, f, kp, d_);
-    const int kinds = int(bool(def["type"])) + int(bool(def["include"])) + int(bool(def["coupled"]));
+    const int kinds = int(bool(def["type"])) + int(bool(def["include"])) +
+                      int(bool(def["coupled"])) + int(bool(def["facility"]));
     if (kinds != 1) {
       d_.error(markOf(def, f), kp,
                kinds == 0 ? "missing required key: one of 'type' (an atomic model type), "
-                            "'include' (a file) or 'coupled' (an inline coupled model)"
-                          : "give only one of 'type', 'include' and 'coupled'");
+                            "'include' (a file), 'coupled' (an inline coupled model) or "
+                            "'facility' (a crane of the yard database)"
+                          : "give only one of 'type', 'include', 'coupled' and 'facility'");
       return false;
     }
     if (const YAML::Node p = def["placement"]) placement(c, p, f, joinKey(kp, "placement"));
@@ -209,12 +217,17 @@ class Loader {
       coupledBody(c, inl, f, dir, inner, overrides, joinKey(kp, "coupled"));
       return true;
     }
-    const YAML::Node inc = def["include"];
-    if (!inc.IsScalar()) {
+    // (include: file, or facility: name) => the file, a facility's particulars as parameters
+    std::optional<FacilityUse> facility;
+    if (def["facility"] &&
+        !(facility = yard_.facility(def["facility"], f, joinKey(kp, "facility"), d_)))
+      return false;
+    const YAML::Node inc = facility ? def["facility"] : def["include"];
+    if (!facility && !inc.IsScalar()) {
       d_.error(markOf(inc, f), joinKey(kp, "include"), "expected a file path");
       return false;
     }
-    const fs::path file = dir / inc.Scalar();
+    const fs::path file = facility ? facility->modelFile : dir / inc.Scalar();
     const fs::path canon = fs::weakly_canonical(file);
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] != canon) continue;
@@ -226,6 +239,9 @@ class Loader {
     }
     const auto doc = parse(file, markOf(inc, f), joinKey(kp, "include"));
     if (!doc) return false;
+    if (facility)
+      yard_.addParticulars(*facility, (*doc)["params"], c.path, markOf(inc, f),
+                           joinKey(kp, "facility"), overrides);
     c.source = file.string();
     stack_.push_back(canon);
     Scope own;  // an included file sees only its own params
@@ -436,6 +452,7 @@ class Loader {
 
   Diagnostics& d_;
   std::vector<fs::path> stack_;
+  SceneYard yard_;  // the yard database's keys (database:, from_db, catalogue, facility)
 };
 
 }  // namespace
@@ -459,6 +476,7 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   Loader loader(r.diagnostics);
   auto scene = loader.root(file, overrides);
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) completeHookLoadChecks(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);

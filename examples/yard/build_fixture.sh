@@ -2,7 +2,8 @@
 # Builds the yard database fixture from the examples' own data (docs/database.md):
 #   the goliath_turnover block (mass, inertia and 24 x 16 x 6 m box of examples/goliath_turnover/
 #   scene.yaml; its four lower-hoist lugs), its two goliath cranes GOC201/GOC202 (model file
-#   goliath_crane.yaml; hoist speed 0.083 m/s from the scene), and the hoist rope (EA 2.0e8 N,
+#   examples/yard/goliath_crane.yaml, stored relative to the database wherever it is written;
+#   hoist speed 0.083 m/s from the scene), and the hoist rope (EA 2.0e8 N,
 #   MBL 2.3e6 N per part from goliath_crane.yaml).
 # Usage: build_fixture.sh YARDSIM_EXECUTABLE OUT.sqlite
 # Figures not in the examples are marked nominal in docs/database.md: the rope's diameter and
@@ -37,7 +38,8 @@ OBJ
   --lug L201F:-9,-8,0:0,0,1:3.0e6 --lug L201A:-7,-8,0:0,0,1:3.0e6 \
   --lug L202F:7,-8,0:0,0,1:3.0e6 --lug L202A:9,-8,0:0,0,1:3.0e6
 "$yardsim" db --db "$db" import-rope-catalogue "$here/ropes.csv"
+model="$(realpath -m --relative-to="$(dirname "$db")" "$here/goliath_crane.yaml")"
 for crane in GOC201 GOC202; do
-  "$yardsim" db --db "$db" add-facility "$crane" --kind goliath --model goliath_turnover/goliath_crane.yaml \
+  "$yardsim" db --db "$db" add-facility "$crane" --kind goliath --model "$model" \
     --capacity 7.36e6 --hoist-speed 0.083 --curve "$here/goliath_hook_load.csv"
 done

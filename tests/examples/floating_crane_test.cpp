@@ -1,0 +1,97 @@
+// Regression test of examples/floating_crane (its rated_lift.yaml): the floating crane lifting
+// its rated load in calm water. Statics against the weights (the hoist's 16 parts carry the hook
+// and the load, the hull displaces the whole mass), the trim against the wall-sided hand
+// calculation of the README (the hung load acting at the tip sheaves), no heel (the lift is in
+// the centreline plane), and the 2 m hoist in time with the trim unchanged.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+
+#include "devs/simulator.hpp"
+#include "dynamics/model.hpp"
+#include "models/multibody/multibody_model.hpp"
+#include "scene/assembler.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/record_collector.hpp"
+
+using namespace yardsim;
+
+namespace {
+constexpr double kG = 9.81;
+
+// (model) => the channels' current values, by name
+struct Reader {
+  std::map<std::string, models::Channel> byName;
+  explicit Reader(const models::MultibodyModel& mb) {
+    std::vector<models::Channel> all;
+    mb.channels(all);
+    for (auto& c : all) byName.emplace(c.name, c);
+  }
+  double operator()(const std::string& name) const { return byName.at(name).read(); }
+};
+}  // namespace
+
+TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and heel") {
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
+                                       "/examples/floating_crane/rated_lift.yaml");
+  auto root = scene::assemble(*scene);
+  devs::Simulator sim(*root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  const auto& mb = static_cast<const models::MultibodyModel&>(*root->findComponent("mechanics"));
+  const Reader read(mb);
+  const dynamics::Model& m = mb.mechanics();
+  auto mass = [&](const char* b) { return m.inertias[m.bodyIndex(b)].mass; };
+
+  // 1. at rest in static equilibrium before the hoist starts
+  sim.runUntil(9.0);
+  const double hung = mass("FC.hook") + mass("load");
+  REQUIRE(hung == Approx(3.08e6));
+  CHECK(16.0 * read("FC.main_hoist.tension") == Approx(hung * kG).epsilon(1e-6));
+  double total = hung;
+  for (const char* b : {"FC.barge", "FC.ballast_aft_ps", "FC.ballast_aft_sb", "FC.ballast_fore_ps",
+                        "FC.ballast_fore_sb", "FC.aframe", "FC.boom"})
+    total += mass(b);
+  CHECK(read("FC.hull.displacement") == Approx(total).epsilon(1e-6));
+
+  // (masses in the barge frame, the hung load at the tip sheaves; the boom at its settled angle)
+  // => trim of a wall-sided box (below z = 5 m: x from -60 to 54 m, 46 m wide):
+  // x_G - x_c = tan(theta) (GM_L + BM_L tan^2(theta) / 2)
+  const double q = read("FC.luff.q");
+  CHECK(q == Approx(65.0 * M_PI / 180).margin(0.01));  // the luffing servo droops a little
+  const double tipX = 44 + 100 * std::cos(q), tipZ = 12 + 100 * std::sin(q);
+  const double items[][3] = {{7.5e6, -8, 5},
+                             {3.0e6, -48, 3},
+                             {3.0e6, -48, 3},
+                             {1.0e5, 45, 3},
+                             {1.0e5, 45, 3},
+                             {6.0e5, 36, 30},
+                             {1.1e6, 44 + 50 * std::cos(q), 12 + 50 * std::sin(q)},
+                             {hung, tipX, tipZ}};
+  double M = 0, mx = 0, mz = 0;
+  for (const auto& it : items) {
+    M += it[0];
+    mx += it[0] * it[1];
+    mz += it[0] * it[2];
+  }
+  REQUIRE(M == Approx(total));
+  const double L = 114, B = 46, rho = 1025, xc = -3.0;
+  const double T = M / (rho * L * B), BM = L * L / (12 * T), GM = T / 2 + BM - mz / M;
+  double t = 0;
+  for (int k = 0; k < 50; ++k) t = (mx / M - xc) / (GM + 0.5 * BM * t * t);
+  const double trim = std::atan(t);
+  INFO("trim " << read("FC.hull.trim") << " rad, hand " << trim << " rad");
+  CHECK(read("FC.hull.trim") == Approx(trim).epsilon(2e-3));
+  CHECK(std::abs(read("FC.hull.heel")) < 1e-6);
+
+  // 2. the hoist lifts the load 2 m at 0.05 m/s from t = 10 s
+  const double z0 = read("load.z");
+  sim.runUntil(scene->until);
+  std::map<std::string, double> finished;
+  for (const auto& r : rec.ofKind("out"))
+    if (r.port == "finished") finished[r.model] = r.t;
+  REQUIRE(finished.count("lift") == 1);
+  CHECK(finished.at("lift") == Approx(10.0 + 2.0 / 0.05).margin(1e-6));
+  CHECK(read("load.z") - z0 == Approx(2.0).margin(0.03));
+  CHECK(std::abs(read("FC.hull.trim") - trim) < 0.02 * trim);
+}

@@ -28,12 +28,15 @@ Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * inner, 3 * inner);
   for (int s = 0; s < n; ++s) {
     // (taut segment from node s to s + 1) => EA/l u u^T + T/|d| (I - u u^T)
+    // (a slack segment) => 1e-3 of the axial stiffness along it: Newton's matrix stays regular
+    // while a guess has slack segments on the bed, and the step still pulls them taut
     const Vector3 d = r.col(s + 1) - r.col(s);
     const double len = d.norm(), strain = len / l - 1.0;
-    if (strain <= 0.0) continue;
+    if (!(len > 0.0)) continue;
     const Vector3 u = d / len;
     const Matrix3 uu = u * u.transpose();
-    const Matrix3 k = p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu);
+    const Matrix3 k = strain > 0.0 ? Matrix3(p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu))
+                                   : Matrix3(1e-3 * p.ea / l * uu);
     const int a = s - 1, b = s;  // inner indices of nodes s and s + 1 (-1 or inner: held)
     if (a >= 0) K.block<3, 3>(3 * a, 3 * a) += k;
     if (b < inner) K.block<3, 3>(3 * b, 3 * b) += k;

@@ -46,7 +46,8 @@ void resetState(BuiltMechanics& out) {
 
 // (built mechanics of the declared bodies) => the providers' own bodies (lumped-line nodes) added
 // to the builder, placed from their attachments' world points at q0; the bodies added
-std::vector<MechanicsSpec::Body> providerBodies(const MechanicsSpec& spec, const BuiltMechanics& out,
+std::vector<MechanicsSpec::Body> providerBodies(const MechanicsSpec& spec,
+                                                const BuiltMechanics& out,
                                                 dynamics::ModelBuilder& builder) {
   std::vector<MechanicsSpec::Body> added;
   const auto& m = out.model;
@@ -59,7 +60,8 @@ std::vector<MechanicsSpec::Body> providerBodies(const MechanicsSpec& spec, const
     std::vector<dynamics::Vector3> at_W;
     for (const auto& [body, p_B] : p.attachments) {
       const int b = body == "world" ? 0 : m.bodyIndex(body);
-      if (b < 0) throw dynamics::ModelError(p.kind + " '" + p.name + "': unknown body '" + body + "'");
+      if (b < 0)
+        throw dynamics::ModelError(p.kind + " '" + p.name + "': unknown body '" + body + "'");
       at_W.push_back(dynamics::pointPosition(data, b, p_B));
     }
     for (auto& b : p.bodies(p.name, at_W)) {

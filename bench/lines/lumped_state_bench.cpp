@@ -25,8 +25,8 @@ constexpr double kUntil = 20.0, kStep = 0.05;
 
 // (segments per line, integrator) => the scene: 8 lines spread at 45 deg, 290 m out, 40 m down
 std::string scene(int segments, const std::string& method) {
-  std::string s = "schema_version: 1\nintegrator: {method: " + method + ", dt: " +
-                  std::to_string(kStep) + "}\nstiffness_check: off\n" + R"(mechanics:
+  std::string s = "schema_version: 1\nintegrator: {method: " + method +
+                  ", dt: " + std::to_string(kStep) + ", stiffness_check: off}\n" + R"(mechanics:
   gravity: [0, 0, 0]
   bodies:
     slide_x: {parent: world, joint: {type: prismatic, axis: [1, 0, 0]}, mass: 1.0, inertia: [1, 1, 1]}
@@ -50,8 +50,8 @@ std::string scene(int segments, const std::string& method) {
 // (state.range(0): segments; method) => one whole run per iteration
 void runLines(benchmark::State& state, const std::string& method) {
   const int segments = static_cast<int>(state.range(0));
-  const fs::path dir = fs::temp_directory_path() / ("yardsim-bench-lines-" + method +
-                                                    std::to_string(segments));
+  const fs::path dir =
+      fs::temp_directory_path() / ("yardsim-bench-lines-" + method + std::to_string(segments));
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << scene(segments, method);
   auto loaded = scene::loadSceneOrThrow(dir / "s.yaml");
@@ -70,11 +70,20 @@ void runLines(benchmark::State& state, const std::string& method) {
   fs::remove_all(dir);
 }
 
-void BM_LumpedLinesHht(benchmark::State& state) { runLines(state, "hht"); }
-BENCHMARK(BM_LumpedLinesHht)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond)
+void BM_LumpedLinesHht(benchmark::State& state) {
+  runLines(state, "hht");
+}
+BENCHMARK(BM_LumpedLinesHht)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-void BM_LumpedLinesCvode(benchmark::State& state) { runLines(state, "cvode_bdf"); }
+void BM_LumpedLinesCvode(benchmark::State& state) {
+  runLines(state, "cvode_bdf");
+}
 BENCHMARK(BM_LumpedLinesCvode)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

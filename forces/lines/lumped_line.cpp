@@ -147,7 +147,8 @@ void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd&
   for (int i = 0; i <= n; ++i) {
     const double ln = nodeLength(i), z = r(2, i);
     f(2, i) -= w_ * ln;
-    if (p_.seabed && z < p_.seabedZ) f(2, i) += (p_.seabedZ - z) * p_.bedStiffness * p_.diameter * ln;
+    if (p_.seabed && z < p_.seabedZ)
+      f(2, i) += (p_.seabedZ - z) * p_.bedStiffness * p_.diameter * ln;
   }
 }
 

@@ -25,10 +25,10 @@ std::vector<LumpedNodeBody> lumpedLineNodes(const LumpedLine& line, const std::s
   // lies on it; its points at the nodes' unstretched arc lengths
   const Vector3 d = pB - pA;
   const double xf = std::hypot(d.x(), d.y());
-  CatenaryParameters c{p.length, p.ea, line.weightPerLength(),
-                       p.seabed && std::abs(pA.z() - p.seabedZ) < 1e-9 * p.length &&
-                           line.weightPerLength() > 0.0,
-                       0.0};
+  CatenaryParameters c{
+      p.length, p.ea, line.weightPerLength(),
+      p.seabed && std::abs(pA.z() - p.seabedZ) < 1e-9 * p.length && line.weightPerLength() > 0.0,
+      0.0};
   CatenarySolution sol;
   const bool curved = xf > 1e-9 * p.length && catenaryParameterError(c)[0] == '\0';
   if (curved) sol = solveCatenary(c, xf, d.z());

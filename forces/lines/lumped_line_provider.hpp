@@ -87,8 +87,8 @@ class LumpedLineProvider final : public ForceProvider {
 
   Attachment anchor_, fairlead_;
   std::shared_ptr<const LumpedLine> line_;
-  dynamics::Vector3 gravity_;   // the model's, m/s^2
-  std::vector<int> bodies_;     // per node: its body (inner nodes), -1 at the ends
+  dynamics::Vector3 gravity_;  // the model's, m/s^2
+  std::vector<int> bodies_;    // per node: its body (inner nodes), -1 at the ends
   std::vector<int> idxQ_, idxV_;
   std::vector<double> masses_;  // per node: the body's mass (inner nodes), kg
 };

@@ -35,8 +35,9 @@ Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
     if (!(len > 0.0)) continue;
     const Vector3 u = d / len;
     const Matrix3 uu = u * u.transpose();
-    const Matrix3 k = strain > 0.0 ? Matrix3(p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu))
-                                   : Matrix3(1e-3 * p.ea / l * uu);
+    const Matrix3 k =
+        strain > 0.0 ? Matrix3(p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu))
+                     : Matrix3(1e-3 * p.ea / l * uu);
     const int a = s - 1, b = s;  // inner indices of nodes s and s + 1 (-1 or inner: held)
     if (a >= 0) K.block<3, 3>(3 * a, 3 * a) += k;
     if (b < inner) K.block<3, 3>(3 * b, 3 * b) += k;
@@ -47,7 +48,8 @@ Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
   }
   if (p.seabed)
     for (int i = 0; i < inner; ++i)
-      if (r(2, i + 1) < p.seabedZ) K(3 * i + 2, 3 * i + 2) += p.bedStiffness * p.diameter * line.nodeLength(i + 1);
+      if (r(2, i + 1) < p.seabedZ)
+        K(3 * i + 2, 3 * i + 2) += p.bedStiffness * p.diameter * line.nodeLength(i + 1);
   return K;
 }
 

@@ -163,10 +163,10 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
 MechanicsSpec::ProviderSpec readMooring(const std::string&, const YAML::Node& n,
                                         const spec::Reader& r, const std::string& key) {
   MechanicsSpec::ProviderSpec out;
-  r.keys(n,
-         {"anchor", "fairlead", "model", "length", "EA", "weight", "mass", "diameter",
-          "water_density", "gravity", "seabed", "friction", "segments", "damping", "damping_ratio",
-          "cdn", "cdt", "can", "cat", "bed_stiffness", "bed_damping"},
+  r.keys(n, {"anchor",   "fairlead",      "model",         "length",  "EA",     "weight",
+             "mass",     "diameter",      "water_density", "gravity", "seabed", "friction",
+             "segments", "damping",       "damping_ratio", "cdn",     "cdt",    "can",
+             "cat",      "bed_stiffness", "bed_damping"},
          key);
   if (!n.IsMap()) return out;
   out.attachments.push_back(readEnd(r, n, "anchor", key));

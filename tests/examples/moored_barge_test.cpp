@@ -145,5 +145,6 @@ TEST_CASE("moored barge on lumped lines: at rest where the quasi-static catenari
   CHECK(std::abs(last(lumped, "barge.x[m]")) < 1e-6);
   CHECK(std::abs(last(lumped, "barge.y[m]")) < 1e-6);
   // (at rest from the start) => the lines and the barge do not move: the draft of the first row
-  CHECK(last(lumped, "hull.draft[m]") == Approx(lumped.rows.front()[lumped.column("hull.draft[m]")]).margin(1e-3));
+  CHECK(last(lumped, "hull.draft[m]") ==
+        Approx(lumped.rows.front()[lumped.column("hull.draft[m]")]).margin(1e-3));
 }

@@ -136,7 +136,8 @@ TEST_CASE("the moored barge restarted in waves equals the whole run (the catenar
   checkConcatenation(whole, restarted, 70.0);
 }
 
-TEST_CASE("a buoy on lumped mooring lines restarted mid-swing equals the whole run (nodes in q, v)") {
+TEST_CASE(
+    "a buoy on lumped mooring lines restarted mid-swing equals the whole run (nodes in q, v)") {
   // (two lumped lines of 10 segments: their 18 inner nodes are bodies, so their positions and
   // velocities are part of the multibody state's q and v and of its checkpoint) => under CVODE
   // BDF. (Under HHT the restarted run differs in the last digit: the whole run keeps reusing
@@ -155,8 +156,10 @@ mechanics:
       mass: 2.0e5
       inertia: [1, 1, 1]
   mooring:
-    west: {model: lumped, anchor: [-300, 0, 0], fairlead: {body: buoy}, )" + line + R"(}
-    east: {model: lumped, anchor: [300, 0, 0], fairlead: {body: buoy}, )" + line + R"(}
+    west: {model: lumped, anchor: [-300, 0, 0], fairlead: {body: buoy}, )" +
+                                                      line + R"(}
+    east: {model: lumped, anchor: [300, 0, 0], fairlead: {body: buoy}, )" +
+                                                      line + R"(}
 record: {interval: 0.1, channels: ["buoy.x", "west.*", "east.*", "mechanics.energy_balance"]}
 until: 20
 )");

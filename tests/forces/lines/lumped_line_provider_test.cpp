@@ -29,20 +29,24 @@ namespace {
 // (2400 N/m in water), EA 1.2e9 N; the anchor on the bed at the origin, the fairlead 300 m away
 // and 39 m up (the moored barge's lines)
 constexpr double kMass = 282.21, kDiameter = 0.216, kRho = 1025.0, kG = 9.81;
-double weight() { return (kMass - kRho * std::numbers::pi / 4.0 * kDiameter * kDiameter) * kG; }
+double weight() {
+  return (kMass - kRho * std::numbers::pi / 4.0 * kDiameter * kDiameter) * kG;
+}
 
 // (segments, integrator, line keys, fairlead on a fixed post or on a slider with v0) => a scene
 std::string hanging(int segments, const std::string& integrator, const std::string& extra = "",
                     const std::string& post = "joint: {type: fixed}", double until = 40.0) {
   return R"(schema_version: 1
-integrator: )" + integrator +
+integrator: )" +
+         integrator +
          R"(
 mechanics:
   gravity: [0, 0, -9.81]
   bodies:
     post:
       parent: world
-      )" + post + R"(
+      )" +
+         post + R"(
       placement: {xyz: [300, 0, 39]}
       mass: 2.0e5
       inertia: [1, 1, 1]
@@ -51,8 +55,8 @@ mechanics:
            length: 314, EA: 1.2e9, mass: 282.21, diameter: 0.216, segments: )" +
          std::to_string(segments) + extra + R"(}
 record: {interval: 0.1, channels: ["line.*", "post.*", "mechanics.energy_balance", "mechanics.work", "mechanics.energy"]}
-until: )" + std::to_string(until) +
-         "\n";
+until: )" +
+         std::to_string(until) + "\n";
 }
 
 // (scene text) => its timeseries.csv after a run
@@ -119,32 +123,39 @@ TEST_CASE("lumped line: at rest it reproduces the catenary fairlead tension and 
 
 // (line keys, integrator, v0 of the buoy, until) => a 200 t buoy on a surge slider between two
 // lumped lines whose anchors are 300 m either side on the bed, released at v0
-std::string between(const std::string& extra, const std::string& integrator, double v0, double until) {
-  const std::string line = "length: 314, EA: 1.2e9, mass: 282.21, diameter: 0.216, segments: 10" + extra;
+std::string between(const std::string& extra, const std::string& integrator, double v0,
+                    double until) {
+  const std::string line =
+      "length: 314, EA: 1.2e9, mass: 282.21, diameter: 0.216, segments: 10" + extra;
   return "schema_version: 1\nintegrator: " + integrator + R"(
 mechanics:
   gravity: [0, 0, -9.81]
   bodies:
     buoy:
       parent: world
-      joint: {type: prismatic, axis: [1, 0, 0], v0: )" + std::to_string(v0) + R"(}
+      joint: {type: prismatic, axis: [1, 0, 0], v0: )" +
+         std::to_string(v0) + R"(}
       placement: {xyz: [0, 0, 39]}
       mass: 2.0e5
       inertia: [1, 1, 1]
   mooring:
-    west: {model: lumped, anchor: [-300, 0, 0], fairlead: {body: buoy}, )" + line + R"(}
-    east: {model: lumped, anchor: [300, 0, 0], fairlead: {body: buoy}, )" + line + R"(}
+    west: {model: lumped, anchor: [-300, 0, 0], fairlead: {body: buoy}, )" +
+         line + R"(}
+    east: {model: lumped, anchor: [300, 0, 0], fairlead: {body: buoy}, )" +
+         line + R"(}
 record: {interval: 0.1, channels: ["buoy.x", "west.*", "east.*", "mechanics.energy_balance", "mechanics.work", "mechanics.energy"]}
-until: )" + std::to_string(until) + "\n";
+until: )" +
+         std::to_string(until) + "\n";
 }
 
 TEST_CASE("lumped line: the energy balance closes without dissipation and with it") {
   const double kinetic0 = 0.5 * 2.0e5 * 0.25;  // J: the buoy released at 0.5 m/s
   SECTION("no damping, no drag, no bed: only the integrator's error") {
     testing::SceneDir dir;
-    const auto csv = simulate(
-        dir, between(", damping: 0, cdn: 0, cdt: 0, seabed: false", "{method: rk4, dt: 0.002}", 0.5, 20.0),
-        20.0);
+    const auto csv = simulate(dir,
+                              between(", damping: 0, cdn: 0, cdt: 0, seabed: false",
+                                      "{method: rk4, dt: 0.002}", 0.5, 20.0),
+                              20.0);
     const int b = csv.column("mechanics.energy_balance[J]"), w = csv.column("mechanics.work[J]");
     REQUIRE(b > 0);
     double drift = 0.0;
@@ -168,7 +179,8 @@ TEST_CASE("lumped line: the energy balance closes without dissipation and with i
       const int b = csv.column("mechanics.energy_balance[J]"), w = csv.column("mechanics.work[J]");
       REQUIRE(b > 0);
       drifts[k] = 0.0;
-      for (const auto& r : csv.rows) drifts[k] = std::max(drifts[k], std::abs(r[b] - csv.rows[0][b]));
+      for (const auto& r : csv.rows)
+        drifts[k] = std::max(drifts[k], std::abs(r[b] - csv.rows[0][b]));
       dissipated = -csv.rows.back()[w];
     }
     INFO("dissipated " << dissipated << " J, largest drift " << drifts[0] << " J at 2 ms, "
@@ -181,8 +193,10 @@ TEST_CASE("lumped line: the energy balance closes without dissipation and with i
 
 TEST_CASE("lumped line: released off its rest the moored buoy settles back to it") {
   testing::SceneDir rest, dir;
-  const auto still = simulate(rest, between(", cdn: 2.4", "{method: hht, dt: 0.05}", 0.0, 1.0), 1.0);
-  const auto csv = simulate(dir, between(", cdn: 2.4", "{method: hht, dt: 0.05}", 1.0, 300.0), 300.0);
+  const auto still =
+      simulate(rest, between(", cdn: 2.4", "{method: hht, dt: 0.05}", 0.0, 1.0), 1.0);
+  const auto csv =
+      simulate(dir, between(", cdn: 2.4", "{method: hht, dt: 0.05}", 1.0, 300.0), 300.0);
   const int x = csv.column("buoy.x[m]"), t = csv.column("west.fairlead_tension[N]");
   REQUIRE(x > 0);
   double amplitude = 0.0, late = 0.0;
@@ -202,8 +216,8 @@ TEST_CASE("lumped line: implicit methods step the nodes at 0.05 s and rest where
   const auto c = forces::solveCatenary(chain, 290.0, 39.0);
   const double exact = std::hypot(c.hf, c.vf);
   testing::SceneDir dirRk4;
-  const double rk4 = meanFrom(simulate(dirRk4, hanging(20, rk4For(20)), 40.0),
-                              "line.fairlead_tension[N]", 30.0);
+  const double rk4 =
+      meanFrom(simulate(dirRk4, hanging(20, rk4For(20)), 40.0), "line.fairlead_tension[N]", 30.0);
   for (const std::string method : {"hht", "generalized_alpha", "cvode_bdf"}) {
     testing::SceneDir dir;
     const auto csv = simulate(dir, hanging(20, "{method: " + method + ", dt: 0.05}"), 40.0);
@@ -216,14 +230,17 @@ TEST_CASE("lumped line: implicit methods step the nodes at 0.05 s and rest where
 TEST_CASE("lumped line: the stiffness guard sees the highest axial mode of the segments") {
   for (int n : {10, 20}) {  // (no bed: its damping's real eigenvalue, 200 /s, would compete)
     testing::SceneDir dir;
-    auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", hanging(n, rk4For(n), ", seabed: false")));
+    auto scene =
+        scene::loadSceneOrThrow(dir.write("s.yaml", hanging(n, rk4For(n), ", seabed: false")));
     REQUIRE(scene->systems.size() == 1);
     REQUIRE(scene->systems[0]->built);
     const auto e = mechanics::estimateStiffness(*scene->systems[0]->built);
     // (N - 1 masses m' between springs EA / l, both ends held) => 2 sqrt(EA / (l m')) sin(pi
     // (N - 1) / (2 N)), the highest axial mode of the chain
-    const double l = 314.0 / n, m = (kMass + kRho * std::numbers::pi / 4.0 * kDiameter * kDiameter) * l;
-    const double axial = 2.0 * std::sqrt(1.2e9 / l / m) * std::sin(std::numbers::pi * (n - 1) / (2.0 * n));
+    const double l = 314.0 / n,
+                 m = (kMass + kRho * std::numbers::pi / 4.0 * kDiameter * kDiameter) * l;
+    const double axial =
+        2.0 * std::sqrt(1.2e9 / l / m) * std::sin(std::numbers::pi * (n - 1) / (2.0 * n));
     INFO(n << " segments: omega_max " << e.omegaMax << " rad/s, axial " << axial << " rad/s, body '"
            << e.body << "', element '" << e.element << "'");
     CHECK(e.omegaMax == Approx(axial).epsilon(0.03));

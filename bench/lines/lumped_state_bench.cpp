@@ -78,7 +78,6 @@ BENCHMARK(BM_LumpedLinesHht)
     ->Arg(5)
     ->Arg(10)
     ->Arg(20)
-    ->Arg(40)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -17,7 +17,8 @@ int Joint::nq() const {
     case JointType::Prismatic: return 1;
     case JointType::Cylindrical:
     case JointType::Universal: return 2;
-    case JointType::Planar: return 3;
+    case JointType::Planar:
+    case JointType::Translation: return 3;
     case JointType::Spherical: return 4;
     case JointType::Free: return 7;
   }
@@ -32,6 +33,7 @@ int Joint::nv() const {
     case JointType::Cylindrical:
     case JointType::Universal: return 2;
     case JointType::Planar:
+    case JointType::Translation:
     case JointType::Spherical: return 3;
     case JointType::Free: return 6;
   }
@@ -48,6 +50,7 @@ std::string_view jointTypeName(JointType type) {
     case JointType::Spherical: return "spherical";
     case JointType::Planar: return "planar";
     case JointType::Free: return "free";
+    case JointType::Translation: return "translation";
   }
   return "?";
 }
@@ -62,6 +65,7 @@ Transform jointTransform(const Joint& j, const double* q) {
     case JointType::Spherical: return {quaternionToMatrix(q), Vector3::Zero()};
     case JointType::Planar: return {planarRotation(q[2]), Vector3(q[0], q[1], 0.0)};
     case JointType::Free: return {quaternionToMatrix(q + 3), Vector3(q[0], q[1], q[2])};
+    case JointType::Translation: return {Matrix3::Identity(), Vector3(q[0], q[1], q[2])};
   }
   return {};
 }
@@ -90,6 +94,7 @@ void jointMotionSubspace(const Joint& j, const double* q, MotionSubspace& S) {
       break;
     }
     case JointType::Free: S.setIdentity(); break;
+    case JointType::Translation: S.bottomLeftCorner<3, 3>().setIdentity(); break;
   }
 }
 

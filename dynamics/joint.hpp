@@ -11,7 +11,7 @@
 
 namespace yardsim::dynamics {
 
-enum class JointType { Fixed, Revolute, Prismatic, Cylindrical, Universal, Spherical, Planar, Free };
+enum class JointType { Fixed, Revolute, Prismatic, Cylindrical, Universal, Spherical, Planar, Free, Translation };
 
 /// The motion subspace S (6 x nv, child frame) of one joint; at most 6 columns, no heap.
 using MotionSubspace = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>;
@@ -39,6 +39,9 @@ struct Joint {
   /// 6-DOF floating joint; q = (position of the child origin in the joint frame, quaternion (w, x, y, z)),
   /// v = (angular velocity, velocity of the child origin), both in the child frame.
   static Joint free() { return {JointType::Free, Vector3::UnitZ(), Vector3::UnitY()}; }
+  /// 3-DOF translation without rotation (a point mass: a lumped line's node); q = position of the
+  /// child origin in the joint frame, v = dq/dt (child frame = joint frame orientation).
+  static Joint translation() { return {JointType::Translation, Vector3::UnitZ(), Vector3::UnitY()}; }
 
   int nq() const;
   int nv() const;

@@ -124,10 +124,17 @@ struct MechanicsSpec {
   using ProviderBuild = std::function<std::unique_ptr<forces::ForceProvider>(
       const std::string& name, const dynamics::Model& model,
       const std::vector<forces::Attachment>& at)>;
+  // Bodies a provider owns (a lumped line's inner nodes, forces/lines/lumped_line_provider.hpp):
+  // (its full name, its attachments' world points at the declared bodies' q0) => bodies added to
+  // the system's tree after the declared ones, each with its q0 and v0. Their states are then
+  // part of q and v like any body's: integrated, linearised by the stiffness guard, checkpointed.
+  using ProviderBodies = std::function<std::vector<Body>(
+      const std::string& name, const std::vector<dynamics::Vector3>& at_W)>;
   struct ProviderSpec {
     std::string kind, name;  // kind: the mechanics key that declared it (springs, ...)
     std::vector<Point> attachments;
     ProviderBuild build;
+    ProviderBodies bodies = {};  // empty: the provider owns no body
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;

@@ -130,4 +130,26 @@ double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r) const {
   return e;
 }
 
+void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const {
+  // (segments, weight, bed springs) => -dV/dr, the elastic parts of nodeForces without rates
+  const int n = p_.segments;
+  f.setZero();
+  for (int i = 0; i < n; ++i) {
+    const Vector3 d = r.col(i + 1) - r.col(i);
+    const double len = d.norm();
+    const double strain = len / l_ - 1.0;
+    if (strain > 0.0) {
+      const Vector3 pull = p_.ea * strain / len * d;
+      f.col(i) += pull;
+      f.col(i + 1) -= pull;
+    }
+  }
+  for (int i = 0; i <= n; ++i) {
+    const double ln = nodeLength(i), z = r(2, i);
+    f(2, i) -= w_ * ln;
+    if (p_.seabed && z < p_.seabedZ)
+      f(2, i) += (p_.seabedZ - z) * p_.bedStiffness * p_.diameter * ln;
+  }
+}
+
 }  // namespace yardsim::forces

@@ -12,9 +12,9 @@
 // with Coulomb friction mu N against the horizontal velocity (linear below a regularizing
 // speed). Each node's mass is mu l_n plus the added mass rho V [Can (I - q q^T) + Cat q q^T].
 // All world frame, SI units. This is the node-force evaluation as a pure function of node
-// positions and velocities: the nodes are not yet part of a multibody state (the mechanics
-// issue wires them into the integrator); the end nodes' forces are what the attached bodies
-// (anchor, fairlead) would feel, their own weight share included.
+// positions and velocities; lumped_line_provider.hpp makes the inner nodes bodies of the
+// multibody tree (their states integrated with the rest); the end nodes' forces are what the
+// attached bodies (anchor, fairlead) feel, their own weight share included.
 #include <string>
 #include <vector>
 
@@ -72,6 +72,10 @@ class LumpedLine {
   void nodeMass(const Eigen::Matrix3Xd& r, std::vector<dynamics::Matrix3>& m) const;
   // (r) => strain energy of the taut segments + net weight w l_n z + bed springs, J
   double potentialEnergy(const Eigen::Matrix3Xd& r) const;
+  // (r) => f = -dV/dr, the conservative part of nodeForces (the segments' EA e, the net weight,
+  // the bed springs), N, sized 3 x nodes(); nodeForces minus it is what dissipates or comes from
+  // the flow (internal and bed damping, friction, drag, fluid inertia). Allocation-free.
+  void conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const;
 
  private:
   // (r, node) => unit tangent: along the chord of its neighbours (the end segment at an end)

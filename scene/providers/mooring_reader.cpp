@@ -1,12 +1,16 @@
-// The `mooring:` key of a `mechanics:` block (docs/scenes.md): quasi-static elastic catenary lines
-// (forces/lines/catenary_line.hpp) from an anchor to a fairlead on a body, with their channels:
-// fairlead and anchor tensions and angles, the horizontal tension, the touchdown point and the
-// laid length.
+// The `mooring:` key of a `mechanics:` block (docs/scenes.md, docs/lines.md): quasi-static elastic
+// catenary lines (forces/lines/catenary_line.hpp) from an anchor to a fairlead on a body, with
+// their channels: fairlead and anchor tensions and angles, the horizontal tension, the touchdown
+// point and the laid length; or, with `model: lumped`, lumped-mass lines
+// (forces/lines/lumped_line_provider.hpp) whose inner nodes are bodies of the system (channels:
+// fairlead and anchor tensions, laid length; the nodes' positions are their bodies' channels).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "dynamics/kinematics.hpp"
 #include "forces/lines/catenary_line.hpp"
+#include "forces/lines/lumped_line_provider.hpp"
 #include "forces/provider_outputs.hpp"
 #include "scene/providers/reader_support.hpp"
 
@@ -64,20 +68,122 @@ std::vector<ProviderOutput> mooringOutputs(const CatenaryLine& l) {
   };
 }
 
-// (entry {anchor, fairlead, length, EA, weight | mass + diameter, water_density, seabed,
-// friction}) => a CatenaryLine
+// (lumped line) => its channels, from one node-force evaluation at the committed state
+std::vector<ProviderOutput> lumpedOutputs(const forces::LumpedLineProvider& l) {
+  return {
+      {"fairlead_tension", "N", [&l](const Stage& s) { return l.fairleadTension(s); }},
+      {"anchor_tension", "N", [&l](const Stage& s) { return l.anchorTension(s); }},
+      {"laid_length", "m", [&l](const Stage& s) { return l.laidLength(s); }},
+  };
+}
+
+// (entry with model: lumped, its ends read) => a LumpedLineProvider and its node bodies: {length,
+// EA, mass + diameter, segments, damping | damping_ratio, cdn, cdt, can, cat, water_density,
+// gravity, seabed, friction, bed_stiffness, bed_damping}
+void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& key,
+                MechanicsSpec::ProviderSpec& out) {
+  forces::LumpedLineProperties p;
+  p.length = r.number(n["length"], key + ".length", 1.0);
+  if (!n["length"]) r.fail(n, key, "missing required key 'length' (unstretched, m)");
+  p.ea = r.number(n["EA"], key + ".EA", 1.0);
+  if (!n["EA"]) r.fail(n, key, "missing required key 'EA' (N): a lumped line is elastic");
+  if (n["weight"] || !n["mass"] || !n["diameter"])
+    r.fail(n["weight"] ? n["weight"] : n, key,
+           "a lumped line needs 'mass' (kg/m in air) and 'diameter' (m), not 'weight'");
+  p.massPerLength = r.number(n["mass"], key + ".mass", 1.0);
+  p.diameter = r.number(n["diameter"], key + ".diameter", 0.1);
+  const double segments = r.number(n["segments"], key + ".segments", 20.0);
+  if (!(segments >= 1.0 && segments <= 10000.0 && segments == std::floor(segments)))
+    r.fail(n["segments"], key + ".segments", "expected a whole number of segments, 1 to 10000");
+  p.segments = static_cast<int>(std::clamp(segments, 1.0, 10000.0));
+  // (damping in N s per unit strain rate, or a fraction of a segment's critical damping)
+  if (n["damping"] && n["damping_ratio"])
+    r.fail(n["damping"], key + ".damping", "give either damping (N s) or damping_ratio");
+  p.damping = n["damping"] ? nonNegative(r, n["damping"], key + ".damping", 0.0)
+                           : -nonNegative(r, n["damping_ratio"], key + ".damping_ratio", 0.5);
+  p.cdn = nonNegative(r, n["cdn"], key + ".cdn", 1.2);
+  p.cdt = nonNegative(r, n["cdt"], key + ".cdt", 0.05);
+  p.can = nonNegative(r, n["can"], key + ".can", 1.0);
+  p.cat = nonNegative(r, n["cat"], key + ".cat", 0.0);
+  p.waterDensity = nonNegative(r, n["water_density"], key + ".water_density", 1025.0);
+  p.gravity = nonNegative(r, n["gravity"], key + ".gravity", 9.81);
+  const bool worldAnchor = out.attachments[0].first == "world";
+  const double area = 0.25 * M_PI * p.diameter * p.diameter;
+  p.seabed = worldAnchor && p.massPerLength > p.waterDensity * area;
+  if (const YAML::Node s = n["seabed"]) {
+    if (!s.IsScalar() || !YAML::convert<bool>::decode(s, p.seabed))
+      r.fail(s, key + ".seabed", "expected true or false");
+    else if (p.seabed && !worldAnchor)
+      r.fail(s, key + ".seabed", "a line on the sea bed needs its anchor in the world");
+  }
+  p.seabedZ = out.attachments[0].second.z();  // the bed through the anchor
+  p.bedStiffness = nonNegative(r, n["bed_stiffness"], key + ".bed_stiffness", 3e6);
+  p.bedDamping = nonNegative(r, n["bed_damping"], key + ".bed_damping", 3e5);
+  p.bedFriction = nonNegative(r, n["friction"], key + ".friction", 0.0);
+  if (n["friction"] && !p.seabed)
+    r.fail(n["friction"], key + ".friction", "friction acts on the sea bed: set seabed: true");
+  try {
+    forces::LumpedLine check(p, key);
+  } catch (const std::invalid_argument& e) {
+    r.fail(n, key, e.what());
+    return;
+  }
+  // (full name, ends at q0) => the inner nodes: point masses on translation joints from the world
+  out.bodies = [p](const std::string& name, const std::vector<dynamics::Vector3>& at) {
+    const forces::LumpedLine line(p, name);
+    std::vector<MechanicsSpec::Body> bodies;
+    for (const auto& node : forces::lumpedLineNodes(line, name, at.at(0), at.at(1))) {
+      MechanicsSpec::Body b;
+      b.name = b.jointName = node.name;
+      b.parent = "world";
+      b.joint = dynamics::Joint::translation();
+      b.X_PJ = dynamics::Transform::identity();
+      b.mass = node.mass;
+      // (a point mass; the translation joint never turns it) => the inertia of a sphere of the
+      // line's diameter, only to keep the body's inertia positive definite
+      b.inertia = 0.1 * node.mass * p.diameter * p.diameter * dynamics::Matrix3::Identity();
+      b.q0 = {node.p_W.x(), node.p_W.y(), node.p_W.z()};
+      b.visual.shape = MechanicsSpec::Visual::Shape::Sphere;
+      b.visual.size = dynamics::Vector3(p.diameter, 0.0, 0.0);
+      bodies.push_back(std::move(b));
+    }
+    return bodies;
+  };
+  out.build = [p](const std::string& name, const dynamics::Model& model,
+                  const std::vector<forces::Attachment>& at) {
+    auto line = std::make_shared<const forces::LumpedLine>(p, name);
+    return forces::withOutputs<forces::LumpedLineProvider>(
+        std::make_unique<forces::LumpedLineProvider>(name, model, at.at(0), at.at(1), line),
+        lumpedOutputs);
+  };
+}
+
+// (entry {anchor, fairlead, model, length, EA, weight | mass + diameter, water_density, seabed,
+// friction, and the lumped line's keys}) => a CatenaryLine, or a lumped line with model: lumped
 MechanicsSpec::ProviderSpec readMooring(const std::string&, const YAML::Node& n,
                                         const spec::Reader& r, const std::string& key) {
   MechanicsSpec::ProviderSpec out;
-  r.keys(n,
-         {"anchor", "fairlead", "length", "EA", "weight", "mass", "diameter", "water_density",
-          "gravity", "seabed", "friction"},
+  r.keys(n, {"anchor",   "fairlead",      "model",         "length",  "EA",     "weight",
+             "mass",     "diameter",      "water_density", "gravity", "seabed", "friction",
+             "segments", "damping",       "damping_ratio", "cdn",     "cdt",    "can",
+             "cat",      "bed_stiffness", "bed_damping"},
          key);
   if (!n.IsMap()) return out;
   out.attachments.push_back(readEnd(r, n, "anchor", key));
   out.attachments.push_back(readEnd(r, n, "fairlead", key));
   if (out.attachments[1].first == "world")
     r.fail(n["fairlead"] ? n["fairlead"] : n, key + ".fairlead", "the fairlead must be on a body");
+  // (model: catenary (default) | lumped) => the lumped line's own keys, or the catenary's
+  const std::string kind = n["model"] && n["model"].IsScalar() ? n["model"].Scalar() : "catenary";
+  if (kind != "catenary" && kind != "lumped")
+    r.fail(n["model"], key + ".model", "expected catenary or lumped, got '" + kind + "'");
+  if (kind == "lumped") {
+    readLumped(n, r, key, out);
+    return out;
+  }
+  for (const char* k : {"segments", "damping", "damping_ratio", "cdn", "cdt", "can", "cat",
+                        "bed_stiffness", "bed_damping"})
+    if (n[k]) r.fail(n[k], key + "." + k, std::string("'") + k + "' is a key of model: lumped");
   forces::CatenaryParameters p;
   p.length = r.number(n["length"], key + ".length", 1.0);
   if (!n["length"]) r.fail(n, key, "missing required key 'length' (unstretched, m)");
@@ -125,7 +231,8 @@ YARDSIM_REGISTER_PROVIDER(mooring,
                               .key = "mooring",
                               .summary = "name: {anchor: [x, y, z] | {body, point}, fairlead: "
                                          "{body, point}, length, EA, weight | mass + diameter, "
-                                         "seabed, friction}",
+                                         "seabed, friction, model: catenary | lumped, segments, "
+                                         "damping_ratio, cdn, cdt, can, cat}",
                               .read = readMooring});
 
 }  // namespace yardsim::scene::providers

@@ -67,6 +67,7 @@ inline Joint jointOfType(JointType t, std::mt19937& rng) {
     case JointType::Spherical: return Joint::spherical();
     case JointType::Planar: return Joint::planar();
     case JointType::Free: return Joint::free();
+    case JointType::Translation: return Joint::translation();
   }
   return Joint::fixed();
 }
@@ -74,7 +75,7 @@ inline Joint jointOfType(JointType t, std::mt19937& rng) {
 inline const std::vector<JointType>& allJointTypes() {
   static const std::vector<JointType> types{JointType::Revolute,  JointType::Prismatic, JointType::Cylindrical,
                                             JointType::Universal, JointType::Spherical, JointType::Planar,
-                                            JointType::Free,      JointType::Fixed};
+                                            JointType::Free,      JointType::Fixed,     JointType::Translation};
   return types;
 }
 

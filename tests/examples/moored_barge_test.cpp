@@ -6,6 +6,9 @@
 // until the waves come, the waves then move it and the energy balance stays closed.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "forces/lines/catenary.hpp"
 #include "run/runner.hpp"
@@ -105,4 +108,43 @@ TEST_CASE(
   // (the waves' work swings by 3e6 J each period: its trapezoidal sum per step) => the balance
   // closes like examples/floating_barge's (28 J over 90 s there)
   CHECK(worst < 2e-5 * largest);
+}
+
+TEST_CASE("moored barge on lumped lines: at rest where the quasi-static catenaries hold it") {
+  // (examples/moored_barge/lumped.yaml, and the same scene with catenary lines) => both stay at
+  // rest at the start; the lumped lines' fairlead tension within 1.5 % of the catenary's (20
+  // segments of 15.7 m: the touchdown falls between nodes; tests/forces/lines/
+  // lumped_line_provider_test.cpp shows the convergence), the drafts within 1 mm
+  const std::string dir = std::string(YARDSIM_SOURCE_DIR) + "/examples/moored_barge/";
+  std::ifstream in(dir + "lumped.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string catenary = text;
+  for (auto at = catenary.find("model: lumped, segments: 20, "); at != std::string::npos;
+       at = catenary.find("model: lumped, segments: 20, "))
+    catenary.erase(at, std::string("model: lumped, segments: 20, ").size());
+  testing::SceneDir out;
+  std::filesystem::copy_file(dir + "barge_hull.obj", out.path() / "barge_hull.obj");
+  auto run = [&](const std::string& name, const std::string& scene) {
+    auto s = scene::loadSceneOrThrow(out.write(name + ".yaml", scene));
+    auto root = scene::assemble(*s);
+    run::runScene(*s, *root, {out.path() / name, 30.0, {}, {}, 0.1});
+    return testing::CsvFile((out.path() / name / "timeseries.csv").string());
+  };
+  const auto lumped = run("lumped", text), quasi = run("catenary", catenary);
+  auto last = [](const testing::CsvFile& c, const std::string& col) {
+    const int k = c.column(col);
+    REQUIRE(k > 0);
+    return c.rows.back()[k];
+  };
+  for (const char* l : {"line_ne", "line_nw", "line_sw", "line_se"}) {
+    const std::string t = std::string(l) + ".fairlead_tension[N]";
+    INFO(l << ": lumped " << last(lumped, t) << " N, catenary " << last(quasi, t) << " N");
+    CHECK(last(lumped, t) == Approx(last(quasi, t)).epsilon(0.015));
+  }
+  CHECK(last(lumped, "hull.draft[m]") == Approx(last(quasi, "hull.draft[m]")).margin(1e-3));
+  CHECK(std::abs(last(lumped, "barge.x[m]")) < 1e-6);
+  CHECK(std::abs(last(lumped, "barge.y[m]")) < 1e-6);
+  // (at rest from the start) => the lines and the barge do not move: the draft of the first row
+  CHECK(last(lumped, "hull.draft[m]") ==
+        Approx(lumped.rows.front()[lumped.column("hull.draft[m]")]).margin(1e-3));
 }

@@ -180,3 +180,49 @@ TEST_CASE("mooring: problems at their nodes, with did you mean") {
                                            Contains("needs its anchor in the world") &&
                                            Contains("set seabed: true") && Contains("b.yaml:"));
 }
+
+TEST_CASE("mooring: lumped lines' problems at their nodes") {
+  testing::SceneDir dir;
+  const auto bad = scene::loadScene(dir.write(
+      "c.yaml",
+      moored(0.0, 0.0, false,
+             "    north: {model: lumped, anchor: [0, 400, -100], fairlead: {body: buoy}, "
+             "length: 450, weight: 1000, EA: 1e9}\n"
+             "    south: {model: lumped, anchor: [0, -400, -100], fairlead: {body: buoy}, "
+             "length: 450, EA: 1e9, mass: 100, diameter: 0.2, segments: 2.5, damping: 1, "
+             "damping_ratio: 0.5}\n"
+             "    up: {model: lumpy, anchor: [0, 0, -100], fairlead: {body: buoy}, length: 450, "
+             "weight: 1000}\n"
+             "    down: {anchor: [0, 0, -100], fairlead: {body: buoy}, length: 450, "
+             "weight: 1000, segments: 20}\n")));
+  CHECK_FALSE(bad.scene);
+  const std::string report = bad.diagnostics.report();
+  INFO(report);
+  CHECK_THAT(report, Contains("c.yaml:") && Contains("needs 'mass' (kg/m in air) and 'diameter'") &&
+                         Contains("whole number of segments") &&
+                         Contains("either damping (N s) or damping_ratio") &&
+                         Contains("expected catenary or lumped, got 'lumpy'") &&
+                         Contains("'segments' is a key of model: lumped"));
+}
+
+TEST_CASE("mooring: a lumped line's nodes are bodies of the system with their channels") {
+  testing::SceneDir dir;
+  std::string text =
+      moored(0.0, 0.0, false,
+             "    north: {model: lumped, anchor: [0, 400, -100], fairlead: {body: buoy}, "
+             "length: 450, EA: 1e9, mass: 130, diameter: 0.12, segments: 8}\n");
+  text.replace(text.find("\"east.*\""), 8, "\"east.*\", \"north.*\"");
+  const auto csv = simulate(dir, text, 0.2);
+  REQUIRE(!csv.rows.empty());
+  // (the nodes 1 .. 7) => positions as body channels, on the anchor-fairlead plane x = 0
+  for (int i = 1; i < 8; ++i) {
+    const int x = csv.column("north.node" + std::to_string(i) + ".x[m]");
+    const int y = csv.column("north.node" + std::to_string(i) + ".y[m]");
+    REQUIRE(x > 0);
+    CHECK(std::abs(csv.rows[0][x]) < 1e-9);
+    CHECK(csv.rows[0][y] > 0.0);
+  }
+  CHECK(csv.column("north.node8.x[m]") < 0);  // the fairlead end is the buoy's point
+  CHECK(csv.column("north.fairlead_tension[N]") > 0);
+  CHECK(csv.column("north.anchor_tension[N]") > 0);
+}

@@ -1,0 +1,91 @@
+// Lumped-mass lines stepped in the multibody state (issue 17: 8 lines x 20 segments with the
+// scene's implicit integrator at >= 20x real time at a 0.05 s step; the cost per step against the
+// number of nodes): a 200 t buoy on a surge-sway slider at the fairlead height, moored by 8 chain
+// lines of n segments in still water and released at 0.5 m/s in surge, run as a scene (scene
+// loader, assembler, runner; one channel recorded every 10 s) for 20 s of simulated time.
+// Counters: real-time factor and wall time per step and per inner node (wall time: on a shared
+// machine compare the CPU column too).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run/runner.hpp"
+#include "scene/assembler.hpp"
+#include "scene/scene_loader.hpp"
+
+using namespace yardsim;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kUntil = 20.0, kStep = 0.05;
+
+// (segments per line, integrator) => the scene: 8 lines spread at 45 deg, 290 m out, 40 m down
+std::string scene(int segments, const std::string& method) {
+  std::string s = "schema_version: 1\nintegrator: {method: " + method +
+                  ", dt: " + std::to_string(kStep) + ", stiffness_check: off}\n" + R"(mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    slide_x: {parent: world, joint: {type: prismatic, axis: [1, 0, 0], v0: 0.5}, mass: 1.0,
+              inertia: [1, 1, 1]}
+    buoy: {parent: slide_x, joint: {type: prismatic, axis: [0, 1, 0]},
+           placement: {xyz: [0, 0, 39]}, mass: 2.0e5, inertia: [1, 1, 1]}
+  mooring:
+)";
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * M_PI / 4.0;
+    s += "    line" + std::to_string(k) + ": {model: lumped, anchor: [" +
+         std::to_string(290.0 * std::cos(a)) + ", " + std::to_string(290.0 * std::sin(a)) +
+         ", 0], fairlead: {body: buoy}, length: 314, EA: 1.2e9, mass: 282.21, diameter: "
+         "0.216, segments: " +
+         std::to_string(segments) + "}\n";
+  }
+  return s + "record: {interval: 10, channels: [\"line0.fairlead_tension\"]}\nuntil: " +
+         std::to_string(kUntil) + "\n";
+}
+
+// (state.range(0): segments; method) => one whole run per iteration
+void runLines(benchmark::State& state, const std::string& method) {
+  const int segments = static_cast<int>(state.range(0));
+  const fs::path dir =
+      fs::temp_directory_path() / ("yardsim-bench-lines-" + method + std::to_string(segments));
+  fs::create_directories(dir);
+  std::ofstream(dir / "s.yaml") << scene(segments, method);
+  auto loaded = scene::loadSceneOrThrow(dir / "s.yaml");
+  double wall = 0.0;
+  for (auto _ : state) {
+    auto root = scene::assemble(*loaded);
+    const auto t0 = std::chrono::steady_clock::now();
+    run::runScene(*loaded, *root, {dir / "out", kUntil, {}, {}, 0.1});
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  const double runs = static_cast<double>(state.iterations()), steps = kUntil / kStep;
+  const double nodes = 8.0 * (segments - 1);
+  state.counters["realtime_factor"] = kUntil * runs / wall;
+  state.counters["us_per_step"] = 1e6 * wall / runs / steps;
+  state.counters["ns_per_step_node"] = 1e9 * wall / runs / steps / nodes;
+  fs::remove_all(dir);
+}
+
+void BM_LumpedLinesHht(benchmark::State& state) {
+  runLines(state, "hht");
+}
+BENCHMARK(BM_LumpedLinesHht)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_LumpedLinesCvode(benchmark::State& state) {
+  runLines(state, "cvode_bdf");
+}
+BENCHMARK(BM_LumpedLinesCvode)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,96 @@
+#pragma once
+// A lumped-mass line (lumped_line.hpp) as a force provider whose inner nodes are part of the
+// integrated state. Each inner node i = 1 .. N-1 is a body of the multibody tree: a point mass on
+// a translation joint from the world whose joint frame is the world frame, so its q is the node's
+// position p_W (m) and its v the node's velocity (m/s, world). Every integrator (explicit,
+// implicit, SUNDIALS) then steps the nodes with the other bodies, the stiffness guard sees their
+// axial modes in its linearisation, and a checkpoint of the multibody state holds them. Node 0 is
+// the anchor point and node N the fairlead point, each on the ground or on a body: their
+// positions and velocities follow those bodies and their node forces (their half segments'
+// weight, drag and bed included) act on those bodies at the points.
+//
+// Per inner node the provider adds to its joint's generalized force (= the world force on the
+// node) the line's node force minus the model's gravity on the node's mass m_i: the model applies
+// m_i g to every body; the line's net weight w l_n (buoyancy included) replaces it. The node mass
+// is mu l_n + rho V Can: the joint-space mass of a body is constant, so the added mass is taken
+// isotropic with the normal coefficient (the tangential one, usually smaller, is not used for the
+// mass; docs/lines.md). Potential energy: the line's (strain, net weight, bed springs) plus
+// sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes. Power: the
+// part of the node forces that is not -dV/dr (internal and bed damping, friction, drag, the
+// flow's inertia force) times the node velocities. World frame, SI units.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "forces/force_provider.hpp"
+#include "forces/lines/lumped_line.hpp"
+#include "forces/rope_path.hpp"
+
+namespace yardsim::forces {
+
+// An inner node as a body of the tree: its name, mass (kg) and position at the start (world, m).
+struct LumpedNodeBody {
+  std::string name;
+  double mass = 0.0;
+  dynamics::Vector3 p_W = dynamics::Vector3::Zero();
+};
+
+// (line's name, node index) => "<line>.node<i>", the name of that node's body
+std::string lumpedNodeName(const std::string& line, int i);
+
+// (line, its name, anchor and fairlead world points at the start) => the inner nodes' bodies at
+// the chain's static equilibrium (lumped_line_statics.hpp) found from the elastic catenary through
+// the two ends (catenary.hpp, with the line's sea bed when the anchor lies on it), or from the
+// straight chord when there is no catenary; at the guess itself when Newton fails
+std::vector<LumpedNodeBody> lumpedLineNodes(const LumpedLine& line, const std::string& name,
+                                            const dynamics::Vector3& pA,
+                                            const dynamics::Vector3& pB);
+
+class LumpedLineProvider final : public ForceProvider {
+ public:
+  // (name, model holding the bodies lumpedNodeName(name, 1 .. N-1) on translation joints from the
+  // world with the identity joint placement, anchor, fairlead, the line) => the provider; throws
+  // std::invalid_argument naming it for a missing or wrong node body or a point outside the model
+  LumpedLineProvider(std::string name, const dynamics::Model& model, const Attachment& anchor,
+                     const Attachment& fairlead, std::shared_ptr<const LumpedLine> line);
+
+  // the scratch: node positions, velocities and forces (3 x (N+1)), segment tensions (N)
+  struct Scratch final : ProviderScratch {
+    Eigen::Matrix3Xd r, v, f, fc;
+    Eigen::VectorXd tension;
+  };
+  std::unique_ptr<ProviderScratch> makeScratch() const override;
+
+  // (stage) => every node's position and velocity (world) in w.r and w.v
+  void gather(const Stage& s, Scratch& w) const;
+  // (stage) => the force of the line on the fairlead, |f_N| (its last segment and half-segment
+  // weight, drag and bed), and the tension of the first segment at the anchor, N
+  double fairleadTension(const Stage& s) const;
+  double anchorTension(const Stage& s) const;
+  // (stage) => unstretched length of the nodes at or below the sea bed (0 without one), m
+  double laidLength(const Stage& s) const;
+
+  const LumpedLine& line() const { return *line_; }
+  const Attachment& anchor() const { return anchor_; }
+  const Attachment& fairlead() const { return fairlead_; }
+  // (inner node i in 1 .. N-1) => its body index
+  int nodeBody(int i) const { return bodies_[static_cast<std::size_t>(i)]; }
+
+ protected:
+  void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;
+  double doPotentialEnergy(const Stage& s) const override;
+  double doPower(const Stage& s) const override;
+
+ private:
+  // (stage) => the scratch evaluated there: nodes gathered, node forces and tensions
+  Scratch& evaluated(const Stage& s, std::unique_ptr<ProviderScratch>& temporary) const;
+
+  Attachment anchor_, fairlead_;
+  std::shared_ptr<const LumpedLine> line_;
+  dynamics::Vector3 gravity_;  // the model's, m/s^2
+  std::vector<int> bodies_;    // per node: its body (inner nodes), -1 at the ends
+  std::vector<int> idxQ_, idxV_;
+  std::vector<double> masses_;  // per node: the body's mass (inner nodes), kg
+};
+
+}  // namespace yardsim::forces

@@ -1,0 +1,89 @@
+#include "forces/lines/lumped_line_statics.hpp"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace yardsim::forces {
+
+using dynamics::Matrix3;
+using dynamics::Vector3;
+
+namespace {
+
+// (line, r) => the conservative forces on the inner nodes, stacked (3 (N - 1))
+Eigen::VectorXd residual(const LumpedLine& line, const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) {
+  line.conservativeForces(r, f);
+  const int inner = line.nodes() - 2;
+  Eigen::VectorXd out(3 * inner);
+  for (int i = 0; i < inner; ++i) out.segment<3>(3 * i) = f.col(i + 1);
+  return out;
+}
+
+// (line, r) => K = -d(residual)/d(inner positions): the segments' tangent stiffness and the bed's
+Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
+  const LumpedLineProperties& p = line.properties();
+  const int n = p.segments, inner = n - 1;
+  const double l = line.segmentLength();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * inner, 3 * inner);
+  for (int s = 0; s < n; ++s) {
+    // (taut segment from node s to s + 1) => EA/l u u^T + T/|d| (I - u u^T)
+    // (a slack segment) => 1e-3 of the axial stiffness along it: Newton's matrix stays regular
+    // while a guess has slack segments on the bed, and the step still pulls them taut
+    const Vector3 d = r.col(s + 1) - r.col(s);
+    const double len = d.norm(), strain = len / l - 1.0;
+    if (!(len > 0.0)) continue;
+    const Vector3 u = d / len;
+    const Matrix3 uu = u * u.transpose();
+    const Matrix3 k =
+        strain > 0.0 ? Matrix3(p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu))
+                     : Matrix3(1e-3 * p.ea / l * uu);
+    const int a = s - 1, b = s;  // inner indices of nodes s and s + 1 (-1 or inner: held)
+    if (a >= 0) K.block<3, 3>(3 * a, 3 * a) += k;
+    if (b < inner) K.block<3, 3>(3 * b, 3 * b) += k;
+    if (a >= 0 && b < inner) {
+      K.block<3, 3>(3 * a, 3 * b) -= k;
+      K.block<3, 3>(3 * b, 3 * a) -= k;
+    }
+  }
+  if (p.seabed)
+    for (int i = 0; i < inner; ++i)
+      if (r(2, i + 1) < p.seabedZ)
+        K(3 * i + 2, 3 * i + 2) += p.bedStiffness * p.diameter * line.nodeLength(i + 1);
+  return K;
+}
+
+}  // namespace
+
+bool lumpedLineStatics(const LumpedLine& line, Eigen::Matrix3Xd& r) {
+  const LumpedLineProperties& p = line.properties();
+  const int inner = line.nodes() - 2;
+  if (inner <= 0) return true;
+  const double tol = 1e-9 * std::abs(line.weightPerLength()) * p.length;
+  Eigen::Matrix3Xd f(3, line.nodes()), trial(3, line.nodes());
+  Eigen::VectorXd res = residual(line, r, f);
+  for (int it = 0; it < 100; ++it) {
+    if (res.lpNorm<Eigen::Infinity>() <= tol) return true;
+    // (K dx = residual) => a step that lowers the residual, halved up to 30 times
+    Eigen::MatrixXd K = stiffness(line, r);
+    K.diagonal().array() += 1e-9 * K.diagonal().cwiseAbs().maxCoeff() + 1e-12;
+    const Eigen::VectorXd dx = K.partialPivLu().solve(res);
+    if (!dx.allFinite()) return false;
+    double scale = 1.0;
+    const double before = res.norm();
+    for (int k = 0; k < 30; ++k, scale *= 0.5) {
+      trial = r;
+      for (int i = 0; i < inner; ++i) trial.col(i + 1) += scale * dx.segment<3>(3 * i);
+      const Eigen::VectorXd next = residual(line, trial, f);
+      if (next.norm() < before) {
+        r = trial;
+        res = next;
+        break;
+      }
+    }
+    if (scale < 1e-9) return false;
+  }
+  return res.lpNorm<Eigen::Infinity>() <= tol;
+}
+
+}  // namespace yardsim::forces

@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   for (const double ka : {0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.7, 2.0, 2.5, 3.0}) {
     // (ka) => free surface 3 wavelengths out (at least 15 m), panels a tenth of a wavelength far
     // out (at most 4 m), a damping zone one wavelength wide
-    const double lambda = 2.0 * std::numbers::pi / ka, omega = std::sqrt(g * ka), period = 2.0 * std::numbers::pi / omega;
+    const double lambda = 2.0 * std::numbers::pi / ka, omega = std::sqrt(g * ka),
+                 period = 2.0 * std::numbers::pi / omega;
     RankineTdSettings s;
     s.rho = rho;
     s.g = g;
@@ -29,15 +30,17 @@ int main(int argc, char** argv) {
     s.freeSurface.growth = 1.12;
     s.freeSurface.truncationRadius = 1.0 + std::max(3.0 * lambda, 15.0);
     s.freeSurface = defaultBeach(s.freeSurface, period, g);
-    s.freeSurface.dampingWidth = std::min(s.freeSurface.dampingWidth, s.freeSurface.truncationRadius - 1.0 - 2.0 * lambda);
+    s.freeSurface.dampingWidth =
+        std::min(s.freeSurface.dampingWidth, s.freeSurface.truncationRadius - 1.0 - 2.0 * lambda);
     const RankineTdModel model(cubeSphere(1.0, n), yardsim::dynamics::Transform{}, s);
     ForcedOscillationSettings f;
     f.omega = omega;
     f.dt = std::min(0.9 * empLimit(model, 60).dtMax, period / 60.0);
     for (const int mode : {0, 2}) {
       const RadiationCoefficients r = forcedOscillation(model, mode, f);
-      std::printf("%s,%.2f,%.5f,%.5f,%d,%d\n", mode == 0 ? "surge" : "heave", ka, r.addedMass[mode] / scale,
-                  r.damping[mode] / (scale * omega), model.problem().bodyCount(), model.problem().surfaceCount());
+      std::printf("%s,%.2f,%.5f,%.5f,%d,%d\n", mode == 0 ? "surge" : "heave", ka,
+                  r.addedMass[mode] / scale, r.damping[mode] / (scale * omega),
+                  model.problem().bodyCount(), model.problem().surfaceCount());
       std::fflush(stdout);
     }
   }

@@ -12,12 +12,15 @@ FreeSurfaceState quietSurface(const RankineTdModel& model) {
 
 EmpScratch makeEmpScratch(const RankineTdModel& model) {
   const MixedProblem& pb = model.problem();
-  return {Eigen::MatrixXd::Zero(pb.bodyCount(), 1), Eigen::MatrixXd::Zero(pb.surfaceCount(), 1), Eigen::MatrixXd::Zero(pb.size(), 1),
-          Eigen::MatrixXd::Zero(pb.size(), 1), Eigen::VectorXd::Zero(pb.surfaceCount())};
+  return {Eigen::MatrixXd::Zero(pb.bodyCount(), 1), Eigen::MatrixXd::Zero(pb.surfaceCount(), 1),
+          Eigen::MatrixXd::Zero(pb.size(), 1), Eigen::MatrixXd::Zero(pb.size(), 1),
+          Eigen::VectorXd::Zero(pb.surfaceCount())};
 }
 
-Vector6 empStep(const RankineTdModel& model, double dt, const Eigen::Ref<const Eigen::VectorXd>& bodyNormalVelocity,
-                const Eigen::Ref<const Eigen::VectorXd>& memoryNeumann, FreeSurfaceState& state, EmpScratch& scratch) {
+Vector6 empStep(const RankineTdModel& model, double dt,
+                const Eigen::Ref<const Eigen::VectorXd>& bodyNormalVelocity,
+                const Eigen::Ref<const Eigen::VectorXd>& memoryNeumann, FreeSurfaceState& state,
+                EmpScratch& scratch) {
   const MixedProblem& pb = model.problem();
   const int nb = pb.bodyCount(), nf = pb.surfaceCount();
   const double g = model.settings().g;
@@ -29,7 +32,8 @@ Vector6 empStep(const RankineTdModel& model, double dt, const Eigen::Ref<const E
   const auto nu = model.damping().array();
   // (phi_z^n, zeta^n, phi^n) => zeta^n+1 (kinematic, explicit)
   scratch.zetaOld = state.zeta;
-  state.zeta.array() += dt * (phiZ - 2.0 * nu * scratch.zetaOld.array() + nu * nu / g * state.phi.array());
+  state.zeta.array() +=
+      dt * (phiZ - 2.0 * nu * scratch.zetaOld.array() + nu * nu / g * state.phi.array());
   // (zeta^n, zeta^n+1, a_t^n) => F^M(t_n); then phi^n+1 (dynamic, implicit)
   Vector6 f = model.forceFromSurface() * (-0.5 * g * (scratch.zetaOld + state.zeta));
   if (memoryNeumann.size() == nb) f.noalias() += model.forceFromBody() * memoryNeumann;
@@ -42,11 +46,13 @@ EmpLimit empLimit(const RankineTdModel& model, int iterations) {
   const int nb = pb.bodyCount(), nf = pb.surfaceCount();
   EmpLimit out;
   out.smallestPanel = std::numeric_limits<double>::infinity();
-  for (const Panel& p : pb.surface()) out.smallestPanel = std::min(out.smallestPanel, std::sqrt(p.area));
+  for (const Panel& p : pb.surface())
+    out.smallestPanel = std::min(out.smallestPanel, std::sqrt(p.area));
   // (phi on the free surface, hull at rest) => phi_z; power iteration from a deterministic
   // alternating start (rich in the shortest waves the mesh carries)
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(nb, 1), p(nf, 1), rhs(pb.size(), 1), u(pb.size(), 1);
-  for (int k = 0; k < nf; ++k) p(k, 0) = (k % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.1 * std::sin(1.7 * k));
+  for (int k = 0; k < nf; ++k)
+    p(k, 0) = (k % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.1 * std::sin(1.7 * k));
   p /= p.norm();
   double lambda = 0.0;
   for (int it = 0; it < iterations; ++it) {

@@ -39,12 +39,14 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 /// (model, dt, hull normal velocity a^n (Nb), Neumann value of dphi^M/dt a_t^n (Nb, or size 0 for
 /// none), state at t_n, scratch) => state at t_n+1; returns F^M(t_n). Allocation-free.
-Vector6 empStep(const RankineTdModel& model, double dt, const Eigen::Ref<const Eigen::VectorXd>& bodyNormalVelocity,
-                const Eigen::Ref<const Eigen::VectorXd>& memoryNeumann, FreeSurfaceState& state, EmpScratch& scratch);
+Vector6 empStep(const RankineTdModel& model, double dt,
+                const Eigen::Ref<const Eigen::VectorXd>& bodyNormalVelocity,
+                const Eigen::Ref<const Eigen::VectorXd>& memoryNeumann, FreeSurfaceState& state,
+                EmpScratch& scratch);
 
 struct EmpLimit {
-  double lambdaMax = 0.0;  ///< 1/m, largest eigenvalue of phi -> phi_z (power iteration)
-  double dtMax = 0.0;      ///< s, 2 / sqrt(g lambda_max)
+  double lambdaMax = 0.0;      ///< 1/m, largest eigenvalue of phi -> phi_z (power iteration)
+  double dtMax = 0.0;          ///< s, 2 / sqrt(g lambda_max)
   double smallestPanel = 0.0;  ///< m, sqrt of the smallest free-surface panel area
 };
 

@@ -8,10 +8,13 @@
 
 namespace yardsim::forces::hydro {
 
-RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode, const ForcedOscillationSettings& s) {
+RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode,
+                                        const ForcedOscillationSettings& s) {
   if (mode < 0 || mode > 5 || !(s.omega > 0.0) || !(s.dt > 0.0) || s.periods <= s.rampPeriods ||
       s.analysisPeriods > s.periods - s.rampPeriods || s.analysisPeriods < 1) {
-    throw std::invalid_argument("forcedOscillation: mode 0..5, omega > 0, dt > 0, rampPeriods < periods, 1 <= analysisPeriods <= periods - rampPeriods");
+    throw std::invalid_argument(
+        "forcedOscillation: mode 0..5, omega > 0, dt > 0, rampPeriods < periods, 1 <= "
+        "analysisPeriods <= periods - rampPeriods");
   }
   const double period = 2.0 * std::numbers::pi / s.omega;
   const int perPeriod = static_cast<int>(std::ceil(period / s.dt));
@@ -28,8 +31,10 @@ RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode, c
     // (t_n) => xi_dot of the ramped sine, the hull's normal velocity, the memory force
     const double t = n * dt;
     const double r = t < ramp ? 0.5 * (1.0 - std::cos(std::numbers::pi * t / ramp)) : 1.0;
-    const double dr = t < ramp ? 0.5 * std::numbers::pi / ramp * std::sin(std::numbers::pi * t / ramp) : 0.0;
-    const double xiDot = s.amplitude * (dr * std::sin(s.omega * t) + r * s.omega * std::cos(s.omega * t));
+    const double dr =
+        t < ramp ? 0.5 * std::numbers::pi / ramp * std::sin(std::numbers::pi * t / ramp) : 0.0;
+    const double xiDot =
+        s.amplitude * (dr * std::sin(s.omega * t) + r * s.omega * std::cos(s.omega * t));
     a = xiDot * normal;
     const Eigen::Matrix<double, 6, 1> f = empStep(model, dt, a, none, state, scratch);
     if (n >= first) {

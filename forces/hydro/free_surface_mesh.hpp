@@ -38,10 +38,10 @@ struct FreeSurfaceSettings {
 FreeSurfaceSettings defaultBeach(FreeSurfaceSettings s, double longestPeriod, double g = 9.80665);
 
 struct FreeSurfaceMesh {
-  PanelMesh mesh;                 ///< quads on z = 0, normals -z
-  std::vector<double> damping;    ///< nu per panel (at its centroid), 1/s
+  PanelMesh mesh;                    ///< quads on z = 0, normals -z
+  std::vector<double> damping;       ///< nu per panel (at its centroid), 1/s
   Vector3 centre = Vector3::Zero();  ///< waterline vertex average c (z = 0)
-  double waterlineRadius = 0.0;   ///< largest r_k, m
+  double waterlineRadius = 0.0;      ///< largest r_k, m
 };
 
 /// A waterline the free-surface mesh cannot follow (no closed loop, several loops, not

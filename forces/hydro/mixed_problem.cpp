@@ -18,7 +18,8 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurface, double depth)
     : body_(std::move(body)), surface_(std::move(freeSurface)), depth_(depth) {
-  const auto nb = static_cast<Eigen::Index>(body_.size()), nf = static_cast<Eigen::Index>(surface_.size());
+  const auto nb = static_cast<Eigen::Index>(body_.size()),
+             nf = static_cast<Eigen::Index>(surface_.size());
   const Eigen::Index n = nb + nf;
   const bool image = std::isfinite(depth_);
   if (image) {
@@ -26,7 +27,8 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
       for (int k = 0; k < p.count; ++k) {
         if (!(p.vertices[static_cast<std::size_t>(k)].z() > -depth_)) {
           throw PanelError("mixed problem: the hull reaches the sea bed (a vertex at z = " +
-                           std::to_string(p.vertices[static_cast<std::size_t>(k)].z()) + " m, depth " + std::to_string(depth_) + " m)");
+                           std::to_string(p.vertices[static_cast<std::size_t>(k)].z()) +
+                           " m, depth " + std::to_string(depth_) + " m)");
         }
       }
     }
@@ -65,7 +67,8 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
   factorSeconds_ = seconds(t1);
 }
 
-void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal, const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
+void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
+                         const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
                          Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const {
   // (a, p) => R_b a + R_f p, then u = M^-1 rhs by the LU's back-substitution
   rhs.noalias() = fromBody_ * bodyNormal;
@@ -73,13 +76,15 @@ void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal, co
   out = lu_->solve(rhs);
 }
 
-std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(const Eigen::MatrixXd& w) const {
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(
+    const Eigen::MatrixXd& w) const {
   // (w) => z = M^-T w, then (z^T R_b, z^T R_f)
   const Eigen::MatrixXd z = lu_->transpose().solve(w);
   return {z.transpose() * fromBody_, z.transpose() * fromSurface_};
 }
 
-Eigen::MatrixXd MixedProblem::solve(const Eigen::MatrixXd& bodyNormal, const Eigen::MatrixXd& surfacePotential) const {
+Eigen::MatrixXd MixedProblem::solve(const Eigen::MatrixXd& bodyNormal,
+                                    const Eigen::MatrixXd& surfacePotential) const {
   Eigen::MatrixXd rhs(size(), bodyNormal.cols()), out(size(), bodyNormal.cols());
   solve(bodyNormal, surfacePotential, rhs, out);
   return out;

@@ -35,17 +35,20 @@ class MixedProblem {
  public:
   /// (body panels, free-surface panels, water depth h in m: infinity for deep water) => M, R_b,
   /// R_f assembled and M factorised. Throws PanelError when h does not lie below the hull.
-  MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurface, double depth = std::numeric_limits<double>::infinity());
+  MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurface,
+               double depth = std::numeric_limits<double>::infinity());
   /// Not copyable or movable: the LU factors refer to the matrix they overwrite.
   MixedProblem(const MixedProblem&) = delete;
   MixedProblem& operator=(const MixedProblem&) = delete;
 
   /// (phi_n on the body, Nb x m; phi on the free surface, Nf x m) => u = [phi_b; phi_n,f], N x m,
   /// written into out through rhs (N x m scratch). Allocation-free for preallocated rhs and out.
-  void solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal, const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
+  void solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
+             const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
              Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const;
   /// The same, allocating its result.
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& bodyNormal, const Eigen::MatrixXd& surfacePotential) const;
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& bodyNormal,
+                        const Eigen::MatrixXd& surfacePotential) const;
 
   /// (w, N x m: m functionals u => w^T u of the solution) => (w^T M^-1 R_b, m x Nb; w^T M^-1 R_f,
   /// m x Nf): the same functionals as maps of the data a, p, through one transposed solve with the
@@ -65,7 +68,7 @@ class MixedProblem {
  private:
   std::vector<Panel> body_, surface_;
   double depth_;
-  Eigen::MatrixXd system_;   ///< M, overwritten by its LU factors
+  Eigen::MatrixXd system_;       ///< M, overwritten by its LU factors
   Eigen::MatrixXd fromBody_;     ///< R_b, N x Nb
   Eigen::MatrixXd fromSurface_;  ///< R_f, N x Nf
   std::optional<Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>> lu_;

@@ -24,10 +24,11 @@ namespace yardsim::forces::hydro {
 
 struct RankineTdSettings {
   FreeSurfaceSettings freeSurface;
-  double rho = 1025.0;                                    ///< kg/m^3
-  double g = 9.80665;                                     ///< m/s^2
-  double depth = std::numeric_limits<double>::infinity(); ///< m below the still-water level (sea-bed image)
-  double waterLevel = 0.0;                                ///< z of the still-water level in W, m
+  double rho = 1025.0;  ///< kg/m^3
+  double g = 9.80665;   ///< m/s^2
+  double depth =
+      std::numeric_limits<double>::infinity();  ///< m below the still-water level (sea-bed image)
+  double waterLevel = 0.0;                      ///< z of the still-water level in W, m
 };
 
 class RankineTdModel {
@@ -36,7 +37,8 @@ class RankineTdModel {
 
   /// (hull in B, mean pose X_WB, settings) => the panels, the factorised problem, A_inf and the
   /// force maps. Throws PanelError (bad or dry hull) or FreeSurfaceError (free surface).
-  RankineTdModel(const PanelMesh& hull_B, const dynamics::Transform& X_WB, const RankineTdSettings& settings);
+  RankineTdModel(const PanelMesh& hull_B, const dynamics::Transform& X_WB,
+                 const RankineTdSettings& settings);
 
   const RankineTdSettings& settings() const { return settings_; }
   const MixedProblem& problem() const { return *problem_; }
@@ -72,6 +74,7 @@ class RankineTdModel {
 };
 
 /// (6x6 in W axes, R_WB) => the same in body axes: R^T M R on each 3x3 block.
-Eigen::Matrix<double, 6, 6> toBodyAxes(const Eigen::Matrix<double, 6, 6>& M_W, const Eigen::Matrix3d& R_WB);
+Eigen::Matrix<double, 6, 6> toBodyAxes(const Eigen::Matrix<double, 6, 6>& M_W,
+                                       const Eigen::Matrix3d& R_WB);
 
 }  // namespace yardsim::forces::hydro

@@ -13,7 +13,10 @@ namespace {
 
 class Scratch final : public ProviderScratch {
  public:
-  explicit Scratch(const RankineTdModel& m) : state(quietSurface(m)), emp(makeEmpScratch(m)), a(Eigen::VectorXd::Zero(m.problem().bodyCount())) {}
+  explicit Scratch(const RankineTdModel& m)
+      : state(quietSurface(m)),
+        emp(makeEmpScratch(m)),
+        a(Eigen::VectorXd::Zero(m.problem().bodyCount())) {}
   FreeSurfaceState state;
   EmpScratch emp;
   Eigen::VectorXd a;
@@ -28,7 +31,9 @@ class Scratch final : public ProviderScratch {
   }
   void restoreCarried(std::span<const double> v) override {
     const auto nf = static_cast<std::size_t>(state.zeta.size());
-    if (v.size() != 7 + 2 * nf) throw std::invalid_argument("rankine_td: checkpoint holds " + std::to_string(v.size()) + " values, expected " + std::to_string(7 + 2 * nf));
+    if (v.size() != 7 + 2 * nf)
+      throw std::invalid_argument("rankine_td: checkpoint holds " + std::to_string(v.size()) +
+                                  " values, expected " + std::to_string(7 + 2 * nf));
     last = v[0];
     for (int i = 0; i < 6; ++i) held[i] = v[static_cast<std::size_t>(1 + i)];
     for (std::size_t k = 0; k < nf; ++k) {
@@ -40,17 +45,25 @@ class Scratch final : public ProviderScratch {
 
 }  // namespace
 
-RankineTdProvider::RankineTdProvider(std::string name, const dynamics::Model& model, int body, std::shared_ptr<const RankineTdModel> panels,
-                                     double panelStep)
-    : ForceProvider(std::move(name)), body_(body), panels_(std::move(panels)), panelStep_(panelStep) {
+RankineTdProvider::RankineTdProvider(std::string name, const dynamics::Model& model, int body,
+                                     std::shared_ptr<const RankineTdModel> panels, double panelStep)
+    : ForceProvider(std::move(name)),
+      body_(body),
+      panels_(std::move(panels)),
+      panelStep_(panelStep) {
   const std::string me = "rankine_td '" + this->name() + "': ";
-  if (body_ < 1 || body_ >= model.nbodies) throw std::invalid_argument(me + "body " + std::to_string(body_) + " is the world or outside the model");
+  if (body_ < 1 || body_ >= model.nbodies)
+    throw std::invalid_argument(me + "body " + std::to_string(body_) +
+                                " is the world or outside the model");
   if (!panels_) throw std::invalid_argument(me + "no panel model");
   if (!(panelStep_ > 0.0)) throw std::invalid_argument(me + "the panel step must be > 0");
-  if (const auto m = checkEmpStep(empLimit(*panels_, 100), panelStep_)) throw std::invalid_argument(me + *m);
+  if (const auto m = checkEmpStep(empLimit(*panels_, 100), panelStep_))
+    throw std::invalid_argument(me + *m);
 }
 
-std::unique_ptr<ProviderScratch> RankineTdProvider::makeScratch() const { return std::make_unique<Scratch>(*panels_); }
+std::unique_ptr<ProviderScratch> RankineTdProvider::makeScratch() const {
+  return std::make_unique<Scratch>(*panels_);
+}
 
 Vector6 RankineTdProvider::velocity_W(const Stage& s) const {
   // (V body frame [omega; v_O]) => [v_O; omega] in the mean pose's world axes
@@ -74,12 +87,14 @@ const Vector6& RankineTdProvider::memoryForce(const Stage& s, ProviderScratch& s
   return c.held;
 }
 
-void RankineTdProvider::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) const {
+void RankineTdProvider::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                                   Eigen::VectorXd& /*tau*/) const {
   std::unique_ptr<ProviderScratch> temporary;
   const Vector6& F_W = memoryForce(s, scratchOf<ProviderScratch>(s, temporary));
   // (F^M in W about the origin, [force; moment]) => body frame [moment; force]
   dynamics::Force F_B;
-  F_B << panels_->rotation().transpose() * F_W.tail<3>(), panels_->rotation().transpose() * F_W.head<3>();
+  F_B << panels_->rotation().transpose() * F_W.tail<3>(),
+      panels_->rotation().transpose() * F_W.head<3>();
   f.addBodyFrame(body_, F_B);
 }
 

@@ -30,15 +30,17 @@ class RankineTdProvider final : public ForceProvider {
   /// (name, multibody model, body >= 1, the panel model built at the body's mean pose, panel step
   /// in s) => the provider; throws std::invalid_argument naming it for a bad body or a panel step
   /// above the emp limit of the model's free surface (with the numbers).
-  RankineTdProvider(std::string name, const dynamics::Model& model, int body, std::shared_ptr<const RankineTdModel> panels,
-                    double panelStep);
+  RankineTdProvider(std::string name, const dynamics::Model& model, int body,
+                    std::shared_ptr<const RankineTdModel> panels, double panelStep);
 
   int body() const { return body_; }
   double panelStep() const { return panelStep_; }
   const RankineTdModel& panels() const { return *panels_; }
   /// infinite-frequency added mass for the left-hand side: body axes about the body origin, naval
   /// order (addedMassAboutOrigin converts it for ModelBuilder::setAddedMass)
-  Eigen::Matrix<double, 6, 6> addedMass() const { return toBodyAxes(panels_->aInf(), panels_->rotation()); }
+  Eigen::Matrix<double, 6, 6> addedMass() const {
+    return toBodyAxes(panels_->aInf(), panels_->rotation());
+  }
 
   std::unique_ptr<ProviderScratch> makeScratch() const override;
 

@@ -14,13 +14,15 @@ namespace yardsim::forces::hydro {
 /// (hull, free-surface settings) => a message when the hull reaches the damping zone or the
 /// truncation radius: its farthest point from the waterline centre (horizontally) against
 /// R - dampingWidth.
-std::optional<std::string> checkTruncation(const PanelMesh& hull_W, const FreeSurfaceSettings& settings);
+std::optional<std::string> checkTruncation(const PanelMesh& hull_W,
+                                           const FreeSurfaceSettings& settings);
 
 /// (free-surface mesh, settings, shortest wave period in the sea T_min, g) => a message when a
 /// free-surface panel inside the damping zone's inner edge is larger (diameter) than a tenth of
 /// the shortest deep-water wave g T_min^2 / (2 pi).
-std::optional<std::string> checkPanelSize(const FreeSurfaceMesh& surface, const FreeSurfaceSettings& settings, double shortestPeriod,
-                                          double g = 9.80665);
+std::optional<std::string> checkPanelSize(const FreeSurfaceMesh& surface,
+                                          const FreeSurfaceSettings& settings,
+                                          double shortestPeriod, double g = 9.80665);
 
 /// (emp limit of the mesh, step) => a message when dt exceeds the limit 2 / sqrt(g lambda_max).
 std::optional<std::string> checkEmpStep(const EmpLimit& limit, double dt);

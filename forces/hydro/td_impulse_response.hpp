@@ -40,14 +40,14 @@ namespace yardsim::forces::hydro {
 
 struct ImpulseResponseSettings {
   RankineTdSettings solver;
-  double dt = 0.0;                  ///< s, the march's step and the responses' sample spacing
-  double memory = 60.0;             ///< s, length of K(t) and of h(t) after t = 0
-  std::vector<double> headings;     ///< rad, in B; empty: no excitation responses
-  double cutoff = 0.0;              ///< w_c, rad/s (> 0 when there are headings)
-  double lead = 0.0;                ///< s, how long before t = 0 the excitation march starts (0: 12 / w_c)
-  int frequencies = 240;            ///< quadrature points on [0, 3 w_c]
-  double bandStart = 0.0;           ///< w1, rad/s: K's damping kept below (0: raw K, no band limit)
-  double bandEnd = 0.0;             ///< w2 > w1, rad/s: and tapered to 0 here
+  double dt = 0.0;               ///< s, the march's step and the responses' sample spacing
+  double memory = 60.0;          ///< s, length of K(t) and of h(t) after t = 0
+  std::vector<double> headings;  ///< rad, in B; empty: no excitation responses
+  double cutoff = 0.0;           ///< w_c, rad/s (> 0 when there are headings)
+  double lead = 0.0;       ///< s, how long before t = 0 the excitation march starts (0: 12 / w_c)
+  int frequencies = 240;   ///< quadrature points on [0, 3 w_c]
+  double bandStart = 0.0;  ///< w1, rad/s: K's damping kept below (0: raw K, no band limit)
+  double bandEnd = 0.0;    ///< w2 > w1, rad/s: and tapered to 0 here
 };
 
 /// (model, panels per wavelength) => the frequency of the deep-water wave whose length is that
@@ -55,17 +55,20 @@ struct ImpulseResponseSettings {
 double resolvedFrequency(const RankineTdModel& model, double panelsPerWave = 10.0);
 
 /// (model, settings) => K(t) and h_beta(t) with aInf, headings, dt and excitationStart; the key is
-/// left empty (the model does not keep the hull it was made from). Throws std::invalid_argument with the
-/// numbers when dt exceeds the emp limit of the model's free-surface mesh.
-ImpulseResponse computeImpulseResponse(const RankineTdModel& model, const ImpulseResponseSettings& settings);
+/// left empty (the model does not keep the hull it was made from). Throws std::invalid_argument
+/// with the numbers when dt exceeds the emp limit of the model's free-surface mesh.
+ImpulseResponse computeImpulseResponse(const RankineTdModel& model,
+                                       const ImpulseResponseSettings& settings);
 
 /// (hull in B, mean pose X_WB, settings) => the same, building the model, with the key
 /// impulseResponseKey(hull_B, X_WB, settings).
-ImpulseResponse computeImpulseResponse(const PanelMesh& hull_B, const dynamics::Transform& X_WB, const ImpulseResponseSettings& settings);
+ImpulseResponse computeImpulseResponse(const PanelMesh& hull_B, const dynamics::Transform& X_WB,
+                                       const ImpulseResponseSettings& settings);
 
 /// (hull in B, X_WB, settings) => "rankine_td-" + 16 hex digits: FNV-1a (64 bit) over the mesh's
 /// vertices and panels, the pose and every setting, so a cache can tell two hulls or two set-ups
 /// apart (the same inputs always give the same key).
-std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transform& X_WB, const ImpulseResponseSettings& settings);
+std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transform& X_WB,
+                               const ImpulseResponseSettings& settings);
 
 }  // namespace yardsim::forces::hydro

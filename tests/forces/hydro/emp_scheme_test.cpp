@@ -18,7 +18,8 @@ namespace {
 // (model, dt, steps) => largest |zeta| over the run divided by the initial largest |zeta|
 double growth(const RankineTdModel& model, double dt, int steps) {
   FreeSurfaceState state = quietSurface(model);
-  for (Eigen::Index k = 0; k < state.zeta.size(); ++k) state.zeta[k] = 1e-3 * std::sin(0.37 * static_cast<double>(k * k));
+  for (Eigen::Index k = 0; k < state.zeta.size(); ++k)
+    state.zeta[k] = 1e-3 * std::sin(0.37 * static_cast<double>(k * k));
   EmpScratch scratch = makeEmpScratch(model);
   const Eigen::VectorXd still = Eigen::VectorXd::Zero(model.problem().bodyCount()), none;
   const double start = state.zeta.cwiseAbs().maxCoeff();
@@ -37,12 +38,14 @@ TEST_CASE("the emp step limit separates bounded from growing runs") {
   RankineTdSettings s = hemisphereSettings(1.0, 2.0, 8.0);
   const RankineTdModel model(cubeSphere(1.0, 6), yardsim::dynamics::Transform{}, s);
   const EmpLimit limit = empLimit(model);
-  INFO("lambda_max " << limit.lambdaMax << " 1/m, h " << limit.smallestPanel << " m, lambda h " << limit.lambdaMax * limit.smallestPanel
-                     << ", dt_max " << limit.dtMax << " s");
+  INFO("lambda_max " << limit.lambdaMax << " 1/m, h " << limit.smallestPanel << " m, lambda h "
+                     << limit.lambdaMax * limit.smallestPanel << ", dt_max " << limit.dtMax
+                     << " s");
   CHECK(limit.lambdaMax * limit.smallestPanel > 2.5);
   CHECK(limit.lambdaMax * limit.smallestPanel < 3.6);
   CHECK(limit.dtMax == Approx(2.0 / std::sqrt(kG * limit.lambdaMax)));
-  const double below = growth(model, 0.97 * limit.dtMax, 600), above = growth(model, 1.03 * limit.dtMax, 600);
+  const double below = growth(model, 0.97 * limit.dtMax, 600),
+               above = growth(model, 1.03 * limit.dtMax, 600);
   INFO("growth at 0.97 dt_max " << below << ", at 1.03 dt_max " << above);
   CHECK(below < 10.0);
   CHECK(above > 1e4);
@@ -69,7 +72,8 @@ TEST_CASE("the damping zone absorbs an outgoing ring wave") {
       double e = 0.0;
       for (int k = 0; k < model.problem().surfaceCount(); ++k) {
         const Panel& p = model.problem().surface()[static_cast<std::size_t>(k)];
-        if (p.centroid.head<2>().norm() < inner) e += 0.5 * kRho * kG * state.zeta[k] * state.zeta[k] * p.area;
+        if (p.centroid.head<2>().norm() < inner)
+          e += 0.5 * kRho * kG * state.zeta[k] * state.zeta[k] * p.area;
       }
       return e;
     };
@@ -79,7 +83,9 @@ TEST_CASE("the damping zone absorbs an outgoing ring wave") {
     const int steps = static_cast<int>((period + 1.2 * back) / dt);
     for (int n = 0; n < steps; ++n) {
       const double t = n * dt;
-      const double v = t < period ? std::sin(2.0 * std::numbers::pi * t / period) * std::sin(std::numbers::pi * t / period) : 0.0;
+      const double v = t < period ? std::sin(2.0 * std::numbers::pi * t / period) *
+                                        std::sin(std::numbers::pi * t / period)
+                                  : 0.0;
       a = v * heave;
       empStep(model, dt, a, none, state, scratch);
       peak = std::max(peak, innerEnergy());

@@ -20,7 +20,8 @@ namespace {
 
 // (ka, mode) => A and B scaled as Hulme's
 std::pair<double, double> coefficients(double ka, int mode, int n = 8) {
-  const RankineTdModel model(cubeSphere(1.0, n), yardsim::dynamics::Transform{}, hemisphereSettings(ka));
+  const RankineTdModel model(cubeSphere(1.0, n), yardsim::dynamics::Transform{},
+                             hemisphereSettings(ka));
   const double omega = std::sqrt(kG * ka), period = 2.0 * std::numbers::pi / omega;
   ForcedOscillationSettings f;
   f.omega = omega;
@@ -36,9 +37,11 @@ TEST_CASE("forced surge of a floating hemisphere matches Hulme 1982") {
   struct Row {
     double ka, a, b;
   };
-  for (const Row row : {Row{0.3, 0.5848, 0.0255}, Row{0.6, 0.6586, 0.1516}, Row{1.0, 0.5740, 0.3535}, Row{1.4, 0.4038, 0.406}}) {
+  for (const Row row : {Row{0.3, 0.5848, 0.0255}, Row{0.6, 0.6586, 0.1516},
+                        Row{1.0, 0.5740, 0.3535}, Row{1.4, 0.4038, 0.406}}) {
     const auto [a, b] = coefficients(row.ka, 0);
-    INFO("ka " << row.ka << ": A " << a << " (Hulme " << row.a << "), B " << b << " (Hulme " << row.b << ")");
+    INFO("ka " << row.ka << ": A " << a << " (Hulme " << row.a << "), B " << b << " (Hulme "
+               << row.b << ")");
     CHECK(a == Approx(row.a).epsilon(0.05));
     CHECK(b == Approx(row.b).epsilon(0.08));
   }

@@ -72,10 +72,13 @@ TEST_CASE("free-surface rings cover the annulus from the waterline to the trunca
   CHECK(smallest > 0.15 * 2.0 * std::numbers::pi / 32.0);
   CHECK(largest > smallest);
   // ring 0 is the waterline itself: no gap between hull and free surface
-  for (std::size_t k = 0; k < loop.size(); ++k) CHECK((fs.mesh.vertices[k] - wet.vertices[static_cast<std::size_t>(loop[k])]).norm() == 0.0);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    CHECK((fs.mesh.vertices[k] - wet.vertices[static_cast<std::size_t>(loop[k])]).norm() == 0.0);
 }
 
-TEST_CASE("the damping rises from zero at the inner edge of the zone to its strength at the truncation radius") {
+TEST_CASE(
+    "the damping rises from zero at the inner edge of the zone to its strength at the truncation "
+    "radius") {
   const FreeSurfaceMesh fs = buildFreeSurface(wettedSurface(cubeSphere(1.0, 8)), settings());
   const std::vector<Panel> panels = buildPanels(fs.mesh);
   double outer = 0.0;
@@ -98,10 +101,12 @@ TEST_CASE("a hull reaching the truncation radius is refused with its numbers") {
   s.truncationRadius = 1.1;
   s.dampingWidth = 0.0;
   CHECK_THROWS_WITH(buildFreeSurface(wettedSurface(cubeSphere(1.0, 8)), s),
-                    Catch::Contains("waterline radius 1.000000 m") && Catch::Contains("truncationRadius 1.100000 m"));
+                    Catch::Contains("waterline radius 1.000000 m") &&
+                        Catch::Contains("truncationRadius 1.100000 m"));
   s = settings();
   s.dampingWidth = 19.5;
-  CHECK_THROWS_WITH(buildFreeSurface(wettedSurface(cubeSphere(1.0, 8)), s), Catch::Contains("damping zone (19.500000 m wide) reaches the hull"));
+  CHECK_THROWS_WITH(buildFreeSurface(wettedSurface(cubeSphere(1.0, 8)), s),
+                    Catch::Contains("damping zone (19.500000 m wide) reaches the hull"));
 }
 
 TEST_CASE("a hull with no waterline is refused") {

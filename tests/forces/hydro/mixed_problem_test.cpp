@@ -48,8 +48,11 @@ Vector3 gradAt(const Vector3& x, const std::vector<Vector3>& sources) {
 std::pair<double, double> errors(const Case& c, double depth, const std::vector<Vector3>& sources) {
   const MixedProblem pb(c.body, c.surface, depth);
   Eigen::MatrixXd a(pb.bodyCount(), 1), p(pb.surfaceCount(), 1);
-  for (int k = 0; k < pb.bodyCount(); ++k) a(k, 0) = c.body[static_cast<std::size_t>(k)].normal.dot(gradAt(c.body[static_cast<std::size_t>(k)].centroid, sources));
-  for (int k = 0; k < pb.surfaceCount(); ++k) p(k, 0) = phiAt(c.surface[static_cast<std::size_t>(k)].centroid, sources);
+  for (int k = 0; k < pb.bodyCount(); ++k)
+    a(k, 0) = c.body[static_cast<std::size_t>(k)].normal.dot(
+        gradAt(c.body[static_cast<std::size_t>(k)].centroid, sources));
+  for (int k = 0; k < pb.surfaceCount(); ++k)
+    p(k, 0) = phiAt(c.surface[static_cast<std::size_t>(k)].centroid, sources);
   const Eigen::MatrixXd u = pb.solve(a, p);
   double eb = 0.0, mb = 0.0, ef = 0.0, mf = 0.0;
   for (int k = 0; k < pb.bodyCount(); ++k) {
@@ -70,9 +73,12 @@ std::pair<double, double> errors(const Case& c, double depth, const std::vector<
 
 TEST_CASE("the mixed problem reproduces a point source above the free surface") {
   const std::vector<Vector3> source{{0.3, 0.2, 2.0}};
-  const auto [coarseBody, coarseSurface] = errors(hemisphere(6, 40.0), std::numeric_limits<double>::infinity(), source);
-  const auto [fineBody, fineSurface] = errors(hemisphere(10, 40.0), std::numeric_limits<double>::infinity(), source);
-  INFO("hull phi error " << coarseBody << " -> " << fineBody << ", free-surface phi_n error " << coarseSurface << " -> " << fineSurface);
+  const auto [coarseBody, coarseSurface] =
+      errors(hemisphere(6, 40.0), std::numeric_limits<double>::infinity(), source);
+  const auto [fineBody, fineSurface] =
+      errors(hemisphere(10, 40.0), std::numeric_limits<double>::infinity(), source);
+  INFO("hull phi error " << coarseBody << " -> " << fineBody << ", free-surface phi_n error "
+                         << coarseSurface << " -> " << fineSurface);
   // (the hull error is held at about 0.4 % by the truncation at 40 m, where phi ~ 1/r is cut off;
   // the free-surface error, largest at the waterline, falls with the panel size)
   CHECK(fineBody < 0.01);
@@ -87,8 +93,10 @@ TEST_CASE("the sea-bed image makes the bed a wall") {
   const std::vector<Vector3> sources{{0.3, 0.2, 2.0}, {0.3, 0.2, -2.0 * h - 2.0}};
   const Case c = hemisphere(8, 40.0);
   const auto [withBody, withSurface] = errors(c, h, sources);
-  const auto [withoutBody, withoutSurface] = errors(c, std::numeric_limits<double>::infinity(), sources);
-  INFO("with image " << withBody << ", " << withSurface << "; without " << withoutBody << ", " << withoutSurface);
+  const auto [withoutBody, withoutSurface] =
+      errors(c, std::numeric_limits<double>::infinity(), sources);
+  INFO("with image " << withBody << ", " << withSurface << "; without " << withoutBody << ", "
+                     << withoutSurface);
   CHECK(withBody < 0.01);
   CHECK(withSurface < 0.1);
   CHECK(withoutBody > 10.0 * withBody);
@@ -99,7 +107,8 @@ TEST_CASE("the adjoint maps give the direct solve's functionals") {
   const Case c = hemisphere(4, 8.0);
   const MixedProblem pb(c.body, c.surface);
   const Eigen::MatrixXd w = Eigen::MatrixXd::Random(pb.size(), 3);
-  const Eigen::MatrixXd a = Eigen::MatrixXd::Random(pb.bodyCount(), 2), p = Eigen::MatrixXd::Random(pb.surfaceCount(), 2);
+  const Eigen::MatrixXd a = Eigen::MatrixXd::Random(pb.bodyCount(), 2),
+                        p = Eigen::MatrixXd::Random(pb.surfaceCount(), 2);
   const auto [qb, qf] = pb.adjointMaps(w);
   const Eigen::MatrixXd direct = w.transpose() * pb.solve(a, p);
   const Eigen::MatrixXd viaMaps = qb * a + qf * p;

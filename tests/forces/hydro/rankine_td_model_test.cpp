@@ -16,10 +16,12 @@ TEST_CASE("A_inf from psi_j matches the negative-image added mass") {
   const yardsim::dynamics::Transform X_WB{};
   const RankineTdModel model(hull, X_WB, hemisphereSettings(1.0));
   const Matrix6 image = floatingAddedMass(hull, X_WB, kRho);
-  INFO("A_inf surge " << model.aInf()(0, 0) / kHemisphereMass << " heave " << model.aInf()(2, 2) / kHemisphereMass << "; image "
+  INFO("A_inf surge " << model.aInf()(0, 0) / kHemisphereMass << " heave "
+                      << model.aInf()(2, 2) / kHemisphereMass << "; image "
                       << image(0, 0) / kHemisphereMass << ", " << image(2, 2) / kHemisphereMass);
   for (int i : {0, 1, 2}) CHECK(model.aInf()(i, i) == Approx(image(i, i)).epsilon(0.01));
-  // (the published infinite-frequency values: surge 0.2732, heave 0.5 of rho (2/3) pi a^3; Hulme 1982)
+  // (the published infinite-frequency values: surge 0.2732, heave 0.5 of rho (2/3) pi a^3; Hulme
+  // 1982)
   CHECK(model.aInf()(0, 0) / kHemisphereMass == Approx(0.2732).epsilon(0.03));
   CHECK(model.aInf()(2, 2) / kHemisphereMass == Approx(0.5).epsilon(0.02));
   // symmetric and free of couplings the hemisphere's symmetry forbids

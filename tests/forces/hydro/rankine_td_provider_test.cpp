@@ -28,20 +28,24 @@ namespace {
 dynamics::Model heaveBody(const dynamics::Matrix6& aInf) {
   dynamics::ModelBuilder b;
   const double m = kHemisphereMass;
-  b.setGravity(Vector3::Zero());  // weight and buoyancy balance at the mean pose: only the spring acts
-  b.addBody("float", "world", dynamics::Joint::prismatic(Vector3::UnitZ()), dynamics::Transform::identity(),
-            dynamics::makeInertia(m, Vector3(0.0, 0.0, -0.375), 0.4 * m * Eigen::Matrix3d::Identity()));
+  b.setGravity(
+      Vector3::Zero());  // weight and buoyancy balance at the mean pose: only the spring acts
+  b.addBody(
+      "float", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
+      dynamics::Transform::identity(),
+      dynamics::makeInertia(m, Vector3(0.0, 0.0, -0.375), 0.4 * m * Eigen::Matrix3d::Identity()));
   b.setAddedMass("float", dynamics::addedMassAboutOrigin(aInf, Vector3::Zero()));
   return b.build();
 }
 
 std::shared_ptr<const RankineTdModel> panels() {
-  return std::make_shared<const RankineTdModel>(cubeSphere(1.0, 6), dynamics::Transform{}, hemisphereSettings(1.0));
+  return std::make_shared<const RankineTdModel>(cubeSphere(1.0, 6), dynamics::Transform{},
+                                                hemisphereSettings(1.0));
 }
 
 // (provider, model, q, v, t, scratch) => the heave force it adds at the first stage of a step at t
-double heaveForce(const RankineTdProvider& p, const dynamics::Model& model, dynamics::Data& d, double z, double w, double t,
-                  forces::ProviderScratch& scratch) {
+double heaveForce(const RankineTdProvider& p, const dynamics::Model& model, dynamics::Data& d,
+                  double z, double w, double t, forces::ProviderScratch& scratch) {
   Eigen::VectorXd q(1), v(1), tau = Eigen::VectorXd::Zero(1);
   q[0] = z;
   v[0] = w;
@@ -54,7 +58,8 @@ double heaveForce(const RankineTdProvider& p, const dynamics::Model& model, dyna
 
 }  // namespace
 
-TEST_CASE("driven in heave the provider returns the emp march's force and holds it between panel steps") {
+TEST_CASE(
+    "driven in heave the provider returns the emp march's force and holds it between panel steps") {
   const auto pm = panels();
   const double panelStep = 0.1, h = 0.05;
   const dynamics::Model model = heaveBody(pm->aInf());
@@ -89,23 +94,30 @@ TEST_CASE("the provider's carried state restores a run bit for bit") {
   scratch->carried(saved);
   REQUIRE(saved.size() == 7 + 2 * static_cast<std::size_t>(pm->problem().surfaceCount()));
   std::vector<double> first, second;
-  for (int n = 30; n < 50; ++n) first.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *scratch));
+  for (int n = 30; n < 50; ++n)
+    first.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *scratch));
   auto fresh = p.makeScratch();
   fresh->restoreCarried(saved);
-  for (int n = 30; n < 50; ++n) second.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *fresh));
+  for (int n = 30; n < 50; ++n)
+    second.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *fresh));
   CHECK(first == second);
 }
 
 TEST_CASE("a panel step above the emp limit is refused with the numbers") {
   const auto pm = panels();
   const dynamics::Model model = heaveBody(pm->aInf());
-  CHECK_THROWS_WITH(RankineTdProvider("radiation", model, 1, pm, 0.5), Catch::Contains("above the emp limit") && Catch::Contains("radiation"));
+  CHECK_THROWS_WITH(RankineTdProvider("radiation", model, 1, pm, 0.5),
+                    Catch::Contains("above the emp limit") && Catch::Contains("radiation"));
 }
 
-TEST_CASE("a floating hemisphere released in heave decays at the radiation damping of its natural frequency") {
+TEST_CASE(
+    "a floating hemisphere released in heave decays at the radiation damping of its natural "
+    "frequency") {
   const auto pm = panels();
   const dynamics::Model model = heaveBody(pm->aInf());
-  const double c33 = kRho * kG * std::numbers::pi;  // waterplane of the 24-gon is 1 % smaller; the same spring for both sides
+  const double c33 =
+      kRho * kG *
+      std::numbers::pi;  // waterplane of the 24-gon is 1 % smaller; the same spring for both sides
   const auto run = [&](bool radiation) {
     // (RK4 at h, the provider at 2 h) => upward zero crossings and peaks of the heave
     const double h = 0.04;
@@ -113,10 +125,12 @@ TEST_CASE("a floating hemisphere released in heave decays at the radiation dampi
     auto scratch = p.makeScratch();
     dynamics::MultibodySystem system(model);
     double stepStart = 0.0;
-    system.setForces([&](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, const dynamics::Data& d, dynamics::ExternalForces& f,
+    system.setForces([&](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs,
+                         const dynamics::Data& d, dynamics::ExternalForces& f,
                          Eigen::VectorXd& tau) {
       tau[0] -= c33 * qs[0];
-      if (radiation) p.evaluate(forces::Stage{ts, model, d, qs, vs, scratch.get(), stepStart}, f, tau);
+      if (radiation)
+        p.evaluate(forces::Stage{ts, model, d, qs, vs, scratch.get(), stepStart}, f, tau);
     });
     dynamics::Rk4 rk4(model);
     double t = 0.0;
@@ -140,7 +154,8 @@ TEST_CASE("a floating hemisphere released in heave decays at the radiation dampi
   REQUIRE(ups.size() >= 3);
   const double period = ups[2] - ups[1], omega = 2.0 * std::numbers::pi / period;
   const double decrement = std::log(peaks[1] / peaks[2]);
-  const double zeta = decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + decrement * decrement);
+  const double zeta =
+      decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + decrement * decrement);
   // (the solver's own A and B at that frequency) => the expected damping ratio and period
   ForcedOscillationSettings f;
   f.omega = omega;
@@ -148,8 +163,11 @@ TEST_CASE("a floating hemisphere released in heave decays at the radiation dampi
   const RadiationCoefficients r = forcedOscillation(*pm, 2, f);
   const double mass = kHemisphereMass + r.addedMass[2];
   const double zetaExpected = r.damping[2] / (2.0 * mass * std::sqrt(c33 / mass));
-  const double periodExpected = 2.0 * std::numbers::pi / (std::sqrt(c33 / mass) * std::sqrt(1.0 - zetaExpected * zetaExpected));
-  INFO("period " << period << " s (expected " << periodExpected << "), damping ratio " << zeta << " (expected " << zetaExpected << ")");
+  const double periodExpected =
+      2.0 * std::numbers::pi /
+      (std::sqrt(c33 / mass) * std::sqrt(1.0 - zetaExpected * zetaExpected));
+  INFO("period " << period << " s (expected " << periodExpected << "), damping ratio " << zeta
+                 << " (expected " << zetaExpected << ")");
   CHECK(period == Approx(periodExpected).epsilon(0.03));
   CHECK(zeta == Approx(zetaExpected).epsilon(0.15));
   const auto [still, unused] = run(false);

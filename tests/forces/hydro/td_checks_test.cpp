@@ -18,11 +18,13 @@ TEST_CASE("a hull inside the undamped free surface passes and one reaching the z
   s.dampingWidth = 3.5;
   const auto m = checkTruncation(hull, s);
   REQUIRE(m.has_value());
-  CHECK_THAT(*m, Catch::Contains("reaches 1 m") && Catch::Contains("truncation radius 4 m") && Catch::Contains("= 0.5 m"));
+  CHECK_THAT(*m, Catch::Contains("reaches 1 m") && Catch::Contains("truncation radius 4 m") &&
+                     Catch::Contains("= 0.5 m"));
 }
 
 TEST_CASE("free-surface panels longer than a tenth of the shortest wave are named") {
-  const RankineTdSettings s = hemisphereSettings(1.0);  // 10 panels per wavelength of ka = 1 radially
+  const RankineTdSettings s =
+      hemisphereSettings(1.0);  // 10 panels per wavelength of ka = 1 radially
   const FreeSurfaceMesh fs = buildFreeSurface(wettedSurface(cubeSphere(1.0, 6)), s.freeSurface);
   // the azimuthal panel size far out (24 around) is the largest: a long shortest wave passes
   CHECK_FALSE(checkPanelSize(fs, s.freeSurface, 12.0).has_value());
@@ -39,5 +41,6 @@ TEST_CASE("a step above the emp limit is named with the limit") {
   CHECK_FALSE(checkEmpStep(limit, 0.99 * limit.dtMax).has_value());
   const auto m = checkEmpStep(limit, 0.2);
   REQUIRE(m.has_value());
-  CHECK_THAT(*m, Catch::Contains("0.2 s is above the emp limit 0.1844 s") && Catch::Contains("lambda_max 12 1/m"));
+  CHECK_THAT(*m, Catch::Contains("0.2 s is above the emp limit 0.1844 s") &&
+                     Catch::Contains("lambda_max 12 1/m"));
 }

@@ -17,8 +17,10 @@ inline constexpr double kHemisphereMass = kRho * 2.0 / 3.0 * std::numbers::pi;
 
 /// (ka, truncation radius in wavelengths, panels per wavelength far out) => settings for a = 1:
 /// first ring 0.2 m, growth 1.15, a damping zone one wavelength wide (at most R - a - 2 lambda).
-inline RankineTdSettings hemisphereSettings(double ka, double wavelengths = 3.0, double perWavelength = 10.0) {
-  const double k = ka, lambda = 2.0 * std::numbers::pi / k, period = 2.0 * std::numbers::pi / std::sqrt(kG * k);
+inline RankineTdSettings hemisphereSettings(double ka, double wavelengths = 3.0,
+                                            double perWavelength = 10.0) {
+  const double k = ka, lambda = 2.0 * std::numbers::pi / k,
+               period = 2.0 * std::numbers::pi / std::sqrt(kG * k);
   RankineTdSettings s;
   s.rho = kRho;
   s.g = kG;
@@ -27,7 +29,8 @@ inline RankineTdSettings hemisphereSettings(double ka, double wavelengths = 3.0,
   s.freeSurface.growth = 1.15;
   s.freeSurface.truncationRadius = 1.0 + wavelengths * lambda;
   s.freeSurface = defaultBeach(s.freeSurface, period, kG);
-  s.freeSurface.dampingWidth = std::min(s.freeSurface.dampingWidth, s.freeSurface.truncationRadius - 1.0 - 2.0 * lambda);
+  s.freeSurface.dampingWidth =
+      std::min(s.freeSurface.dampingWidth, s.freeSurface.truncationRadius - 1.0 - 2.0 * lambda);
   return s;
 }
 

@@ -1,9 +1,9 @@
 // The impulse responses of a floating hemisphere (a = 1 m) from the time-domain solver, checked
 // against the same solver's forced oscillation (a different route: one steady sine per frequency)
 // and against each other:
-//   B(w) = int_0^inf K(t) cos(w t) dt,  A(w) = A_inf - (1/w) int_0^inf K(t) sin(w t) dt  (Ogilvie 1964)
-//   Haskind (deep water, Newman 1962): B_jj = w^3 / (4 pi rho g^3) int_0^2pi |X_j(beta)|^2 dbeta,
-//   i.e. heave B33 = w^3 |X3|^2 / (2 rho g^3), surge B11 = w^3 |X1(0)|^2 / (4 rho g^3),
+//   B(w) = int_0^inf K(t) cos(w t) dt,  A(w) = A_inf - (1/w) int_0^inf K(t) sin(w t) dt  (Ogilvie
+//   1964) Haskind (deep water, Newman 1962): B_jj = w^3 / (4 pi rho g^3) int_0^2pi |X_j(beta)|^2
+//   dbeta, i.e. heave B33 = w^3 |X3|^2 / (2 rho g^3), surge B11 = w^3 |X1(0)|^2 / (4 rho g^3),
 // with X(w) = int h(t) e^(-i w t) dt / W(w) from the excitation response of the incident
 // impulse wave. And the cache key: the same inputs give the same key, any change another.
 #include <catch2/catch.hpp>
@@ -26,7 +26,9 @@ const double kOmega = std::sqrt(kG * kKa);
 
 // (hull divisions) => a model whose free surface and damping zone are sized for ka = 0.4 (an
 // impulse radiates long waves too), with panels of ka = 1 / 10 of its wavelength far out
-RankineTdSettings impulseSettings() { return hemisphereSettings(0.4, 3.0, 25.0); }
+RankineTdSettings impulseSettings() {
+  return hemisphereSettings(0.4, 3.0, 25.0);
+}
 
 ImpulseResponseSettings settings(const RankineTdModel& model) {
   ImpulseResponseSettings s;
@@ -43,7 +45,8 @@ ImpulseResponseSettings settings(const RankineTdModel& model) {
 std::pair<double, double> fromRetardation(const ImpulseResponse& r, double w, int i, int j) {
   double c = 0.0, s = 0.0;
   for (std::size_t k = 0; k < r.radiation.size(); ++k) {
-    const double t = static_cast<double>(k) * r.dt, weight = (k == 0 || k + 1 == r.radiation.size() ? 0.5 : 1.0) * r.dt;
+    const double t = static_cast<double>(k) * r.dt,
+                 weight = (k == 0 || k + 1 == r.radiation.size() ? 0.5 : 1.0) * r.dt;
     c += weight * r.radiation[k](i, j) * std::cos(w * t);
     s += weight * r.radiation[k](i, j) * std::sin(w * t);
   }
@@ -70,7 +73,8 @@ TEST_CASE("the impulse responses agree with forced oscillation and with the Hask
       double peak = 0.0, tail = 0.0;
       for (std::size_t k = 0; k < r.radiation.size(); ++k) {
         peak = std::max(peak, std::abs(r.radiation[k](j, j)));
-        if (static_cast<double>(k) * r.dt > s.memory - 1.0) tail = std::max(tail, std::abs(r.radiation[k](j, j)));
+        if (static_cast<double>(k) * r.dt > s.memory - 1.0)
+          tail = std::max(tail, std::abs(r.radiation[k](j, j)));
       }
       CHECK(tail < 0.03 * peak);
     }
@@ -82,8 +86,8 @@ TEST_CASE("the impulse responses agree with forced oscillation and with the Hask
     for (const int j : {0, 2}) {
       const RadiationCoefficients forced = forcedOscillation(model, j, f);
       const auto [b, dA] = fromRetardation(r, kOmega, j, j);
-      INFO("mode " << j << ": B " << b << " (forced " << forced.damping[j] << "), A " << r.aInf(j, j) + dA << " (forced "
-                   << forced.addedMass[j] << ")");
+      INFO("mode " << j << ": B " << b << " (forced " << forced.damping[j] << "), A "
+                   << r.aInf(j, j) + dA << " (forced " << forced.addedMass[j] << ")");
       CHECK(b == Approx(forced.damping[j]).epsilon(0.03));
       CHECK(r.aInf(j, j) + dA == Approx(forced.addedMass[j]).epsilon(0.03));
     }
@@ -111,11 +115,12 @@ TEST_CASE("the impulse responses agree with forced oscillation and with the Hask
     x1 /= window;
     x3 /= window;
     const double w3 = kOmega * kOmega * kOmega, g3 = kG * kG * kG;
-    const double b33 = w3 * std::norm(x3) / (2.0 * kRho * g3), b11 = w3 * std::norm(x1) / (4.0 * kRho * g3);
+    const double b33 = w3 * std::norm(x3) / (2.0 * kRho * g3),
+                 b11 = w3 * std::norm(x1) / (4.0 * kRho * g3);
     const auto [b33k, unused3] = fromRetardation(r, kOmega, 2, 2);
     const auto [b11k, unused1] = fromRetardation(r, kOmega, 0, 0);
-    INFO("Haskind B33 " << b33 << " vs radiation " << b33k << "; B11 " << b11 << " vs " << b11k << "; |X3| " << std::abs(x3) << " |X1| "
-                        << std::abs(x1));
+    INFO("Haskind B33 " << b33 << " vs radiation " << b33k << "; B11 " << b11 << " vs " << b11k
+                        << "; |X3| " << std::abs(x3) << " |X1| " << std::abs(x1));
     CHECK(b33 == Approx(b33k).epsilon(0.03));
     CHECK(b11 == Approx(b11k).epsilon(0.03));
   }
@@ -143,9 +148,11 @@ TEST_CASE("the impulse-response key follows the mesh and the settings") {
 }
 
 TEST_CASE("a step above the emp limit is refused with the numbers") {
-  const RankineTdModel model(cubeSphere(1.0, 4), yardsim::dynamics::Transform{}, hemisphereSettings(kKa, 2.0, 6.0));
+  const RankineTdModel model(cubeSphere(1.0, 4), yardsim::dynamics::Transform{},
+                             hemisphereSettings(kKa, 2.0, 6.0));
   ImpulseResponseSettings s;
   s.solver = model.settings();
   s.dt = 1.2 * empLimit(model, 60).dtMax;
-  CHECK_THROWS_WITH(computeImpulseResponse(model, s), Catch::Contains("above the emp limit") && Catch::Contains("lambda_max"));
+  CHECK_THROWS_WITH(computeImpulseResponse(model, s),
+                    Catch::Contains("above the emp limit") && Catch::Contains("lambda_max"));
 }

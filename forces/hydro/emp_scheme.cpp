@@ -35,7 +35,10 @@ Vector6 empStep(const RankineTdModel& model, double dt,
   state.zeta.array() +=
       dt * (phiZ - 2.0 * nu * scratch.zetaOld.array() + nu * nu / g * state.phi.array());
   // (zeta^n, zeta^n+1, a_t^n) => F^M(t_n); then phi^n+1 (dynamic, implicit)
-  Vector6 f = model.forceFromSurface() * (-0.5 * g * (scratch.zetaOld + state.zeta));
+  // (the Dirichlet value -g (zeta^n + zeta^n+1) / 2 in the scratch buffer: no temporary)
+  scratch.zetaOld = -0.5 * g * (scratch.zetaOld + state.zeta);
+  Vector6 f;
+  f.noalias() = model.forceFromSurface() * scratch.zetaOld;
   if (memoryNeumann.size() == nb) f.noalias() += model.forceFromBody() * memoryNeumann;
   state.phi -= dt * g * state.zeta;
   return f;

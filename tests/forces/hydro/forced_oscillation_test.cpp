@@ -2,8 +2,8 @@
 // added mass and damping by Fourier analysis of the steady force, against Hulme (1982), "The
 // wave forces acting on a floating hemisphere undergoing forced periodic oscillations", J. Fluid
 // Mech. 121, 443-463, Table 2 (surge; the values as transcribed in public reference data found by
-// searching, the paper itself was not at hand), both scaled by rho (2/3) pi a^3 (B also by omega), at
-// K a = omega^2 a / g. Tolerances are for this coarse mesh (the infinite-frequency surge added
+// searching, the paper itself was not at hand), both scaled by rho (2/3) pi a^3 (B also by omega),
+// at K a = omega^2 a / g. Tolerances are for this coarse mesh (the infinite-frequency surge added
 // mass of the same hull is 2 % off); docs/hydrodynamics.md plots a finer one. Forced heave: the
 // damping is positive and the added mass tends to A_inf at high frequency.
 #include <catch2/catch.hpp>

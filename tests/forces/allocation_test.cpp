@@ -262,8 +262,8 @@ TEST_CASE("the rankine_td provider does not allocate at a stage or a panel step"
   settings.freeSurface.maxSpacing = 1.0;
   settings.freeSurface.dampingWidth = 3.0;
   settings.freeSurface.dampingStrength = 1.0;
-  const auto panels =
-      std::make_shared<const hydro::RankineTdModel>(hydro::cubeSphere(1.0, 4), dynamics::Transform{}, settings);
+  const auto panels = std::make_shared<const hydro::RankineTdModel>(
+      hydro::cubeSphere(1.0, 4), dynamics::Transform{}, settings);
   const hydro::RankineTdProvider radiation("radiation", m, 1, panels, 0.1);
   Rig r(m, {});
   r.v[2] = 0.3;  // moving, so that the march has something to do

@@ -1,6 +1,6 @@
 // The time-domain Rankine-panel solver at the size: a floating hemisphere of radius 10 m
 // (cube sphere n = 18: 972 wetted panels, 72 waterline vertices) with 41 free-surface rings out to
-// 3 wavelengths of T = 8 s (3,024 panels):
+// 3 wavelengths of T = 8 s (2,952 panels):
 //   TdSetup     wetted surface, free-surface mesh, influence assembly, LU, adjoint force maps
 //               (counters: assembly_s, lu_s, maps_s as measured inside, N)
 //   TdStep      one emp step (one right-hand side, one back-substitution, free-surface update,

@@ -21,6 +21,8 @@
 #include "forces/lines/lumped_line.hpp"
 #include "forces/rotational_spring_damper.hpp"
 #include "forces/spring_damper.hpp"
+#include "forces/hydro/hull_shapes.hpp"
+#include "forces/hydro/rankine_td_provider.hpp"
 
 using yardsim::testing::allocationCount;
 
@@ -246,4 +248,41 @@ TEST_CASE("a lumped line's node forces and masses do not allocate") {
   const double e = line.potentialEnergy(r);
   CHECK(allocationCount() == before);
   CHECK(std::isfinite(e + f.sum() + tension.sum() + m[3].sum()));
+}
+
+TEST_CASE("the rankine_td provider does not allocate at a stage or a panel step") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("float", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(2e3, Vector3(2, 2, 1)));
+  const dynamics::Model m = b.build();
+  hydro::RankineTdSettings settings;
+  settings.freeSurface.truncationRadius = 8.0;
+  settings.freeSurface.firstSpacing = 0.3;
+  settings.freeSurface.maxSpacing = 1.0;
+  settings.freeSurface.dampingWidth = 3.0;
+  settings.freeSurface.dampingStrength = 1.0;
+  const auto panels = std::make_shared<const hydro::RankineTdModel>(
+      hydro::cubeSphere(1.0, 4), dynamics::Transform{}, settings);
+  const hydro::RankineTdProvider radiation("radiation", m, 1, panels, 0.1);
+  Rig r(m, {});
+  r.v[2] = 0.3;  // moving, so that the march has something to do
+  const Stage s = r.stage();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  auto scratch = radiation.makeScratch();
+  double sink = 0.0;
+  const std::size_t before = allocationCount();
+  for (int n = 0; n < 6; ++n) {
+    // (a step's first stage at t = n dt / 2: a panel step every other one) => evaluate and power
+    Stage own = s;
+    own.t = own.stepStart = 0.05 * n;
+    own.scratch = scratch.get();
+    radiation.evaluate(own, f, tau);
+    own.t += 0.025;
+    radiation.evaluate(own, f, tau);
+    sink += radiation.power(own);
+  }
+  CHECK(allocationCount() == before);
+  CHECK(sink != 0.0);
 }

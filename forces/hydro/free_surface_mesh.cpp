@@ -1,0 +1,173 @@
+#include "forces/hydro/free_surface_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <string>
+
+namespace yardsim::forces::hydro {
+
+FreeSurfaceSettings defaultBeach(FreeSurfaceSettings s, double longestPeriod, double g) {
+  // (T) => width lambda = g T^2 / (2 pi), nu_max = 2 pi / T
+  s.dampingWidth = g * longestPeriod * longestPeriod / (2.0 * std::numbers::pi);
+  s.dampingStrength = 2.0 * std::numbers::pi / longestPeriod;
+  return s;
+}
+
+std::vector<int> waterlineLoop(const PanelMesh& wetted) {
+  // (panels) => directed edges; an edge whose reverse is absent is open
+  double size = 0.0;
+  for (const Vector3& v : wetted.vertices) size = std::max(size, v.norm());
+  const double tol = 1e-9 * std::max(size, 1.0);
+  std::set<std::pair<int, int>> edges;
+  for (const auto& ix : wetted.panels) {
+    const int n = ix[3] < 0 ? 3 : 4;
+    for (int j = 0; j < n; ++j)
+      edges.emplace(ix[static_cast<std::size_t>(j)], ix[static_cast<std::size_t>((j + 1) % n)]);
+  }
+  std::map<int, int> next;
+  for (const auto& [a, b] : edges) {
+    const bool onPlane = std::abs(wetted.vertices[static_cast<std::size_t>(a)].z()) <= tol &&
+                         std::abs(wetted.vertices[static_cast<std::size_t>(b)].z()) <= tol;
+    if (onPlane && !edges.contains({b, a})) {
+      if (!next.emplace(a, b).second)
+        throw FreeSurfaceError("waterline: vertex " + std::to_string(a) + " starts two open edges");
+    }
+  }
+  if (next.size() < 3)
+    throw FreeSurfaceError(
+        "waterline: the wetted hull has no closed waterline on z = 0 (fewer than 3 open edges "
+        "there)");
+  // (next) => one loop from the first vertex; every open edge must be on it
+  std::vector<int> loop{next.begin()->first};
+  while (true) {
+    const auto it = next.find(loop.back());
+    if (it == next.end())
+      throw FreeSurfaceError("waterline: open at vertex " + std::to_string(loop.back()));
+    if (it->second == loop.front()) break;
+    loop.push_back(it->second);
+    if (loop.size() > next.size())
+      throw FreeSurfaceError("waterline: the open edges do not close into a loop");
+  }
+  if (loop.size() != next.size()) {
+    throw FreeSurfaceError("waterline: " + std::to_string(next.size()) +
+                           " open edges on z = 0 but the loop has " + std::to_string(loop.size()) +
+                           " (several waterlines: one floating hull per solver)");
+  }
+  // (loop) => counter-clockwise seen from above (positive signed area)
+  double area = 0.0;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Vector3& a = wetted.vertices[static_cast<std::size_t>(loop[k])];
+    const Vector3& b = wetted.vertices[static_cast<std::size_t>(loop[(k + 1) % loop.size()])];
+    area += a.x() * b.y() - b.x() * a.y();
+  }
+  if (area < 0.0) std::reverse(loop.begin(), loop.end());
+  return loop;
+}
+
+namespace {
+
+// (settings, mean waterline radius) => ring distances d_0 = 0 < d_1 < ... = R - r_mean
+std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean) {
+  const double span = s.truncationRadius - rMean;
+  std::vector<double> d{0.0};
+  double h = s.firstSpacing;
+  while (d.back() + 0.5 * h < span) {
+    d.push_back(d.back() + h);
+    h = std::min(h * s.growth, s.maxSpacing);
+  }
+  // (rings) => stretched so that the last one lands on the truncation radius
+  const double scale = span / d.back();
+  for (double& x : d) x *= scale;
+  return d;
+}
+
+}  // namespace
+
+FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSettings& s) {
+  if (!(s.firstSpacing > 0.0) || !(s.maxSpacing >= s.firstSpacing) || !(s.growth >= 1.0) ||
+      !(s.dampingWidth >= 0.0) || !(s.dampingStrength >= 0.0)) {
+    throw FreeSurfaceError(
+        "free surface: need firstSpacing > 0, maxSpacing >= firstSpacing, growth >= 1, "
+        "dampingWidth and dampingStrength >= 0");
+  }
+  const std::vector<int> loop = waterlineLoop(wetted);
+  const auto nw = static_cast<int>(loop.size());
+  FreeSurfaceMesh out;
+  // (loop) => centre c, polar coordinates (r_k, theta_k) of the waterline vertices
+  for (const int v : loop) out.centre += wetted.vertices[static_cast<std::size_t>(v)];
+  out.centre /= nw;
+  out.centre.z() = 0.0;
+  std::vector<double> r(static_cast<std::size_t>(nw)), theta(static_cast<std::size_t>(nw));
+  double rMean = 0.0;
+  for (int k = 0; k < nw; ++k) {
+    const Vector3 d =
+        wetted.vertices[static_cast<std::size_t>(loop[static_cast<std::size_t>(k)])] - out.centre;
+    r[static_cast<std::size_t>(k)] = std::hypot(d.x(), d.y());
+    theta[static_cast<std::size_t>(k)] = std::atan2(d.y(), d.x());
+    rMean += r[static_cast<std::size_t>(k)] / nw;
+    out.waterlineRadius = std::max(out.waterlineRadius, r[static_cast<std::size_t>(k)]);
+  }
+  // (theta) => star-shaped: the azimuth turns once round, always forward
+  double turn = 0.0;
+  for (int k = 0; k < nw; ++k) {
+    double dt = theta[static_cast<std::size_t>((k + 1) % nw)] - theta[static_cast<std::size_t>(k)];
+    dt = std::remainder(dt, 2.0 * std::numbers::pi);
+    if (!(dt > 0.0)) {
+      throw FreeSurfaceError("free surface: the waterline is not star-shaped about its centre (" +
+                             std::to_string(out.centre.x()) + ", " +
+                             std::to_string(out.centre.y()) +
+                             ") m: its azimuth turns back at waterline vertex " +
+                             std::to_string(loop[static_cast<std::size_t>(k)]));
+    }
+    turn += dt;
+  }
+  if (std::abs(turn - 2.0 * std::numbers::pi) > 1e-6)
+    throw FreeSurfaceError("free surface: the waterline does not go once round its centre");
+  if (!(s.truncationRadius > out.waterlineRadius + s.firstSpacing)) {
+    throw FreeSurfaceError(
+        "free surface: the hull reaches the truncation radius: waterline radius " +
+        std::to_string(out.waterlineRadius) + " m + first ring " + std::to_string(s.firstSpacing) +
+        " m >= truncationRadius " + std::to_string(s.truncationRadius) + " m");
+  }
+  if (s.dampingWidth >= s.truncationRadius - out.waterlineRadius) {
+    throw FreeSurfaceError("free surface: the damping zone (" + std::to_string(s.dampingWidth) +
+                           " m wide) reaches the hull (waterline radius " +
+                           std::to_string(out.waterlineRadius) + " m, truncation radius " +
+                           std::to_string(s.truncationRadius) + " m)");
+  }
+  // (rings) => vertices: ring 0 on the waterline, ring m at r_k + t_m (R - r_k) along theta_k
+  const std::vector<double> d = ringDistances(s, rMean);
+  const double span = s.truncationRadius - rMean;
+  for (std::size_t m = 0; m < d.size(); ++m) {
+    for (int k = 0; k < nw; ++k) {
+      const auto sk = static_cast<std::size_t>(k);
+      const double rr = r[sk] + d[m] / span * (s.truncationRadius - r[sk]);
+      out.mesh.vertices.push_back(out.centre +
+                                  Vector3(rr * std::cos(theta[sk]), rr * std::sin(theta[sk]), 0.0));
+      if (m == 0) out.mesh.vertices.back() = wetted.vertices[static_cast<std::size_t>(loop[sk])];
+    }
+  }
+  // (rings m, m + 1) => quads with normal -z: (m,k) (m,k+1) (m+1,k+1) (m+1,k) turns clockwise
+  // seen from above (k counter-clockwise), i.e. counter-clockwise seen from the fluid below
+  const double zoneStart = s.truncationRadius - s.dampingWidth;
+  for (std::size_t m = 0; m + 1 < d.size(); ++m) {
+    for (int k = 0; k < nw; ++k) {
+      const int a = static_cast<int>(m) * nw + k, b = static_cast<int>(m + 1) * nw + k;
+      const int a1 = static_cast<int>(m) * nw + (k + 1) % nw,
+                b1 = static_cast<int>(m + 1) * nw + (k + 1) % nw;
+      out.mesh.addQuad(a, a1, b1, b);
+      Vector3 c = Vector3::Zero();
+      for (const int v : {a, b, b1, a1}) c += out.mesh.vertices[static_cast<std::size_t>(v)] / 4.0;
+      const double rc = std::hypot(c.x() - out.centre.x(), c.y() - out.centre.y());
+      const double x =
+          s.dampingWidth > 0.0 ? std::max(0.0, (rc - zoneStart) / s.dampingWidth) : 0.0;
+      out.damping.push_back(s.dampingStrength * x * x);
+    }
+  }
+  return out;
+}
+
+}  // namespace yardsim::forces::hydro

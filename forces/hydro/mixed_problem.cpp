@@ -1,0 +1,93 @@
+#include "forces/hydro/mixed_problem.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "forces/hydro/rankine_integrals.hpp"
+
+namespace yardsim::forces::hydro {
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurface, double depth)
+    : body_(std::move(body)), surface_(std::move(freeSurface)), depth_(depth) {
+  const auto nb = static_cast<Eigen::Index>(body_.size()),
+             nf = static_cast<Eigen::Index>(surface_.size());
+  const Eigen::Index n = nb + nf;
+  const bool image = std::isfinite(depth_);
+  if (image) {
+    for (const Panel& p : body_) {
+      for (int k = 0; k < p.count; ++k) {
+        if (!(p.vertices[static_cast<std::size_t>(k)].z() > -depth_)) {
+          throw PanelError("mixed problem: the hull reaches the sea bed (a vertex at z = " +
+                           std::to_string(p.vertices[static_cast<std::size_t>(k)].z()) +
+                           " m, depth " + std::to_string(depth_) + " m)");
+        }
+      }
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  system_.resize(n, n);
+  fromBody_.resize(n, nb);
+  fromSurface_.resize(n, nf);
+  // (panel j, collocation points x_i and their sea-bed images) => column j of M and of R_b or R_f
+  const auto panel = [&](Eigen::Index j) -> const Panel& {
+    return j < nb ? body_[static_cast<std::size_t>(j)] : surface_[static_cast<std::size_t>(j - nb)];
+  };
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const Panel& pj = panel(j);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Vector3& x = panel(i).centroid;
+      PanelIntegrals v = panelIntegrals(pj, x);
+      if (image) {
+        const PanelIntegrals w = panelIntegrals(pj, Vector3(x.x(), x.y(), -2.0 * depth_ - x.z()));
+        v.source += w.source;
+        v.dipole += w.dipole;
+      }
+      const double self = i == j ? 2.0 * std::numbers::pi : 0.0;
+      if (j < nb) {
+        system_(i, j) = self - v.dipole;
+        fromBody_(i, j) = -v.source;
+      } else {
+        system_(i, j) = v.source;
+        fromSurface_(i, j - nb) = v.dipole - self;
+      }
+    }
+  }
+  assemblySeconds_ = seconds(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  lu_.emplace(system_);
+  factorSeconds_ = seconds(t1);
+}
+
+void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
+                         const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
+                         Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const {
+  // (a, p) => R_b a + R_f p, then u = M^-1 rhs by the LU's back-substitution
+  rhs.noalias() = fromBody_ * bodyNormal;
+  rhs.noalias() += fromSurface_ * surfacePotential;
+  out = lu_->solve(rhs);
+}
+
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(
+    const Eigen::MatrixXd& w) const {
+  // (w) => z = M^-T w, then (z^T R_b, z^T R_f)
+  const Eigen::MatrixXd z = lu_->transpose().solve(w);
+  return {z.transpose() * fromBody_, z.transpose() * fromSurface_};
+}
+
+Eigen::MatrixXd MixedProblem::solve(const Eigen::MatrixXd& bodyNormal,
+                                    const Eigen::MatrixXd& surfacePotential) const {
+  Eigen::MatrixXd rhs(size(), bodyNormal.cols()), out(size(), bodyNormal.cols());
+  solve(bodyNormal, surfacePotential, rhs, out);
+  return out;
+}
+
+}  // namespace yardsim::forces::hydro

@@ -1,0 +1,175 @@
+// The rankine_td provider: (1) driven by a prescribed heave it returns exactly the emp march's
+// memory force, held between panel steps; (2) its carried state restores a run bit for bit;
+// (3) a floating hemisphere (mass rho (2/3) pi a^3, A_inf on the left-hand side, a linear
+// hydrostatic spring C33 = rho g pi a^2) released 5 cm high decays with the damping ratio
+// B / (2 (M + A) w) and the period of the solver's own A(w), B(w) at the natural frequency
+// (forced oscillation of the same panel model); without the provider it does not decay.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+
+#include "dynamics/added_mass.hpp"
+#include "dynamics/integrators/rk4.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/model_builder.hpp"
+#include "dynamics/multibody_system.hpp"
+#include "forces/hydro/forced_oscillation.hpp"
+#include "forces/hydro/rankine_td_provider.hpp"
+#include "td_fixtures.hpp"
+
+using namespace yardsim;
+using namespace yardsim::forces::hydro;
+using namespace yardsim::forces::hydro::test;
+
+namespace {
+
+// (with A_inf) => a hemisphere's body on a vertical prismatic joint, origin at the waterline
+dynamics::Model heaveBody(const dynamics::Matrix6& aInf) {
+  dynamics::ModelBuilder b;
+  const double m = kHemisphereMass;
+  b.setGravity(
+      Vector3::Zero());  // weight and buoyancy balance at the mean pose: only the spring acts
+  b.addBody(
+      "float", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
+      dynamics::Transform::identity(),
+      dynamics::makeInertia(m, Vector3(0.0, 0.0, -0.375), 0.4 * m * Eigen::Matrix3d::Identity()));
+  b.setAddedMass("float", dynamics::addedMassAboutOrigin(aInf, Vector3::Zero()));
+  return b.build();
+}
+
+std::shared_ptr<const RankineTdModel> panels() {
+  return std::make_shared<const RankineTdModel>(cubeSphere(1.0, 6), dynamics::Transform{},
+                                                hemisphereSettings(1.0));
+}
+
+// (provider, model, q, v, t, scratch) => the heave force it adds at the first stage of a step at t
+double heaveForce(const RankineTdProvider& p, const dynamics::Model& model, dynamics::Data& d,
+                  double z, double w, double t, forces::ProviderScratch& scratch) {
+  Eigen::VectorXd q(1), v(1), tau = Eigen::VectorXd::Zero(1);
+  q[0] = z;
+  v[0] = w;
+  dynamics::forwardKinematics(model, d, q, v);
+  dynamics::ExternalForces f(model);
+  const forces::Stage s{t, model, d, q, v, &scratch, t};
+  p.evaluate(s, f, tau);
+  return f.bodyFrame(1).tail<3>().z();  // body axes = world axes here
+}
+
+}  // namespace
+
+TEST_CASE(
+    "driven in heave the provider returns the emp march's force and holds it between panel steps") {
+  const auto pm = panels();
+  const double panelStep = 0.1, h = 0.05;
+  const dynamics::Model model = heaveBody(pm->aInf());
+  const RankineTdProvider p("radiation", model, 1, pm, panelStep);
+  dynamics::Data d(model);
+  auto scratch = p.makeScratch();
+  // the same march by hand
+  FreeSurfaceState state = quietSurface(*pm);
+  EmpScratch emp = makeEmpScratch(*pm);
+  const Eigen::VectorXd heave = pm->modes().col(2), none;
+  double held = 0.0;
+  for (int n = 0; n < 80; ++n) {
+    const double t = n * h, w = 0.3 * std::sin(2.5 * t) * std::min(1.0, t);
+    if (n % 2 == 0) {
+      const Eigen::VectorXd a = w * heave;
+      held = empStep(*pm, panelStep, a, none, state, emp)[2];
+    }
+    CHECK(heaveForce(p, model, d, 0.0, w, t, *scratch) == held);
+  }
+  CHECK(held != 0.0);
+}
+
+TEST_CASE("the provider's carried state restores a run bit for bit") {
+  const auto pm = panels();
+  const dynamics::Model model = heaveBody(pm->aInf());
+  const RankineTdProvider p("radiation", model, 1, pm, 0.1);
+  dynamics::Data d(model);
+  auto scratch = p.makeScratch();
+  const auto w = [](double t) { return 0.2 * std::sin(3.0 * t); };
+  for (int n = 0; n < 30; ++n) heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *scratch);
+  std::vector<double> saved;
+  scratch->carried(saved);
+  REQUIRE(saved.size() == 7 + 2 * static_cast<std::size_t>(pm->problem().surfaceCount()));
+  std::vector<double> first, second;
+  for (int n = 30; n < 50; ++n)
+    first.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *scratch));
+  auto fresh = p.makeScratch();
+  fresh->restoreCarried(saved);
+  for (int n = 30; n < 50; ++n)
+    second.push_back(heaveForce(p, model, d, 0.0, w(n * 0.1), n * 0.1, *fresh));
+  CHECK(first == second);
+}
+
+TEST_CASE("a panel step above the emp limit is refused with the numbers") {
+  const auto pm = panels();
+  const dynamics::Model model = heaveBody(pm->aInf());
+  CHECK_THROWS_WITH(RankineTdProvider("radiation", model, 1, pm, 0.5),
+                    Catch::Contains("above the emp limit") && Catch::Contains("radiation"));
+}
+
+TEST_CASE(
+    "a floating hemisphere released in heave decays at the radiation damping of its natural "
+    "frequency") {
+  const auto pm = panels();
+  const dynamics::Model model = heaveBody(pm->aInf());
+  const double c33 =
+      kRho * kG *
+      std::numbers::pi;  // waterplane of the 24-gon is 1 % smaller; the same spring for both sides
+  const auto run = [&](bool radiation) {
+    // (RK4 at h, the provider at 2 h) => upward zero crossings and peaks of the heave
+    const double h = 0.04;
+    const RankineTdProvider p("radiation", model, 1, pm, 2 * h);
+    auto scratch = p.makeScratch();
+    dynamics::MultibodySystem system(model);
+    double stepStart = 0.0;
+    system.setForces([&](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs,
+                         const dynamics::Data& d, dynamics::ExternalForces& f,
+                         Eigen::VectorXd& tau) {
+      tau[0] -= c33 * qs[0];
+      if (radiation)
+        p.evaluate(forces::Stage{ts, model, d, qs, vs, scratch.get(), stepStart}, f, tau);
+    });
+    dynamics::Rk4 rk4(model);
+    double t = 0.0;
+    Eigen::VectorXd q(1), v(1);
+    q[0] = 0.05;
+    v[0] = 0.0;
+    std::vector<double> peaks, ups;
+    double prev = q[0], prevPrev = q[0];
+    for (int n = 0; n < 400; ++n) {
+      stepStart = t;
+      rk4.step(system, t, q, v, h);
+      if (prev > prevPrev && prev > q[0]) peaks.push_back(prev);
+      if (prev < 0.0 && q[0] >= 0.0) ups.push_back(t - h * q[0] / (q[0] - prev));
+      prevPrev = prev;
+      prev = q[0];
+    }
+    return std::make_pair(peaks, ups);
+  };
+  const auto [peaks, ups] = run(true);
+  REQUIRE(peaks.size() >= 3);
+  REQUIRE(ups.size() >= 3);
+  const double period = ups[2] - ups[1], omega = 2.0 * std::numbers::pi / period;
+  const double decrement = std::log(peaks[1] / peaks[2]);
+  const double zeta =
+      decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + decrement * decrement);
+  // (the solver's own A and B at that frequency) => the expected damping ratio and period
+  ForcedOscillationSettings f;
+  f.omega = omega;
+  f.dt = 0.04;
+  const RadiationCoefficients r = forcedOscillation(*pm, 2, f);
+  const double mass = kHemisphereMass + r.addedMass[2];
+  const double zetaExpected = r.damping[2] / (2.0 * mass * std::sqrt(c33 / mass));
+  const double periodExpected =
+      2.0 * std::numbers::pi /
+      (std::sqrt(c33 / mass) * std::sqrt(1.0 - zetaExpected * zetaExpected));
+  INFO("period " << period << " s (expected " << periodExpected << "), damping ratio " << zeta
+                 << " (expected " << zetaExpected << ")");
+  CHECK(period == Approx(periodExpected).epsilon(0.03));
+  CHECK(zeta == Approx(zetaExpected).epsilon(0.15));
+  const auto [still, unused] = run(false);
+  CHECK(still[2] / still[1] > 0.999);
+}

@@ -76,7 +76,8 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
         throw std::invalid_argument(p.kind + " '" + p.name + "': unknown body '" + body + "'");
       at.push_back({b, p_B});
     }
-    contributed_.push_back(p.build(p.name, model, at));
+    contributed_.push_back(p.buildFromSystem ? p.buildFromSystem(p.name, mech_, at)
+                                             : p.build(p.name, model, at));
   }
   // (typed providers) => the one list, in the order every stage evaluates them
   for (auto& r : ropes_) providers_.push_back(r.get());

@@ -1,6 +1,8 @@
 #include "collision/body_collision.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace yardsim::collision {
 
@@ -22,8 +24,36 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     for (const auto& [body, p] : spec_.ropes[r].path) w.filter().ignoreOwners(ropeOwner(r), body);
   };
   // (shapes) => the contact world
-  for (const BodyShape& s : spec_.shapes)
+  for (const BodyShape& s : spec_.shapes) {
     contactIds_.push_back(contact_.add(s.shape, poseOf(s, kin), {s.name, {s.body}}));
+    // (shape) => the points of it that can touch the ground, in its frame
+    std::vector<Vector3> points;
+    const Vector3 h = s.shape.size / 2;
+    switch (s.shape.kind) {
+      case ShapeKind::kBox:
+        for (int k = 0; k < 8; ++k)
+          points.emplace_back(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(), k & 4 ? h.z() : -h.z());
+        break;
+      case ShapeKind::kMesh:
+        points = s.shape.mesh->vertices;
+        break;
+      case ShapeKind::kCylinder:
+        for (int k = 0; k < 32; ++k) {
+          const double a = 2 * M_PI * (k % 16) / 16.0;
+          points.emplace_back(s.shape.radius * std::cos(a), s.shape.radius * std::sin(a),
+                              (k < 16 ? -0.5 : 0.5) * s.shape.length);
+        }
+        break;
+      default:
+        break;
+    }
+    // (ignore list) => no ground contact for a body ignored with the world (a body fixed to it)
+    bool ignored = s.body == 0;
+    for (const auto& [a, b] : spec_.ignore) ignored = ignored || (a == s.body && b == 0) || (a == 0 && b == s.body);
+    if (ignored) points.clear();
+    groundPoints_.push_back(std::move(points));
+    touchesGround_.push_back(!ignored);
+  }
   for (const auto& [a, b] : spec_.ignore) {
     contact_.filter().ignoreOwners(a, b);
     clearance_.filter().ignoreOwners(a, b);
@@ -89,8 +119,54 @@ void BodyCollision::update(const dynamics::Data& kin) {
       clearance_.setRopePath(clearanceRopeIds_[r], ropePath(spec_.ropes[r], kin));
 }
 
+void BodyCollision::groundContacts(const BodyShape& s, const Transform& X_WS,
+                                   std::vector<forces::ContactPoint>& out) const {
+  const int law = spec_.pairLaw[static_cast<std::size_t>(spec_.groundMaterial * spec_.materialCount +
+                                                         s.material)];
+  const double top = spec_.groundHeight;
+  // (lowest point of a sphere of radius r at c) => a contact when below the ground
+  auto sphere = [&](const Vector3& c, double r) {
+    const double depth = top - (c.z() - r);
+    if (depth > 0) out.push_back({0, s.body, c - r * Vector3::UnitZ(), Vector3::UnitZ(), depth, law});
+  };
+  if (s.shape.kind == ShapeKind::kSphere) return sphere(X_WS.p, s.shape.radius);
+  if (s.shape.kind == ShapeKind::kCapsule) {
+    const Vector3 half = X_WS.R.col(2) * (s.shape.length / 2);
+    sphere(X_WS.p + half, s.shape.radius);
+    sphere(X_WS.p - half, s.shape.radius);
+    return;
+  }
+  for (const Vector3& p_S : groundPoints_[static_cast<std::size_t>(&s - spec_.shapes.data())]) {
+    const Vector3 p_W = X_WS.actPoint(p_S);
+    const double depth = top - p_W.z();
+    if (depth > 0) out.push_back({0, s.body, p_W, Vector3::UnitZ(), depth, law});
+  }
+}
+
+double BodyCollision::groundPenetration() const {
+  double deepest = -std::numeric_limits<double>::infinity();
+  if (!spec_.ground) return deepest;
+  const double top = spec_.groundHeight;
+  for (std::size_t i = 0; i < spec_.shapes.size(); ++i) {
+    if (!touchesGround_[i]) continue;
+    const BodyShape& s = spec_.shapes[i];
+    const Transform& X_WS = contact_.pose(contactIds_[i]);
+    if (s.shape.kind == ShapeKind::kSphere || s.shape.kind == ShapeKind::kCapsule) {
+      const double reach = s.shape.kind == ShapeKind::kCapsule
+                               ? std::abs(X_WS.R(2, 2)) * s.shape.length / 2 : 0.0;
+      deepest = std::max(deepest, top - (X_WS.p.z() - reach - s.shape.radius));
+    }
+    for (const Vector3& p_S : groundPoints_[i])
+      deepest = std::max(deepest, top - X_WS.actPoint(p_S).z());
+  }
+  return deepest;
+}
+
 void BodyCollision::contacts(std::vector<forces::ContactPoint>& out) {
   if (spec_.shapes.empty()) return;
+  if (spec_.ground)
+    for (const BodyShape& s : spec_.shapes)
+      if (touchesGround_[static_cast<std::size_t>(&s - spec_.shapes.data())]) groundContacts(s, contact_.pose(contactIds_[static_cast<std::size_t>(&s - spec_.shapes.data())]), out);
   for (const Contact& c : contact_.contacts(spec_.maxPointsPerPair)) {
     const BodyShape& a = spec_.shapes[static_cast<std::size_t>(c.a)];
     const BodyShape& b = spec_.shapes[static_cast<std::size_t>(c.b)];

@@ -57,6 +57,13 @@ struct BodyCollisionSpec {
   std::vector<int> pairLaw;                    // [m_a * materialCount + m_b] => law index
   std::vector<ClearanceSpec> watches;
   int maxPointsPerPair = 4;
+  // the ground: the half-space z <= groundHeight (world), contact computed here, not by FCL:
+  // a point at every vertex of a box or mesh below it, the lowest point of a sphere and of a
+  // capsule's end spheres, 16 points on each rim of a cylinder (FCL gives one point for a face
+  // on a plane, which rocks a resting block)
+  bool ground = false;
+  double groundHeight = 0.0;  // m
+  int groundMaterial = 0;
 };
 
 // The closest approach of one watch at the last update, with the pair's names.
@@ -75,6 +82,9 @@ class BodyCollision {
   void update(const dynamics::Data& kin);
   // (after update) => the contact points between bodies, appended to out, with the pair's law
   void contacts(std::vector<forces::ContactPoint>& out);
+  // (after update) => the deepest point of any body below the ground, m (> 0 in the ground, < 0
+  // above it: minus the smallest height over it); -infinity without a ground
+  double groundPenetration() const;
   // (after update, watch) => its closest approach
   WatchReading clearance(std::size_t watch);
 
@@ -82,6 +92,9 @@ class BodyCollision {
   const CollisionWorld& contactWorld() const { return contact_; }
 
  private:
+  // (shape, its world pose) => its contact points with the ground, appended to out
+  void groundContacts(const BodyShape& s, const Transform& X_WS,
+                      std::vector<forces::ContactPoint>& out) const;
   // (rope, kinematics) => its path points in the world, in scratch_
   const std::vector<Vector3>& ropePath(const RopeShape& r, const dynamics::Data& kin);
 
@@ -93,6 +106,8 @@ class BodyCollision {
   std::vector<int> clearanceOwnerName_;  // per clearance object: shape index, or -1 - rope index
   std::vector<int> watchIds_;
   std::vector<Vector3> scratch_;
+  std::vector<char> touchesGround_;  // per shape: not ignored with the world
+  std::vector<std::vector<Vector3>> groundPoints_;  // per shape: the points tested against the ground, B
 };
 
 }  // namespace yardsim::collision

@@ -10,11 +10,10 @@
 #include <map>
 #include <memory>
 
-#include "collision/body_collision.hpp"
+#include "collision/collision_set.hpp"
 #include "dynamics/kinematics.hpp"
 #include "forces/contact.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
-#include "forces/provider_outputs.hpp"
 #include "scene/providers/reader_support.hpp"
 
 namespace yardsim::scene::providers {
@@ -278,20 +277,6 @@ struct Built {
   std::vector<int> bodies;             // body index per attachment
 };
 
-// (contact provider, stage) => the stage's points and responses (collected again; the scratch
-// of the stage, or a temporary one)
-const forces::ContactForce::Scratch& collected(const forces::ContactForce& c, const forces::Stage& s,
-                                               std::unique_ptr<forces::ProviderScratch>& temporary) {
-  forces::ProviderScratch* scratch = s.scratch;
-  if (scratch == nullptr) {
-    temporary = c.makeScratch();
-    scratch = temporary.get();
-  }
-  const forces::Stage with{s.t, s.model, s.data, s.q, s.v, scratch, s.stepStart};
-  c.potentialEnergy(with);  // collects the points and the law's responses into the scratch
-  return static_cast<const forces::ContactForce::Scratch&>(*scratch);
-}
-
 // (what the entry says, its provider name, the built system, attachments = its bodies) => the
 // collision set's contact provider with its channels; std::invalid_argument naming the entry
 // and the place in the file for a name that matches nothing or a shape the kernel refuses
@@ -336,10 +321,9 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
     built.bodies.push_back(body);
     built.bodyNames.push_back(c.bodies[i]);
   }
-  if (c.ground) {
-    spec.shapes.push_back({0, "ground", collision::Shape::halfSpace({0, 0, 1}, c.groundHeight),
-                           dynamics::Transform::identity(), materialOf("ground")});
-  }
+  spec.ground = c.ground;
+  spec.groundHeight = c.groundHeight;
+  spec.groundMaterial = materialOf("ground");
   const int nm = static_cast<int>(materialNames.size());
   std::vector<forces::ContactMaterial> laws{c.laws.at("default")};
   spec.materialCount = nm;
@@ -397,49 +381,9 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
   } catch (const collision::CollisionError& e) {
     fail(e.what());
   }
-  // (stage) => the world at the stage's poses, its contact points
-  auto world = built.world;
-  forces::ContactSource source = [world](const forces::Stage& s, std::vector<forces::ContactPoint>& out) {
-    world->update(s.data);
-    world->contacts(out);
-  };
-  auto contact = std::make_unique<forces::ContactForce>(name, std::move(source), std::move(laws));
-  return forces::withOutputs<forces::ContactForce>(std::move(contact), [built](const forces::ContactForce& cf) {
-    std::vector<forces::ProviderOutput> out;
-    out.push_back({"points", "-", [&cf](const forces::Stage& s) {
-                     std::unique_ptr<forces::ProviderScratch> t;
-                     return static_cast<double>(collected(cf, s, t).points.size());
-                   }});
-    out.push_back({"normal_force", "N", [&cf](const forces::Stage& s) {
-                     std::unique_ptr<forces::ProviderScratch> t;
-                     double sum = 0.0;
-                     for (const auto& r : collected(cf, s, t).responses) sum += r.normalForce;
-                     return sum;
-                   }});
-    for (std::size_t i = 0; i < built.bodies.size(); ++i) {
-      const int body = built.bodies[i];
-      // (stage) => the vertical component of the contact forces on the body, N (world z)
-      out.push_back({built.bodyNames[i] + ".fz", "N", [&cf, body](const forces::Stage& s) {
-                       std::unique_ptr<forces::ProviderScratch> t;
-                       const auto& got = collected(cf, s, t);
-                       double fz = 0.0;
-                       for (std::size_t k = 0; k < got.points.size(); ++k) {
-                         const auto& p = got.points[k];
-                         const double z = got.responses[k].normalForce * p.n_W.z() + got.responses[k].tangentialForce.z();
-                         if (p.bodyB == body) fz += z;
-                         if (p.bodyA == body) fz -= z;
-                       }
-                       return fz;
-                     }});
-    }
-    const auto set = built.world;
-    for (std::size_t w = 0; w < set->spec().watches.size(); ++w)
-      out.push_back({set->spec().watches[w].name + ".distance", "m", [set, w](const forces::Stage& s) {
-                       set->update(s.data);
-                       return set->clearance(w).distance;
-                     }});
-    return out;
-  });
+  std::vector<std::pair<std::string, int>> reactions;
+  for (std::size_t i = 0; i < built.bodies.size(); ++i) reactions.emplace_back(built.bodyNames[i], built.bodies[i]);
+  return std::make_unique<collision::CollisionSet>(name, built.world, std::move(laws), reactions);
 }
 
 }  // namespace

@@ -28,7 +28,8 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
       continue;
     }
     ++it->count;
-    if (std::abs(e.value) > std::abs(it->worst)) it->worst = e.value;
+    const bool closest = e.what == "clearance_below" || e.what == "touched";  // worst: nearest
+    if (closest ? e.value < it->worst : std::abs(e.value) > std::abs(it->worst)) it->worst = e.value;
   }
 }
 

@@ -1,6 +1,7 @@
 #include "collision/collision_set.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -102,6 +103,31 @@ double CollisionSet::penetration(const forces::Stage& s) const {
   for (const auto& p : got.points) deepest = std::max(deepest, p.depth);
   if (got.points.empty()) return std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0;
   return std::max(deepest, ground);
+}
+
+forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) const {
+  forces::StiffnessHint out;
+  const double g = model.gravity.norm();
+  for (const BodyShape& s : world_->spec().shapes) {
+    if (s.body <= 0) continue;
+    const double m = model.inertias[static_cast<std::size_t>(s.body)].mass;
+    const bool flat = s.shape.kind == ShapeKind::kBox || s.shape.kind == ShapeKind::kMesh ||
+                      s.shape.kind == ShapeKind::kCylinder;
+    const double points = flat ? 4.0 : 1.0;
+    for (const forces::ContactMaterial& c : contact_->materials()) {
+      const auto& law = c.law;
+      const double n = law.kind == forces::NormalLawKind::kLinear ? 1.0 : law.exponent;
+      const double depth = std::pow(m * g / (points * law.stiffness), 1.0 / n);
+      const double k = points * n * law.stiffness * std::pow(depth, n - 1.0);
+      const auto consider = [&](double omega, const char* what) {
+        if (omega <= out.omega) return;
+        out = {omega, model.names[static_cast<std::size_t>(s.body)], what};
+      };
+      consider(std::sqrt(k / m), "contact normal");
+      consider(c.friction.mu * g / c.friction.slipSpeed, "contact friction");
+    }
+  }
+  return out;
 }
 
 }  // namespace yardsim::collision

@@ -12,6 +12,7 @@
 //   <set>.<watch>: clearance_below   the watch's distance falls below its threshold
 //   <set>.<watch>: touched           the distance reaches 0
 // with the pair's names and witness points (m, world) as the detail of a watch's events.
+// Stiffness (forces/provider_stiffness.hpp): what the contacts bring in once a body rests on them.
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,12 +21,14 @@
 #include "forces/contact.hpp"
 #include "forces/provider_events.hpp"
 #include "forces/provider_outputs.hpp"
+#include "forces/provider_stiffness.hpp"
 
 namespace yardsim::collision {
 
 class CollisionSet final : public forces::ForceProvider,
                            public forces::ProviderOutputs,
-                           public forces::ProviderEvents {
+                           public forces::ProviderEvents,
+                           public forces::ProviderStiffness {
  public:
   // (name, the world of the set's bodies, one contact law per material pair, the names of the
   // bodies whose fz is a channel with their indices) => the provider
@@ -39,6 +42,11 @@ class CollisionSet final : public forces::ForceProvider,
     return contact_->makeScratch();
   }
   const forces::ContactForce& contact() const { return *contact_; }
+  // (model) => the highest frequency of a body resting on its contacts under its weight: the
+  // normal law's sqrt(k_eff / m) (k_eff = N k, Hunt-Crossley N n k delta^(n-1) at the static
+  // depth, N = 4 points for a box, mesh or cylinder, 1 for a sphere or capsule) and friction's
+  // viscous rate mu g / v_s (the regularised stick), over the set's bodies and laws
+  forces::StiffnessHint stiffnessHint(const dynamics::Model& model) const override;
 
  protected:
   void doEvaluate(const forces::Stage& s, dynamics::ExternalForces& f,

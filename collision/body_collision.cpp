@@ -96,6 +96,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     collect(w.shapesB, w.ropesB, b);
     watchIds_.push_back(clearance_.addWatch(std::move(a), std::move(b), std::max(w.below, w.margin)));
   }
+  readingValid_.assign(spec_.watches.size(), 0);
+  readings_.resize(spec_.watches.size());
 }
 
 const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r,
@@ -107,6 +109,19 @@ const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r,
 }
 
 void BodyCollision::update(const dynamics::Data& kin) {
+  // (poses) => nothing to do when no body moved since the last update
+  bool moved = !posed_;
+  lastX_WB_.resize(kin.X_WB.size());
+  for (std::size_t b = 1; b < kin.X_WB.size(); ++b) {
+    const Transform& X = kin.X_WB[b];
+    if (moved || X.p != lastX_WB_[b].p || X.R != lastX_WB_[b].R) {
+      moved = true;
+      lastX_WB_[b] = X;
+    }
+  }
+  posed_ = true;
+  if (!moved) return;
+  std::fill(readingValid_.begin(), readingValid_.end(), 0);
   for (std::size_t i = 0; i < spec_.shapes.size(); ++i) {
     const BodyShape& s = spec_.shapes[i];
     if (s.body == 0) continue;  // the world's shapes never move
@@ -176,8 +191,11 @@ void BodyCollision::contacts(std::vector<forces::ContactPoint>& out) {
 }
 
 WatchReading BodyCollision::clearance(std::size_t watch) {
+  if (readingValid_[watch]) return readings_[watch];
   const Clearance& c = clearance_.clearance(watchIds_[watch]);
-  WatchReading out;
+  readingValid_[watch] = 1;
+  WatchReading& out = readings_[watch];
+  out = {};
   out.distance = c.closest.distance;
   if (!c.withinMargin) return out;
   auto nameOf = [&](ObjectId id) -> const std::string& {

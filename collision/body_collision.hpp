@@ -106,6 +106,12 @@ class BodyCollision {
   std::vector<int> clearanceOwnerName_;  // per clearance object: shape index, or -1 - rope index
   std::vector<int> watchIds_;
   std::vector<Vector3> scratch_;
+  // the last poses given (per body index) and the readings at them: an update with the same
+  // poses moves nothing, and a watch asked again at them is not queried again
+  std::vector<Transform> lastX_WB_;
+  bool posed_ = false;
+  std::vector<char> readingValid_;
+  std::vector<WatchReading> readings_;
   std::vector<char> touchesGround_;  // per shape: not ignored with the world
   std::vector<std::vector<Vector3>> groundPoints_;  // per shape: the points tested against the ground, B
 };

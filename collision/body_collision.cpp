@@ -32,7 +32,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     switch (s.shape.kind) {
       case ShapeKind::kBox:
         for (int k = 0; k < 8; ++k)
-          points.emplace_back(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(), k & 4 ? h.z() : -h.z());
+          points.emplace_back(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(),
+                              k & 4 ? h.z() : -h.z());
         break;
       case ShapeKind::kMesh:
         points = s.shape.mesh->vertices;
@@ -49,7 +50,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     }
     // (ignore list) => no ground contact for a body ignored with the world (a body fixed to it)
     bool ignored = s.body == 0;
-    for (const auto& [a, b] : spec_.ignore) ignored = ignored || (a == s.body && b == 0) || (a == 0 && b == s.body);
+    for (const auto& [a, b] : spec_.ignore)
+      ignored = ignored || (a == s.body && b == 0) || (a == 0 && b == s.body);
     if (ignored) points.clear();
     groundPoints_.push_back(std::move(points));
     touchesGround_.push_back(!ignored);
@@ -94,14 +96,14 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     };
     collect(w.shapesA, w.ropesA, a);
     collect(w.shapesB, w.ropesB, b);
-    watchIds_.push_back(clearance_.addWatch(std::move(a), std::move(b), std::max(w.below, w.margin)));
+    watchIds_.push_back(
+        clearance_.addWatch(std::move(a), std::move(b), std::max(w.below, w.margin)));
   }
   readingValid_.assign(spec_.watches.size(), 0);
   readings_.resize(spec_.watches.size());
 }
 
-const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r,
-                                                    const dynamics::Data& kin) {
+const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r, const dynamics::Data& kin) {
   scratch_.clear();
   for (const auto& [body, p_B] : r.path)
     scratch_.push_back(body == 0 ? p_B : kin.X_WB[static_cast<std::size_t>(body)].actPoint(p_B));
@@ -136,13 +138,14 @@ void BodyCollision::update(const dynamics::Data& kin) {
 
 void BodyCollision::groundContacts(const BodyShape& s, const Transform& X_WS,
                                    std::vector<forces::ContactPoint>& out) const {
-  const int law = spec_.pairLaw[static_cast<std::size_t>(spec_.groundMaterial * spec_.materialCount +
-                                                         s.material)];
+  const int law = spec_.pairLaw[static_cast<std::size_t>(
+      spec_.groundMaterial * spec_.materialCount + s.material)];
   const double top = spec_.groundHeight;
   // (lowest point of a sphere of radius r at c) => a contact when below the ground
   auto sphere = [&](const Vector3& c, double r) {
     const double depth = top - (c.z() - r);
-    if (depth > 0) out.push_back({0, s.body, c - r * Vector3::UnitZ(), Vector3::UnitZ(), depth, law});
+    if (depth > 0)
+      out.push_back({0, s.body, c - r * Vector3::UnitZ(), Vector3::UnitZ(), depth, law});
   };
   if (s.shape.kind == ShapeKind::kSphere) return sphere(X_WS.p, s.shape.radius);
   if (s.shape.kind == ShapeKind::kCapsule) {
@@ -167,8 +170,8 @@ double BodyCollision::groundPenetration() const {
     const BodyShape& s = spec_.shapes[i];
     const Transform& X_WS = contact_.pose(contactIds_[i]);
     if (s.shape.kind == ShapeKind::kSphere || s.shape.kind == ShapeKind::kCapsule) {
-      const double reach = s.shape.kind == ShapeKind::kCapsule
-                               ? std::abs(X_WS.R(2, 2)) * s.shape.length / 2 : 0.0;
+      const double reach =
+          s.shape.kind == ShapeKind::kCapsule ? std::abs(X_WS.R(2, 2)) * s.shape.length / 2 : 0.0;
       deepest = std::max(deepest, top - (X_WS.p.z() - reach - s.shape.radius));
     }
     for (const Vector3& p_S : groundPoints_[i])
@@ -181,11 +184,14 @@ void BodyCollision::contacts(std::vector<forces::ContactPoint>& out) {
   if (spec_.shapes.empty()) return;
   if (spec_.ground)
     for (const BodyShape& s : spec_.shapes)
-      if (touchesGround_[static_cast<std::size_t>(&s - spec_.shapes.data())]) groundContacts(s, contact_.pose(contactIds_[static_cast<std::size_t>(&s - spec_.shapes.data())]), out);
+      if (touchesGround_[static_cast<std::size_t>(&s - spec_.shapes.data())])
+        groundContacts(
+            s, contact_.pose(contactIds_[static_cast<std::size_t>(&s - spec_.shapes.data())]), out);
   for (const Contact& c : contact_.contacts(spec_.maxPointsPerPair)) {
     const BodyShape& a = spec_.shapes[static_cast<std::size_t>(c.a)];
     const BodyShape& b = spec_.shapes[static_cast<std::size_t>(c.b)];
-    const int law = spec_.pairLaw[static_cast<std::size_t>(a.material * spec_.materialCount + b.material)];
+    const int law =
+        spec_.pairLaw[static_cast<std::size_t>(a.material * spec_.materialCount + b.material)];
     out.push_back({a.body, b.body, c.p_W, c.n_W, c.depth, law});
   }
 }

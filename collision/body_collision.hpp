@@ -8,8 +8,8 @@
 //
 // Filtering by rule: a body never collides with itself (its shapes share an owner), nor the
 // world's shapes with each other; a rope never with the bodies it is attached to; and the body
-// pairs of `ignore` (the caller lists jointed bodies and what the scene ignores). Materials: each shape has a material
-// index; the pair (m_a, m_b) picks a contact law index from the pair table.
+// pairs of `ignore` (the caller lists jointed bodies and what the scene ignores). Materials: each
+// shape has a material index; the pair (m_a, m_b) picks a contact law index from the pair table.
 //
 // Frames and units: X_WB from dynamics::Data (body pose in the world W), X_BS shape frame in
 // the body frame B, points and normals in W, m. Not thread-safe (the worlds reuse scratch).
@@ -51,10 +51,10 @@ struct ClearanceSpec {
 struct BodyCollisionSpec {
   std::vector<BodyShape> shapes;
   std::vector<RopeShape> ropes;
-  int bodyCount = 1;                         // the model's bodies (with the world)
-  std::vector<std::pair<int, int>> ignore;   // body index pairs never tested (jointed bodies, ...)
-  int materialCount = 1;                       // material names
-  std::vector<int> pairLaw;                    // [m_a * materialCount + m_b] => law index
+  int bodyCount = 1;                        // the model's bodies (with the world)
+  std::vector<std::pair<int, int>> ignore;  // body index pairs never tested (jointed bodies, ...)
+  int materialCount = 1;                    // material names
+  std::vector<int> pairLaw;                 // [m_a * materialCount + m_b] => law index
   std::vector<ClearanceSpec> watches;
   int maxPointsPerPair = 4;
   // the ground: the half-space z <= groundHeight (world), contact computed here, not by FCL:
@@ -113,7 +113,8 @@ class BodyCollision {
   std::vector<char> readingValid_;
   std::vector<WatchReading> readings_;
   std::vector<char> touchesGround_;  // per shape: not ignored with the world
-  std::vector<std::vector<Vector3>> groundPoints_;  // per shape: the points tested against the ground, B
+  std::vector<std::vector<Vector3>>
+      groundPoints_;  // per shape: the points tested against the ground, B
 };
 
 }  // namespace yardsim::collision

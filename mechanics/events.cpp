@@ -18,7 +18,8 @@ std::vector<EventSlot> eventTable(const System& s) {
   for (int w = 0; w < static_cast<int>(s.watches().size()); ++w)
     table.push_back({K::WatchCrossed, w, false});
   for (int e = 0; e < static_cast<int>(s.providerEvents().size()); ++e)
-    table.push_back({K::Provider, e, !s.providerEvents()[static_cast<std::size_t>(e)]->falling.empty()});
+    table.push_back(
+        {K::Provider, e, !s.providerEvents()[static_cast<std::size_t>(e)]->falling.empty()});
   return table;
 }
 

@@ -14,10 +14,10 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
   const auto* events = dynamic_cast<const devs::Port<models::MechanicsEvent>*>(&port);
   if (events == nullptr || port.name() != "event") return;
   for (const models::MechanicsEvent& e : events->values()) {
-    const bool alarm = e.what == "over_mbl" || e.what == "crossed" ||
-                       e.what == "clearance_below" || e.what == "touched";
-    const bool notice = e.what == "slack" || e.what == "taut" || e.what == "contact" ||
-                        e.what == "release";
+    const bool alarm = e.what == "over_mbl" || e.what == "crossed" || e.what == "clearance_below" ||
+                       e.what == "touched";
+    const bool notice =
+        e.what == "slack" || e.what == "taut" || e.what == "contact" || e.what == "release";
     if (!alarm && !notice) continue;
     auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
       return a.model == m.path() && a.element == e.element && a.kind == e.what;
@@ -29,7 +29,8 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
     }
     ++it->count;
     const bool closest = e.what == "clearance_below" || e.what == "touched";  // worst: nearest
-    if (closest ? e.value < it->worst : std::abs(e.value) > std::abs(it->worst)) it->worst = e.value;
+    if (closest ? e.value < it->worst : std::abs(e.value) > std::abs(it->worst))
+      it->worst = e.value;
   }
 }
 

@@ -37,8 +37,8 @@ struct CollisionSpec {
   std::vector<std::string> bodies;
   std::map<std::string, collision::Shape> shapes;  // separate collision shapes, centred on B
   bool ground = false;
-  double groundHeight = 0.0;  // m, world z of the ground plane
-  std::map<std::string, std::string> materials;  // body or "ground" => material name
+  double groundHeight = 0.0;                            // m, world z of the ground plane
+  std::map<std::string, std::string> materials;         // body or "ground" => material name
   std::map<std::string, forces::ContactMaterial> laws;  // "a/b" (sorted) or "default"
   std::vector<std::pair<std::string, std::string>> ignore;
   std::vector<WatchSpec> watches;
@@ -77,13 +77,15 @@ std::string where(const YAML::Node& n) {
 // ({box: [lx, ly, lz]} | {sphere: r} | {cylinder: {radius, length}} | {capsule: {radius,
 // length}}) => the shape; every size must be > 0 m
 collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std::string& key) {
-  const char* expected = "expected one of {box: [lx, ly, lz]}, {sphere: r}, "
-                         "{cylinder: {radius, length}}, {capsule: {radius, length}} (m, > 0)";
+  const char* expected =
+      "expected one of {box: [lx, ly, lz]}, {sphere: r}, "
+      "{cylinder: {radius, length}}, {capsule: {radius, length}} (m, > 0)";
   if (!n.IsMap() || n.size() != 1) {
     r.fail(n, key, expected);
     return collision::Shape::sphere(1.0);
   }
-  if (!r.keys(n, {"box", "sphere", "cylinder", "capsule"}, key)) return collision::Shape::sphere(1.0);
+  if (!r.keys(n, {"box", "sphere", "cylinder", "capsule"}, key))
+    return collision::Shape::sphere(1.0);
   auto positive = [&](const YAML::Node& at, const std::string& k) {
     const double v = r.number(at, k, 1.0, true);
     if (at && !(v > 0)) r.fail(at, k, "must be > 0 m, got " + std::to_string(v));
@@ -94,44 +96,57 @@ collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std
     if (!(size.minCoeff() > 0)) r.fail(b, key + ".box", "every edge must be > 0 m");
     return collision::Shape::box(size.cwiseMax(1e-9));
   }
-  if (const YAML::Node s = n["sphere"]) return collision::Shape::sphere(positive(s, key + ".sphere"));
+  if (const YAML::Node s = n["sphere"])
+    return collision::Shape::sphere(positive(s, key + ".sphere"));
   const bool cyl = bool(n["cylinder"]);
   YAML::Node c = cyl ? n["cylinder"] : n["capsule"];
   const std::string k = key + (cyl ? ".cylinder" : ".capsule");
   if (!r.keys(c, {"radius", "length"}, k)) return collision::Shape::sphere(1.0);
   const double radius = positive(c["radius"], k + ".radius");
   const double length = positive(c["length"], k + ".length");
-  return cyl ? collision::Shape::cylinder(radius, length) : collision::Shape::capsule(radius, length);
+  return cyl ? collision::Shape::cylinder(radius, length)
+             : collision::Shape::capsule(radius, length);
 }
 
 // ({law: hunt_crossley | linear, k, n, c | restitution + impact_speed, mu, slip_speed,
 // friction: sqrt | tanh}) => the pair's contact material
-forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n, const std::string& key) {
+forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n,
+                                const std::string& key) {
   forces::ContactMaterial m;
-  if (!r.keys(n, {"law", "k", "n", "c", "restitution", "impact_speed", "mu", "slip_speed", "friction"}, key))
+  if (!r.keys(n,
+              {"law", "k", "n", "c", "restitution", "impact_speed", "mu", "slip_speed", "friction"},
+              key))
     return m;
   const std::string law = n["law"] && n["law"].IsScalar() ? n["law"].Scalar() : "hunt_crossley";
   if (law != "hunt_crossley" && law != "linear")
     r.fail(n["law"], key + ".law", "expected hunt_crossley or linear, got '" + law + "'");
-  m.law.kind = law == "linear" ? forces::NormalLawKind::kLinear : forces::NormalLawKind::kHuntCrossley;
+  m.law.kind =
+      law == "linear" ? forces::NormalLawKind::kLinear : forces::NormalLawKind::kHuntCrossley;
   m.law.stiffness = r.number(n["k"], key + ".k", 1.0, true);
   if (n["k"] && !(m.law.stiffness > 0)) r.fail(n["k"], key + ".k", "must be > 0 (N/m^n)");
   m.law.exponent = r.number(n["n"], key + ".n", law == "linear" ? 1.0 : 1.5);
   if (!(m.law.exponent >= 1.0)) r.fail(n["n"], key + ".n", "must be >= 1");
-  if (n["c"] && n["restitution"]) r.fail(n["restitution"], key + ".restitution", "give either c or restitution");
+  if (n["c"] && n["restitution"])
+    r.fail(n["restitution"], key + ".restitution", "give either c or restitution");
   m.law.damping = nonNegative(r, n["c"], key + ".c", 0.0);
   if (const YAML::Node e = n["restitution"]) {  // (e, v0) => Lankarani-Nikravesh damping
     const double rest = r.number(e, key + ".restitution", 1.0);
     const double v0 = r.number(n["impact_speed"], key + ".impact_speed", 1.0, true);
-    if (!(rest > 0 && rest <= 1)) r.fail(e, key + ".restitution", "must be in (0, 1]");
-    else if (law == "linear") r.fail(e, key + ".restitution", "restitution sets a Hunt-Crossley law's c; give c for the linear law");
-    else if (v0 > 0) m.law.damping = forces::lankaraniNikraveshDamping(m.law.stiffness, rest, v0);
-    if (n["impact_speed"] && !(v0 > 0)) r.fail(n["impact_speed"], key + ".impact_speed", "must be > 0 m/s");
+    if (!(rest > 0 && rest <= 1))
+      r.fail(e, key + ".restitution", "must be in (0, 1]");
+    else if (law == "linear")
+      r.fail(e, key + ".restitution",
+             "restitution sets a Hunt-Crossley law's c; give c for the linear law");
+    else if (v0 > 0)
+      m.law.damping = forces::lankaraniNikraveshDamping(m.law.stiffness, rest, v0);
+    if (n["impact_speed"] && !(v0 > 0))
+      r.fail(n["impact_speed"], key + ".impact_speed", "must be > 0 m/s");
   }
   m.friction.mu = nonNegative(r, n["mu"], key + ".mu", 0.0);
   m.friction.slipSpeed = r.number(n["slip_speed"], key + ".slip_speed", 1e-3);
   if (!(m.friction.slipSpeed > 0)) r.fail(n["slip_speed"], key + ".slip_speed", "must be > 0 m/s");
-  const std::string form = n["friction"] && n["friction"].IsScalar() ? n["friction"].Scalar() : "sqrt";
+  const std::string form =
+      n["friction"] && n["friction"].IsScalar() ? n["friction"].Scalar() : "sqrt";
   if (form != "sqrt" && form != "tanh")
     r.fail(n["friction"], key + ".friction", "expected sqrt or tanh, got '" + form + "'");
   m.friction.form = form == "tanh" ? forces::FrictionForm::kTanh : forces::FrictionForm::kSqrt;
@@ -146,8 +161,10 @@ std::vector<std::string> names(const spec::Reader& r, const YAML::Node& n, const
     return out;
   }
   for (std::size_t i = 0; i < n.size(); ++i) {
-    if (n[i].IsScalar()) out.push_back(n[i].Scalar());
-    else r.fail(n[i], key + "[" + std::to_string(i) + "]", "expected a name");
+    if (n[i].IsScalar())
+      out.push_back(n[i].Scalar());
+    else
+      r.fail(n[i], key + "[" + std::to_string(i) + "]", "expected a name");
   }
   return out;
 }
@@ -155,13 +172,18 @@ std::vector<std::string> names(const spec::Reader& r, const YAML::Node& n, const
 // (entry) => what it says, every problem reported at its node
 CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::string& key) {
   CollisionSpec c;
-  if (!r.keys(n, {"bodies", "shapes", "ground", "materials", "contact", "ignore", "clearance",
-                  "points_per_pair", "rope_diameter"}, key))
+  if (!r.keys(n,
+              {"bodies", "shapes", "ground", "materials", "contact", "ignore", "clearance",
+               "points_per_pair", "rope_diameter"},
+              key))
     return c;
-  if (!n["bodies"]) r.fail(n, key, "missing required key 'bodies' (the bodies that touch: [a, b, ...])");
-  else c.bodies = names(r, n["bodies"], key + ".bodies");
+  if (!n["bodies"])
+    r.fail(n, key, "missing required key 'bodies' (the bodies that touch: [a, b, ...])");
+  else
+    c.bodies = names(r, n["bodies"], key + ".bodies");
   if (const YAML::Node s = n["shapes"]) {
-    if (!s.IsMap()) r.fail(s, key + ".shapes", "expected {body: shape, ...}");
+    if (!s.IsMap())
+      r.fail(s, key + ".shapes", "expected {body: shape, ...}");
     else
       for (auto it = s.begin(); it != s.end(); ++it) {
         const std::string b = it->first.as<std::string>();
@@ -175,14 +197,18 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     c.groundHeight = r.number(g, key + ".ground", 0.0);
   }
   if (const YAML::Node m = n["materials"]) {
-    if (!m.IsMap()) r.fail(m, key + ".materials", "expected {body | ground: material name, ...}");
+    if (!m.IsMap())
+      r.fail(m, key + ".materials", "expected {body | ground: material name, ...}");
     else
       for (auto it = m.begin(); it != m.end(); ++it) {
         const std::string b = it->first.as<std::string>();
         if (b != "ground" && std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-          r.fail(it->first, key + ".materials." + b, "'" + b + "' is not one of bodies (or ground)");
-        if (it->second.IsScalar()) c.materials[b] = it->second.Scalar();
-        else r.fail(it->second, key + ".materials." + b, "expected a material name");
+          r.fail(it->first, key + ".materials." + b,
+                 "'" + b + "' is not one of bodies (or ground)");
+        if (it->second.IsScalar())
+          c.materials[b] = it->second.Scalar();
+        else
+          r.fail(it->second, key + ".materials." + b, "expected a material name");
       }
   }
   const YAML::Node laws = n["contact"];
@@ -194,7 +220,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       std::string pair = it->first.as<std::string>();
       const auto slash = pair.find('/');
       if (pair != "default" && slash == std::string::npos) {
-        r.fail(it->first, key + ".contact." + pair, "expected default or a pair material_a/material_b");
+        r.fail(it->first, key + ".contact." + pair,
+               "expected default or a pair material_a/material_b");
         continue;
       }
       if (slash != std::string::npos && pair.substr(0, slash) > pair.substr(slash + 1))
@@ -203,7 +230,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     }
   }
   if (const YAML::Node ig = n["ignore"]) {
-    if (!ig.IsSequence()) r.fail(ig, key + ".ignore", "expected a list of pairs [[a, b], ...]");
+    if (!ig.IsSequence())
+      r.fail(ig, key + ".ignore", "expected a list of pairs [[a, b], ...]");
     else
       for (std::size_t i = 0; i < ig.size(); ++i) {
         const auto pair = names(r, ig[i], key + ".ignore[" + std::to_string(i) + "]");
@@ -213,7 +241,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
         }
         for (const auto& b : pair)
           if (b != "ground" && std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-            r.fail(ig[i], key + ".ignore[" + std::to_string(i) + "]", "'" + b + "' is not one of bodies (or ground)");
+            r.fail(ig[i], key + ".ignore[" + std::to_string(i) + "]",
+                   "'" + b + "' is not one of bodies (or ground)");
         c.ignore.emplace_back(pair[0], pair[1]);
       }
   }
@@ -223,7 +252,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
   }
   const double ropeDiameter = nonNegative(r, n["rope_diameter"], key + ".rope_diameter", 0.04);
   if (const YAML::Node w = n["clearance"]) {  // (name: {between: [a, b], below, range}) => watches
-    if (!w.IsMap()) r.fail(w, key + ".clearance", "expected {name: {between: [a, b], below: m}}");
+    if (!w.IsMap())
+      r.fail(w, key + ".clearance", "expected {name: {between: [a, b], below: m}}");
     else
       for (auto it = w.begin(); it != w.end(); ++it) {
         WatchSpec ws;
@@ -239,7 +269,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
         }
         auto side = [&](std::size_t i) {
           if (between[i].IsSequence()) return names(r, between[i], k + ".between");
-          return names(r, YAML::Node(std::vector<std::string>{between[i].as<std::string>()}), k + ".between");
+          return names(r, YAML::Node(std::vector<std::string>{between[i].as<std::string>()}),
+                       k + ".between");
         };
         ws.a = side(0);
         ws.b = side(1);
@@ -259,14 +290,21 @@ bool shapeOf(const MechanicsSpec::Visual& v, const dynamics::SpatialInertia& in,
   using S = MechanicsSpec::Visual::Shape;
   X_BS = v.posed ? v.X_BG : dynamics::Transform{dynamics::Matrix3::Identity(), in.com};
   switch (v.shape) {
-    case S::Box: shape = collision::Shape::box(v.size); return true;
-    case S::Cylinder: shape = collision::Shape::cylinder(v.size[0], v.size[1]); return true;
-    case S::Sphere: shape = collision::Shape::sphere(v.size[0]); return true;
+    case S::Box:
+      shape = collision::Shape::box(v.size);
+      return true;
+    case S::Cylinder:
+      shape = collision::Shape::cylinder(v.size[0], v.size[1]);
+      return true;
+    case S::Sphere:
+      shape = collision::Shape::sphere(v.size[0]);
+      return true;
     case S::Mesh:
       forces::checkClosedMesh(*v.mesh);  // contact depths need a closed surface
       shape = collision::Shape::triangleMesh(v.mesh);
       return true;
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -304,7 +342,8 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
   Built built;
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     const int body = at.at(i).body;
-    collision::BodyShape s{body, model.names[static_cast<std::size_t>(body)], {}, {}, materialOf(c.bodies[i])};
+    collision::BodyShape s{
+        body, model.names[static_cast<std::size_t>(body)], {}, {}, materialOf(c.bodies[i])};
     if (const auto it = c.shapes.find(c.bodies[i]); it != c.shapes.end()) {
       s.shape = it->second;
       s.X_BS = {dynamics::Matrix3::Identity(), model.inertias[static_cast<std::size_t>(body)].com};
@@ -350,7 +389,8 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
   // (watches) => the shapes and ropes their patterns match, by full name
   for (const auto& r : mech.ropes) {
     collision::RopeShape rope{r.name, {}, c.ropeDiameter};
-    for (const auto& [body, p] : r.path) rope.path.emplace_back(body == "world" ? 0 : model.bodyIndex(body), p);
+    for (const auto& [body, p] : r.path)
+      rope.path.emplace_back(body == "world" ? 0 : model.bodyIndex(body), p);
     spec.ropes.push_back(std::move(rope));
   }
   for (const WatchSpec& w : c.watches) {
@@ -382,7 +422,8 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
     fail(e.what());
   }
   std::vector<std::pair<std::string, int>> reactions;
-  for (std::size_t i = 0; i < built.bodies.size(); ++i) reactions.emplace_back(built.bodyNames[i], built.bodies[i]);
+  for (std::size_t i = 0; i < built.bodies.size(); ++i)
+    reactions.emplace_back(built.bodyNames[i], built.bodies[i]);
   return std::make_unique<collision::CollisionSet>(name, built.world, std::move(laws), reactions);
 }
 
@@ -392,9 +433,10 @@ YARDSIM_REGISTER_PROVIDER(
     collisionSets,
     ProviderReader{
         .key = "collision",
-        .summary = "name: {bodies: [a, b], ground: z, shapes, materials, contact: {default: {law, k, "
-                   "n, c | restitution, mu}}, ignore: [[a, b]], clearance: {w: {between: [a, b], "
-                   "below: m}}}",
+        .summary =
+            "name: {bodies: [a, b], ground: z, shapes, materials, contact: {default: {law, k, "
+            "n, c | restitution, mu}}, ignore: [[a, b]], clearance: {w: {between: [a, b], "
+            "below: m}}}",
         .read = [](const std::string&, const YAML::Node& n, const spec::Reader& r,
                    const std::string& key) {
           MechanicsSpec::ProviderSpec out;

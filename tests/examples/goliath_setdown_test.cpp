@@ -19,7 +19,7 @@ using namespace yardsim;
 TEST_CASE("goliath set-down: the supports carry the weight and the rope clearances are reported") {
   testing::SceneDir dir;
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
-                                        "/examples/goliath_turnover/scene_setdown.yaml");
+                                       "/examples/goliath_turnover/scene_setdown.yaml");
   auto root = scene::assemble(*scene);
   run::runScene(*scene, *root, {dir.path() / "out", scene->until, {"jsonl"}, {}, 0.1});
   const testing::CsvFile csv((dir.path() / "out" / "timeseries.csv").string());
@@ -36,7 +36,8 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
   for (const char* c : {"GOC201", "GOC202"})
     for (const char* r : {"upper_fore", "upper_aft", "lower_fore", "lower_aft"})
       ropes += 4 * end[col(std::string(c) + "." + r + ".tension[N]")];
-  const double supports = -(end[col("setdown.support_fore.fz[N]")] + end[col("setdown.support_aft.fz[N]")]);
+  const double supports =
+      -(end[col("setdown.support_fore.fz[N]")] + end[col("setdown.support_aft.fz[N]")]);
   CHECK(end[col("setdown.points[-]")] >= 4);
   CHECK(end[col("setdown.block.fz[N]")] == Approx(supports).epsilon(1e-9));
   CHECK(supports > 0.9 * weight);  // the supports carry the block
@@ -58,7 +59,8 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
   std::ifstream trace(dir.path() / "out" / "trace.jsonl");
   int contacts = 0, releases = 0, below = 0, touched = 0;
   for (std::string line; std::getline(trace, line);) {
-    if (line.find("\"kind\":\"out\"") == std::string::npos) continue;  // the model's, not the actors' copies
+    if (line.find("\"kind\":\"out\"") == std::string::npos)
+      continue;  // the model's, not the actors' copies
     if (line.find("setdown.rope_block clearance_below") != std::string::npos) ++below;
     if (line.find("setdown.rope_block touched") != std::string::npos) {
       ++touched;
@@ -76,6 +78,7 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
   CHECK(below == 0);
   CHECK(touched == 0);
   // the energy balance over the whole run, against the energy exchanged
-  const double drift = std::abs(end[col("mechanics.energy_balance[J]")] - csv.rows[0][col("mechanics.energy_balance[J]")]);
+  const double drift = std::abs(end[col("mechanics.energy_balance[J]")] -
+                                csv.rows[0][col("mechanics.energy_balance[J]")]);
   CHECK(drift < 1e-3 * weight * 10.0);
 }

@@ -56,13 +56,16 @@ double at(const testing::CsvFile& csv, std::size_t row, const char* name) {
 std::string boxScene(const std::string& gravity, const std::string& law, const std::string& q0,
                      const std::string& integrator, const std::string& extra = "") {
   return R"(schema_version: 1
-integrator: )" + integrator + R"(
+integrator: )" +
+         integrator + R"(
 mechanics:
-  gravity: )" + gravity + R"(
+  gravity: )" +
+         gravity + R"(
   bodies:
     box:
       parent: world
-      joint: {name: box_free, type: free, q0: )" + q0 + R"(}
+      joint: {name: box_free, type: free, q0: )" +
+         q0 + R"(}
       mass: 1000
       inertia: [166.7, 166.7, 166.7]
       geometry: {box: [1, 1, 1]}
@@ -71,18 +74,23 @@ mechanics:
       bodies: [box]
       ground: 0
       contact:
-        default: )" + law + "\n" + extra + R"(record: {interval: 0.5, channels: ["box.*", "floor.*", "mechanics.*"]}
+        default: )" +
+         law + "\n" + extra +
+         R"(record: {interval: 0.5, channels: ["box.*", "floor.*", "mechanics.*"]}
 trace: [jsonl]
 )";
 }
 
 }  // namespace
 
-TEST_CASE("collision scene: a box resting on the ground carries its weight for 100 s without drift") {
+TEST_CASE(
+    "collision scene: a box resting on the ground carries its weight for 100 s without drift") {
   testing::SceneDir dir;
   const double m = 1000, k = 1e8;
-  const auto csv = simulate(dir, boxScene("[0, 0, -9.81]", "{law: linear, k: 1.0e8, c: 2.0e5, mu: 0.3}",
-                                          "{xyz: [0, 0, 0.5]}", "{method: hht, dt: 0.01}"), 100);
+  const auto csv = simulate(dir,
+                            boxScene("[0, 0, -9.81]", "{law: linear, k: 1.0e8, c: 2.0e5, mu: 0.3}",
+                                     "{xyz: [0, 0, 0.5]}", "{method: hht, dt: 0.01}"),
+                            100);
   const std::size_t last = csv.rows.size() - 1, half = last / 2;
   REQUIRE(at(csv, last, "time[s]") == Approx(100));
   CHECK(at(csv, last, "floor.points[-]") == 4);
@@ -96,7 +104,8 @@ TEST_CASE("collision scene: a box resting on the ground carries its weight for 1
   CHECK(at(csv, last, "floor.energy[J]") == Approx(4 * 0.5 * k * d * d).epsilon(1e-6));
 }
 
-TEST_CASE("collision scene: a sphere hitting the ground rebounds with the Hunt-Crossley restitution") {
+TEST_CASE(
+    "collision scene: a sphere hitting the ground rebounds with the Hunt-Crossley restitution") {
   testing::SceneDir dir;
   // no gravity (the exact relation has no other force during the impact): the ball arrives at
   // v0 = 4 m/s from 0.1 m; alpha = c / k
@@ -134,19 +143,25 @@ record: {interval: 0.001, channels: ["ball.z", "floor.*", "mechanics.*"]}
   // the energy balance over the impact: what the damping took is in the work
   const double lost = 0.5 * 100 * (v0 * v0 - v * v);
   CHECK(-at(csv, last, "mechanics.work[J]") == Approx(lost).epsilon(1e-3));
-  CHECK(std::abs(at(csv, last, "mechanics.energy_balance[J]") - at(csv, 0, "mechanics.energy_balance[J]")) <
-        1e-3 * lost);
+  CHECK(std::abs(at(csv, last, "mechanics.energy_balance[J]") -
+                 at(csv, 0, "mechanics.energy_balance[J]")) < 1e-3 * lost);
 }
 
-TEST_CASE("collision scene: a block on an incline slides at g (sin phi - mu cos phi) or creeps below tan phi = mu") {
+TEST_CASE(
+    "collision scene: a block on an incline slides at g (sin phi - mu cos phi) or creeps below tan "
+    "phi = mu") {
   // the incline as tilted gravity: phi about y, the block slides along +x
   const double mu = 0.3, vs = 1e-3;
   auto run = [&](double phiDeg, double until) {
     testing::SceneDir dir;
     const double phi = phiDeg * M_PI / 180;
-    const std::string gravity = "[" + std::to_string(kG * std::sin(phi)) + ", 0, " + std::to_string(-kG * std::cos(phi)) + "]";
-    return simulate(dir, boxScene(gravity, "{law: linear, k: 1.0e8, c: 2.0e5, mu: 0.3, slip_speed: 0.001}",
-                                  "{xyz: [0, 0, 0.49998]}", "{method: hht, dt: 0.002}"), until);
+    const std::string gravity = "[" + std::to_string(kG * std::sin(phi)) + ", 0, " +
+                                std::to_string(-kG * std::cos(phi)) + "]";
+    return simulate(
+        dir,
+        boxScene(gravity, "{law: linear, k: 1.0e8, c: 2.0e5, mu: 0.3, slip_speed: 0.001}",
+                 "{xyz: [0, 0, 0.49998]}", "{method: hht, dt: 0.002}"),
+        until);
   };
   SECTION("above tan phi = mu it slides") {
     const double phi = 25 * M_PI / 180, a = kG * (std::sin(phi) - mu * std::cos(phi));
@@ -213,14 +228,16 @@ trace: [jsonl]
   CHECK_THAT(below[0], Contains("hoist at (0.020,") && Contains("cart at (1.020,"));
 }
 
-TEST_CASE("collision scene: the stiffness guard sees a contact open at the start and its step works") {
+TEST_CASE(
+    "collision scene: the stiffness guard sees a contact open at the start and its step works") {
   // a 1000 kg box 1 cm above the ground on a contact stiff for rk4 at 0.01 s: omega = sqrt(4 k / m)
   // = 632 rad/s on its four corners, omega dt = 6.3 beyond rk4's 2.83
   const std::string law = "{law: linear, k: 1.0e8, c: 1.0e5, mu: 0.3, slip_speed: 0.01}";
   const std::string q0 = "{xyz: [0, 0, 0.51]}";
   testing::SceneDir dir;
   const auto refused = scene::loadScene(dir.write(
-      "r.yaml", boxScene("[0, 0, -9.81]", law, q0, "{method: rk4, dt: 0.01, stiffness_check: refuse}")));
+      "r.yaml",
+      boxScene("[0, 0, -9.81]", law, q0, "{method: rk4, dt: 0.01, stiffness_check: refuse}")));
   CHECK_THAT(refused.diagnostics.report(),
              Contains("provider 'floor' (contact normal") && Contains("suggestion: dt <="));
   CHECK_THAT(refused.diagnostics.report(), Contains("omega_max = 632 rad/s"));
@@ -243,7 +260,8 @@ TEST_CASE("collision scene: the stiffness guard sees a contact open at the start
 
 TEST_CASE("collision scene: bad input is refused before the run with its place in the file") {
   testing::SceneDir dir;
-  auto load = [&](const std::string& name, const std::string& collision, const std::string& geometry = "{box: [1, 1, 1]}") {
+  auto load = [&](const std::string& name, const std::string& collision,
+                  const std::string& geometry = "{box: [1, 1, 1]}") {
     return scene::loadScene(dir.write(name, R"(schema_version: 1
 integrator: {method: hht, dt: 0.01}
 mechanics:
@@ -261,20 +279,28 @@ record: {interval: 1, channels: ["floor.*"]}
 )"));
   };
   const std::string law = "      contact: {default: {law: linear, k: 1.0e8}}\n";
-  const auto unknown = load("unknown.yaml", "      bodies: [box]\n" + law +
-                                                "      clearance: {near: {between: [box, crane*], below: 1}}");
-  CHECK_THAT(unknown.diagnostics.report(),
-             Contains("unknown.yaml:") && Contains("'crane*' matches no body") && Contains("line 15, column"));
+  const auto unknown =
+      load("unknown.yaml", "      bodies: [box]\n" + law +
+                               "      clearance: {near: {between: [box, crane*], below: 1}}");
+  CHECK_THAT(unknown.diagnostics.report(), Contains("unknown.yaml:") &&
+                                               Contains("'crane*' matches no body") &&
+                                               Contains("line 15, column"));
   const auto body = load("body.yaml", "      bodies: [box, crate]\n" + law);
   CHECK_THAT(body.diagnostics.report(), Contains("body.yaml:") && Contains("unknown body 'crate'"));
-  const auto size = load("size.yaml", "      bodies: [box]\n      shapes: {box: {box: [1, 0, 1]}}\n" + law);
-  CHECK_THAT(size.diagnostics.report(), Contains("size.yaml:14:") && Contains("every edge must be > 0 m"));
-  const auto radius = load("radius.yaml", "      bodies: [box]\n      shapes: {box: {capsule: {radius: -1, length: 2}}}\n" + law);
-  CHECK_THAT(radius.diagnostics.report(), Contains("radius.yaml:14:") && Contains("capsule.radius: must be > 0 m"));
+  const auto size =
+      load("size.yaml", "      bodies: [box]\n      shapes: {box: {box: [1, 0, 1]}}\n" + law);
+  CHECK_THAT(size.diagnostics.report(),
+             Contains("size.yaml:14:") && Contains("every edge must be > 0 m"));
+  const auto radius =
+      load("radius.yaml",
+           "      bodies: [box]\n      shapes: {box: {capsule: {radius: -1, length: 2}}}\n" + law);
+  CHECK_THAT(radius.diagnostics.report(),
+             Contains("radius.yaml:14:") && Contains("capsule.radius: must be > 0 m"));
   // an open mesh (one triangle) as the body's geometry
   std::ofstream(dir.path() / "open.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   const auto open = load("open.yaml", "      bodies: [box]\n" + law, "{mesh: open.obj}");
-  CHECK_THAT(open.diagnostics.report(), Contains("open.yaml:") && Contains("its mesh cannot be used for contact"));
+  CHECK_THAT(open.diagnostics.report(),
+             Contains("open.yaml:") && Contains("its mesh cannot be used for contact"));
   const auto noLaw = load("nolaw.yaml", "      bodies: [box]");
   CHECK_THAT(noLaw.diagnostics.report(), Contains("nolaw.yaml:13:") && Contains("with a default"));
   CHECK(!load("good.yaml", "      bodies: [box]\n" + law).diagnostics.hasErrors());

@@ -109,7 +109,11 @@ forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) 
   forces::StiffnessHint out;
   const double g = model.gravity.norm();
   for (const BodyShape& s : world_->spec().shapes) {
-    if (s.body <= 0) continue;
+    // (a body fixed to the world through fixed joints only) => it cannot move: no mode
+    int up = s.body;
+    while (up > 0 && model.jointNv[static_cast<std::size_t>(up)] == 0)
+      up = model.parent[static_cast<std::size_t>(up)];
+    if (up <= 0) continue;
     const double m = model.inertias[static_cast<std::size_t>(s.body)].mass;
     const bool flat = s.shape.kind == ShapeKind::kBox || s.shape.kind == ShapeKind::kMesh ||
                       s.shape.kind == ShapeKind::kCylinder;

@@ -45,7 +45,8 @@ class CollisionSet final : public forces::ForceProvider,
   // (model) => the highest frequency of a body resting on its contacts under its weight: the
   // normal law's sqrt(k_eff / m) (k_eff = N k, Hunt-Crossley N n k delta^(n-1) at the static
   // depth, N = 4 points for a box, mesh or cylinder, 1 for a sphere or capsule) and friction's
-  // viscous rate mu g / v_s (the regularised stick), over the set's bodies and laws
+  // viscous rate mu g / v_s (the regularised stick), over the set's bodies that can move and
+  // its laws
   forces::StiffnessHint stiffnessHint(const dynamics::Model& model) const override;
 
  protected:

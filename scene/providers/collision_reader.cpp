@@ -267,10 +267,12 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
                  "expected two names or patterns [a, b] (bodies or ropes, * matches any run)");
           continue;
         }
+        // (one side: a name, a pattern or a list of them) => its names
         auto side = [&](std::size_t i) {
           if (between[i].IsSequence()) return names(r, between[i], k + ".between");
-          return names(r, YAML::Node(std::vector<std::string>{between[i].as<std::string>()}),
-                       k + ".between");
+          if (between[i].IsScalar()) return std::vector<std::string>{between[i].Scalar()};
+          r.fail(between[i], k + ".between", "expected a name, a pattern or a list of them");
+          return std::vector<std::string>{};
         };
         ws.a = side(0);
         ws.b = side(1);

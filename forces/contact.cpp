@@ -8,19 +8,25 @@ namespace yardsim::forces {
 
 ContactForce::ContactForce(std::string name, ContactSource source, NormalLaw law,
                            FrictionLaw friction, std::size_t reserve)
+    : ContactForce(std::move(name), std::move(source), {ContactMaterial{law, friction}}, reserve) {}
+
+ContactForce::ContactForce(std::string name, ContactSource source,
+                           std::vector<ContactMaterial> materials, std::size_t reserve)
     : ForceProvider(std::move(name)),
       source_(std::move(source)),
-      law_(law),
-      friction_(friction),
+      materials_(std::move(materials)),
       reserve_(reserve) {
   if (!source_) throw std::invalid_argument("contact '" + this->name() + "': no contact source");
-  if (!(law_.stiffness >= 0.0) || !(law_.damping >= 0.0) || !(law_.exponent > 0.0)) {
-    throw std::invalid_argument("contact '" + this->name() +
-                                "': stiffness and damping must be >= 0, the exponent > 0");
-  }
-  if (!(friction_.mu >= 0.0) || !(friction_.slipSpeed > 0.0)) {
-    throw std::invalid_argument("contact '" + this->name() +
-                                "': friction needs mu >= 0 and a slip speed > 0");
+  if (materials_.empty()) throw std::invalid_argument("contact '" + this->name() + "': no material");
+  for (const ContactMaterial& m : materials_) {
+    if (!(m.law.stiffness >= 0.0) || !(m.law.damping >= 0.0) || !(m.law.exponent > 0.0)) {
+      throw std::invalid_argument("contact '" + this->name() +
+                                  "': stiffness and damping must be >= 0, the exponent > 0");
+    }
+    if (!(m.friction.mu >= 0.0) || !(m.friction.slipSpeed > 0.0)) {
+      throw std::invalid_argument("contact '" + this->name() +
+                                  "': friction needs mu >= 0 and a slip speed > 0");
+    }
   }
 }
 
@@ -43,7 +49,8 @@ void ContactForce::collect(const Stage& s, Scratch& out) const {
     };
     const dynamics::Vector3 v = velocity(c.bodyB) - velocity(c.bodyA);
     const double vn = v.dot(c.n_W);
-    out.responses.push_back(contactResponse(law_, friction_, c.depth, -vn, v - vn * c.n_W));
+    const ContactMaterial& m = materials_[static_cast<std::size_t>(c.material)];
+    out.responses.push_back(contactResponse(m.law, m.friction, c.depth, -vn, v - vn * c.n_W));
   }
 }
 

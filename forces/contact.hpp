@@ -25,6 +25,13 @@ struct ContactPoint {
   dynamics::Vector3 p_W = dynamics::Vector3::Zero();   // m
   dynamics::Vector3 n_W = dynamics::Vector3::UnitZ();  // unit, from A towards B
   double depth = 0.0;                                  // m, >= 0
+  int material = 0;  // index into the provider's materials (one material: 0)
+};
+
+// The law of one material pair: normal law and friction.
+struct ContactMaterial {
+  NormalLaw law;
+  FrictionLaw friction;
 };
 
 // (stage, out: cleared by the provider) => the stage's contact points appended to out
@@ -37,6 +44,12 @@ class ContactForce final : public ForceProvider {
   // coefficient < 0 or a slip speed <= 0
   ContactForce(std::string name, ContactSource source, NormalLaw law, FrictionLaw friction,
                std::size_t reserve = 64);
+  // (name, source, one law per material pair: a point's `material` indexes it, reserve) => the
+  // provider; the same checks for every material, and a non-empty list
+  ContactForce(std::string name, ContactSource source, std::vector<ContactMaterial> materials,
+               std::size_t reserve = 64);
+
+  const std::vector<ContactMaterial>& materials() const { return materials_; }
 
   // the scratch: the stage's points and the response at each (reserved: no allocation in the
   // loop); after evaluate() with a scratch, what it applied (channels, replay)
@@ -57,8 +70,7 @@ class ContactForce final : public ForceProvider {
   void collect(const Stage& s, Scratch& out) const;
 
   ContactSource source_;
-  NormalLaw law_;
-  FrictionLaw friction_;
+  std::vector<ContactMaterial> materials_;
   std::size_t reserve_;
 };
 

@@ -25,6 +25,8 @@
 
 namespace yardsim::mechanics {
 
+struct BuiltMechanics;
+
 struct MechanicsSpec {
   // What the report's 3D replay draws for a body; not used by the dynamics. Shape Auto is the
   // uniform box with the body's mass and principal moments of inertia; a mesh (OBJ or STL,
@@ -130,11 +132,17 @@ struct MechanicsSpec {
   // part of q and v like any body's: integrated, linearised by the stiffness guard, checkpointed.
   using ProviderBodies = std::function<std::vector<Body>(
       const std::string& name, const std::vector<dynamics::Vector3>& at_W)>;
+  // The same, for a provider that needs more of the built system than its model: the bodies'
+  // geometry, the ropes' paths (the collision reader); used instead of build when set.
+  using ProviderBuildFromSystem = std::function<std::unique_ptr<forces::ForceProvider>(
+      const std::string& name, const BuiltMechanics& mech,
+      const std::vector<forces::Attachment>& at)>;
   struct ProviderSpec {
     std::string kind, name;  // kind: the mechanics key that declared it (springs, ...)
     std::vector<Point> attachments;
     ProviderBuild build;
     ProviderBodies bodies = {};  // empty: the provider owns no body
+    ProviderBuildFromSystem buildFromSystem = {};
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;

@@ -17,6 +17,9 @@ std::vector<EventSlot> eventTable(const System& s) {
   for (int r = 0; r < nr; ++r) table.push_back({K::SlackTaut, r, true});
   for (int w = 0; w < static_cast<int>(s.watches().size()); ++w)
     table.push_back({K::WatchCrossed, w, false});
+  for (int e = 0; e < static_cast<int>(s.providerEvents().size()); ++e)
+    table.push_back(
+        {K::Provider, e, !s.providerEvents()[static_cast<std::size_t>(e)]->falling.empty()});
   return table;
 }
 
@@ -36,7 +39,7 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
   }
   // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
   const auto& ropes = s.ropes();
-  if (ropes.empty() && s.watches().empty()) return;
+  if (ropes.empty() && s.watches().empty() && s.providerEvents().empty()) return;
   dynamics::forwardKinematics(m, d.scratch, q, v);
   const forces::Stage stage{t, m, d.scratch, q, v};
   const std::size_t nb = static_cast<std::size_t>(m.nbodies), nr = ropes.size();
@@ -52,6 +55,10 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
     const double value = watched(s, w, d.scratch, q, v, t);
     g[nb + 2 * nr + w] = specs[w].above ? value - specs[w].threshold : specs[w].threshold - value;
   }
+  // (provider events) => their own functions
+  const std::size_t first = nb + 2 * nr + s.watches().size();
+  for (std::size_t e = 0; e < s.providerEvents().size(); ++e)
+    g[first + e] = s.providerEvents()[e]->g(stage);
 }
 
 EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
@@ -76,6 +83,12 @@ EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
     }
     case K::OverMbl:
       return {ropes[k]->name(), "", "over_mbl", ropes[k]->tension(stage)};
+    case K::Provider: {  // (the sign of g just past the event) => rising or falling
+      const forces::ProviderEvent& p = *s.providerEvents()[k];
+      const bool rising = p.falling.empty() || p.g(stage) > 0;
+      return {p.element, "", rising ? p.rising : p.falling, p.value(stage),
+              p.detail ? p.detail(stage) : std::string()};
+    }
     default:
       return {};
   }

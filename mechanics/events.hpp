@@ -1,8 +1,9 @@
 #pragma once
 // The named event table of a mechanical system: every located state event it can raise, in a
 // fixed order (per body: its drive reached its target; per rope: over its minimum breaking load,
-// then per rope: slack/taut; per watch: crossed), with the event function whose zero crossing
-// the stepper locates. Consumers look an event up by kind, never by index arithmetic.
+// then per rope: slack/taut; per watch: crossed; per event a provider declares: its own), with the
+// event function whose zero crossing the stepper locates. Consumers look an event up by kind, never
+// by index arithmetic.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -18,9 +19,10 @@
 namespace yardsim::mechanics {
 
 struct EventSlot {
-  enum class Kind { None, DriveReached, OverMbl, SlackTaut, WatchCrossed };
+  enum class Kind { None, DriveReached, OverMbl, SlackTaut, WatchCrossed, Provider };
   Kind kind = Kind::None;
-  int index = 0;          // body (DriveReached), rope (OverMbl, SlackTaut) or watch (WatchCrossed)
+  int index = 0;          // body (DriveReached), rope (OverMbl, SlackTaut), watch (WatchCrossed) or
+                          // provider event (Provider, System::providerEvents())
   bool bothWays = false;  // false: only rising crossings count
 };
 
@@ -29,6 +31,7 @@ struct EventSlot {
 struct EventReport {
   std::string element, actor, kind;
   double value = 0.0;
+  std::string detail = {};  // provider events: the pair, witness points ("" for none)
 };
 
 // (system) => its events, in the order of the event functions

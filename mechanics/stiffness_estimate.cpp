@@ -9,6 +9,7 @@
 #include "dynamics/configuration.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "forces/provider_stiffness.hpp"
 #include "mechanics/data.hpp"
 #include "mechanics/providers.hpp"
 #include "mechanics/stage.hpp"
@@ -127,6 +128,15 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
         (p.potentialEnergy(sp) - 2.0 * p.potentialEnergy(s0) + p.potentialEnergy(sm)) / (h * h);
     if (curvature > 0) consider("provider '" + p.name() + "'", curvature, 1.0);
   }
+  // (providers that bring stiffness in later: contacts open at the start) => their hint when it
+  // is higher than the linearisation's
+  for (const forces::ForceProvider* p : system.providers())
+    if (const auto* hinted = dynamic_cast<const forces::ProviderStiffness*>(p)) {
+      const forces::StiffnessHint hint = hinted->stiffnessHint(model);
+      if (hint.omega <= out.omegaMax) continue;
+      out = {hint.omega, 0.0, hint.body,
+             "provider '" + p->name() + "' (" + hint.what + ", once engaged)"};
+    }
   return out;
 }
 

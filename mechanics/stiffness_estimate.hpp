@@ -6,7 +6,8 @@
 // function of system.hpp: every provider of the one list, and the servos of held joints), and
 // omega_max is the largest eigenvalue modulus. The mode is attributed to the body that moves
 // most in it and to the provider (rope, equalizer, hydrostatics, ...) that stores most of its
-// strain energy.
+// strain energy. A provider that brings stiffness in later (a contact open at the start,
+// forces/provider_stiffness.hpp) states its own highest frequency; the larger one is reported.
 #include <string>
 
 #include "mechanics/description.hpp"

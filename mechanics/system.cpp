@@ -76,7 +76,8 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
         throw std::invalid_argument(p.kind + " '" + p.name + "': unknown body '" + body + "'");
       at.push_back({b, p_B});
     }
-    contributed_.push_back(p.build(p.name, model, at));
+    contributed_.push_back(p.buildFromSystem ? p.buildFromSystem(p.name, mech_, at)
+                                             : p.build(p.name, model, at));
   }
   // (typed providers) => the one list, in the order every stage evaluates them
   for (auto& r : ropes_) providers_.push_back(r.get());
@@ -85,6 +86,10 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (auto& d : dampers_) providers_.push_back(d.get());
   for (auto& b : bodyLoads_) providers_.push_back(b.get());
   for (auto& c : contributed_) providers_.push_back(c.get());
+  // (contributed providers with events) => their event functions, in order
+  for (auto& c : contributed_)
+    if (const auto* e = dynamic_cast<const forces::ProviderEvents*>(c.get()))
+      for (const auto& ev : e->events()) providerEvents_.push_back(&ev);
   // (initial configuration) => joint-space inertia of each 1-dof joint, for servo gains
   dynamics::Data data(model);
   const Eigen::MatrixXd& M = dynamics::crba(model, data, mech_.q0);

@@ -16,6 +16,7 @@
 #include "forces/body_load.hpp"
 #include "forces/rope.hpp"
 #include "forces/flow_load.hpp"
+#include "forces/provider_events.hpp"
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/rope.hpp"
@@ -65,6 +66,10 @@ class System {
     return contributed_;
   }
   const std::vector<WatchRef>& watches() const { return watchRefs_; }
+  // the located state events the contributed providers declare (forces/provider_events.hpp)
+  const std::vector<const forces::ProviderEvent*>& providerEvents() const {
+    return providerEvents_;
+  }
   // per body: the joint-space inertia of its 1-dof joint at q0 (kg m^2 or kg), for servo gains
   const std::vector<double>& servoInertia() const { return servoInertia_; }
 
@@ -83,6 +88,7 @@ class System {
   std::vector<std::unique_ptr<forces::ForceProvider>> contributed_;
   std::vector<forces::ForceProvider*> providers_;
   std::vector<WatchRef> watchRefs_;
+  std::vector<const forces::ProviderEvent*> providerEvents_;
   std::vector<double> servoInertia_;
 };
 

@@ -14,9 +14,11 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
   const auto* events = dynamic_cast<const devs::Port<models::MechanicsEvent>*>(&port);
   if (events == nullptr || port.name() != "event") return;
   for (const models::MechanicsEvent& e : events->values()) {
-    const bool alarm = e.what == "over_mbl" || e.what == "crossed";
-    if (alarm || e.what == "slack" || e.what == "taut")
-      raise(m.path(), e.element, e.what, alarm, t, e.value);
+    const bool alarm = e.what == "over_mbl" || e.what == "crossed" || e.what == "clearance_below" ||
+                       e.what == "touched";
+    const bool notice =
+        e.what == "slack" || e.what == "taut" || e.what == "contact" || e.what == "release";
+    if (alarm || notice) raise(m.path(), e.element, e.what, alarm, t, e.value);
   }
 }
 
@@ -32,7 +34,8 @@ void AlarmMonitor::raise(const std::string& model, const std::string& element,
     return;
   }
   if (occurrence) ++it->count;
-  if (std::abs(value) > std::abs(it->worst)) it->worst = value;
+  const bool closest = kind == "clearance_below" || kind == "touched";  // worst: nearest
+  if (closest ? value < it->worst : std::abs(value) > std::abs(it->worst)) it->worst = value;
 }
 
 std::size_t AlarmMonitor::alarmCount() const {

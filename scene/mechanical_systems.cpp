@@ -2,12 +2,14 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include "scene/mechanics_reader.hpp"
 #include "mechanics/build.hpp"
+#include "mechanics/system.hpp"
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rotation.hpp"
 #include "scene/provider_readers.hpp"
@@ -354,6 +356,11 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     try {
       // (spec) => built once, with the kernel's own checks (inertia, tree) naming the body
       s->built = std::make_shared<const mechanics::BuiltMechanics>(buildMechanics(s->spec));
+      // (providers built from the whole system: collision sets) => built once here, so that a
+      // name that matches nothing or a shape the kernel refuses is reported before the run
+      if (std::any_of(s->spec.providers.begin(), s->spec.providers.end(),
+                      [](const auto& p) { return bool(p.buildFromSystem); }))
+        mechanics::System(*s->built, {}, s->name);
     } catch (const std::exception& e) {
       diags.error(scene.root.where, "mechanics", std::string("mechanical system '") + s->name + "': " + e.what());
     }

@@ -462,7 +462,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
         const std::string hint = didYouMean(body, known);
         br.fail(it->second, name, "unknown body '" + body + "'" + (hint.empty() ? "" : " (" + hint + ")"));
       }
-      if (!ps.build) br.fail(it->second, name, "the reader of '" + reader.key + "' built nothing");
+      if (!ps.build && !ps.buildFromSystem) br.fail(it->second, name, "the reader of '" + reader.key + "' built nothing");
       else spec.providers.push_back(std::move(ps));
     }
   }

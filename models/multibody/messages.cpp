@@ -19,7 +19,8 @@ std::ostream& operator<<(std::ostream& os, const SetPoint& s) {
 }
 
 std::ostream& operator<<(std::ostream& os, const MechanicsEvent& e) {
-  return os << e.element << " " << e.what << " " << e.value << (e.actor.empty() ? "" : " for " + e.actor);
+  os << e.element << " " << e.what << " " << e.value << (e.actor.empty() ? "" : " for " + e.actor);
+  return os << (e.detail.empty() ? "" : " (" + e.detail + ")");
 }
 
 }  // namespace yardsim::models

@@ -31,8 +31,10 @@ struct SetPoint {
 struct MechanicsEvent {
   std::string element;
   std::string actor;  // the actor whose set-point it answers ("" for watches)
-  std::string what;   // "reached", "done", "over_mbl", "taut", "slack" (a rope's transitions)
+  std::string what;   // "reached", "done", "over_mbl", "taut", "slack" (a rope's transitions),
+                      // a provider's ("clearance_below", "touched", "contact", "release")
   double value = 0.0;
+  std::string detail = {};  // provider events: the pair and witness points ("" for none)
 };
 
 std::ostream& operator<<(std::ostream& os, const SetPoint& s);

@@ -258,7 +258,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
     if (j > 0)
       reports.push_back(mechanics::reportStateEvent(system_, ws_.data, x.setPoints, x.q, x.v, t,
                                                     events_[static_cast<std::size_t>(j)]));
-  for (const auto& e : reports) event.add({e.element, e.actor, e.kind, e.value});
+  for (const auto& e : reports) event.add({e.element, e.actor, e.kind, e.value, e.detail});
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {

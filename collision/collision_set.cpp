@@ -1,0 +1,137 @@
+#include "collision/collision_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace yardsim::collision {
+
+namespace {
+
+// (point) => "(x, y, z)", mm resolution
+std::string point(const Vector3& p) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> world,
+                           std::vector<forces::ContactMaterial> materials,
+                           const std::vector<std::pair<std::string, int>>& reactionBodies)
+    : ForceProvider(name), world_(std::move(world)) {
+  // (stage) => the world at the stage's poses, its contact points
+  auto source = [w = world_](const forces::Stage& s, std::vector<forces::ContactPoint>& out) {
+    w->update(s.data);
+    w->contacts(out);
+  };
+  contact_ = std::make_unique<forces::ContactForce>(name, source, std::move(materials));
+  outputs_.push_back({"points", "-", [this](const forces::Stage& s) {
+                        std::unique_ptr<forces::ProviderScratch> t;
+                        return static_cast<double>(collected(s, t).points.size());
+                      }});
+  outputs_.push_back({"normal_force", "N", [this](const forces::Stage& s) {
+                        std::unique_ptr<forces::ProviderScratch> t;
+                        double sum = 0.0;
+                        for (const auto& r : collected(s, t).responses) sum += r.normalForce;
+                        return sum;
+                      }});
+  for (const auto& [bodyName, body] : reactionBodies) {
+    // (stage) => the world z component of the contact forces on the body, N
+    outputs_.push_back({bodyName + ".fz", "N", [this, b = body](const forces::Stage& s) {
+                          std::unique_ptr<forces::ProviderScratch> t;
+                          const auto& got = collected(s, t);
+                          double fz = 0.0;
+                          for (std::size_t k = 0; k < got.points.size(); ++k) {
+                            const auto& p = got.points[k];
+                            const auto& r = got.responses[k];
+                            const double z = r.normalForce * p.n_W.z() + r.tangentialForce.z();
+                            if (p.bodyB == b) fz += z;
+                            if (p.bodyA == b) fz -= z;
+                          }
+                          return fz;
+                        }});
+  }
+  events_.push_back({this->name(), "contact", "release",
+                     [this](const forces::Stage& s) { return penetration(s); },
+                     [this](const forces::Stage& s) { return penetration(s); }, nullptr});
+  const auto& watches = world_->spec().watches;
+  for (std::size_t w = 0; w < watches.size(); ++w) {
+    const double below = watches[w].below;
+    auto distance = [this, w](const forces::Stage& s) {
+      world_->update(s.data);
+      return world_->clearance(w).distance;
+    };
+    auto detail = [this, w](const forces::Stage& s) {
+      world_->update(s.data);
+      const WatchReading r = world_->clearance(w);
+      if (r.a.empty()) return std::string("nothing within range");
+      return r.a + " at " + point(r.pa_W) + ", " + r.b + " at " + point(r.pb_W);
+    };
+    const std::string element = this->name() + "." + watches[w].name;
+    outputs_.push_back({watches[w].name + ".distance", "m", distance});
+    events_.push_back({element, "clearance_below", "",
+                       [distance, below](const forces::Stage& s) { return below - distance(s); },
+                       distance, detail});
+    events_.push_back({element, "touched", "",
+                       [distance](const forces::Stage& s) { return -distance(s); }, distance,
+                       detail});
+  }
+}
+
+const forces::ContactForce::Scratch& CollisionSet::collected(
+    const forces::Stage& s, std::unique_ptr<forces::ProviderScratch>& temporary) const {
+  forces::ProviderScratch* scratch = s.scratch;
+  if (scratch == nullptr) {
+    temporary = contact_->makeScratch();
+    scratch = temporary.get();
+  }
+  const forces::Stage with{s.t, s.model, s.data, s.q, s.v, scratch, s.stepStart};
+  contact_->potentialEnergy(with);  // collects the points and the law's responses
+  return static_cast<const forces::ContactForce::Scratch&>(*scratch);
+}
+
+double CollisionSet::penetration(const forces::Stage& s) const {
+  world_->update(s.data);
+  const double ground = world_->groundPenetration();
+  std::unique_ptr<forces::ProviderScratch> t;
+  const auto& got = collected(s, t);
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const auto& p : got.points) deepest = std::max(deepest, p.depth);
+  if (got.points.empty()) return std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0;
+  return std::max(deepest, ground);
+}
+
+forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) const {
+  forces::StiffnessHint out;
+  const double g = model.gravity.norm();
+  for (const BodyShape& s : world_->spec().shapes) {
+    // (a body fixed to the world through fixed joints only) => it cannot move: no mode
+    int up = s.body;
+    while (up > 0 && model.jointNv[static_cast<std::size_t>(up)] == 0)
+      up = model.parent[static_cast<std::size_t>(up)];
+    if (up <= 0) continue;
+    const double m = model.inertias[static_cast<std::size_t>(s.body)].mass;
+    const bool flat = s.shape.kind == ShapeKind::kBox || s.shape.kind == ShapeKind::kMesh ||
+                      s.shape.kind == ShapeKind::kCylinder;
+    const double points = flat ? 4.0 : 1.0;
+    for (const forces::ContactMaterial& c : contact_->materials()) {
+      const auto& law = c.law;
+      const double n = law.kind == forces::NormalLawKind::kLinear ? 1.0 : law.exponent;
+      const double depth = std::pow(m * g / (points * law.stiffness), 1.0 / n);
+      const double k = points * n * law.stiffness * std::pow(depth, n - 1.0);
+      const auto consider = [&](double omega, const char* what) {
+        if (omega <= out.omega) return;
+        out = {omega, model.names[static_cast<std::size_t>(s.body)], what};
+      };
+      consider(std::sqrt(k / m), "contact normal");
+      consider(c.friction.mu * g / c.friction.slipSpeed, "contact friction");
+    }
+  }
+  return out;
+}
+
+}  // namespace yardsim::collision

@@ -1,5 +1,6 @@
 // peer_multibody LIB ALGO MODEL N      => one JSON line: the time of one kernel call
 // peer_multibody --check MODEL N       => exit 0 if every library computes the same thing
+// peer_multibody LIB ALGO MODEL N REPS => exactly REPS calls, untimed (for callgrind's counts)
 // LIB: yardsim, rbdl, pinocchio (LOCAL convention), pinocchio-world (WORLD convention for ABA
 // and CRBA); ALGO: aba, rnea, crba (mass matrix and its Cholesky factor); MODEL: chain, tree
 // (peer_models.hpp). A process times one case: a warm-up, then 11 batches of at least 20 ms,
@@ -92,9 +93,9 @@ int check(const std::string& model, int n) {
 int main(int argc, char** argv) {
   try {
     if (argc == 4 && std::strcmp(argv[1], "--check") == 0) return check(argv[2], std::stoi(argv[3]));
-    if (argc != 5) {
+    if (argc != 5 && argc != 6) {
       std::fprintf(stderr,
-                   "usage: peer_multibody yardsim|rbdl|pinocchio|pinocchio-world aba|rnea|crba chain|tree N\n"
+                   "usage: peer_multibody yardsim|rbdl|pinocchio|pinocchio-world aba|rnea|crba chain|tree N [REPS]\n"
                    "       peer_multibody --check chain|tree N\n");
       return 2;
     }
@@ -106,6 +107,11 @@ int main(int argc, char** argv) {
     if (!k) {
       std::fprintf(stderr, "peer_multibody: library %s not built in (see bench/peers/build_peers.sh)\n", lib.c_str());
       return 2;
+    }
+    if (argc == 6) {
+      const long reps = std::stol(argv[5]);
+      for (long i = 0; i < reps; ++i) algo == "aba" ? k->aba() : algo == "rnea" ? k->rnea() : k->crbaChol();
+      return 0;
     }
     const auto [median, min] = timeKernel(*k, algo);
     std::printf("{\"lib\":\"%s\",\"algo\":\"%s\",\"model\":\"%s\",\"n\":%d,\"ns\":%.2f,\"ns_min\":%.2f}\n", lib.c_str(),

@@ -23,7 +23,7 @@ class RbdlKernel final : public Kernel {
       SpatialVector axis = SpatialVector::Zero();
       axis[(bs.kind == JointKind::Prismatic ? 3 : 0) + bs.axis] = 1.0;
       const R::Joint joint = bs.kind == JointKind::Free ? R::Joint(R::JointTypeFloatingBase) : R::Joint(axis);
-      const R::Math::Matrix3d I = bs.inertia.asDiagonal();
+      const R::Math::Matrix3d I(Eigen::Matrix3d(bs.inertia.asDiagonal()));
       id[b] = m_.AddBody(bs.parent < 0 ? 0 : id[bs.parent], R::Math::Xtrans(bs.offset), joint,
                          R::Body(bs.mass, bs.com, I));
     }

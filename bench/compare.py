@@ -101,6 +101,35 @@ def multibody(a):
             print(f"| {algo} | {model} | {n} | {statistics.median(ys):.0f} | " + " | ".join(cells) + " |", flush=True)
 
 
+def instructions(cmd):
+    """(command) => instructions it executes, counted by callgrind (independent of the load)"""
+    out = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + cmd,
+                         check=True, capture_output=True, text=True).stderr
+    for line in out.splitlines():
+        if "refs:" in line:
+            return int(line.split()[-1].replace(",", ""))
+    raise RuntimeError("no callgrind count for " + " ".join(cmd))
+
+
+def multibody_ir(a):
+    """instructions per kernel call: (count with REPS calls - count with none) / REPS"""
+    exe = f"{a.build}/bench/peers/peer_multibody"
+    peers = [p for p in ("rbdl", "pinocchio", "pinocchio-world")
+             if subprocess.run([exe, p, "aba", "chain", "1"], capture_output=True).returncode == 0]
+    algos = a.algos.split(",") if a.algos else MB_ALGOS
+    print("| kernel | model | N | yardsim instructions | " + " | ".join(f"{p} | yardsim/{p}" for p in peers) + " |")
+    print("|---|---|---|---|" + "---|---|" * len(peers))
+    for algo in algos:
+        for model, n in MB_CASES:
+            reps = max(20, 6400 // n)
+            per = {}
+            for lib in ["yardsim"] + peers:
+                base = [exe, lib, algo, model, str(n)]
+                per[lib] = (instructions(base + [str(reps)]) - instructions(base + ["0"])) / reps
+            cells = [f"{per[p]:.0f} | {per['yardsim'] / per[p]:.2f}" for p in peers]
+            print(f"| {algo} | {model} | {n} | {per['yardsim']:.0f} | " + " | ".join(cells) + " |", flush=True)
+
+
 def ode(a):
     exe = f"{a.build}/bench/multibody/bench_multibody"
     def case(name):
@@ -125,14 +154,14 @@ def ode(a):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", choices=["devstone", "multibody", "ode"])
+    ap.add_argument("what", choices=["devstone", "multibody", "multibody-ir", "ode"])
     ap.add_argument("--build", default="build", help="build folder configured with -DYARDSIM_PEERS_DIR")
     ap.add_argument("-n", type=int, default=7, help="rounds")
     ap.add_argument("--pin", type=int, default=1, help="core for taskset -c")
     ap.add_argument("--nice", type=int, default=-10, help="nice -n for every run (negative needs root)")
     ap.add_argument("--algos", default="", help="multibody: comma-separated subset of aba,rnea,crba")
     a = ap.parse_args()
-    {"devstone": devstone, "multibody": multibody, "ode": ode}[a.what](a)
+    {"devstone": devstone, "multibody": multibody, "multibody-ir": multibody_ir, "ode": ode}[a.what](a)
 
 
 if __name__ == "__main__":

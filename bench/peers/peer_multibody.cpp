@@ -3,14 +3,15 @@
 // peer_multibody LIB ALGO MODEL N REPS => exactly REPS calls, untimed (for callgrind's counts)
 // LIB: yardsim, rbdl, pinocchio (LOCAL convention), pinocchio-world (WORLD convention for ABA
 // and CRBA); ALGO: aba, rnea, crba (mass matrix and its Cholesky factor); MODEL: chain, tree
-// (peer_models.hpp). A process times one case: a warm-up, then 11 batches of at least 20 ms,
-// and prints the median and the minimum ns per call; bench/compare.sh runs the libraries'
-// processes alternately. --check is the proof that the models agree: RNEA, ABA and the mass
+// (peer_models.hpp). A process times one case: a warm-up, then 11 batches of at least 20 ms
+// of this thread's CPU time (CLOCK_THREAD_CPUTIME_ID: time the core spent on other processes
+// of a busy machine is not counted), and prints the median and the minimum ns per call;
+// bench/compare.sh runs the libraries' processes alternately. --check is the proof that the models agree: RNEA, ABA and the mass
 // matrix of every library against yardsim's on a random state (the tree's root at the identity
 // and at rest, where the libraries' free-joint conventions coincide up to the order of the
 // velocity components), to 1e-9 relative.
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -35,22 +36,28 @@ std::unique_ptr<Kernel> make(const std::string& lib, const std::vector<BodySpec>
   return nullptr;
 }
 
-// (kernel, algo) => median and minimum ns per call over 11 batches of >= 20 ms
+// () => this thread's CPU time, ns
+double threadCpuNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return 1e9 * static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec);
+}
+
+// (kernel, algo) => median and minimum CPU ns per call over 11 batches of >= 20 ms
 std::pair<double, double> timeKernel(Kernel& k, const std::string& algo) {
-  using Clock = std::chrono::steady_clock;
   void (Kernel::*call)() = algo == "aba" ? &Kernel::aba : algo == "rnea" ? &Kernel::rnea : &Kernel::crbaChol;
   long reps = 1;
   for (;;) {  // calibrate: reps per batch such that a batch takes >= 20 ms
-    const auto t0 = Clock::now();
+    const double t0 = threadCpuNs();
     for (long i = 0; i < reps; ++i) (k.*call)();
-    if (std::chrono::duration<double>(Clock::now() - t0).count() >= 0.02) break;
+    if (threadCpuNs() - t0 >= 2e7) break;
     reps *= 2;
   }
   std::vector<double> ns;
   for (int b = 0; b < 11; ++b) {
-    const auto t0 = Clock::now();
+    const double t0 = threadCpuNs();
     for (long i = 0; i < reps; ++i) (k.*call)();
-    ns.push_back(std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / static_cast<double>(reps));
+    ns.push_back((threadCpuNs() - t0) / static_cast<double>(reps));
   }
   std::sort(ns.begin(), ns.end());
   return {ns[ns.size() / 2], ns.front()};

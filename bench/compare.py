@@ -130,6 +130,39 @@ def multibody_ir(a):
             print(f"| {algo} | {model} | {n} | {per['yardsim']:.0f} | " + " | ".join(cells) + " |", flush=True)
 
 
+SCENES = [("goliath_turnover", 460.0), ("floating_barge", 150.0), ("double_pendulum", 30.0)]
+
+
+def scenes(a):
+    """whole `yardsim run --profile` processes, pinned: real-time factor and output's share"""
+    import re
+    import resource
+    import tempfile
+    exe = f"{a.build}/cli/yardsim"
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    print("| scene (simulated s) | wall s | CPU s | real time x (wall) | real time x (CPU) | output share (min-max) | "
+          "profile line of the median run |")
+    print("|---|---|---|---|---|---|---|")
+    for name, simulated in SCENES:
+        walls, cpus, shares, lines = [], [], [], []
+        with tempfile.TemporaryDirectory() as out:
+            for _ in range(a.n):
+                cmd = ["nice", "-n", str(a.nice), "taskset", "-c", str(a.pin), exe, "run",
+                       f"{here}/examples/{name}/scene.yaml", "-o", out, "--quiet", "--profile"]
+                before = resource.getrusage(resource.RUSAGE_CHILDREN)
+                r = subprocess.run(cmd, check=True, capture_output=True, text=True)
+                after = resource.getrusage(resource.RUSAGE_CHILDREN)
+                line = [l for l in r.stderr.splitlines() if l.startswith("profile:")][-1]
+                cpus.append(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime)
+                walls.append(float(re.search(r"total ([0-9.e+-]+) s", line).group(1)))
+                shares.append(float(re.search(r"\(([0-9.]+) % of the run\)", line).group(1)))
+                lines.append(line)
+        w, c = statistics.median(walls), statistics.median(cpus)
+        mid = lines[sorted(range(len(walls)), key=lambda i: walls[i])[len(walls) // 2]]
+        print(f"| {name} ({simulated:g}) | {w:.3f} | {c:.3f} | {simulated / w:.0f} | {simulated / c:.0f} | "
+              f"{statistics.median(shares):.1f} % ({min(shares):.1f}-{max(shares):.1f}) | {mid} |", flush=True)
+
+
 def ode(a):
     exe = f"{a.build}/bench/multibody/bench_multibody"
     def case(name):
@@ -154,14 +187,14 @@ def ode(a):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("what", choices=["devstone", "multibody", "multibody-ir", "ode"])
+    ap.add_argument("what", choices=["devstone", "multibody", "multibody-ir", "ode", "scenes"])
     ap.add_argument("--build", default="build", help="build folder configured with -DYARDSIM_PEERS_DIR")
     ap.add_argument("-n", type=int, default=7, help="rounds")
     ap.add_argument("--pin", type=int, default=1, help="core for taskset -c")
     ap.add_argument("--nice", type=int, default=-10, help="nice -n for every run (negative needs root)")
     ap.add_argument("--algos", default="", help="multibody: comma-separated subset of aba,rnea,crba")
     a = ap.parse_args()
-    {"devstone": devstone, "multibody": multibody, "multibody-ir": multibody_ir, "ode": ode}[a.what](a)
+    {"devstone": devstone, "multibody": multibody, "multibody-ir": multibody_ir, "ode": ode, "scenes": scenes}[a.what](a)
 
 
 if __name__ == "__main__":

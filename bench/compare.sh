@@ -8,7 +8,8 @@
 # -DYARDSIM_NATIVE=ON both sides are compiled with -march=native. `ode` times bench_multibody's
 # RK4Step/32 against ODEWorldStep/32 and ODEQuickStep/32 (ODE from Debian). `multibody-ir`
 # counts instructions per kernel call with callgrind instead (one run: the count does not
-# depend on the machine's load; valgrind from Debian).
+# depend on the machine's load; valgrind from Debian). `scenes` runs `yardsim run --profile` on the
+# goliath turnover, the floating barge and the double pendulum (real-time factor, output's share).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=build

@@ -16,10 +16,14 @@ Variant parseVariant(std::string_view name) {
 
 std::string_view variantName(Variant v) {
   switch (v) {
-    case Variant::LI: return "LI";
-    case Variant::HI: return "HI";
-    case Variant::HO: return "HO";
-    case Variant::HOmod: return "HOmod";
+    case Variant::LI:
+      return "LI";
+    case Variant::HI:
+      return "HI";
+    case Variant::HO:
+      return "HO";
+    case Variant::HOmod:
+      return "HOmod";
   }
   return "?";
 }

@@ -1,10 +1,10 @@
 // devstone --variant LI|HI|HO|HOmod --depth D --width W
-// Builds and runs one DEVStone model and prints one JSON line (devstone_report.hpp): simulator, variant, depth, width,
-// atomics, internal, external, expected counts, build_seconds (model construction and
-// flattening), sim_seconds, transitions_per_second (of the simulation phase), counts_ok, and
-// the same two phases in process CPU time (build_cpu_seconds, sim_cpu_seconds), which a busy
-// machine disturbs less than wall time.
-// Exit status 1 when the counts differ from the closed form.
+// Builds and runs one DEVStone model and prints one JSON line (devstone_report.hpp): simulator,
+// variant, depth, width, atomics, internal, external, expected counts, build_seconds (model
+// construction and flattening), sim_seconds, transitions_per_second (of the simulation phase),
+// counts_ok, and the same two phases in process CPU time (build_cpu_seconds, sim_cpu_seconds),
+// which a busy machine disturbs less than wall time. Exit status 1 when the counts differ from the
+// closed form.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -40,7 +40,8 @@ int main(int argc, char** argv) {
     const auto t2 = Clock::now();
     const double c2 = bench::devstone::cpuSeconds();
     const bench::devstone::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
-                                      std::chrono::duration<double>(t2 - t1).count(), c1 - c0, c2 - c1};
+                                      std::chrono::duration<double>(t2 - t1).count(), c1 - c0,
+                                      c2 - c1};
     const bool ok = bench::devstone::printRun("yardsim", variantName.c_str(), depth, width,
                                               bench::devstone::count(*root),
                                               bench::devstone::expected(variant, depth, width), t);

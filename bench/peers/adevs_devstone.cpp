@@ -42,7 +42,10 @@ int main(int argc, char** argv) {
     got.external = model->model->nExternals();
     const ds::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
                          std::chrono::duration<double>(t2 - t1).count(), c1 - c0, c2 - c1};
-    return ds::printRun("adevs", type.c_str(), depth, width, got, ds::expected(variant, depth, width), t) ? 0 : 1;
+    return ds::printRun("adevs", type.c_str(), depth, width, got,
+                        ds::expected(variant, depth, width), t)
+               ? 0
+               : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "peer_adevs_devstone: error: %s\n", e.what());
     return 2;

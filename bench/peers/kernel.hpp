@@ -24,9 +24,10 @@ NeutralState randomState(const std::vector<BodySpec>& spec, unsigned seed, bool 
 class Kernel {
  public:
   virtual ~Kernel() = default;
-  virtual void aba() = 0;        ///< forward dynamics
-  virtual void rnea() = 0;       ///< inverse dynamics
-  virtual void crbaChol() = 0;   ///< mass matrix and its Cholesky factor (the library's own, or Eigen's LLT in place)
+  virtual void aba() = 0;       ///< forward dynamics
+  virtual void rnea() = 0;      ///< inverse dynamics
+  virtual void crbaChol() = 0;  ///< mass matrix and its Cholesky factor (the library's own, or
+                                ///< Eigen's LLT in place)
   /// Results in the neutral order (root (angular; linear) first): after rnea, aba, crbaChol.
   virtual Eigen::VectorXd tauNeutral() const = 0;
   virtual Eigen::VectorXd ddqNeutral() const = 0;
@@ -39,7 +40,8 @@ std::unique_ptr<Kernel> makeRbdl(const std::vector<BodySpec>& spec, const Neutra
 #endif
 #ifdef YARDSIM_PEERS_HAVE_PINOCCHIO
 /// world: Pinocchio's Convention::WORLD for ABA and CRBA (LOCAL otherwise)
-std::unique_ptr<Kernel> makePinocchio(const std::vector<BodySpec>& spec, const NeutralState& s, bool world);
+std::unique_ptr<Kernel> makePinocchio(const std::vector<BodySpec>& spec, const NeutralState& s,
+                                      bool world);
 #endif
 
 }  // namespace yardsim::bench::peers

@@ -18,11 +18,13 @@ enum class JointKind { Free, Revolute, Prismatic };
 struct BodySpec {
   int parent = -1;  ///< index in the spec, -1 for the world
   JointKind kind = JointKind::Revolute;
-  int axis = 1;                              ///< 0, 1, 2: x, y, z of the joint frame
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  ///< joint frame origin in the parent body frame, m
-  double mass = 1.0;                          ///< kg
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();     ///< centre of mass in the body frame, m
-  Eigen::Vector3d inertia = Eigen::Vector3d::Ones();  ///< principal inertia about the com (body axes), kg m^2
+  int axis = 1;  ///< 0, 1, 2: x, y, z of the joint frame
+  Eigen::Vector3d offset =
+      Eigen::Vector3d::Zero();  ///< joint frame origin in the parent body frame, m
+  double mass = 1.0;            ///< kg
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();  ///< centre of mass in the body frame, m
+  Eigen::Vector3d inertia =
+      Eigen::Vector3d::Ones();  ///< principal inertia about the com (body axes), kg m^2
 };
 
 // (N) => the planar chain of N rods
@@ -46,9 +48,10 @@ inline std::vector<BodySpec> tree(int n) {
   for (int b = 0; b < 4; ++b) {
     for (int j = 0; j < k; ++j) {
       const int parent = j == 0 ? 0 : static_cast<int>(s.size()) - 1;
-      const Eigen::Vector3d off = j == 0 ? Eigen::Vector3d(corner[b][0], corner[b][1], 1.0) : Eigen::Vector3d(0.1, 0.2, 2.0);
-      s.push_back({parent, j % 2 == 0 ? JointKind::Revolute : JointKind::Prismatic, j % 3, off, 50.0,
-                   Eigen::Vector3d(0.05, -0.02, 1.0), Eigen::Vector3d(20.0, 21.0, 2.0)});
+      const Eigen::Vector3d off = j == 0 ? Eigen::Vector3d(corner[b][0], corner[b][1], 1.0)
+                                         : Eigen::Vector3d(0.1, 0.2, 2.0);
+      s.push_back({parent, j % 2 == 0 ? JointKind::Revolute : JointKind::Prismatic, j % 3, off,
+                   50.0, Eigen::Vector3d(0.05, -0.02, 1.0), Eigen::Vector3d(20.0, 21.0, 2.0)});
     }
   }
   return s;

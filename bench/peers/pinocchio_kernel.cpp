@@ -38,7 +38,8 @@ class PinocchioKernel final : public Kernel {
     for (std::size_t b = 0; b < spec.size(); ++b) {
       const BodySpec& bs = spec[b];
       const P::SE3 X(Eigen::Matrix3d::Identity(), bs.offset);
-      id[b] = m_.addJoint(bs.parent < 0 ? 0 : id[bs.parent], jointModel(bs), X, "j" + std::to_string(b));
+      id[b] = m_.addJoint(bs.parent < 0 ? 0 : id[bs.parent], jointModel(bs), X,
+                          "j" + std::to_string(b));
       const Eigen::Matrix3d I = bs.inertia.asDiagonal();
       m_.appendBodyToJoint(id[b], P::Inertia(bs.mass, bs.com, I), P::SE3::Identity());
     }
@@ -98,7 +99,8 @@ class PinocchioKernel final : public Kernel {
 
 }  // namespace
 
-std::unique_ptr<Kernel> makePinocchio(const std::vector<BodySpec>& spec, const NeutralState& s, bool world) {
+std::unique_ptr<Kernel> makePinocchio(const std::vector<BodySpec>& spec, const NeutralState& s,
+                                      bool world) {
   return std::make_unique<PinocchioKernel>(spec, s, world);
 }
 

@@ -1,8 +1,8 @@
 // RBDL 3.3's kernels (ForwardDynamics, InverseDynamics, CompositeRigidBodyAlgorithm + Eigen's LLT
 // into preallocated storage; RBDL has no Cholesky of its own) on a peer_models.hpp model.
 // A revolute joint about a unit axis becomes RBDL's special-cased RevoluteX/Y/Z.
-#include <Eigen/Cholesky>
 #include <rbdl/rbdl.h>
+#include <Eigen/Cholesky>
 
 #include "kernel.hpp"
 
@@ -22,7 +22,8 @@ class RbdlKernel final : public Kernel {
       const BodySpec& bs = spec[b];
       SpatialVector axis = SpatialVector::Zero();
       axis[(bs.kind == JointKind::Prismatic ? 3 : 0) + bs.axis] = 1.0;
-      const R::Joint joint = bs.kind == JointKind::Free ? R::Joint(R::JointTypeFloatingBase) : R::Joint(axis);
+      const R::Joint joint =
+          bs.kind == JointKind::Free ? R::Joint(R::JointTypeFloatingBase) : R::Joint(axis);
       const R::Math::Matrix3d I(Eigen::Matrix3d(bs.inertia.asDiagonal()));
       id[b] = m_.AddBody(bs.parent < 0 ? 0 : id[bs.parent], R::Math::Xtrans(bs.offset), joint,
                          R::Body(bs.mass, bs.com, I));

@@ -14,7 +14,8 @@ namespace yardsim::bench::peers {
 std::vector<BodySpec> modelSpec(const std::string& name, int n) {
   if (name == "chain" && n >= 1) return chain(n);
   if (name == "tree" && n >= 5) return tree(n);
-  throw std::invalid_argument("model must be chain (N >= 1) or tree (N >= 5), got " + name + " " + std::to_string(n));
+  throw std::invalid_argument("model must be chain (N >= 1) or tree (N >= 5), got " + name + " " +
+                              std::to_string(n));
 }
 
 NeutralState randomState(const std::vector<BodySpec>& spec, unsigned seed, bool rootAtRest) {
@@ -42,7 +43,8 @@ namespace {
 
 class YardsimKernel final : public Kernel {
  public:
-  YardsimKernel(const std::vector<BodySpec>& spec, const NeutralState& s) : m_(build(spec)), d_(m_) {
+  YardsimKernel(const std::vector<BodySpec>& spec, const NeutralState& s)
+      : m_(build(spec)), d_(m_) {
     q_ = Eigen::VectorXd::Zero(m_.nq);
     v_.resize(m_.nv);
     a_.resize(m_.nv);
@@ -53,7 +55,8 @@ class YardsimKernel final : public Kernel {
       const int body = bodyIndex(static_cast<int>(b));
       if (spec[b].kind == JointKind::Free) {
         q_[m_.idxQ[body] + 3] = 1.0;  // quaternion w (the position and x, y, z stay 0)
-        for (int j = 0; j < 6; ++j) vmap_.push_back(m_.idxV[body] + j);  // (omega, v) in the child frame
+        for (int j = 0; j < 6; ++j)
+          vmap_.push_back(m_.idxV[body] + j);  // (omega, v) in the child frame
         k += 6;
       } else {
         q_[m_.idxQ[body]] = s.q[k];
@@ -96,11 +99,12 @@ class YardsimKernel final : public Kernel {
     for (std::size_t b = 0; b < spec.size(); ++b) {
       const BodySpec& s = spec[b];
       const Vector3 axis = Vector3::Unit(s.axis);
-      const Joint j = s.kind == JointKind::Free        ? Joint::free()
+      const Joint j = s.kind == JointKind::Free       ? Joint::free()
                       : s.kind == JointKind::Revolute ? Joint::revolute(axis)
                                                       : Joint::prismatic(axis);
       mb.addBody(name(static_cast<int>(b)), s.parent < 0 ? "world" : name(s.parent), j,
-                 Transform::translation(s.offset), makeInertia(s.mass, s.com, s.inertia.asDiagonal()));
+                 Transform::translation(s.offset),
+                 makeInertia(s.mass, s.com, s.inertia.asDiagonal()));
     }
     return mb.build();
   }

@@ -40,7 +40,9 @@ TEST_CASE("the profile line gives every phase and output's share of the total") 
   p.simulate = 5.0;
   p.output = 2.0;
   const std::string s = run::formatProfile(p);
-  CHECK(s == "profile: read 1 s, validation 0.5 s, stiffness guard 0.5 s, build 1 s, simulate 5 s, output 2 s "
-             "(20.0 % of the run), total 10 s");
+  CHECK(s ==
+        "profile: read 1 s, validation 0.5 s, stiffness guard 0.5 s, build 1 s, simulate 5 s, "
+        "output 2 s "
+        "(20.0 % of the run), total 10 s");
   CHECK(run::formatProfile({}).find("(0.0 % of the run), total 0 s") != std::string::npos);
 }

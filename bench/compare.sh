@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# bench/compare.sh devstone|multibody|multibody-ir|ode [--build DIR] [-n 7] [--pin 1] [--nice -10] [--algos aba,rnea]
+# bench/compare.sh devstone|multibody|multibody-ir|ode|scenes [--build DIR] [-n 7] [--pin 1] [--nice -10] [--algos aba,rnea]
 # yardsim against its peers, side by side: each round runs every side once as its own process,
 # pinned to one core (taskset) and reniced, the order rotating (peer, yardsim, peer, yardsim ...);
 # prints a Markdown table of yardsim/peer ratios (median and min-max over the rounds) after the
-# date, the machine, the compiler flags of DIR and the load average, for docs/performance.md.
+# date, the machine, the compiler flags of DIR and the load average, for docs/performance_peers.md.
 # DIR must be configured with -DYARDSIM_PEERS_DIR (bench/peers/build_peers.sh); with
 # -DYARDSIM_NATIVE=ON both sides are compiled with -march=native. `ode` times bench_multibody's
 # RK4Step/32 against ODEWorldStep/32 and ODEQuickStep/32 (ODE from Debian). `multibody-ir`

@@ -18,6 +18,7 @@ struct RunArgs {
   double checkpointEvery = 0.0;  // s; > 0: OUTDIR/checkpoints/tXXXXXX.XXX.ckpt at its multiples
   std::string restart;           // a checkpoint of this scene to continue from
   std::string format = "csv";    // hdf5: also OUTDIR/timeseries.h5 (the series under /series)
+  bool profile = false;          // print the wall time of each phase and output's share (stderr)
 };
 int runCommand(const RunArgs& a);
 

@@ -13,13 +13,15 @@
 #include "models/diagnostics.hpp"
 #include "output/timeseries_hdf5.hpp"
 #include "scene/assembler.hpp"
+#include "run/profile.hpp"
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
 
 namespace yardsim::cli {
 
 int runCommand(const RunArgs& a) {
-  auto scene = loadAndReport(a.scene);
+  run::PhaseTimes phases;
+  auto scene = loadAndReport(a.scene, &phases);
   if (!scene) return kInvalidInput;
   run::RunOptions opt;
   opt.outdir = a.outdir;
@@ -28,6 +30,7 @@ int runCommand(const RunArgs& a) {
   opt.maxTransitionsPerInstant = a.maxTransitionsPerInstant;
   opt.checkpointEvery = a.checkpointEvery;
   opt.restartFrom = a.restart;
+  opt.profile = a.profile;
   if (a.report && !(scene->record.interval > 0)) {
     std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
                          "docs/report.md)\n", a.scene.c_str());
@@ -56,7 +59,9 @@ int runCommand(const RunArgs& a) {
   };
   std::unique_ptr<devs::Coupled> root;
   try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
+    const run::Stopwatch building;
     root = scene::assemble(*scene);
+    phases.build = building.seconds();
   } catch (const devs::SimulationError& e) {
     std::fprintf(stderr, "numerical failure before the run: %s\nnothing was simulated\n", e.what());
     // (the failure) => OUTDIR/run.json with status failed and the diagnosis, as after a run
@@ -105,11 +110,18 @@ int runCommand(const RunArgs& a) {
         std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g\n",
                      al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
                      al.worst);
+    const run::Stopwatch writing;
     if (a.format == "hdf5" && r.samples > 0)
       output::writeTimeseriesHdf5(std::filesystem::path(a.outdir) / "timeseries.csv",
                                   std::filesystem::path(a.outdir) / "timeseries.h5");
     const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [](const auto& al) { return al.severity == "alarm"; });
     const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
+    // (phase times) => one line on stderr, also when quiet
+    if (a.profile) {
+      phases.simulate = r.simulateSeconds;
+      phases.output = r.outputSeconds + writing.seconds();
+      std::fprintf(stderr, "%s\n", run::formatProfile(phases).c_str());
+    }
     if (status == kOk && alarmed && a.failOn == "alarm") return kAlarm;
     return status;
   } catch (const devs::CheckpointError& e) {

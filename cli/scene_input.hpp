@@ -2,12 +2,14 @@
 #include <memory>
 #include <string>
 
+#include "run/profile.hpp"
 #include "scene/scene.hpp"
 
 namespace yardsim::cli {
 
 // (scene file) => the validated scene, or nullptr once every error is printed to stderr;
-// warnings are printed either way
-std::unique_ptr<scene::Scene> loadAndReport(const std::string& file);
+// warnings are printed either way; the read, validation and stiffness guard times go to `times`
+std::unique_ptr<scene::Scene> loadAndReport(const std::string& file,
+                                            run::PhaseTimes* times = nullptr);
 
 }  // namespace yardsim::cli

@@ -50,6 +50,8 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
   runCmd->add_flag("--report", run.report, "also write OUTDIR/report.html (adds the jsonl trace)");
+  runCmd->add_flag("--profile", run.profile,
+                   "print one line: wall time of reading, validation, stiffness guard, build, simulate and output");
   runCmd->add_option("--max-transitions-per-instant", run.maxTransitionsPerInstant,
                      "stop (exit 2) after this many transitions at one simulated time")
       ->capture_default_str()

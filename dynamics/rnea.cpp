@@ -7,6 +7,22 @@ namespace yardsim::dynamics {
 
 namespace {
 
+// (I_B: mass, centre of mass and inertia about it in the body frame; X_WB; motions a, v in the
+// world frame) => I_W a + v x* (I_W v) without forming the 6x6 I_W: for a motion (w, u),
+// h = m (u + w x c) and n = R Ic R^T w + c x h, c being the centre of mass in the world
+inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, const Motion& a, const Motion& v) {
+  const Vector3 c = X.R * I.com + X.p;
+  const Vector3 wa = a.head<3>(), wv = v.head<3>();
+  const Vector3 ha = I.mass * (a.tail<3>() + wa.cross(c));
+  const Vector3 hv = I.mass * (v.tail<3>() + wv.cross(c));
+  Force Ia, Iv;
+  Ia.head<3>() = X.R * (I.inertiaCom * (X.R.transpose() * wa)) + c.cross(ha);
+  Ia.tail<3>() = ha;
+  Iv.head<3>() = X.R * (I.inertiaCom * (X.R.transpose() * wv)) + c.cross(hv);
+  Iv.tail<3>() = hv;
+  return Ia + crossForce(v, Iv);
+}
+
 // flatten: inline every Eigen helper (GCC otherwise leaves small products and cross products as calls)
 template <bool kZeroAcc>
 [[gnu::flatten]] void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
@@ -47,8 +63,7 @@ template <bool kZeroAcc>
       const Matrix6 I = m.inertias[i].matrixIn(X) + A_W;
       d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {
-      const Matrix6 I = m.inertias[i].matrixIn(X);
-      d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]);
+      d.F_W[i] = inertiaForceWorld(m.inertias[i], X, d.A_W[i], d.V_W[i]);
     }
     if (fext != nullptr) d.F_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }

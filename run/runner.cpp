@@ -14,6 +14,7 @@
 #include "output/replay_recorder.hpp"
 #include "run/checkpoint_file.hpp"
 #include "run/hook_load_monitor.hpp"
+#include "run/profile.hpp"
 #include "run/run_summary.hpp"
 #include "run/timeseries_writer.hpp"
 
@@ -95,17 +96,25 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
                                   std::to_string(opt.until) + " s: nothing is left to run");
   }
 
+  // (output work) => done, its wall time added to `outputSeconds`
+  double outputSeconds = 0.0;
+  auto output = [&](auto&& work) {
+    const Stopwatch w;
+    work();
+    outputSeconds += w.seconds();
+  };
   // (record block) => the recorder, only when the scene asks for one
   std::unique_ptr<TimeseriesWriter> recorder;
   const double interval = scene.record.interval;
-  if (interval > 0.0)
-    recorder = std::make_unique<TimeseriesWriter>(
-        opt.outdir / "timeseries.csv", scene,
-        selectChannels(collectChannels(root), scene.record.channels),
-        restored ? opt.restartFrom.string() + " at " + std::to_string(restart.t) + " s" : "");
-  // (initial state) => the first row, on disk before the simulator computes its first step (a
-  // step that fails at once still leaves it); a restarted run goes on after its checkpoint's row
-  if (recorder && !restored) recorder->sample(0.0);
+  output([&] {
+    if (interval > 0.0)
+      recorder = std::make_unique<TimeseriesWriter>(
+          opt.outdir / "timeseries.csv", scene, selectChannels(collectChannels(root), scene.record.channels),
+          restored ? opt.restartFrom.string() + " at " + std::to_string(restart.t) + " s" : "");
+    // (initial state) => the first row, on disk before the simulator computes its first step (a
+    // step that fails at once still leaves it); a restarted run goes on after its checkpoint's row
+    if (recorder && !restored) recorder->sample(0.0);
+  });
 
   // (record grid, frame budget) => replay frames every `stride` samples, from the same t = 0
   ReplayRecorder replay(root);
@@ -125,8 +134,10 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     facts.tEnd = reached;
     facts.alarms = alarms.alarms();
     facts.wall = wall();
-    if (replaying) writeGlb(replay.replay(), opt.outdir / "replay.glb");
-    writeRunSummary(opt.outdir / "run.json", scene, root, facts);
+    output([&] {
+      if (replaying) writeGlb(replay.replay(), opt.outdir / "replay.glb");
+      writeRunSummary(opt.outdir / "run.json", scene, root, facts);
+    });
   };
 
   RunResult result;
@@ -139,7 +150,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
                                     "' cannot be checkpointed: its state type has no StateCodec "
                                     "(docs/extending.md, checkpoints)");
     // (trace names) => sinks, only those asked for; record sinks go on at their sequence number
-    std::vector<std::unique_ptr<devs::Listener>> sinks;
+    std::vector<std::unique_ptr<devs::Listener>> sinks, timed;
     std::vector<devs::RecordSink*> records;
     for (const auto& name : opt.trace) {
       if (name == "jsonl")
@@ -151,7 +162,8 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       else
         throw std::invalid_argument("unknown trace sink '" + name + "' (expected jsonl, chrome or csv)");
       if (auto* r = dynamic_cast<devs::RecordSink*>(sinks.back().get())) records.push_back(r);
-      sim.addListener(*sinks.back());
+      if (opt.profile) timed.push_back(std::make_unique<TimedListener>(*sinks.back(), outputSeconds));
+      sim.addListener(opt.profile ? *timed.back() : *sinks.back());
     }
     sim.addListener(alarms);
     // (cranes of the yard database with a hook-load curve) => checked after every step
@@ -165,7 +177,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       if (!restored->atEnd())
         throw devs::CheckpointError(opt.restartFrom.string() + ": bytes left after the last model's state");
     }
-    if (replaying) replay.sample(reached);
+    if (replaying) output([&] { replay.sample(reached); });
     double lastReport = 0.0;
     auto report = [&](double t) {
       if (!opt.progress) return;
@@ -210,8 +222,10 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       if (std::isinf(next)) break;  // until no event is left
       sim.runUntil(next);
       if (next == recordAt) {
-        if (recorder) recorder->sample(next);
-        if (replaying && (position.record % stride == 0 || next >= opt.until)) replay.sample(next);
+        output([&] {
+          if (recorder) recorder->sample(next);
+          if (replaying && (position.record % stride == 0 || next >= opt.until)) replay.sample(next);
+        });
         ++position.record;
         reached = next;
         report(next);
@@ -239,6 +253,8 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     throw;
   }
   finish();
+  result.outputSeconds = outputSeconds;
+  result.simulateSeconds = wall() - outputSeconds;
   return result;
 }
 

@@ -38,6 +38,8 @@ struct RunOptions {
   // a checkpoint of this scene to continue from (empty: start at t = 0); OUTDIR then holds the
   // rows, trace records and replay frames after the checkpoint's time
   std::filesystem::path restartFrom = {};
+  // time the trace sinks' hooks too (RunResult::outputSeconds); costs two clock reads per hook
+  bool profile = false;
 };
 
 struct RunResult {
@@ -46,6 +48,10 @@ struct RunResult {
   std::size_t samples = 0;
   devs::SimulatorStats stats;
   std::vector<Alarm> alarms;  // every safety event of the run (alarms.hpp), also in run.json
+  // wall s of writing output inside runScene (CSV rows, replay frames, replay.glb, run.json, and
+  // with RunOptions::profile the trace sinks), and of the rest (simulator set-up and events)
+  double outputSeconds = 0.0;
+  double simulateSeconds = 0.0;
 };
 
 // (scene, its assembled model, options) => the run: OUTDIR/timeseries.csv and the traces asked

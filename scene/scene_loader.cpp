@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include <chrono>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -473,14 +474,22 @@ LoadResult loadScene(const fs::path& file) { return loadScene(file, {}); }
 
 LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   LoadResult r;
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  auto t0 = Clock::now();
   Loader loader(r.diagnostics);
   auto scene = loader.root(file, overrides);
+  r.readSeconds = since(t0);
+  t0 = Clock::now();
   if (scene && !r.diagnostics.hasErrors()) scene->systems = mechanicalSystems(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) completeHookLoadChecks(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
+  r.validationSeconds = since(t0);
+  t0 = Clock::now();
   if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);
+  r.stiffnessSeconds = since(t0);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;
 }

@@ -1,17 +1,17 @@
 // devstone --variant LI|HI|HO|HOmod --depth D --width W
-// Builds and runs one DEVStone model and prints one JSON line: variant, depth, width,
-// atomics, internal, external, expected counts, build_seconds (model construction and
-// flattening), sim_seconds, transitions_per_second (of the simulation phase), counts_ok, and
-// the same two phases in process CPU time (build_cpu_seconds, sim_cpu_seconds), which a busy
-// machine disturbs less than wall time.
-// Exit status 1 when the counts differ from the closed form.
+// Builds and runs one DEVStone model and prints one JSON line (devstone_report.hpp): simulator,
+// variant, depth, width, atomics, internal, external, expected counts, build_seconds (model
+// construction and flattening), sim_seconds, transitions_per_second (of the simulation phase),
+// counts_ok, and the same two phases in process CPU time (build_cpu_seconds, sim_cpu_seconds),
+// which a busy machine disturbs less than wall time. Exit status 1 when the counts differ from the
+// closed form.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
-#include <ctime>
 
 #include "devs/simulator.hpp"
 #include "devstone_models.hpp"
+#include "devstone_report.hpp"
 
 int main(int argc, char** argv) {
   using namespace yardsim;
@@ -26,41 +26,25 @@ int main(int argc, char** argv) {
   app.add_flag("--null-listener", hooks,
                "attach a listener whose hooks do nothing (measures the cost of the trace hooks)");
   CLI11_PARSE(app, argc, argv);
-  auto cpu = [] {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-  };
   try {
     const auto variant = bench::devstone::parseVariant(variantName);
-    const double c0 = cpu();
+    const double c0 = bench::devstone::cpuSeconds();
     const auto t0 = Clock::now();
     auto root = bench::devstone::build(variant, depth, width);
     devs::Simulator sim(*root);
     devs::Listener nullListener;
     if (hooks) sim.addListener(nullListener);
     const auto t1 = Clock::now();
-    const double c1 = cpu();
+    const double c1 = bench::devstone::cpuSeconds();
     sim.run();
     const auto t2 = Clock::now();
-    const double c2 = cpu();
-    const auto got = bench::devstone::count(*root);
-    const auto want = bench::devstone::expected(variant, depth, width);
-    const double build = std::chrono::duration<double>(t1 - t0).count();
-    const double simulate = std::chrono::duration<double>(t2 - t1).count();
-    const bool ok = got.internal == want.internal && got.external == want.external &&
-                    got.atomics == want.atomics;
-    std::printf(
-        "{\"variant\":\"%s\",\"depth\":%d,\"width\":%d,\"atomics\":%llu,\"internal\":%llu,"
-        "\"external\":%llu,\"expected\":%llu,\"build_seconds\":%.6f,\"sim_seconds\":%.6f,"
-        "\"transitions_per_second\":%.0f,\"counts_ok\":%s,\"build_cpu_seconds\":%.6f,"
-        "\"sim_cpu_seconds\":%.6f}\n",
-        variantName.c_str(), depth, width, static_cast<unsigned long long>(got.atomics),
-        static_cast<unsigned long long>(got.internal),
-        static_cast<unsigned long long>(got.external),
-        static_cast<unsigned long long>(want.internal), build, simulate,
-        simulate > 0 ? static_cast<double>(got.internal + got.external) / simulate : 0.0,
-        ok ? "true" : "false", c1 - c0, c2 - c1);
+    const double c2 = bench::devstone::cpuSeconds();
+    const bench::devstone::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
+                                      std::chrono::duration<double>(t2 - t1).count(), c1 - c0,
+                                      c2 - c1};
+    const bool ok = bench::devstone::printRun("yardsim", variantName.c_str(), depth, width,
+                                              bench::devstone::count(*root),
+                                              bench::devstone::expected(variant, depth, width), t);
     return ok ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "devstone: error: %s\n", e.what());

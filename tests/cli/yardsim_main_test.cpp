@@ -41,6 +41,17 @@ TEST_CASE("yardsim run writes the time series and the traces asked for (exit 0)"
   CHECK(yardsim::testing::CsvFile(dir.file("short/timeseries.csv")).rows.back()[0] == 5.0);
 }
 
+TEST_CASE("yardsim run --profile prints the time of every phase and the share of output") {
+  yardsim::testing::SceneDir dir;
+  const auto r = runYardsim("run " + kGpt + " -o " + dir.file("out") + " --trace jsonl --quiet --profile");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  for (const char* phase : {"profile: read ", ", validation ", ", stiffness guard ", ", build ", ", simulate ",
+                            ", output ", " % of the run), total "})
+    CHECK(r.out.find(phase) != std::string::npos);
+  CHECK(runYardsim("run " + kGpt + " -o " + dir.file("out2") + " --quiet").out.find("profile:") == std::string::npos);
+}
+
 TEST_CASE("yardsim run and validate refuse a bad scene with exit 1 and every error") {
   yardsim::testing::SceneDir dir;
   const auto bad = dir.write("bad.yaml", "schema_version: 1\ncomponents:\n  p: {type: procesor}\n"

@@ -40,6 +40,28 @@ TEST_CASE("samples land on the record grid and the sinks asked for are written")
   for (const auto& row : csv.rows) CHECK(row[x] == Approx(std::cos(row[0])).margin(1e-6));
 }
 
+TEST_CASE("a profiled run writes the same files and books its output time apart") {
+  testing::SceneDir dir;
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", springScene(0.01, "rk4", 5.0)));
+  auto read = [](const std::filesystem::path& f) {
+    std::ifstream in(f, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  run::RunResult r[2];
+  for (int profiled = 0; profiled < 2; ++profiled) {
+    auto root = scene::assemble(*scene);
+    run::RunOptions opt{dir.path() / ("out" + std::to_string(profiled)), scene->until, {"jsonl"}, {}, 0.1, 2000};
+    opt.profile = profiled == 1;
+    r[profiled] = run::runScene(*scene, *root, opt);
+  }
+  CHECK(read(dir.path() / "out0/trace.jsonl") == read(dir.path() / "out1/trace.jsonl"));
+  CHECK(read(dir.path() / "out0/timeseries.csv") == read(dir.path() / "out1/timeseries.csv"));
+  for (const auto& x : r) {
+    CHECK(x.outputSeconds > 0.0);  // 501 rows written
+    CHECK(x.simulateSeconds > 0.0);
+  }
+}
+
 TEST_CASE("a run that blows up stops with a diagnosis and keeps what it recorded") {
   testing::SceneDir dir;
   // RK4 on an undamped spring is unstable beyond omega*dt = 2.83: dt = 3 grows every step

@@ -1,9 +1,12 @@
 #include "scene/floating_reader.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "scene/mechanics_reader.hpp"
 #include "forces/geometry/mesh_io.hpp"
+#include "forces/hydro/irregular_sea.hpp"
 #include "scene/spec_reader.hpp"
 
 namespace yardsim::scene {
@@ -40,6 +43,60 @@ void body(const Reader& r, const YAML::Node& n, const std::string& key, const st
   }
 }
 
+// (node, key) => a whole number in [lo, hi] (fallback when absent), reported otherwise
+long wholeNumber(const Reader& r, const YAML::Node& n, const std::string& key, long fallback, long lo, long hi) {
+  if (!n) return fallback;
+  const double v = r.number(n, key, static_cast<double>(fallback));
+  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
+    r.fail(n, key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return fallback;
+  }
+  return static_cast<long>(v);
+}
+
+// ({spectrum, hs, tp, gamma, direction_deg, spreading_s, seed, components}) => the sea's
+// components appended to spec.waves (docs/hydrodynamics.md, "Irregular seas")
+void irregular(const Reader& r, const YAML::Node& n, const std::string& key, const forces::WaterProperties& w,
+               MechanicsSpec& spec) {
+  if (!r.keys(n, {"spectrum", "hs", "tp", "gamma", "direction", "direction_deg", "spreading_s", "seed", "components"},
+              key))
+    return;
+  forces::hydro::IrregularSea sea;
+  const YAML::Node kind = n["spectrum"];
+  try {
+    sea.spectrum = forces::hydro::spectrumKind(kind.IsScalar() ? kind.Scalar() : "");
+  } catch (const std::invalid_argument& e) {
+    r.fail(kind, key + ".spectrum", std::string(e.what()) + " " +
+               didYouMean(kind.IsScalar() ? kind.Scalar() : "", {"jonswap", "pierson_moskowitz"}));
+    return;
+  }
+  if (n["gamma"] && sea.spectrum != forces::hydro::SpectrumKind::Jonswap)
+    r.fail(n["gamma"], key + ".gamma", "'gamma' goes with spectrum: jonswap (Pierson-Moskowitz has none)");
+  sea.hs = r.number(n["hs"], key + ".hs", 0.0, true);
+  sea.tp = r.number(n["tp"], key + ".tp", 0.0, true);
+  sea.gamma = r.number(n["gamma"], key + ".gamma", 3.3);
+  sea.direction = angle(r, n, key, "direction");
+  sea.spreadingS = r.number(n["spreading_s"], key + ".spreading_s", 0.0);
+  sea.seed = static_cast<std::uint64_t>(wholeNumber(r, n["seed"], key + ".seed", 1, 0, 2147483647));
+  sea.components = static_cast<int>(wholeNumber(r, n["components"], key + ".components", 200, 1, 100000));
+  // (each value at its own node) => the first word of the message names the key
+  const std::pair<const char*, bool> checks[] = {{"hs", sea.hs > 0},
+                                                 {"tp", sea.tp > 0},
+                                                 {"gamma", sea.gamma >= 1 && sea.gamma <= 20},
+                                                 {"spreading_s", sea.spreadingS == 0 || (sea.spreadingS > 0 && sea.spreadingS <= 1000)}};
+  if (!n["hs"] || !n["tp"]) return;  // (reported above)
+  try {
+    auto waves = forces::hydro::irregularWaves(sea);
+    forces::AiryWaves(w, waves);  // (every component on this water) => not breaking
+    spec.waves.insert(spec.waves.end(), waves.begin(), waves.end());
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const auto& [name, ok] : checks)
+      if (!ok && n[name]) return r.fail(n[name], key + "." + name, what.substr(what.find(": ") + 2));
+    r.fail(n, key, what);
+  }
+}
+
 void water(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
   if (!r.keys(n, {"density", "level", "depth", "waves", "wave_ramp", "wave_start", "current"}, "")) return;
   spec.hasWater = true;
@@ -54,11 +111,18 @@ void water(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
   if (n["depth"] && !(w.depth > 0)) r.fail(n["depth"], "depth", "the water depth must be > 0 m (omit it for deep water)");
   if (n["wave_ramp"] && !(w.ramp >= 0)) r.fail(n["wave_ramp"], "wave_ramp", "the ramp time must be >= 0 s");
   if (const YAML::Node ws = n["waves"]) {
-    if (!ws.IsSequence()) {
-      r.fail(ws, "waves", "expected a list of regular waves [{height, period, direction_deg, phase_deg}, ...]");
+    if (ws.IsMap()) {
+      irregular(r, ws, "waves", w, spec);
+    } else if (!ws.IsSequence()) {
+      r.fail(ws, "waves", "expected a list of regular waves [{height, period, direction_deg, phase_deg}, ...] "
+                          "and irregular seas {spectrum, hs, tp, ...}, or one irregular sea");
     } else {
       for (std::size_t i = 0; i < ws.size(); ++i) {
         const std::string k = "waves[" + std::to_string(i) + "]";
+        if (ws[i].IsMap() && ws[i]["spectrum"]) {
+          irregular(r, ws[i], k, w, spec);
+          continue;
+        }
         if (!r.keys(ws[i], {"height", "period", "direction", "direction_deg", "phase", "phase_deg"}, k)) continue;
         forces::WaveComponent c;
         c.height = r.number(ws[i]["height"], k + ".height", 0.0, true);

@@ -78,7 +78,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "name: {channel: <element>.<quantity>, above | below: threshold} (a `crossed` event)"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"water", ParamKind::Any, false, "~", "",
-             "{density, level, depth, waves: [{height, period, direction_deg, phase_deg}], wave_start, wave_ramp, "
+             "{density, level, depth, waves: [{height, period, direction_deg, phase_deg} | {spectrum, hs, tp, gamma, "
+             "direction_deg, spreading_s, seed, components}], wave_start, wave_ramp, "
              "current: {speed, direction_deg, profile: [[z, factor], ...]}}"},
             {"wind", ParamKind::Any, false, "~", "",
              "{speed, direction_deg, reference_height, profile: uniform|power_law|npd, exponent, "

@@ -34,12 +34,20 @@ RadiationMemory::RadiationMemory(const RetardationKernel& kernel)
     : kernel_(&kernel), n_(kernel.length), ring_(Eigen::VectorXd::Zero(12 * kernel.length)) {}
 
 void RadiationMemory::push(const Vector6& xi) {
+  // (C_k of the history before) => C_k after the push without a sum over the memory:
+  // C_k(m + 1) = C_k+1(m) + dt/2 (K_k+1 xi_m + K_k xi_m+1)
+  const Vector6 previous = newest();
+  const auto& K = kernel_->K;
+  for (int k = 0; k + 1 < kCached; ++k) {
+    have_[k] = have_[k + 1] && k + 1 <= kernel_->length;
+    if (have_[k]) c_[k] = c_[k + 1] + 0.5 * (K.middleCols<6>(6 * (k + 1)) * previous + K.middleCols<6>(6 * k) * xi);
+  }
+  have_[kCached - 1] = false;
   p_ = p_ == 0 ? n_ - 1 : p_ - 1;
   ring_.segment<6>(6 * p_) = xi;
   ring_.segment<6>(6 * (p_ + n_)) = xi;
   ++m_;
   count_ = std::min(count_ + 1, n_);
-  have_.fill(false);
 }
 
 void RadiationMemory::commit(double t, const Vector6& v) {
@@ -111,7 +119,7 @@ Vector6 RadiationMemory::convolution(double t, const Vector6& v) const {
   const double phi = std::max(0.0, (t - tm) / dt);
   const auto k = static_cast<Eigen::Index>(phi);
   const double f = phi - static_cast<double>(k);
-  Vector6 mu = (1.0 - f) * cached(k) + f * cached(k + 1);
+  Vector6 mu = f == 0.0 ? cached(k) : Vector6((1.0 - f) * cached(k) + f * cached(k + 1));
   // (pieces of the velocity after the newest sample) => trapezoid in sub-intervals <= dt
   auto piece = [&](double a, const Vector6& va, double b, const Vector6& vb) {
     if (!(b > a)) return;
@@ -141,6 +149,10 @@ void RadiationMemory::carried(std::vector<double>& out) const {
   out.push_back(tc_);
   for (int i = 0; i < 6; ++i) out.push_back(vc_[i]);
   for (Eigen::Index i = 0; i < 6 * n_; ++i) out.push_back(ring_[6 * p_ + i]);
+  for (int k = 0; k < kCached; ++k) {  // (the sums kept, as the next pushes shift them)
+    out.push_back(have_[k] ? 1.0 : 0.0);
+    for (int i = 0; i < 6; ++i) out.push_back(have_[k] ? c_[k][i] : 0.0);
+  }
 }
 
 void RadiationMemory::restore(std::span<const double> x) {
@@ -159,7 +171,11 @@ void RadiationMemory::restore(std::span<const double> x) {
     ring_[6 * slot + i % 6] = value;
     ring_[6 * (slot + n_) + i % 6] = value;
   }
-  have_.fill(false);
+  std::size_t at = 11 + 6 * static_cast<std::size_t>(n_);
+  for (int k = 0; k < kCached; ++k, at += 7) {
+    have_[k] = x[at] != 0.0;
+    for (int i = 0; i < 6; ++i) c_[k][i] = x[at + 1 + static_cast<std::size_t>(i)];
+  }
 }
 
 }  // namespace yardsim::forces::hydro

@@ -12,8 +12,9 @@
 //   C_k = dt (1/2 K_k xi_m + sum_{l >= 1} K_{l+k} xi_{m-l})   (K linear between samples, zero from L on)
 //   tail = int_{t_m}^{t} K(t - tau) xi_dot(tau) dtau, trapezoid in sub-intervals <= dt over the
 //          velocity linear from (t_m, xi_m) through the last commit to (t, the stage's velocity).
-// C_k depends on the committed history only: computed once per commit (C_0, C_1; others when a
-// step is longer than dt) and reused by every stage. Nothing allocates after construction.
+// C_k depends on the committed history only: computed when a stage first needs it and reused by
+// every later stage; a new sample shifts them, C_k(m + 1) = C_k+1(m) + dt/2 (K_k+1 xi_m + K_k xi_m+1),
+// so that a step of one sample costs one sum over the memory. Nothing allocates after construction.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -54,7 +55,7 @@ class RadiationMemory {
   // checkpoints: () => every value the results depend on appended; (those values) => restored
   void carried(std::vector<double>& out) const;
   void restore(std::span<const double> values);
-  std::size_t carriedSize() const { return 11 + 6 * static_cast<std::size_t>(n_); }
+  std::size_t carriedSize() const { return 11 + 6 * static_cast<std::size_t>(n_) + 7 * kCached; }
 
  private:
   static constexpr int kCached = 8;  // C_k kept for k < kCached

@@ -28,12 +28,14 @@ std::shared_ptr<ImpulseResponse> response(std::vector<double> headings) {
   ir->dt = 0.05;
   for (int k = 0; k < 1200; ++k) {
     ImpulseResponse::Matrix6 K;
-    for (int i = 0; i < 36; ++i) K(i / 6, i % 6) = (1.0 + i) * std::exp(-0.3 * k * 0.05) * std::cos(0.8 * k * 0.05 + i);
+    for (int i = 0; i < 36; ++i)
+      K(i / 6, i % 6) = (1.0 + i) * std::exp(-0.3 * k * 0.05) * std::cos(0.8 * k * 0.05 + i);
     ir->radiation.push_back(K);
   }
   ir->headings = std::move(headings);
   ir->excitationStart = -3.0;
-  ir->excitation.assign(ir->headings.size(), std::vector<ImpulseResponse::Vector6>(120, ImpulseResponse::Vector6::Ones()));
+  ir->excitation.assign(ir->headings.size(), std::vector<ImpulseResponse::Vector6>(
+                                                 120, ImpulseResponse::Vector6::Ones()));
   return ir;
 }
 
@@ -62,7 +64,8 @@ void benchExcitation(benchmark::State& st) {
             dynamics::boxInertia(1e6, dynamics::Vector3(60, 20, 5)));
   const dynamics::Model model = b.build();
   IrregularSea spec;
-  spec.hs = 2.5, spec.tp = 8.0, spec.spreadingS = 10, spec.components = static_cast<int>(st.range(0));
+  spec.hs = 2.5, spec.tp = 8.0, spec.spreadingS = 10,
+  spec.components = static_cast<int>(st.range(0));
   const auto sea = std::make_shared<const AiryWaves>(WaterProperties{}, irregularWaves(spec));
   const ImpulseResponseForce p("hd", model, 1, response({0.0, M_PI / 2}), sea);
   dynamics::Data data(model);
@@ -80,7 +83,8 @@ void benchExcitation(benchmark::State& st) {
 
 void benchIrregularSea(benchmark::State& st) {
   IrregularSea spec;
-  spec.hs = 2.5, spec.tp = 8.0, spec.spreadingS = 10, spec.components = static_cast<int>(st.range(0));
+  spec.hs = 2.5, spec.tp = 8.0, spec.spreadingS = 10,
+  spec.components = static_cast<int>(st.range(0));
   for (auto _ : st) {
     auto w = irregularWaves(spec);
     benchmark::DoNotOptimize(w.data());
@@ -89,7 +93,12 @@ void benchIrregularSea(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(benchConvolution)->Name("Convolution")->Arg(10)->Arg(50)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(benchConvolution)
+    ->Name("Convolution")
+    ->Arg(10)
+    ->Arg(50)
+    ->Arg(100)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(benchExcitation)->Name("Excitation")->Arg(50)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(benchIrregularSea)->Name("IrregularSea")->Arg(200)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -72,7 +72,8 @@ std::shared_ptr<const ImpulseResponse> cachedOrSolved(const HydrodynamicsRequest
                                                       const ImpulseResponseSolver& solver,
                                                       const std::filesystem::path& cacheDir) {
   const std::string key = requestKey(request, solver.name);
-  if (auto cached = loadCachedResponse(cacheDir, key)) return std::make_shared<const ImpulseResponse>(std::move(*cached));
+  if (auto cached = loadCachedResponse(cacheDir, key))
+    return std::make_shared<const ImpulseResponse>(std::move(*cached));
   ImpulseResponse ir = solver.solve(request);
   ir.key = key;
   writeImpulseResponse(ir, cacheFile(cacheDir, key));

@@ -26,17 +26,19 @@ namespace yardsim::forces::hydro {
 
 // What a hull's hydrodynamics is computed for, as the scene gives it
 struct HydrodynamicsRequest {
-  std::shared_ptr<const TriangleMesh> hull;                // body frame (nullptr: none given)
-  dynamics::Transform X_WB = dynamics::Transform::identity();  // the body's initial pose, as its file gives it
-  WaterProperties water;                                   // density, gravity, depth, level
-  std::vector<double> headings;                            // rad, excitation headings in B
-  double dt = 0.05;                                        // s, response sample spacing
-  double memory = 60.0;                                    // s, length of the radiation memory
-  std::map<std::string, double> settings;                  // the method's own numbers (YAML `settings:`)
+  std::shared_ptr<const TriangleMesh> hull;  // body frame (nullptr: none given)
+  dynamics::Transform X_WB =
+      dynamics::Transform::identity();     // the body's initial pose, as its file gives it
+  WaterProperties water;                   // density, gravity, depth, level
+  std::vector<double> headings;            // rad, excitation headings in B
+  double dt = 0.05;                        // s, response sample spacing
+  double memory = 60.0;                    // s, length of the radiation memory
+  std::map<std::string, double> settings;  // the method's own numbers (YAML `settings:`)
 };
 
 // (request, the scene's sea) => problems, one sentence each with its numbers; empty: fine
-using HydrodynamicsCheck = std::function<std::vector<std::string>(const HydrodynamicsRequest&, const AiryWaves&)>;
+using HydrodynamicsCheck =
+    std::function<std::vector<std::string>(const HydrodynamicsRequest&, const AiryWaves&)>;
 
 struct ImpulseResponseSolver {
   std::string name;
@@ -46,8 +48,9 @@ struct ImpulseResponseSolver {
 
 struct TimeDomainMethod {
   std::string name;
-  std::function<std::unique_ptr<ForceProvider>(const std::string& name, const dynamics::Model& model, int body,
-                                               const HydrodynamicsRequest& request, std::shared_ptr<const AiryWaves> sea)>
+  std::function<std::unique_ptr<ForceProvider>(
+      const std::string& name, const dynamics::Model& model, int body,
+      const HydrodynamicsRequest& request, std::shared_ptr<const AiryWaves> sea)>
       build;
   HydrodynamicsCheck check;  // may be empty
 };

@@ -40,7 +40,8 @@ struct Reader {
   template <class T>
   T get() {
     if (bytes.size() < 8 || bytes.size() - 8 < at + sizeof(T))
-      throw CacheError(file + ": truncated (ends inside the data); delete it to compute the response again");
+      throw CacheError(
+          file + ": truncated (ends inside the data); delete it to compute the response again");
     T v;
     std::memcpy(&v, bytes.data() + at, sizeof(T));
     at += sizeof(T);
@@ -48,7 +49,8 @@ struct Reader {
   }
   std::uint64_t count(const char* what) {
     const auto n = get<std::uint64_t>();
-    if (n > kMaxCount) throw CacheError(file + ": damaged (" + what + " count " + std::to_string(n) + ")");
+    if (n > kMaxCount)
+      throw CacheError(file + ": damaged (" + what + " count " + std::to_string(n) + ")");
     return n;
   }
   template <class M>
@@ -70,16 +72,21 @@ std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash) {
 
 std::filesystem::path impulseResponseCacheDir() {
   if (const char* d = std::getenv("YARDSIM_CACHE_DIR"); d && *d) return d;
-  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "yardsim" / "impulse_responses";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "yardsim" / "impulse_responses";
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x)
+    return std::filesystem::path(x) / "yardsim" / "impulse_responses";
+  if (const char* h = std::getenv("HOME"); h && *h)
+    return std::filesystem::path(h) / ".cache" / "yardsim" / "impulse_responses";
   return std::filesystem::path(".yardsim_cache") / "impulse_responses";
 }
 
 std::filesystem::path cacheFile(const std::filesystem::path& dir, const std::string& key) {
   bool ok = !key.empty() && key.size() <= 200 && key.front() != '.';
   for (char c : key)
-    ok = ok && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.');
-  if (!ok) throw std::invalid_argument("impulse-response key '" + key + "': expected letters, digits, '-', '_' and '.'");
+    ok = ok && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                c == '-' || c == '_' || c == '.');
+  if (!ok)
+    throw std::invalid_argument("impulse-response key '" + key +
+                                "': expected letters, digits, '-', '_' and '.'");
   return dir / (key + ".ysir");
 }
 
@@ -97,8 +104,9 @@ void writeImpulseResponse(const ImpulseResponse& ir, const std::filesystem::path
   for (double b : ir.headings) w.put(b);
   w.put(ir.excitationStart);
   if (ir.excitation.size() != ir.headings.size())
-    throw CacheError(file.string() + ": not written: " + std::to_string(ir.headings.size()) + " headings but " +
-                     std::to_string(ir.excitation.size()) + " excitation responses");
+    throw CacheError(file.string() + ": not written: " + std::to_string(ir.headings.size()) +
+                     " headings but " + std::to_string(ir.excitation.size()) +
+                     " excitation responses");
   for (const auto& h : ir.excitation) {
     w.put(static_cast<std::uint64_t>(h.size()));
     for (const auto& x : h) w.matrix(x);
@@ -111,7 +119,9 @@ void writeImpulseResponse(const ImpulseResponse& ir, const std::filesystem::path
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
-    if (!out) throw CacheError(file.string() + ": cannot be written (" + (ec ? ec.message() : "write failed") + ")");
+    if (!out)
+      throw CacheError(file.string() + ": cannot be written (" +
+                       (ec ? ec.message() : "write failed") + ")");
   }
   std::filesystem::rename(tmp, file, ec);
   if (ec) throw CacheError(file.string() + ": cannot be written (" + ec.message() + ")");
@@ -120,7 +130,8 @@ void writeImpulseResponse(const ImpulseResponse& ir, const std::filesystem::path
 ImpulseResponse readImpulseResponse(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw CacheError(file.string() + ": cannot be read");
-  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
   const std::string f = file.string();
   if (bytes.size() < 8 + 8 + 8 || std::memcmp(bytes.data(), kMagic, 8) != 0)
     throw CacheError(f + ": not an impulse-response file (no YSIMIR1 header)");
@@ -130,10 +141,12 @@ ImpulseResponse readImpulseResponse(const std::filesystem::path& file) {
     throw CacheError(f + ": damaged (checksum mismatch); delete it to compute the response again");
   Reader r{bytes, f, 8};
   if (const auto v = r.get<std::uint32_t>(); v != kVersion)
-    throw CacheError(f + ": format version " + std::to_string(v) + ", this build reads version " + std::to_string(kVersion));
+    throw CacheError(f + ": format version " + std::to_string(v) + ", this build reads version " +
+                     std::to_string(kVersion));
   ImpulseResponse ir;
   const auto keySize = r.get<std::uint32_t>();
-  if (keySize > 1000 || r.at + keySize > bytes.size() - 8) throw CacheError(f + ": damaged (key length)");
+  if (keySize > 1000 || r.at + keySize > bytes.size() - 8)
+    throw CacheError(f + ": damaged (key length)");
   ir.key.assign(bytes.data() + r.at, keySize);
   r.at += keySize;
   ir.dt = r.get<double>();
@@ -148,15 +161,20 @@ ImpulseResponse readImpulseResponse(const std::filesystem::path& file) {
     h.resize(r.count("excitation"));
     for (auto& x : h) r.matrix(x);
   }
-  if (r.at != bytes.size() - 8) throw CacheError(f + ": damaged (" + std::to_string(bytes.size() - 8 - r.at) + " bytes left over)");
+  if (r.at != bytes.size() - 8)
+    throw CacheError(f + ": damaged (" + std::to_string(bytes.size() - 8 - r.at) +
+                     " bytes left over)");
   return ir;
 }
 
-std::optional<ImpulseResponse> loadCachedResponse(const std::filesystem::path& dir, const std::string& key) {
+std::optional<ImpulseResponse> loadCachedResponse(const std::filesystem::path& dir,
+                                                  const std::string& key) {
   const std::filesystem::path file = cacheFile(dir, key);
   if (!std::filesystem::exists(file)) return std::nullopt;
   ImpulseResponse ir = readImpulseResponse(file);
-  if (ir.key != key) throw CacheError(file.string() + ": holds the response of key '" + ir.key + "', not '" + key + "'");
+  if (ir.key != key)
+    throw CacheError(file.string() + ": holds the response of key '" + ir.key + "', not '" + key +
+                     "'");
   return ir;
 }
 

@@ -36,9 +36,11 @@ void writeImpulseResponse(const ImpulseResponse& ir, const std::filesystem::path
 ImpulseResponse readImpulseResponse(const std::filesystem::path& file);
 // (folder, key) => the cached response, or nothing when there is no file; throws CacheError for
 // a damaged file or one that holds another key
-std::optional<ImpulseResponse> loadCachedResponse(const std::filesystem::path& dir, const std::string& key);
+std::optional<ImpulseResponse> loadCachedResponse(const std::filesystem::path& dir,
+                                                  const std::string& key);
 
 // (bytes) => FNV-1a 64 (also the hash behind the keys), continuing from `hash`
-std::uint64_t fnv1a(const void* data, std::size_t size, std::uint64_t hash = 14695981039346656037ull);
+std::uint64_t fnv1a(const void* data, std::size_t size,
+                    std::uint64_t hash = 14695981039346656037ull);
 
 }  // namespace yardsim::forces::hydro

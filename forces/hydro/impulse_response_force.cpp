@@ -23,7 +23,8 @@ struct ImpulseResponseForce::Scratch final : ProviderScratch {
   }
   void restoreCarried(std::span<const double> x) override {
     const std::size_t n = memory.carriedSize();
-    if (x.size() != n + 8) throw std::invalid_argument("impulse-response force: wrong number of carried values");
+    if (x.size() != n + 8)
+      throw std::invalid_argument("impulse-response force: wrong number of carried values");
     memory.restore(x.first(n));
     haveLast = x[n] != 0.0;
     lastT = x[n + 1];
@@ -48,20 +49,24 @@ ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Mod
       sea_(std::move(sea)),
       kernel_(*response_) {
   const std::string me = "impulse-response force '" + this->name() + "': ";
-  if (body_ < 1 || body_ >= model.nbodies) throw std::invalid_argument(me + "the body is the world or outside the model");
+  if (body_ < 1 || body_ >= model.nbodies)
+    throw std::invalid_argument(me + "the body is the world or outside the model");
   const ImpulseResponse& ir = *response_;
   if (ir.excitation.size() != ir.headings.size())
     throw std::invalid_argument(me + std::to_string(ir.headings.size()) + " headings but " +
                                 std::to_string(ir.excitation.size()) + " excitation responses");
-  if (!(ir.excitationStart <= 0.0)) throw std::invalid_argument(me + "the excitation must start at t0 <= 0");
+  if (!(ir.excitationStart <= 0.0))
+    throw std::invalid_argument(me + "the excitation must start at t0 <= 0");
   if (!sea_ || sea_->calm()) return;
   if (ir.headings.empty())
-    throw std::invalid_argument(me + "the sea has waves but the impulse response has no excitation (no headings)");
+    throw std::invalid_argument(
+        me + "the sea has waves but the impulse response has no excitation (no headings)");
   // (headings sorted in [0, 2 pi)) => H(w_i, b) per sea component by the trapezoid rule
   order_.resize(ir.headings.size());
   std::iota(order_.begin(), order_.end(), std::size_t{0});
-  std::sort(order_.begin(), order_.end(),
-            [&](std::size_t a, std::size_t b) { return wrapped(ir.headings[a]) < wrapped(ir.headings[b]); });
+  std::sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+    return wrapped(ir.headings[a]) < wrapped(ir.headings[b]);
+  });
   transfer_.assign(sea_->size() * order_.size() * 6, {0.0, 0.0});
   for (std::size_t i = 0; i < sea_->size(); ++i) {
     const double w = sea_->frequency(i);
@@ -69,7 +74,8 @@ ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Mod
       const auto& h = ir.excitation[order_[b]];
       std::complex<double>* H = &transfer_[(i * order_.size() + b) * 6];
       for (std::size_t k = 0; k < h.size(); ++k) {
-        if (!h[k].allFinite()) throw std::invalid_argument(me + "an excitation sample is not finite");
+        if (!h[k].allFinite())
+          throw std::invalid_argument(me + "an excitation sample is not finite");
         const double tau = ir.excitationStart + static_cast<double>(k) * ir.dt;
         const std::complex<double> e = std::polar(ir.dt, w * tau);
         for (int r = 0; r < 6; ++r) H[r] += h[k][r] * e;
@@ -82,8 +88,8 @@ std::unique_ptr<ProviderScratch> ImpulseResponseForce::makeScratch() const {
   return std::make_unique<Scratch>(kernel_);
 }
 
-ImpulseResponseForce::Scratch& ImpulseResponseForce::prepared(const Stage& s, std::unique_ptr<ProviderScratch>& temporary,
-                                                              Vector6& xi) const {
+ImpulseResponseForce::Scratch& ImpulseResponseForce::prepared(
+    const Stage& s, std::unique_ptr<ProviderScratch>& temporary, Vector6& xi) const {
   Scratch& sc = scratchOf<Scratch>(s, temporary);
   const dynamics::Motion& V = s.data.V_B[body_];
   xi << V.tail<3>(), V.head<3>();
@@ -129,7 +135,8 @@ Vector6 ImpulseResponseForce::excitation(const Stage& s) const {
       f = span > 0.0 ? wrapped(rel - lo) / span : 0.0;
     }
     const double k = sea_->wavenumber(i);
-    const double theta = k * (x * std::cos(c.direction) + y * std::sin(c.direction)) - sea_->frequency(i) * s.t + c.phase;
+    const double theta = k * (x * std::cos(c.direction) + y * std::sin(c.direction)) -
+                         sea_->frequency(i) * s.t + c.phase;
     const double a = 0.5 * c.height, ct = std::cos(theta), st = std::sin(theta);
     const std::complex<double>* H0 = &transfer_[(i * nh + b0) * 6];
     const std::complex<double>* H1 = &transfer_[(i * nh + b1) * 6];
@@ -141,7 +148,8 @@ Vector6 ImpulseResponseForce::excitation(const Stage& s) const {
   return sea_->ramp(s.t) * F;
 }
 
-void ImpulseResponseForce::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) const {
+void ImpulseResponseForce::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                                      Eigen::VectorXd& /*tau*/) const {
   const Vector6 F = radiation(s) + excitation(s);
   dynamics::Force F_B;
   F_B << F.tail<3>(), F.head<3>();

@@ -33,7 +33,8 @@ class ImpulseResponseForce final : public ForceProvider {
   // std::invalid_argument for the world or a body outside the model, a bad response, or a sea
   // with waves and a response without excitation
   ImpulseResponseForce(std::string name, const dynamics::Model& model, int body,
-                       std::shared_ptr<const ImpulseResponse> response, std::shared_ptr<const AiryWaves> sea);
+                       std::shared_ptr<const ImpulseResponse> response,
+                       std::shared_ptr<const AiryWaves> sea);
 
   int body() const { return body_; }
   const ImpulseResponse& response() const { return *response_; }

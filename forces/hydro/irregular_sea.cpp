@@ -32,11 +32,14 @@ std::vector<WaveComponent> irregularWaves(const IrregularSea& sea) {
   std::vector<WaveComponent> out;
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double fraction = kTail + (1.0 - 2.0 * kTail) * (static_cast<double>(i) + u.next()) / static_cast<double>(n);
+    const double fraction =
+        kTail + (1.0 - 2.0 * kTail) * (static_cast<double>(i) + u.next()) / static_cast<double>(n);
     const double omega = spectrum.quantile(fraction);
     const double v = u.next();
     double direction = sea.direction;
-    if (spreading) direction += spreading->quantile((static_cast<double>(strata[i]) + v) / static_cast<double>(n));
+    if (spreading)
+      direction +=
+          spreading->quantile((static_cast<double>(strata[i]) + v) / static_cast<double>(n));
     const double phase = 2.0 * M_PI * u.next();
     out.push_back({2.0 * a, 2.0 * M_PI / omega, direction, phase});
   }

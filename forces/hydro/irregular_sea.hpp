@@ -25,11 +25,11 @@ namespace yardsim::forces::hydro {
 
 struct IrregularSea {
   SpectrumKind spectrum = SpectrumKind::Jonswap;
-  double hs = 0.0;         // m, significant wave height (4 sqrt(m0))
-  double tp = 0.0;         // s, peak period
-  double gamma = 3.3;      // JONSWAP peak enhancement (ignored for Pierson-Moskowitz)
-  double direction = 0.0;  // rad, the mean direction the waves travel towards
-  double spreadingS = 0.0; // cos-2s exponent; 0: long-crested (every component along direction)
+  double hs = 0.0;          // m, significant wave height (4 sqrt(m0))
+  double tp = 0.0;          // s, peak period
+  double gamma = 3.3;       // JONSWAP peak enhancement (ignored for Pierson-Moskowitz)
+  double direction = 0.0;   // rad, the mean direction the waves travel towards
+  double spreadingS = 0.0;  // cos-2s exponent; 0: long-crested (every component along direction)
   std::uint64_t seed = 1;
   int components = 200;
 };

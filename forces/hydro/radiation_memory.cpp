@@ -11,13 +11,16 @@ using Matrix6 = ImpulseResponse::Matrix6;
 
 RetardationKernel::RetardationKernel(const ImpulseResponse& ir)
     : dt(ir.dt), length(static_cast<Eigen::Index>(ir.radiation.size())) {
-  if (!(dt > 0) || !std::isfinite(dt)) throw std::invalid_argument("impulse response: dt must be > 0 s");
-  if (length == 0) throw std::invalid_argument("impulse response: no radiation samples (the memory is empty)");
+  if (!(dt > 0) || !std::isfinite(dt))
+    throw std::invalid_argument("impulse response: dt must be > 0 s");
+  if (length == 0)
+    throw std::invalid_argument("impulse response: no radiation samples (the memory is empty)");
   K.setZero(6, 6 * (length + 1));
   for (Eigen::Index l = 0; l < length; ++l) {
     const Matrix6& k = ir.radiation[static_cast<std::size_t>(l)];
     if (!k.allFinite())
-      throw std::invalid_argument("impulse response: radiation sample " + std::to_string(l) + " is not finite");
+      throw std::invalid_argument("impulse response: radiation sample " + std::to_string(l) +
+                                  " is not finite");
     K.middleCols<6>(6 * l) = dt * k;
   }
 }
@@ -40,7 +43,9 @@ void RadiationMemory::push(const Vector6& xi) {
   const auto& K = kernel_->K;
   for (int k = 0; k + 1 < kCached; ++k) {
     have_[k] = have_[k + 1] && k + 1 <= kernel_->length;
-    if (have_[k]) c_[k] = c_[k + 1] + 0.5 * (K.middleCols<6>(6 * (k + 1)) * previous + K.middleCols<6>(6 * k) * xi);
+    if (have_[k])
+      c_[k] =
+          c_[k + 1] + 0.5 * (K.middleCols<6>(6 * (k + 1)) * previous + K.middleCols<6>(6 * k) * xi);
   }
   have_[kCached - 1] = false;
   p_ = p_ == 0 ? n_ - 1 : p_ - 1;
@@ -127,7 +132,8 @@ Vector6 RadiationMemory::convolution(double t, const Vector6& v) const {
     const double h = (b - a) / n;
     for (int i = 0; i < n; ++i) {
       const double s0 = a + i * h, s1 = s0 + h;
-      const Vector6 x0 = va + (s0 - a) / (b - a) * (vb - va), x1 = va + (s1 - a) / (b - a) * (vb - va);
+      const Vector6 x0 = va + (s0 - a) / (b - a) * (vb - va),
+                    x1 = va + (s1 - a) / (b - a) * (vb - va);
       mu += 0.5 * h * (kernel_->at(t - s0) * x0 + kernel_->at(t - s1) * x1);
     }
   };
@@ -157,8 +163,9 @@ void RadiationMemory::carried(std::vector<double>& out) const {
 
 void RadiationMemory::restore(std::span<const double> x) {
   if (x.size() != carriedSize())
-    throw std::invalid_argument("radiation memory: " + std::to_string(x.size()) + " carried values, expected " +
-                                std::to_string(carriedSize()) + " (another impulse response?)");
+    throw std::invalid_argument("radiation memory: " + std::to_string(x.size()) +
+                                " carried values, expected " + std::to_string(carriedSize()) +
+                                " (another impulse response?)");
   started_ = x[0] != 0.0;
   p_ = static_cast<Eigen::Index>(x[1]);
   m_ = static_cast<std::int64_t>(x[2]);

@@ -9,12 +9,14 @@
 // committed states (commit(t, v)) by linear interpolation between them. At a stage at t, with
 // t_m the newest sample and phi = (t - t_m)/dt = k + f:
 //   mu(t) = (1 - f) C_k + f C_k+1 + tail,
-//   C_k = dt (1/2 K_k xi_m + sum_{l >= 1} K_{l+k} xi_{m-l})   (K linear between samples, zero from L on)
-//   tail = int_{t_m}^{t} K(t - tau) xi_dot(tau) dtau, trapezoid in sub-intervals <= dt over the
+//   C_k = dt (1/2 K_k xi_m + sum_{l >= 1} K_{l+k} xi_{m-l})   (K linear between samples, zero from
+//   L on) tail = int_{t_m}^{t} K(t - tau) xi_dot(tau) dtau, trapezoid in sub-intervals <= dt over
+//   the
 //          velocity linear from (t_m, xi_m) through the last commit to (t, the stage's velocity).
 // C_k depends on the committed history only: computed when a stage first needs it and reused by
-// every later stage; a new sample shifts them, C_k(m + 1) = C_k+1(m) + dt/2 (K_k+1 xi_m + K_k xi_m+1),
-// so that a step of one sample costs one sum over the memory. Nothing allocates after construction.
+// every later stage; a new sample shifts them, C_k(m + 1) = C_k+1(m) + dt/2 (K_k+1 xi_m + K_k
+// xi_m+1), so that a step of one sample costs one sum over the memory. Nothing allocates after
+// construction.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -34,7 +36,7 @@ struct RetardationKernel {
   // or a non-finite one
   explicit RetardationKernel(const ImpulseResponse& ir);
   double dt;
-  Eigen::Index length;  // L, samples of memory
+  Eigen::Index length;                         // L, samples of memory
   Eigen::Matrix<double, 6, Eigen::Dynamic> K;  // dt [K_0 K_1 ... K_L-1 0], 6 x 6 (L + 1)
   // (lag s >= 0) => K(s), linear between samples, zero from L dt on (without the factor dt)
   ImpulseResponse::Matrix6 at(double s) const;
@@ -66,16 +68,18 @@ class RadiationMemory {
   // (k) => C_k, cached
   Vector6 cached(Eigen::Index k) const;
   double sampleTime() const { return static_cast<double>(m_) * kernel_->dt; }
-  Eigen::Map<const Vector6> newest() const { return Eigen::Map<const Vector6>(ring_.data() + 6 * p_); }
+  Eigen::Map<const Vector6> newest() const {
+    return Eigen::Map<const Vector6>(ring_.data() + 6 * p_);
+  }
 
   const RetardationKernel* kernel_;
-  Eigen::Index n_;              // ring slots (L)
-  Eigen::VectorXd ring_;        // 2 n slots of 6: the window newest first is [p, p + n)
-  Eigen::Index p_ = 0;          // slot of the newest sample
-  std::int64_t m_ = 0;          // grid index of the newest sample
-  Eigen::Index count_ = 0;      // samples held (<= n)
+  Eigen::Index n_;          // ring slots (L)
+  Eigen::VectorXd ring_;    // 2 n slots of 6: the window newest first is [p, p + n)
+  Eigen::Index p_ = 0;      // slot of the newest sample
+  std::int64_t m_ = 0;      // grid index of the newest sample
+  Eigen::Index count_ = 0;  // samples held (<= n)
   bool started_ = false;
-  double tc_ = 0.0;             // last committed time
+  double tc_ = 0.0;               // last committed time
   Vector6 vc_ = Vector6::Zero();  // velocity committed at tc_
   mutable std::array<Vector6, kCached> c_;
   mutable std::array<bool, kCached> have_{};

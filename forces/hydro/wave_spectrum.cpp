@@ -10,7 +10,7 @@ namespace {
 // the spectrum's table over x = omega/wp: below kLow it is below 1e-300 of its peak, above kHigh
 // the peak enhancement is exactly 1 and the Pierson-Moskowitz tail is integrated in closed form
 constexpr double kLow = 0.2, kHigh = 12.0;
-constexpr int kSteps = 47000;  // x step 2.5e-4: trapezoid error far below 1e-8 of m0
+constexpr int kSteps = 47000;   // x step 2.5e-4: trapezoid error far below 1e-8 of m0
 constexpr double kBeta = 1.25;  // 5/4 of the Pierson-Moskowitz exponent
 
 // (table x, table F, value) => the x where F reaches value, linear between table points
@@ -27,15 +27,19 @@ double invert(const std::vector<double>& x, const std::vector<double>& F, double
 SpectrumKind spectrumKind(const std::string& name) {
   if (name == "jonswap") return SpectrumKind::Jonswap;
   if (name == "pierson_moskowitz" || name == "pm") return SpectrumKind::PiersonMoskowitz;
-  throw std::invalid_argument("unknown spectrum '" + name + "' (expected jonswap or pierson_moskowitz)");
+  throw std::invalid_argument("unknown spectrum '" + name +
+                              "' (expected jonswap or pierson_moskowitz)");
 }
 
 WaveSpectrum::WaveSpectrum(SpectrumKind kind, double hs, double tp, double gamma)
     : kind_(kind), hs_(hs), tp_(tp), gamma_(kind == SpectrumKind::Jonswap ? gamma : 1.0) {
-  if (!(hs > 0) || !std::isfinite(hs)) throw std::invalid_argument("hs: the significant wave height must be > 0 m");
-  if (!(tp > 0) || !std::isfinite(tp)) throw std::invalid_argument("tp: the peak period must be > 0 s");
+  if (!(hs > 0) || !std::isfinite(hs))
+    throw std::invalid_argument("hs: the significant wave height must be > 0 m");
+  if (!(tp > 0) || !std::isfinite(tp))
+    throw std::invalid_argument("tp: the peak period must be > 0 s");
   if (!(gamma_ >= 1.0 && gamma_ <= 20.0))
-    throw std::invalid_argument("gamma: the peak enhancement must be in [1, 20] (3.3: the mean JONSWAP sea)");
+    throw std::invalid_argument(
+        "gamma: the peak enhancement must be in [1, 20] (3.3: the mean JONSWAP sea)");
   wp_ = 2.0 * M_PI / tp;
   // (shape on the grid) => cumulative by the trapezoid rule, then the closed-form tail above kHigh
   x_.resize(kSteps + 1);
@@ -78,13 +82,15 @@ double WaveSpectrum::cumulative(double omega) const {
   if (x <= kLow) return 0.0;
   if (x >= kHigh) return m0 * (1.0 - aGamma_ * (1.0 - std::exp(-kBeta / (x * x * x * x))));
   const double pos = (x - kLow) / (kHigh - kLow) * kSteps;
-  const std::size_t i = std::min(static_cast<std::size_t>(pos), static_cast<std::size_t>(kSteps - 1));
+  const std::size_t i =
+      std::min(static_cast<std::size_t>(pos), static_cast<std::size_t>(kSteps - 1));
   const double f = pos - static_cast<double>(i);
   return m0 * (cum_[i] + f * (cum_[i + 1] - cum_[i]));
 }
 
 double WaveSpectrum::quantile(double fraction) const {
-  if (!(fraction >= 0.0 && fraction < 1.0)) throw std::invalid_argument("quantile: fraction outside [0, 1)");
+  if (!(fraction >= 0.0 && fraction < 1.0))
+    throw std::invalid_argument("quantile: fraction outside [0, 1)");
   if (fraction <= cum_.back()) return wp_ * invert(x_, cum_, fraction);
   // (the closed-form Pierson-Moskowitz tail) => 1 - fraction = A (1 - exp(-beta/x^4))
   const double rest = (1.0 - fraction) / aGamma_;
@@ -102,15 +108,19 @@ double WaveSpectrum::moment(int n) const {
   }
   sum *= h;
   if (n < 4)
-    sum += 5.0 / 16.0 * (std::pow(kHigh, n - 4) / (4 - n) - kBeta * std::pow(kHigh, n - 8) / (8 - n));
+    sum +=
+        5.0 / 16.0 * (std::pow(kHigh, n - 4) / (4 - n) - kBeta * std::pow(kHigh, n - 8) / (8 - n));
   return aGamma_ * hs_ * hs_ * std::pow(wp_, n) * sum;
 }
 
 CosineSpreading::CosineSpreading(double s) : s_(s) {
   if (!(s > 0) || !(s <= 1000.0))
-    throw std::invalid_argument("spreading_s: the cos-2s exponent must be in (0, 1000] (long-crested: omit it)");
+    throw std::invalid_argument(
+        "spreading_s: the cos-2s exponent must be in (0, 1000] (long-crested: omit it)");
   // G(s) = 2^(2s-1) Gamma(s+1)^2 / (pi Gamma(2s+1)), in logarithms
-  scale_ = std::exp((2.0 * s - 1.0) * std::log(2.0) + 2.0 * std::lgamma(s + 1.0) - std::lgamma(2.0 * s + 1.0)) / M_PI;
+  scale_ = std::exp((2.0 * s - 1.0) * std::log(2.0) + 2.0 * std::lgamma(s + 1.0) -
+                    std::lgamma(2.0 * s + 1.0)) /
+           M_PI;
   constexpr int n = 8000;
   b_.resize(n + 1);
   cum_.resize(n + 1);

@@ -1,8 +1,8 @@
 #pragma once
 // Wave spectra of an irregular sea and its directional spreading (docs/hydrodynamics.md,
-// "Irregular seas"). Frequencies omega in rad/s, spectral densities S(omega) in m^2 s/rad (one-sided,
-// integral of S over omega >= 0 = m0 = Hs^2/16), directions in rad (from +x towards +y, the way
-// the waves travel, as forces::WaveComponent).
+// "Irregular seas"). Frequencies omega in rad/s, spectral densities S(omega) in m^2 s/rad
+// (one-sided, integral of S over omega >= 0 = m0 = Hs^2/16), directions in rad (from +x towards +y,
+// the way the waves travel, as forces::WaveComponent).
 //   Pierson-Moskowitz (Hs, Tp): S_PM = 5/16 Hs^2 wp^4 w^-5 exp(-5/4 (wp/w)^4), wp = 2 pi/Tp.
 //   JONSWAP (Hs, Tp, gamma): A_gamma S_PM gamma^exp(-(w - wp)^2 / (2 sigma^2 wp^2)),
 //     sigma = 0.07 (w <= wp) or 0.09, A_gamma such that m0 = Hs^2/16 exactly (computed, not the
@@ -29,7 +29,7 @@ class WaveSpectrum {
   double hs() const { return hs_; }
   double tp() const { return tp_; }
   double gamma() const { return gamma_; }
-  double peakFrequency() const { return wp_; }  // rad/s
+  double peakFrequency() const { return wp_; }      // rad/s
   double normalisation() const { return aGamma_; }  // A_gamma (1 for Pierson-Moskowitz)
 
   // (omega rad/s) => S(omega), m^2 s/rad; 0 for omega <= 0

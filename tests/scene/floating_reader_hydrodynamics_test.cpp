@@ -75,7 +75,8 @@ mechanics:
 
 void meshes(const testing::SceneDir& dir) {
   std::filesystem::create_directories(dir.path() / "meshes");
-  forces::writeStl(forces::boxMesh(dynamics::Vector3(20, 8, 4), 2, 2, 1), dir.file("meshes/barge.stl"));
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(20, 8, 4), 2, 2, 1),
+                   dir.file("meshes/barge.stl"));
 }
 
 const models::Diagnostic* find(const scene::LoadResult& r, const std::string& keyPath) {
@@ -100,7 +101,8 @@ const std::string kEntry =
 TEST_CASE("rankine_td is refused while nothing provides it") {
   testing::SceneDir dir;
   meshes(dir);
-  const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl}\n")));
+  const auto r = scene::loadScene(dir.write(
+      "s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl}\n")));
   const auto* d = find(r, "mechanics.hydrodynamics.hd.method");
   REQUIRE(d);
   CHECK(d->where.line == 16);
@@ -119,7 +121,8 @@ TEST_CASE("an impulse response solved once then read from the cache drives the b
   CHECK(solves == 1);
   // (one file in the cache folder next to the scene, named by the key)
   std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache")) files.push_back(e.path());
+  for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache"))
+    files.push_back(e.path());
   REQUIRE(files.size() == 1);
   CHECK(files[0].extension() == ".ysir");
   CHECK(files[0].stem().string().rfind("test_solver-", 0) == 0);
@@ -153,7 +156,9 @@ TEST_CASE("a response given as a file") {
   ImpulseResponse ir = testSolve(q);
   ir.key = "given";
   writeImpulseResponse(ir, dir.path() / "barge.ysir");
-  const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: impulse_response, response: barge.ysir}\n")));
+  const auto r = scene::loadScene(dir.write(
+      "s.yaml",
+      sceneYaml("    hd: {body: barge, method: impulse_response, response: barge.ysir}\n")));
   INFO(r.diagnostics.report());
   REQUIRE(r.scene);
   CHECK((*r.scene->systems.at(0)->spec.bodies.at(0).addedMass)(2, 2) == 5e4);
@@ -163,10 +168,14 @@ TEST_CASE("bad hydrodynamics input is refused at its key") {
   registerImpulseResponseSolver({"test_solver", testSolve, {}});
   testing::SceneDir dir;
   meshes(dir);
-  auto load = [&](const std::string& entry) { return scene::loadScene(dir.write("s.yaml", sceneYaml(entry))); };
+  auto load = [&](const std::string& entry) {
+    return scene::loadScene(dir.write("s.yaml", sceneYaml(entry)));
+  };
   SECTION("an unknown method, both a response and a hull") {
-    const auto r = load("    hd: {body: barge, method: impulse_respons, hull: meshes/barge.stl}\n"
-                        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, response: x.ysir}\n");
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_respons, hull: meshes/barge.stl}\n"
+        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, response: "
+        "x.ysir}\n");
     const auto* d = find(r, "mechanics.hydrodynamics.hd.method");
     REQUIRE(d);
     CHECK_THAT(d->message + d->hint, Contains("did you mean 'impulse_response'?"));
@@ -176,12 +185,16 @@ TEST_CASE("bad hydrodynamics input is refused at its key") {
     CHECK_THAT(e->message, Contains("exactly one of 'response'"));
   }
   SECTION("a registered check's problem, with its numbers") {
-    registerImpulseResponseSolver({"checked", testSolve, [](const HydrodynamicsRequest&, const forces::AiryWaves& sea) {
-                                     const double shortest = 2 * M_PI / sea.wavenumber(0);
-                                     return std::vector<std::string>{"a free-surface panel of 12 m is longer than a tenth of the shortest wave (" +
-                                                                     std::to_string(shortest) + " m)"};
-                                   }});
-    const auto r = load("    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: checked}\n");
+    registerImpulseResponseSolver(
+        {"checked", testSolve, [](const HydrodynamicsRequest&, const forces::AiryWaves& sea) {
+           const double shortest = 2 * M_PI / sea.wavenumber(0);
+           return std::vector<std::string>{
+               "a free-surface panel of 12 m is longer than a tenth of the shortest wave (" +
+               std::to_string(shortest) + " m)"};
+         }});
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: "
+        "checked}\n");
     const auto* d = find(r, "mechanics.hydrodynamics.hd");
     REQUIRE(d);
     CHECK(d->where.line == 16);
@@ -189,16 +202,21 @@ TEST_CASE("bad hydrodynamics input is refused at its key") {
   }
   SECTION("a damaged cache file: named, with what is wrong") {
     REQUIRE(load(kEntry).scene);  // (solved and cached)
-    for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache")) std::ofstream(e.path(), std::ios::app) << "x";
+    for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache"))
+      std::ofstream(e.path(), std::ios::app) << "x";
     const auto r = load(kEntry);
     CHECK_FALSE(r.scene);
-    CHECK_THAT(r.diagnostics.report(), Contains(".ysir: damaged (checksum mismatch)") && Contains("s.yaml:16"));
+    CHECK_THAT(r.diagnostics.report(),
+               Contains(".ysir: damaged (checksum mismatch)") && Contains("s.yaml:16"));
   }
   SECTION("an unknown solver, waves without excitation") {
-    const auto r = load("    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: panel}\n"
-                        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: test_solver, cache: cache,\n"
-                        "         settings: {scale: 1}}\n");
-    CHECK_THAT(find(r, "mechanics.hydrodynamics.hd.solver")->message, Contains("unknown solver") && Contains("test_solver"));
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: panel}\n"
+        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: "
+        "test_solver, cache: cache,\n"
+        "         settings: {scale: 1}}\n");
+    CHECK_THAT(find(r, "mechanics.hydrodynamics.hd.solver")->message,
+               Contains("unknown solver") && Contains("test_solver"));
     CHECK_THAT(find(r, "mechanics.hydrodynamics.he")->message, Contains("no excitation"));
   }
 }
@@ -207,20 +225,24 @@ TEST_CASE("rankine_td is built by the method registered for it") {
   testing::SceneDir dir;
   meshes(dir);
   int built = 0;
-  registerTimeDomainMethod({"rankine_td",
-                            [&built](const std::string& name, const dynamics::Model& model, int body, const HydrodynamicsRequest& q,
-                                     std::shared_ptr<const forces::AiryWaves> sea) -> std::unique_ptr<forces::ForceProvider> {
-                              ++built;
-                              CHECK(q.hull);
-                              CHECK(q.settings.at("panel_size") == 0.5);
-                              HydrodynamicsRequest r = q;
-                              r.settings["scale"] = 1;
-                              r.headings = {0.0};
-                              return std::make_unique<ImpulseResponseForce>(name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
-                            },
-                            {}});
+  registerTimeDomainMethod(
+      {"rankine_td",
+       [&built](const std::string& name, const dynamics::Model& model, int body,
+                const HydrodynamicsRequest& q, std::shared_ptr<const forces::AiryWaves> sea)
+           -> std::unique_ptr<forces::ForceProvider> {
+         ++built;
+         CHECK(q.hull);
+         CHECK(q.settings.at("panel_size") == 0.5);
+         HydrodynamicsRequest r = q;
+         r.settings["scale"] = 1;
+         r.headings = {0.0};
+         return std::make_unique<ImpulseResponseForce>(
+             name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
+       },
+       {}});
   const auto r = scene::loadScene(
-      dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl, settings: {panel_size: 0.5}}\n")));
+      dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: "
+                                    "meshes/barge.stl, settings: {panel_size: 0.5}}\n")));
   INFO(r.diagnostics.report());
   REQUIRE(r.scene);
   auto root = scene::assemble(*r.scene);

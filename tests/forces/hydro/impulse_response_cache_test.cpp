@@ -17,7 +17,8 @@
 using namespace yardsim::forces::hydro;
 
 namespace {
-// (seed) => a response whose numbers are random bit patterns of finite doubles, and a few special ones
+// (seed) => a response whose numbers are random bit patterns of finite doubles, and a few special
+// ones
 ImpulseResponse randomResponse(unsigned seed) {
   std::mt19937_64 rng(seed);
   auto number = [&] {
@@ -76,12 +77,14 @@ TEST_CASE("a cached response reads back to the last bit") {
   CHECK(std::signbit(back->aInf(0, 1)));
   REQUIRE(back->radiation.size() == ir.radiation.size());
   bool same = true;
-  for (std::size_t k = 0; k < ir.radiation.size(); ++k) same = same && sameBits(back->radiation[k], ir.radiation[k]);
+  for (std::size_t k = 0; k < ir.radiation.size(); ++k)
+    same = same && sameBits(back->radiation[k], ir.radiation[k]);
   REQUIRE(back->headings.size() == 3);
   for (std::size_t b = 0; b < 3; ++b) {
     same = same && std::memcmp(&back->headings[b], &ir.headings[b], 8) == 0;
     REQUIRE(back->excitation[b].size() == ir.excitation[b].size());
-    for (std::size_t k = 0; k < ir.excitation[b].size(); ++k) same = same && sameBits(back->excitation[b][k], ir.excitation[b][k]);
+    for (std::size_t k = 0; k < ir.excitation[b].size(); ++k)
+      same = same && sameBits(back->excitation[b][k], ir.excitation[b][k]);
   }
   CHECK(same);
   CHECK_FALSE(loadCachedResponse(dir.path() / "cache", "another-key"));  // (no file) => nothing
@@ -98,14 +101,18 @@ TEST_CASE("a damaged cache file is refused with what is wrong") {
     auto b = good;
     b[b.size() / 2] ^= 0x10;
     writeBytes(file, b);
-    CHECK_THROWS_WITH(readImpulseResponse(file), Catch::Contains(file.string()) && Catch::Contains("checksum"));
+    CHECK_THROWS_WITH(readImpulseResponse(file),
+                      Catch::Contains(file.string()) && Catch::Contains("checksum"));
   }
   SECTION("cut short") {
-    writeBytes(file, std::vector<char>(good.begin(), good.begin() + static_cast<long>(good.size()) / 3));
+    writeBytes(file,
+               std::vector<char>(good.begin(), good.begin() + static_cast<long>(good.size()) / 3));
     CHECK_THROWS_AS(readImpulseResponse(file), CacheError);
   }
   SECTION("another file") {
-    writeBytes(file, std::vector<char>{'s', 'o', 'l', 'i', 'd', ' ', 'x', '\n', 'e', 'n', 'd', 's', 'o', 'l', 'i', 'd', 'x', 'x', 'x', 'x', 'x', 'x', 'x', 'x'});
+    writeBytes(file,
+               std::vector<char>{'s', 'o', 'l', 'i', 'd', ' ', 'x', '\n', 'e', 'n', 'd', 's',
+                                 'o', 'l', 'i', 'd', 'x', 'x', 'x', 'x',  'x', 'x', 'x', 'x'});
     CHECK_THROWS_WITH(readImpulseResponse(file), Catch::Contains("not an impulse-response file"));
   }
   SECTION("another version, checksum right") {

@@ -3,7 +3,8 @@
 // kappa s (s + alpha) = 0; the wave excitation equal to the direct convolution of the excitation
 // response with the incident elevation at the body, with the heading interpolated and turned with
 // the body's yaw; the history committed at the step's start or, for integrators that never stop
-// there, the latest stage; the scratch's carried values restore a run bit for bit; bad input refused.
+// there, the latest stage; the scratch's carried values restore a run bit for bit; bad input
+// refused.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -31,7 +32,8 @@ constexpr double kM = 1e5, kC = 1e6, kKappa = 4e4, kAlpha = 1.0, kBeta = 3.0;
 dynamics::Model block(dynamics::Joint joint) {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
-  b.addBody("hull", "world", joint, dynamics::Transform::identity(), dynamics::boxInertia(kM, Vector3(4, 4, 2)));
+  b.addBody("hull", "world", joint, dynamics::Transform::identity(),
+            dynamics::boxInertia(kM, Vector3(4, 4, 2)));
   return b.build();
 }
 
@@ -52,11 +54,13 @@ struct Heave {
   const dynamics::Model model = block(dynamics::Joint::prismatic(Vector3::UnitZ()));
   dynamics::Data data{model};
   dynamics::ExternalForces f{model};
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(1), v = Eigen::VectorXd::Zero(1), tau = Eigen::VectorXd::Zero(1);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(1), v = Eigen::VectorXd::Zero(1),
+                  tau = Eigen::VectorXd::Zero(1);
   double t = 0;
 
   // (provider, scratch, stage state) => z''
-  double accel(const ImpulseResponseForce& p, ProviderScratch* sc, double ts, double z, double w, double start) {
+  double accel(const ImpulseResponseForce& p, ProviderScratch* sc, double ts, double z, double w,
+               double start) {
     q[0] = z;
     v[0] = w;
     dynamics::forwardKinematics(model, data, q, v);
@@ -66,8 +70,10 @@ struct Heave {
   }
   void step(const ImpulseResponseForce& p, ProviderScratch* sc, double& z, double& w, double h) {
     const double a1 = accel(p, sc, t, z, w, t);
-    const double z2 = z + 0.5 * h * w, w2 = w + 0.5 * h * a1, a2 = accel(p, sc, t + 0.5 * h, z2, w2, t);
-    const double z3 = z + 0.5 * h * w2, w3 = w + 0.5 * h * a2, a3 = accel(p, sc, t + 0.5 * h, z3, w3, t);
+    const double z2 = z + 0.5 * h * w, w2 = w + 0.5 * h * a1,
+                 a2 = accel(p, sc, t + 0.5 * h, z2, w2, t);
+    const double z3 = z + 0.5 * h * w2, w3 = w + 0.5 * h * a2,
+                 a3 = accel(p, sc, t + 0.5 * h, z3, w3, t);
     const double z4 = z + h * w3, w4 = w + h * a3, a4 = accel(p, sc, t + h, z4, w4, t);
     z += h / 6 * (w + 2 * w2 + 2 * w3 + w4);
     w += h / 6 * (a1 + 2 * a2 + 2 * a3 + a4);
@@ -81,13 +87,16 @@ TEST_CASE("a free heave decay matches the roots of the characteristic equation")
   // + c (alpha^2 + beta^2)) => the root nearest the undamped sqrt(c/M)
   Eigen::Matrix4d companion = Eigen::Matrix4d::Zero();
   const double a2b2 = kAlpha * kAlpha + kBeta * kBeta;
-  const double coef[4] = {2 * kM * kAlpha, kM * a2b2 + kC + kKappa, kAlpha * (2 * kC + kKappa), kC * a2b2};
+  const double coef[4] = {2 * kM * kAlpha, kM * a2b2 + kC + kKappa, kAlpha * (2 * kC + kKappa),
+                          kC * a2b2};
   for (int i = 0; i < 4; ++i) companion(0, i) = -coef[i] / kM;
   for (int i = 1; i < 4; ++i) companion(i, i - 1) = 1.0;
   const Eigen::Vector4cd roots = Eigen::EigenSolver<Eigen::Matrix4d>(companion).eigenvalues();
   std::complex<double> s = roots[0];
   for (int i = 1; i < 4; ++i)
-    if (std::abs(std::abs(roots[i].imag()) - std::sqrt(kC / kM)) < std::abs(std::abs(s.imag()) - std::sqrt(kC / kM))) s = roots[i];
+    if (std::abs(std::abs(roots[i].imag()) - std::sqrt(kC / kM)) <
+        std::abs(std::abs(s.imag()) - std::sqrt(kC / kM)))
+      s = roots[i];
   const double sigma = s.real(), wd = std::abs(s.imag());
   // (released from 0.5 m) => peaks after the kernel's own mode has died out (e^-alpha t)
   const dynamics::Model model = block(dynamics::Joint::prismatic(Vector3::UnitZ()));
@@ -116,7 +125,9 @@ TEST_CASE("a free heave decay matches the roots of the characteristic equation")
   CHECK(decay == Approx(sigma).epsilon(0.01));
   // (the damping ratio) => about B(wn) / (2 M wn) of the Lorentzian pair, not zero
   const double wn = std::sqrt(kC / kM);
-  const double B = 0.5 * kKappa * (kAlpha / (kAlpha * kAlpha + std::pow(wn - kBeta, 2)) + kAlpha / (kAlpha * kAlpha + std::pow(wn + kBeta, 2)));
+  const double B = 0.5 * kKappa *
+                   (kAlpha / (kAlpha * kAlpha + std::pow(wn - kBeta, 2)) +
+                    kAlpha / (kAlpha * kAlpha + std::pow(wn + kBeta, 2)));
   CHECK(-sigma / std::abs(s) == Approx(B / (2 * kM * wn)).epsilon(0.15));
 }
 
@@ -133,13 +144,15 @@ TEST_CASE("the excitation is the convolution of its response with the incident e
   for (int k = 0; k < 400; ++k)
     for (int b = 0; b < 2; ++b) {
       Vector6 h;
-      for (int r = 0; r < 6; ++r) h[r] = pulse(-4.0 + 0.02 * k, r, 1 - b);  // headings[0] = 90 deg: heading index 1
+      for (int r = 0; r < 6; ++r)
+        h[r] = pulse(-4.0 + 0.02 * k, r, 1 - b);  // headings[0] = 90 deg: heading index 1
       ir->excitation[static_cast<std::size_t>(b)].push_back(h);
     }
   WaterProperties water;
   water.start = -1e3;  // (waves long before the window of the convolution) => no ramp inside it
   const double dir = M_PI / 6;
-  const auto sea = std::make_shared<const AiryWaves>(water, std::vector<WaveComponent>{{1.2, 7.0, dir, 0.4}, {0.5, 4.0, dir, 1.0}});
+  const auto sea = std::make_shared<const AiryWaves>(
+      water, std::vector<WaveComponent>{{1.2, 7.0, dir, 0.4}, {0.5, 4.0, dir, 1.0}});
   const ImpulseResponseForce p("waves", model, 1, ir, sea);
   dynamics::Data data(model);
   Eigen::VectorXd q = dynamics::neutralConfiguration(model), v = Eigen::VectorXd::Zero(model.nv);
@@ -150,7 +163,8 @@ TEST_CASE("the excitation is the convolution of its response with the incident e
     Vector6 F = Vector6::Zero();
     for (int k = 0; k < 400; ++k) {
       const double tau = -4.0 + 0.02 * k, eta = sea->elevation(5.0, -3.0, t - tau);
-      for (int r = 0; r < 6; ++r) F[r] += 0.02 * ((1 - weight90) * pulse(tau, r, 0) + weight90 * pulse(tau, r, 1)) * eta;
+      for (int r = 0; r < 6; ++r)
+        F[r] += 0.02 * ((1 - weight90) * pulse(tau, r, 0) + weight90 * pulse(tau, r, 1)) * eta;
     }
     return F;
   };
@@ -190,7 +204,8 @@ TEST_CASE("integrators that never stop at the step's start still feed the memory
     p.radiation(Stage{t, model, data, q, v, a.get(), t});  // (explicit: a stage at the start)
     at(t + h);
     const double fa = p.radiation(Stage{t + h, model, data, q, v, a.get(), t})[2];
-    const double fb = p.radiation(Stage{t + h, model, data, q, v, b.get(), t})[2];  // (implicit: the end only)
+    const double fb =
+        p.radiation(Stage{t + h, model, data, q, v, b.get(), t})[2];  // (implicit: the end only)
     if (t > 20) worst = std::max(worst, std::abs(fa - fb)), scale = std::max(scale, std::abs(fa));
   }
   CHECK(scale > 1e3);
@@ -221,14 +236,17 @@ TEST_CASE("the scratch's carried values restart a decay bit for bit") {
 TEST_CASE("bad impulse-response input is refused") {
   const dynamics::Model model = block(dynamics::Joint::free());
   auto ir = heaveKernel(0.02, 1.0);
-  const auto sea = std::make_shared<const AiryWaves>(WaterProperties{}, std::vector<WaveComponent>{{1.0, 8.0, 0.0, 0.0}});
+  const auto sea = std::make_shared<const AiryWaves>(
+      WaterProperties{}, std::vector<WaveComponent>{{1.0, 8.0, 0.0, 0.0}});
   CHECK_THROWS_WITH(ImpulseResponseForce("x", model, 0, ir, nullptr), Catch::Contains("world"));
   CHECK_THROWS_WITH(ImpulseResponseForce("x", model, 1, ir, sea), Catch::Contains("no excitation"));
   ir->headings = {0.0};
-  CHECK_THROWS_WITH(ImpulseResponseForce("x", model, 1, ir, sea), Catch::Contains("1 headings but 0 excitation"));
+  CHECK_THROWS_WITH(ImpulseResponseForce("x", model, 1, ir, sea),
+                    Catch::Contains("1 headings but 0 excitation"));
   ir->excitation.resize(1);
   ir->excitationStart = 1.0;
   CHECK_THROWS_WITH(ImpulseResponseForce("x", model, 1, ir, sea), Catch::Contains("t0 <= 0"));
   // (calm water) => radiation alone, no excitation needed
-  CHECK_NOTHROW(ImpulseResponseForce("x", model, 1, heaveKernel(0.02, 1.0), std::make_shared<const AiryWaves>(WaterProperties{})));
+  CHECK_NOTHROW(ImpulseResponseForce("x", model, 1, heaveKernel(0.02, 1.0),
+                                     std::make_shared<const AiryWaves>(WaterProperties{})));
 }

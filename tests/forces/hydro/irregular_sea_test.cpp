@@ -75,23 +75,26 @@ TEST_CASE("the sampled elevation has the target variance and spectrum by its per
     const double lo = target.quantile(0.05 + 0.15 * b), hi = target.quantile(0.05 + 0.15 * (b + 1));
     double energy = 0;
     for (int k = 1; k < n / 2; ++k)
-      if (k * dw >= lo && k * dw < hi) energy += 2 * std::norm(X[static_cast<std::size_t>(k)]) / (double(n) * n);
+      if (k * dw >= lo && k * dw < hi)
+        energy += 2 * std::norm(X[static_cast<std::size_t>(k)]) / (double(n) * n);
     INFO("band " << b << ": " << lo << " to " << hi << " rad/s");
     CHECK(energy == Approx(0.15 * m0).epsilon(0.03));
   }
 }
 
 TEST_CASE("same seed same sea and another seed another sea") {
-  const auto a = irregularWaves(jonswap(200, 7)), b = irregularWaves(jonswap(200, 7)), c = irregularWaves(jonswap(200, 8));
+  const auto a = irregularWaves(jonswap(200, 7)), b = irregularWaves(jonswap(200, 7)),
+             c = irregularWaves(jonswap(200, 8));
   bool same = true, differ = false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    same = same && a[i].period == b[i].period && a[i].phase == b[i].phase && a[i].height == b[i].height &&
-           a[i].direction == b[i].direction;
+    same = same && a[i].period == b[i].period && a[i].phase == b[i].phase &&
+           a[i].height == b[i].height && a[i].direction == b[i].direction;
     differ = differ || a[i].phase != c[i].phase;
   }
   CHECK(same);
   CHECK(differ);
-  // (the first numbers of the standard's mt19937_64 with its default seed) => the stream is the standard one
+  // (the first numbers of the standard's mt19937_64 with its default seed) => the stream is the
+  // standard one
   UniformStream u(5489u);
   CHECK(u.next() == static_cast<double>(14514284786278117030ull >> 11) * 0x1.0p-53);
 }
@@ -100,7 +103,8 @@ TEST_CASE("the sea does not repeat within a three-hour run") {
   const AiryWaves sea(WaterProperties{}, irregularWaves(jonswap(200)));
   // (lags from 10 Tp to 3 h) => the elevation never correlates with itself again
   double worst = 0;
-  for (double lag = 80.0; lag <= 3 * 3600.0; lag += 0.25) worst = std::max(worst, std::abs(autocorrelation(sea, lag)));
+  for (double lag = 80.0; lag <= 3 * 3600.0; lag += 0.25)
+    worst = std::max(worst, std::abs(autocorrelation(sea, lag)));
   CHECK(worst < 0.35);
   // (the check can fail) => 200 equally spaced frequencies dw repeat after 2 pi/dw
   std::vector<WaveComponent> grid;

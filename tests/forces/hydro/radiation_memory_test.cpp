@@ -19,13 +19,17 @@ using Matrix6 = ImpulseResponse::Matrix6;
 namespace {
 constexpr double kKappa = 2e5, kAlpha = 0.3, kBeta = 0.8;
 
-// (w) => B(w) = int_0^inf K cos(w t) dt and A(w) - A_inf = -1/w int_0^inf K sin(w t) dt, closed forms
+// (w) => B(w) = int_0^inf K cos(w t) dt and A(w) - A_inf = -1/w int_0^inf K sin(w t) dt, closed
+// forms
 double damping(double w) {
-  return 0.5 * kKappa * (kAlpha / (kAlpha * kAlpha + (w - kBeta) * (w - kBeta)) + kAlpha / (kAlpha * kAlpha + (w + kBeta) * (w + kBeta)));
+  return 0.5 * kKappa *
+         (kAlpha / (kAlpha * kAlpha + (w - kBeta) * (w - kBeta)) +
+          kAlpha / (kAlpha * kAlpha + (w + kBeta) * (w + kBeta)));
 }
 double addedMass(double w) {
   return -0.5 * kKappa / w *
-         ((w - kBeta) / (kAlpha * kAlpha + (w - kBeta) * (w - kBeta)) + (w + kBeta) / (kAlpha * kAlpha + (w + kBeta) * (w + kBeta)));
+         ((w - kBeta) / (kAlpha * kAlpha + (w - kBeta) * (w - kBeta)) +
+          (w + kBeta) / (kAlpha * kAlpha + (w + kBeta) * (w + kBeta)));
 }
 
 // (dt, memory s) => heave-heave K(t_k) = 2/pi int_0^W B(w) cos(w t) dw, midpoint rule, plus the
@@ -59,7 +63,8 @@ TEST_CASE("the retardation function from an analytical damping by the cosine tra
   const auto ir = heaveResponse(0.05, 5.0);
   for (std::size_t k : {0u, 7u, 30u, 99u}) {
     const double t = 0.05 * static_cast<double>(k);
-    CHECK(ir->radiation[k](2, 2) == Approx(kKappa * std::exp(-kAlpha * t) * std::cos(kBeta * t)).margin(2e-3 * kKappa));
+    CHECK(ir->radiation[k](2, 2) ==
+          Approx(kKappa * std::exp(-kAlpha * t) * std::cos(kBeta * t)).margin(2e-3 * kKappa));
   }
 }
 
@@ -86,21 +91,23 @@ TEST_CASE("a forced oscillation gives back the damping and added mass by Fourier
     // (mu = V (B cos + w (A_inf - A) sin)) => B and A - A_inf
     INFO("w = " << w);
     CHECK(mc / V == Approx(damping(w)).epsilon(0.003));
-    CHECK(-ms / V / w == Approx(addedMass(w)).margin(0.003 * std::abs(addedMass(w)) + 1e-4 * kKappa));
+    CHECK(-ms / V / w ==
+          Approx(addedMass(w)).margin(0.003 * std::abs(addedMass(w)) + 1e-4 * kKappa));
   }
 }
 
 TEST_CASE("the radiation force only dissipates over a motion from rest to rest") {
   // (K = C e^(-alpha t) cos(beta t), C = L L^T positive semi-definite) => B(w) >= 0 in every mode
   Matrix6 L;
-  L << 3, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0, 0, -1, 0.5, 4, 0, 0, 0, 0.2, 0.3, -0.7, 2, 0, 0, 0.1, -0.4, 0.2, 0.3, 1, 0,
-      0.5, 0.1, 0.1, -0.2, 0.3, 1.5;
+  L << 3, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0, 0, -1, 0.5, 4, 0, 0, 0, 0.2, 0.3, -0.7, 2, 0, 0, 0.1, -0.4,
+      0.2, 0.3, 1, 0, 0.5, 0.1, 0.1, -0.2, 0.3, 1.5;
   auto work = [&](double sign) {
     ImpulseResponse ir;
     ir.dt = 0.05;
     for (int k = 0; k < 1200; ++k) {
       const double t = 0.05 * k;
-      ir.radiation.push_back(sign * 1e4 * (L * L.transpose()) * std::exp(-kAlpha * t) * std::cos(kBeta * t));
+      ir.radiation.push_back(sign * 1e4 * (L * L.transpose()) * std::exp(-kAlpha * t) *
+                             std::cos(kBeta * t));
     }
     const RetardationKernel kernel(ir);
     RadiationMemory memory(kernel);
@@ -109,7 +116,8 @@ TEST_CASE("the radiation force only dissipates over a motion from rest to rest")
       Vector6 x = Vector6::Zero();
       if (t <= 0 || t >= 20) return x;
       const double win = std::pow(std::sin(M_PI * t / 20), 2);
-      for (int i = 0; i < 6; ++i) x[i] = win * (std::sin((0.4 + 0.3 * i) * t + i) + 0.5 * std::cos((1.7 - 0.2 * i) * t));
+      for (int i = 0; i < 6; ++i)
+        x[i] = win * (std::sin((0.4 + 0.3 * i) * t + i) + 0.5 * std::cos((1.7 - 0.2 * i) * t));
       return x;
     };
     double W = 0;

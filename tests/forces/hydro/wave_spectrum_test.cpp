@@ -16,7 +16,8 @@ TEST_CASE("Pierson-Moskowitz moments against their closed forms") {
   const WaveSpectrum s(SpectrumKind::PiersonMoskowitz, hs, tp);
   CHECK(s.normalisation() == Approx(1.0).epsilon(1e-7));
   for (int n = 0; n <= 3; ++n) {
-    const double exact = 5.0 / 64.0 * hs * hs * std::pow(wp, n) * std::pow(1.25, (n - 4) / 4.0) * std::tgamma(1.0 - n / 4.0);
+    const double exact = 5.0 / 64.0 * hs * hs * std::pow(wp, n) * std::pow(1.25, (n - 4) / 4.0) *
+                         std::tgamma(1.0 - n / 4.0);
     INFO("n = " << n);
     CHECK(s.moment(n) == Approx(exact).epsilon(2e-6));
   }
@@ -27,7 +28,8 @@ TEST_CASE("Pierson-Moskowitz moments against their closed forms") {
   CHECK(tz / tp == Approx(0.710).margin(1e-3));  // the textbook Tz/Tp of a Pierson-Moskowitz sea
   // (the cumulative in closed form) => Hs^2/16 exp(-1.25 (wp/w)^4)
   for (double x : {0.8, 1.0, 1.7, 3.0})
-    CHECK(s.cumulative(x * wp) == Approx(hs * hs / 16 * std::exp(-1.25 / std::pow(x, 4))).margin(1e-6 * hs * hs / 16));
+    CHECK(s.cumulative(x * wp) ==
+          Approx(hs * hs / 16 * std::exp(-1.25 / std::pow(x, 4))).margin(1e-6 * hs * hs / 16));
 }
 
 TEST_CASE("JONSWAP holds Hs and peaks at Tp") {
@@ -51,12 +53,14 @@ TEST_CASE("JONSWAP holds Hs and peaks at Tp") {
       CHECK(s.cumulative(s.quantile(f)) / s.moment(0) == Approx(f).epsilon(1e-6));
   }
   // gamma = 1: the Pierson-Moskowitz spectrum
-  const WaveSpectrum j(SpectrumKind::Jonswap, 3.0, 9.0, 1.0), p(SpectrumKind::PiersonMoskowitz, 3.0, 9.0);
+  const WaveSpectrum j(SpectrumKind::Jonswap, 3.0, 9.0, 1.0),
+      p(SpectrumKind::PiersonMoskowitz, 3.0, 9.0);
   for (double w : {0.4, 0.7, 1.5}) CHECK(j.density(w) == Approx(p.density(w)).epsilon(1e-12));
   // a sharper peak: more of the energy within 10 % of wp
   const WaveSpectrum sharp(SpectrumKind::Jonswap, 3.0, 9.0, 7.0);
   const double wp = 2 * M_PI / 9.0;
-  CHECK(sharp.cumulative(1.1 * wp) - sharp.cumulative(0.9 * wp) > p.cumulative(1.1 * wp) - p.cumulative(0.9 * wp) + 0.1 * 9.0 / 16);
+  CHECK(sharp.cumulative(1.1 * wp) - sharp.cumulative(0.9 * wp) >
+        p.cumulative(1.1 * wp) - p.cumulative(0.9 * wp) + 0.1 * 9.0 / 16);
 }
 
 TEST_CASE("cos-2s spreading integrates to one with mean cosine s over s plus one") {

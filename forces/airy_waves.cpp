@@ -128,8 +128,9 @@ double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) c
 double AiryWaves::pressure(const Vector3& p, double t) const {
   const double rg = water_.density * water_.gravity;
   if (waves_.empty()) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
-  // (few components) => each cos(theta) once, for the surface and for the pressure
-  constexpr std::size_t kCached = 8;
+  // (up to kCached components, an irregular sea's usual 200 included) => each cos(theta) once,
+  // for the surface and for the pressure, in a buffer on the stack (2 KB)
+  constexpr std::size_t kCached = 256;
   if (waves_.size() > kCached) {
     const double eta = elevation(p.x(), p.y(), t);
     return p.z() > eta ? 0.0 : rg * (water_.level - p.z()) + dynamicPressureBelow(p, t, eta);

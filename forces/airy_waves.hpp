@@ -53,6 +53,8 @@ class AiryWaves {
   double dynamicPressure(const dynamics::Vector3& p, double t) const;
   // (p_W, t) => total incident pressure rho g (level - z) + p_dyn below the surface, 0 above, Pa
   double pressure(const dynamics::Vector3& p, double t) const;
+  // (t) => the factor in [0, 1] every amplitude is multiplied by at t (water.start, water.ramp)
+  double ramp(double t) const;
 
  private:
   struct Wave {
@@ -60,8 +62,6 @@ class AiryWaves {
     double a, k, omega, cosb, sinb;
     double coshScale;  // 1 / (1 + e^{-2kh}): cosh k(z'+h) / cosh kh = e^{kz'} (1 + e^{-2k(z'+h)}) coshScale
   };
-  // (t) => the ramp factor in [0, 1]
-  double ramp(double t) const;
   // (p at or below the surface eta, t) => p_dyn, Pa
   double dynamicPressureBelow(const dynamics::Vector3& p, double t, double eta) const;
   // (p, t, eta) => the stretched height below the level, z' <= 0, for depth decay factors

@@ -119,6 +119,15 @@ struct MechanicsSpec {
     dynamics::Vector3 point = dynamics::Vector3::Zero();
     forces::DampingCoefficients coefficients;
   };
+  // hydrodynamics on a body (forces/hydro/hydrodynamics_methods.hpp): its provider, built on the
+  // scene's one sea (impulse response or a time-domain method, chosen and prepared at the door)
+  using HydroBuild = std::function<std::unique_ptr<forces::ForceProvider>(
+      const std::string& name, const dynamics::Model& model, int body,
+      std::shared_ptr<const forces::AiryWaves> sea)>;
+  struct Hydrodynamics {
+    std::string name, body;
+    HydroBuild build;
+  };
   // A force provider contributed by a registered reader (scene/provider_readers.hpp; a new
   // provider is its forces/ file pair and one reader function): attached at points on bodies
   // (body frame, m) or in the world, built for the system's model when the system is built and
@@ -162,6 +171,7 @@ struct MechanicsSpec {
   std::vector<Hull> hulls;
   std::vector<Flow> windLoads, currentLoads;
   std::vector<Damper> dampers;
+  std::vector<Hydrodynamics> hydrodynamics;
 };
 
 struct BuiltMechanics {
@@ -173,7 +183,7 @@ struct BuiltMechanics {
   std::vector<MechanicsSpec::Equalizer> equalizers;
   std::vector<MechanicsSpec::Load> loads;
   std::vector<MechanicsSpec::Watch> watches;
-  MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers (no bodies)
+  MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers, hydrodynamics (no bodies)
   std::vector<MechanicsSpec::Visual> visuals = {};          // per body index (0: world); defaulted
   std::vector<MechanicsSpec::ProviderSpec> providers = {};  // from registered readers
 };

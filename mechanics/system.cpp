@@ -67,6 +67,7 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (const auto& d : env.dampers)
     dampers_.push_back(std::make_unique<forces::LinearQuadraticDamping>(
         d.name, model, bodyOf(d.body), d.point, d.coefficients));
+  for (const auto& h : env.hydrodynamics) contributed_.push_back(h.build(h.name, model, bodyOf(h.body), sea));
   // (providers of registered readers) => built at their attachments
   for (const auto& p : mech_.providers) {
     std::vector<forces::Attachment> at;

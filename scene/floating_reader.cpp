@@ -1,9 +1,15 @@
 #include "scene/floating_reader.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include "scene/mechanics_reader.hpp"
 #include "forces/geometry/mesh_io.hpp"
+#include "forces/hydro/hydrodynamics_methods.hpp"
+#include "forces/hydro/impulse_response_cache.hpp"
+#include "forces/hydro/impulse_response_force.hpp"
+#include "forces/hydro/irregular_sea.hpp"
 #include "scene/spec_reader.hpp"
 
 namespace yardsim::scene {
@@ -40,6 +46,60 @@ void body(const Reader& r, const YAML::Node& n, const std::string& key, const st
   }
 }
 
+// (node, key) => a whole number in [lo, hi] (fallback when absent), reported otherwise
+long wholeNumber(const Reader& r, const YAML::Node& n, const std::string& key, long fallback, long lo, long hi) {
+  if (!n) return fallback;
+  const double v = r.number(n, key, static_cast<double>(fallback));
+  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
+    r.fail(n, key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return fallback;
+  }
+  return static_cast<long>(v);
+}
+
+// ({spectrum, hs, tp, gamma, direction_deg, spreading_s, seed, components}) => the sea's
+// components appended to spec.waves (docs/hydrodynamics.md, "Irregular seas")
+void irregular(const Reader& r, const YAML::Node& n, const std::string& key, const forces::WaterProperties& w,
+               MechanicsSpec& spec) {
+  if (!r.keys(n, {"spectrum", "hs", "tp", "gamma", "direction", "direction_deg", "spreading_s", "seed", "components"},
+              key))
+    return;
+  forces::hydro::IrregularSea sea;
+  const YAML::Node kind = n["spectrum"];
+  try {
+    sea.spectrum = forces::hydro::spectrumKind(kind.IsScalar() ? kind.Scalar() : "");
+  } catch (const std::invalid_argument& e) {
+    r.fail(kind, key + ".spectrum", std::string(e.what()) + " " +
+               didYouMean(kind.IsScalar() ? kind.Scalar() : "", {"jonswap", "pierson_moskowitz"}));
+    return;
+  }
+  if (n["gamma"] && sea.spectrum != forces::hydro::SpectrumKind::Jonswap)
+    r.fail(n["gamma"], key + ".gamma", "'gamma' goes with spectrum: jonswap (Pierson-Moskowitz has none)");
+  sea.hs = r.number(n["hs"], key + ".hs", 0.0, true);
+  sea.tp = r.number(n["tp"], key + ".tp", 0.0, true);
+  sea.gamma = r.number(n["gamma"], key + ".gamma", 3.3);
+  sea.direction = angle(r, n, key, "direction");
+  sea.spreadingS = r.number(n["spreading_s"], key + ".spreading_s", 0.0);
+  sea.seed = static_cast<std::uint64_t>(wholeNumber(r, n["seed"], key + ".seed", 1, 0, 2147483647));
+  sea.components = static_cast<int>(wholeNumber(r, n["components"], key + ".components", 200, 1, 100000));
+  // (each value at its own node) => the first word of the message names the key
+  const std::pair<const char*, bool> checks[] = {{"hs", sea.hs > 0},
+                                                 {"tp", sea.tp > 0},
+                                                 {"gamma", sea.gamma >= 1 && sea.gamma <= 20},
+                                                 {"spreading_s", sea.spreadingS == 0 || (sea.spreadingS > 0 && sea.spreadingS <= 1000)}};
+  if (!n["hs"] || !n["tp"]) return;  // (reported above)
+  try {
+    auto waves = forces::hydro::irregularWaves(sea);
+    forces::AiryWaves(w, waves);  // (every component on this water) => not breaking
+    spec.waves.insert(spec.waves.end(), waves.begin(), waves.end());
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const auto& [name, ok] : checks)
+      if (!ok && n[name]) return r.fail(n[name], key + "." + name, what.substr(what.find(": ") + 2));
+    r.fail(n, key, what);
+  }
+}
+
 void water(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
   if (!r.keys(n, {"density", "level", "depth", "waves", "wave_ramp", "wave_start", "current"}, "")) return;
   spec.hasWater = true;
@@ -54,11 +114,18 @@ void water(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
   if (n["depth"] && !(w.depth > 0)) r.fail(n["depth"], "depth", "the water depth must be > 0 m (omit it for deep water)");
   if (n["wave_ramp"] && !(w.ramp >= 0)) r.fail(n["wave_ramp"], "wave_ramp", "the ramp time must be >= 0 s");
   if (const YAML::Node ws = n["waves"]) {
-    if (!ws.IsSequence()) {
-      r.fail(ws, "waves", "expected a list of regular waves [{height, period, direction_deg, phase_deg}, ...]");
+    if (ws.IsMap()) {
+      irregular(r, ws, "waves", w, spec);
+    } else if (!ws.IsSequence()) {
+      r.fail(ws, "waves", "expected a list of regular waves [{height, period, direction_deg, phase_deg}, ...] "
+                          "and irregular seas {spectrum, hs, tp, ...}, or one irregular sea");
     } else {
       for (std::size_t i = 0; i < ws.size(); ++i) {
         const std::string k = "waves[" + std::to_string(i) + "]";
+        if (ws[i].IsMap() && ws[i]["spectrum"]) {
+          irregular(r, ws[i], k, w, spec);
+          continue;
+        }
         if (!r.keys(ws[i], {"height", "period", "direction", "direction_deg", "phase", "phase_deg"}, k)) continue;
         forces::WaveComponent c;
         c.height = r.number(ws[i]["height"], k + ".height", 0.0, true);
@@ -156,6 +223,141 @@ void hulls(const Reader& r, const YAML::Node& n, const std::string& file, const 
   }
 }
 
+// (a method, its hull, response or solver, headings, dt, memory, settings, cache, excitation)
+// => the provider's build on the scene's sea; for impulse_response the response's A_inf on the
+// body's left-hand side (docs/hydrodynamics.md, "Scene keys")
+void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file, const std::set<std::string>& bodies,
+                   MechanicsSpec& spec) {
+  namespace hydro = forces::hydro;
+  const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+  // (path relative to the YAML file) => the path
+  auto path = [&](const YAML::Node& v) {
+    std::filesystem::path f(v.Scalar());
+    return (f.is_relative() ? dir / f : f).lexically_normal();
+  };
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    MechanicsSpec::Hydrodynamics h;
+    h.name = it->first.as<std::string>();
+    const YAML::Node m = it->second;
+    const std::string& k = h.name;
+    if (!r.keys(m, {"body", "method", "hull", "response", "solver", "headings", "headings_deg", "dt", "memory",
+                    "settings", "cache", "excitation"}, k))
+      continue;
+    body(r, m, k, bodies, h.body);
+    const YAML::Node method = m["method"];
+    if (!method || !method.IsScalar()) {
+      r.fail(method ? method : m, k + ".method", "missing required key 'method' (impulse_response or rankine_td)");
+      continue;
+    }
+    const std::string how = method.Scalar();
+    // (hull, headings, dt, memory, settings) => the request the solvers and checks see
+    hydro::HydrodynamicsRequest q;
+    q.water = spec.water;
+    q.dt = r.number(m["dt"], k + ".dt", q.dt);
+    q.memory = r.number(m["memory"], k + ".memory", q.memory);
+    if (!(q.dt > 0)) r.fail(m["dt"], k + ".dt", "the response's sample spacing must be > 0 s");
+    if (!(q.memory > q.dt)) r.fail(m["memory"], k + ".memory", "the radiation memory must be longer than dt");
+    if (m["headings_deg"]) {
+      for (double b : r.numbers(m["headings_deg"], k + ".headings_deg", 0)) q.headings.push_back(b * kDeg);
+    } else if (m["headings"]) {
+      q.headings = r.numbers(m["headings"], k + ".headings", 0);
+    }
+    if (const YAML::Node st = m["settings"]) {
+      if (!st.IsMap()) r.fail(st, k + ".settings", "expected a mapping of the method's numbers {name: value}");
+      else
+        for (auto s = st.begin(); s != st.end(); ++s)
+          q.settings[s->first.Scalar()] = r.number(s->second, k + ".settings." + s->first.Scalar(), 0.0);
+    }
+    for (const auto& b : spec.bodies)
+      if (b.name == h.body && b.parent == "world")
+        q.X_WB = b.X_PJ * (b.q0.empty() ? dynamics::Transform::identity() : dynamics::jointTransform(b.joint, b.q0.data()));
+    if (const YAML::Node hull = m["hull"]) {
+      try {
+        q.hull = std::make_shared<const forces::TriangleMesh>(forces::readClosedMesh(path(hull).string()));
+      } catch (const forces::MeshError& e) {
+        r.fail(hull, k + ".hull", e.what());
+        continue;
+      }
+    }
+    const bool excitation = m["excitation"] ? m["excitation"].as<std::string>() != "false" : true;
+    if (m["excitation"] && !m["excitation"].IsScalar()) r.fail(m["excitation"], k + ".excitation", "expected true or false");
+    // (the registered check, on the sea of this file's water) => its problems at the entry
+    auto check = [&](const hydro::HydrodynamicsCheck& c) {
+      if (!c) return true;
+      bool ok = true;
+      for (const std::string& problem : c(q, forces::AiryWaves(spec.water, spec.waves))) {
+        r.fail(m, k, problem);
+        ok = false;
+      }
+      return ok;
+    };
+    if (how != "impulse_response") {
+      const hydro::TimeDomainMethod* td = hydro::timeDomainMethod(how);
+      if (!td) {
+        if (how == "rankine_td") r.fail(method, k + ".method", "rankine_td: not available in this build");
+        else r.fail(method, k + ".method", "unknown method '" + how + "' " + didYouMean(how, {"impulse_response", "rankine_td"}));
+        continue;
+      }
+      for (const char* key : {"response", "solver", "cache"})
+        if (m[key]) r.fail(m[key], k + "." + key, std::string("'") + key + "' goes with method: impulse_response");
+      if (!q.hull) r.fail(m, k, "missing required key 'hull' (the hull mesh in the body frame, .obj or .stl)");
+      if (!q.hull || !check(td->check)) continue;
+      h.build = [build = td->build, q](const std::string& name, const dynamics::Model& model, int b,
+                                       std::shared_ptr<const forces::AiryWaves> sea) { return build(name, model, b, q, sea); };
+      spec.hydrodynamics.push_back(std::move(h));
+      continue;
+    }
+    // (impulse_response) => from a file, or from the cache by key, or solved and cached
+    std::shared_ptr<const hydro::ImpulseResponse> response;
+    if (m["response"].IsDefined() == m["hull"].IsDefined()) {
+      r.fail(m, k, "give exactly one of 'response' (an impulse-response file) and 'hull' (a mesh to compute it from)");
+      continue;
+    }
+    try {
+      if (const YAML::Node given = m["response"]) {
+        response = std::make_shared<const hydro::ImpulseResponse>(hydro::readImpulseResponse(path(given)));
+      } else {
+        const std::string solverName = m["solver"] ? m["solver"].Scalar() : "";
+        const hydro::ImpulseResponseSolver* solver = hydro::impulseResponseSolver(solverName);
+        if (!solver) {
+          const auto names = hydro::impulseResponseSolverNames();
+          std::string known;
+          for (const auto& name : names) known += (known.empty() ? "" : ", ") + name;
+          r.fail(m["solver"] ? m["solver"] : m, k + (m["solver"] ? ".solver" : ""),
+                 names.empty() ? "no impulse-response solver in this build (give 'response': a file)"
+                               : (solverName.empty() ? "several solvers: name one with 'solver' (" : "unknown solver (") +
+                                     known + ")");
+          continue;
+        }
+        if (!check(solver->check)) continue;
+        response = hydro::cachedOrSolved(q, *solver, m["cache"] ? path(m["cache"]) : hydro::impulseResponseCacheDir());
+      }
+    } catch (const std::exception& e) {
+      r.fail(m["response"] ? m["response"] : m, k + (m["response"] ? ".response" : ""), e.what());
+      continue;
+    }
+    if (excitation && !spec.waves.empty() && response->headings.empty()) {
+      r.fail(m, k, "the sea has waves but the impulse response has no excitation (no headings); compute it with "
+                   "headings_deg or set excitation: false");
+      continue;
+    }
+    // (A_inf) => the body's added mass, unless the body has its own
+    for (auto& b : spec.bodies)
+      if (b.name == h.body) {
+        if (b.addedMass || b.addedMassHull)
+          r.fail(m, k, "body '" + b.name + "' has an added_mass block; the impulse response puts its own A_inf on "
+                       "the left-hand side: remove one of the two");
+        b.addedMass = response->aInf;
+        b.addedMassAbout = Vector3::Zero();
+      }
+    h.build = [response, excitation](const std::string& name, const dynamics::Model& model, int b,
+                                     std::shared_ptr<const forces::AiryWaves> sea) -> std::unique_ptr<forces::ForceProvider> {
+      return std::make_unique<hydro::ImpulseResponseForce>(name, model, b, response, excitation ? sea : nullptr);
+    };
+    spec.hydrodynamics.push_back(std::move(h));
+  }
+}
+
 void flows(const Reader& r, const YAML::Node& n, const std::set<std::string>& bodies,
            std::vector<MechanicsSpec::Flow>& out) {
   for (auto it = n.begin(); it != n.end(); ++it) {
@@ -241,6 +443,8 @@ void parseFloating(const Params& p, const MechanicsReport& report, const std::se
   named("wind_loads", [&](const Reader& r, const YAML::Node& n) { flows(r, n, bodies, spec.windLoads); });
   named("current_loads", [&](const Reader& r, const YAML::Node& n) { flows(r, n, bodies, spec.currentLoads); });
   named("damping", [&](const Reader& r, const YAML::Node& n) { dampers(r, n, bodies, spec); });
+  named("hydrodynamics",
+        [&](const Reader& r, const YAML::Node& n) { hydrodynamics(r, n, p.mark("hydrodynamics").file, bodies, spec); });
 }
 
 

@@ -2,7 +2,8 @@
 // The floating-body part of a mechanics mapping (docs/hydrostatics.md): `water` (density, level,
 // depth, waves, wave_ramp, current), `wind` (speed, direction, profile, ...), and the providers
 // `hydrostatics` (hull meshes found relative to the YAML file that names them), `wind_loads`,
-// `current_loads` and `damping`, each a mapping of named providers on bodies.
+// `current_loads`, `damping` and `hydrodynamics` (impulse response or a time-domain method,
+// docs/hydrodynamics.md), each a mapping of named providers on bodies.
 #include <set>
 #include <string>
 

@@ -54,7 +54,7 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
   if (inst.mechanics.IsDefined()) {
     Params p;
     for (const char* key : {"bodies", "ropes", "equalizers", "loops", "loads", "watch", "hydrostatics", "wind_loads",
-                            "current_loads", "damping"})
+                            "current_loads", "damping", "hydrodynamics"})
       p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Map),
             inst.mechanicsWhere);
     for (const ProviderReader& reader : providerReaders())
@@ -135,6 +135,7 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
   for (const auto& w : s.spec.windLoads) out.push_back({"wind_load", w.name, ""});
   for (const auto& c : s.spec.currentLoads) out.push_back({"current_load", c.name, ""});
   for (const auto& d : s.spec.dampers) out.push_back({"damping", d.name, ""});
+  for (const auto& h : s.spec.hydrodynamics) out.push_back({"hydrodynamics", h.name, ""});
   for (const auto& c : s.spec.providers) out.push_back({c.kind, c.name, ""});
   return out;
 }
@@ -216,6 +217,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     for (const auto& w : f.spec.windLoads) all.windLoads.push_back(provider(w, "wind load"));
     for (const auto& c : f.spec.currentLoads) all.currentLoads.push_back(provider(c, "current load"));
     for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping"));
+    for (const auto& h : f.spec.hydrodynamics) all.hydrodynamics.push_back(provider(h, "hydrodynamics"));
     for (auto c : f.spec.providers) {  // (registered readers' providers) => full names, points placed
       c.name = prefixed(path, c.name);
       for (auto& [body, p] : c.attachments) {
@@ -350,6 +352,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& w : all.windLoads) on(w.body)->spec.windLoads.push_back(w);
   for (const auto& c : all.currentLoads) on(c.body)->spec.currentLoads.push_back(c);
   for (const auto& d : all.dampers) on(d.body)->spec.dampers.push_back(d);
+  for (const auto& h : all.hydrodynamics) on(h.body)->spec.hydrodynamics.push_back(h);
 
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {

@@ -78,7 +78,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "name: {channel: <element>.<quantity>, above | below: threshold} (a `crossed` event)"},
             {"gravity", ParamKind::NumberList, false, "[0, 0, -9.81]", "m/s^2", "gravity vector"},
             {"water", ParamKind::Any, false, "~", "",
-             "{density, level, depth, waves: [{height, period, direction_deg, phase_deg}], wave_start, wave_ramp, "
+             "{density, level, depth, waves: [{height, period, direction_deg, phase_deg} | {spectrum, hs, tp, gamma, "
+             "direction_deg, spreading_s, seed, components}], wave_start, wave_ramp, "
              "current: {speed, direction_deg, profile: [[z, factor], ...]}}"},
             {"wind", ParamKind::Any, false, "~", "",
              "{speed, direction_deg, reference_height, profile: uniform|power_law|npd, exponent, "
@@ -91,6 +92,9 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
              "name: {body, point, frontal_area, lateral_area, length, coefficients: {angle_deg, cx, cy, cmz}}"},
             {"damping", ParamKind::Any, false, "{}", "",
              "name: {body, point, linear: [6], quadratic: [6]} (surge, sway, heave, roll, pitch, yaw)"},
+            {"hydrodynamics", ParamKind::Any, false, "{}", "",
+             "name: {body, method: impulse_response|rankine_td, hull, response, solver, headings_deg, dt, memory, "
+             "settings, cache, excitation}"},
             {"dt", ParamKind::Number, true, "", "s", "integrator step"},
             {"method", ParamKind::String, false, "rk4", "",
              "integration method (docs/integrators.md): explicit_euler, semi_implicit_euler, rk4, ab2, "
@@ -157,6 +161,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
           for (const auto& w : spec.windLoads) out.push_back({"wind_load", w.name, ""});
           for (const auto& c : spec.currentLoads) out.push_back({"current_load", c.name, ""});
           for (const auto& d : spec.dampers) out.push_back({"damping", d.name, ""});
+          for (const auto& h : spec.hydrodynamics) out.push_back({"hydrodynamics", h.name, ""});
           return out;
         }});
 

@@ -12,7 +12,7 @@ const std::vector<std::string> kBuiltInKeys{
     "loads",      "watch",           "gravity",          "water",
     "wind",       "hydrostatics",    "wind_loads",       "current_loads",
     "damping",    "drive_bandwidth", "drive_max_effort", "drive_tolerance",
-    "equilibrium"};
+    "equilibrium", "hydrodynamics"};
 
 std::vector<ProviderReader>& readers() {
   static std::vector<ProviderReader> all;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "forces/airy_waves.hpp"
 
@@ -83,4 +84,22 @@ TEST_CASE("the ramp grows the waves from calm, and bad inputs are refused") {
   CHECK(later.elevation(0, 0, 59.0) == 0.0);
   CHECK(later.elevation(0, 0, 65.0) == Approx(0.5 * std::cos(-2 * M_PI / 8 * 65.0)));
   CHECK(later.elevation(0, 0, 75.0) == Approx(std::cos(-2 * M_PI / 8 * 75.0)));
+}
+
+TEST_CASE("the pressure of many components equals the surface and dynamic pressure summed apart") {
+  // (200 components: each cos once, in the stack buffer; 300: computed twice) => the same pressure
+  for (int n : {200, 300}) {
+    std::vector<WaveComponent> waves;
+    for (int i = 0; i < n; ++i) waves.push_back({0.02, 5.0 + 0.037 * i, 0.01 * i, 0.7 * i});
+    WaterProperties water{1025.0, 9.81, 0.5, 40.0, 0.0};
+    const AiryWaves sea(water, waves);
+    for (const Vector3& p : {Vector3(3, -2, -1.5), Vector3(-7, 4, -10), Vector3(1, 1, 0.3)}) {
+      for (double t : {0.0, 12.5}) {
+        const double eta = sea.elevation(p.x(), p.y(), t);
+        const double expected = p.z() > eta ? 0.0 : 1025.0 * 9.81 * (0.5 - p.z()) + sea.dynamicPressure(p, t);
+        INFO("n = " << n << " z = " << p.z() << " eta = " << eta);
+        CHECK(sea.pressure(p, t) == Approx(expected).epsilon(1e-12).margin(1e-9));
+      }
+    }
+  }
 }

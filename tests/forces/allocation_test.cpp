@@ -14,6 +14,8 @@
 #include "forces/current_load.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydrostatics.hpp"
+#include "forces/hydro/impulse_response_force.hpp"
+#include "forces/hydro/irregular_sea.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/wind_load.hpp"
 #include "forces/bushing.hpp"
@@ -284,5 +286,49 @@ TEST_CASE("the rankine_td provider does not allocate at a stage or a panel step"
     sink += radiation.power(own);
   }
   CHECK(allocationCount() == before);
+  CHECK(sink != 0.0);
+}
+
+TEST_CASE("the impulse-response force does not allocate at a stage") {
+  dynamics::ModelBuilder b;
+  b.setGravity(Vector3::Zero());
+  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(3e5, Vector3(20, 8, 4)));
+  const dynamics::Model m = b.build();
+  // (60 s of memory at 0.05 s, one heading, a sea of 50 components)
+  auto ir = std::make_shared<hydro::ImpulseResponse>();
+  ir->dt = 0.05;
+  ir->radiation.assign(1200, hydro::ImpulseResponse::Matrix6::Identity());
+  ir->headings = {0.0};
+  ir->excitationStart = -2.0;
+  ir->excitation.assign(1, std::vector<hydro::ImpulseResponse::Vector6>(80, hydro::ImpulseResponse::Vector6::Ones()));
+  hydro::IrregularSea spec;
+  spec.hs = 2.0, spec.tp = 8.0, spec.components = 50;
+  const auto sea = std::make_shared<const AiryWaves>(WaterProperties{}, hydro::irregularWaves(spec));
+  const hydro::ImpulseResponseForce p("radiation", m, 1, ir, sea);
+  auto scratch = p.makeScratch();
+  dynamics::Data data(m);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq), v = Eigen::VectorXd::Constant(m.nv, 0.1);
+  q[3] = 1.0;
+  dynamics::forwardKinematics(m, data, q, v);
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  p.evaluate(Stage{0.0, m, data, q, v, scratch.get(), 0.0}, f, tau);  // (the first commit)
+  std::vector<double> carried;  // (a checkpoint's buffer, the caller's)
+  carried.reserve(20000);
+  const std::size_t before = allocationCount();
+  double sink = 0.0;
+  for (int i = 1; i < 50; ++i) {  // (commits at the steps' starts, stages between, a step again)
+    const double t = 0.04 * i;
+    p.evaluate(Stage{t, m, data, q, v, scratch.get(), t}, f, tau);
+    p.evaluate(Stage{t + 0.02, m, data, q, v, scratch.get(), t}, f, tau);
+    sink += p.power(Stage{t + 0.04, m, data, q, v, scratch.get(), t});
+  }
+  p.evaluate(Stage{1.0, m, data, q, v, scratch.get(), 1.0}, f, tau);
+  scratch->carried(carried);
+  scratch->restoreCarried(carried);
+  CHECK(allocationCount() == before);
+  CHECK(carried.size() > 7200);
+  CHECK(std::isfinite(sink));
   CHECK(sink != 0.0);
 }

@@ -9,6 +9,7 @@
 #include "devs/simulator.hpp"
 #include "forces/geometry/mesh_io.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
+#include "forces/hydro/irregular_sea.hpp"
 #include "scene/assembler.hpp"
 #include "models/channels.hpp"
 #include "scene/mechanical_systems.hpp"
@@ -204,5 +205,73 @@ TEST_CASE("bad floating input is refused at its line with the key path") {
     dir.write("part.yaml", "schema_version: 1\nmechanics:\n  water: {density: 1000}\n");
     const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml("components:\n  part: {include: part.yaml}\n")));
     CHECK_THAT(r.diagnostics.report(), Contains("only the scene root declares the water"));
+  }
+}
+
+TEST_CASE("an irregular sea from water waves joins the regular ones in the one sea") {
+  testing::SceneDir dir;
+  meshes(dir);
+  const std::string sea = "    waves: [{height: 1, period: 10},\n"
+                          "            {spectrum: jonswap, hs: 2.5, tp: 8, gamma: 3.3, seed: 7, spreading_s: 10, components: 50}]\n";
+  const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml("", sea)));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  const auto& waves = r.scene->systems.at(0)->spec.waves;
+  REQUIRE(waves.size() == 51);
+  double variance = 0;
+  for (std::size_t i = 1; i < waves.size(); ++i) variance += waves[i].height * waves[i].height / 8;
+  CHECK(variance == Approx(2.5 * 2.5 / 16).epsilon(1e-12));
+  // (the same keys through the library) => the same components
+  forces::hydro::IrregularSea s;
+  s.hs = 2.5, s.tp = 8, s.gamma = 3.3, s.seed = 7, s.spreadingS = 10, s.components = 50;
+  const auto expected = forces::hydro::irregularWaves(s);
+  CHECK(waves[17].period == expected[16].period);
+  CHECK(waves[17].direction == expected[16].direction);
+  // (the hull's elevation channel) => the sea of all 51 components at the body
+  auto root = scene::assemble(*r.scene);
+  const auto ch = models::collectChannels(*root);
+  forces::WaterProperties water;
+  water.depth = 40;
+  CHECK(channel(ch, "hull.wave_elevation") == Approx(forces::AiryWaves(water, waves).elevation(0, 0, 0)).margin(1e-12));
+  // (one sea as a mapping) => its components alone
+  const auto one = scene::loadScene(dir.write("one.yaml", sceneYaml("", "    waves: {spectrum: pm, hs: 1, tp: 6}\n")));
+  INFO(one.diagnostics.report());
+  REQUIRE(one.scene);
+  CHECK(one.scene->systems.at(0)->spec.waves.size() == 200);
+}
+
+TEST_CASE("bad irregular seas are refused at their keys") {
+  testing::SceneDir dir;
+  meshes(dir);
+  auto load = [&](const std::string& waves) { return scene::loadScene(dir.write("s.yaml", sceneYaml("", waves))); };
+  SECTION("an unknown spectrum") {
+    const auto r = load("    waves: [{spectrum: jonswapp, hs: 2, tp: 8}]\n");
+    const auto* d = find(r, "mechanics.water.waves[0].spectrum");
+    REQUIRE(d);
+    CHECK(d->where.line == 7);
+    CHECK_THAT(d->message + d->hint, Contains("did you mean 'jonswap'?"));
+  }
+  SECTION("a negative Hs and a fractional number of components") {
+    const auto r = load("    waves:\n      spectrum: jonswap\n      hs: -2\n      tp: 8\n      components: 20.5\n");
+    INFO(r.diagnostics.report());
+    const auto* hs = find(r, "mechanics.water.waves.hs");
+    REQUIRE(hs);
+    CHECK(hs->where.line == 9);
+    CHECK_THAT(hs->message, Contains("> 0"));
+    const auto* n = find(r, "mechanics.water.waves.components");
+    REQUIRE(n);
+    CHECK(n->where.line == 11);
+    CHECK_THAT(n->message, Contains("whole number"));
+  }
+  SECTION("gamma of a Pierson-Moskowitz sea, a breaking sea, a missing tp") {
+    const auto r = load("    waves: [{spectrum: pm, hs: 2, tp: 8, gamma: 2}, {spectrum: jonswap, hs: 12, tp: 3}, {spectrum: pm, hs: 1}]\n");
+    INFO(r.diagnostics.report());
+    CHECK(find(r, "mechanics.water.waves[0].gamma"));
+    const auto* b = find(r, "mechanics.water.waves[1]");
+    REQUIRE(b);
+    CHECK_THAT(b->message, Contains("breaking limit"));
+    const auto* t = find(r, "mechanics.water.waves[2].tp");
+    REQUIRE(t);
+    CHECK_THAT(t->message, Contains("missing required key"));
   }
 }

@@ -1,0 +1,250 @@
+// The `hydrodynamics:` block of scene/floating_reader.cpp: method impulse_response with a response
+// computed by a solver registered at run time (as part A's time-domain solver will be), written
+// to the cache by its key and read from there the second time (the solver not called again), its
+// A_inf put on the body's left-hand side, the provider running in the scene on the one sea; a
+// response given as a file; rankine_td refused while nothing provides it and built once something
+// does; a registered check's problem, a damaged cache file and wrong keys refused at their lines.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "devs/simulator.hpp"
+#include "forces/geometry/mesh_io.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
+#include "forces/hydro/hydrodynamics_methods.hpp"
+#include "forces/hydro/impulse_response_cache.hpp"
+#include "forces/hydro/impulse_response_force.hpp"
+#include "models/channels.hpp"
+#include "scene/assembler.hpp"
+#include "scene/mechanical_systems.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/scene_files.hpp"
+
+using namespace yardsim;
+using namespace yardsim::forces::hydro;
+using Catch::Matchers::Contains;
+
+namespace {
+
+int solves = 0;
+
+// (request) => heave radiation kappa e^(-t) cos(2 t) over the request's memory, A_inf 5e4 kg in
+// heave, an excitation pulse per heading
+ImpulseResponse testSolve(const HydrodynamicsRequest& q) {
+  ++solves;
+  ImpulseResponse ir;
+  ir.dt = q.dt;
+  ir.aInf(2, 2) = 5e4 * q.settings.at("scale");
+  for (int k = 0; k * q.dt < q.memory; ++k) {
+    ImpulseResponse::Matrix6 K = ImpulseResponse::Matrix6::Zero();
+    K(2, 2) = 1e5 * std::exp(-k * q.dt) * std::cos(2 * k * q.dt);
+    ir.radiation.push_back(K);
+  }
+  ir.headings = q.headings;
+  ir.excitationStart = -2.0;
+  for (std::size_t b = 0; b < q.headings.size(); ++b) {
+    ir.excitation.emplace_back();
+    for (int k = 0; k * q.dt < 4.0; ++k) {
+      ImpulseResponse::Vector6 h = ImpulseResponse::Vector6::Zero();
+      h[2] = 1e5 * std::exp(-std::pow(-2.0 + k * q.dt, 2));
+      ir.excitation.back().push_back(h);
+    }
+  }
+  return ir;
+}
+
+std::string sceneYaml(const std::string& hydro) {
+  return R"(schema_version: 1
+integrator: {method: rk4, dt: 0.02}
+mechanics:
+  water:
+    density: 1025
+    waves: [{height: 1, period: 8}]
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 246000
+      inertia: [1.64e6, 8.53e6, 9.51e6]
+  hydrostatics:
+    hull: {body: barge, mesh: meshes/barge.stl}
+  hydrodynamics:
+)" + hydro;
+}
+
+void meshes(const testing::SceneDir& dir) {
+  std::filesystem::create_directories(dir.path() / "meshes");
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(20, 8, 4), 2, 2, 1),
+                   dir.file("meshes/barge.stl"));
+}
+
+const models::Diagnostic* find(const scene::LoadResult& r, const std::string& keyPath) {
+  for (const auto& d : r.diagnostics.all())
+    if (d.keyPath == keyPath) return &d;
+  return nullptr;
+}
+
+double channel(const std::vector<models::Channel>& all, const std::string& name) {
+  for (const auto& c : all)
+    if (c.name == name) return c.read();
+  FAIL("no channel " << name);
+  return 0.0;
+}
+
+const std::string kEntry =
+    "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: test_solver,\n"
+    "         headings_deg: [0, 90], dt: 0.05, memory: 10, cache: cache, settings: {scale: 2}}\n";
+
+}  // namespace
+
+TEST_CASE("rankine_td is refused while nothing provides it") {
+  testing::SceneDir dir;
+  meshes(dir);
+  const auto r = scene::loadScene(dir.write(
+      "s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl}\n")));
+  const auto* d = find(r, "mechanics.hydrodynamics.hd.method");
+  REQUIRE(d);
+  CHECK(d->where.line == 16);
+  CHECK(d->message == "rankine_td: not available in this build");
+}
+
+TEST_CASE("an impulse response solved once then read from the cache drives the body") {
+  registerImpulseResponseSolver({"test_solver", testSolve, {}});
+  testing::SceneDir dir;
+  meshes(dir);
+  solves = 0;
+  const auto path = dir.write("s.yaml", sceneYaml(kEntry));
+  const auto r = scene::loadScene(path);
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  CHECK(solves == 1);
+  // (one file in the cache folder next to the scene, named by the key)
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache"))
+    files.push_back(e.path());
+  REQUIRE(files.size() == 1);
+  CHECK(files[0].extension() == ".ysir");
+  CHECK(files[0].stem().string().rfind("test_solver-", 0) == 0);
+  const auto& spec = r.scene->systems.at(0)->spec;
+  REQUIRE(spec.hydrodynamics.size() == 1);
+  REQUIRE(spec.bodies.at(0).addedMass);
+  CHECK((*spec.bodies[0].addedMass)(2, 2) == 1e5);
+  // (the same scene again) => from the cache, the solver not called; another setting: solved again
+  const auto again = scene::loadScene(path);
+  REQUIRE(again.scene);
+  CHECK(solves == 1);
+  std::string other = kEntry;
+  other.replace(other.find("scale: 2"), 8, "scale: 3");
+  REQUIRE(scene::loadScene(dir.write("s2.yaml", sceneYaml(other))).scene);
+  CHECK(solves == 2);
+  // (run) => the provider's power channel: the waves do work on the barge through it
+  auto root = scene::assemble(*r.scene);
+  const auto ch = models::collectChannels(*root);
+  devs::Simulator sim(*root);
+  sim.runUntil(3.0);
+  CHECK(channel(ch, "hd.power") != 0.0);
+  CHECK(std::isfinite(channel(ch, "hd.power")));
+}
+
+TEST_CASE("a response given as a file") {
+  testing::SceneDir dir;
+  meshes(dir);
+  HydrodynamicsRequest q;
+  q.settings["scale"] = 1;
+  q.headings = {0.0};
+  ImpulseResponse ir = testSolve(q);
+  ir.key = "given";
+  writeImpulseResponse(ir, dir.path() / "barge.ysir");
+  const auto r = scene::loadScene(dir.write(
+      "s.yaml",
+      sceneYaml("    hd: {body: barge, method: impulse_response, response: barge.ysir}\n")));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  CHECK((*r.scene->systems.at(0)->spec.bodies.at(0).addedMass)(2, 2) == 5e4);
+}
+
+TEST_CASE("bad hydrodynamics input is refused at its key") {
+  registerImpulseResponseSolver({"test_solver", testSolve, {}});
+  testing::SceneDir dir;
+  meshes(dir);
+  auto load = [&](const std::string& entry) {
+    return scene::loadScene(dir.write("s.yaml", sceneYaml(entry)));
+  };
+  SECTION("an unknown method, both a response and a hull") {
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_respons, hull: meshes/barge.stl}\n"
+        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, response: "
+        "x.ysir}\n");
+    const auto* d = find(r, "mechanics.hydrodynamics.hd.method");
+    REQUIRE(d);
+    CHECK_THAT(d->message + d->hint, Contains("did you mean 'impulse_response'?"));
+    const auto* e = find(r, "mechanics.hydrodynamics.he");
+    REQUIRE(e);
+    CHECK(e->where.line == 17);
+    CHECK_THAT(e->message, Contains("exactly one of 'response'"));
+  }
+  SECTION("a registered check's problem, with its numbers") {
+    registerImpulseResponseSolver(
+        {"checked", testSolve, [](const HydrodynamicsRequest&, const forces::AiryWaves& sea) {
+           const double shortest = 2 * M_PI / sea.wavenumber(0);
+           return std::vector<std::string>{
+               "a free-surface panel of 12 m is longer than a tenth of the shortest wave (" +
+               std::to_string(shortest) + " m)"};
+         }});
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: "
+        "checked}\n");
+    const auto* d = find(r, "mechanics.hydrodynamics.hd");
+    REQUIRE(d);
+    CHECK(d->where.line == 16);
+    CHECK_THAT(d->message, Contains("shortest wave (99.9"));
+  }
+  SECTION("a damaged cache file: named, with what is wrong") {
+    REQUIRE(load(kEntry).scene);  // (solved and cached)
+    for (const auto& e : std::filesystem::directory_iterator(dir.path() / "cache"))
+      std::ofstream(e.path(), std::ios::app) << "x";
+    const auto r = load(kEntry);
+    CHECK_FALSE(r.scene);
+    CHECK_THAT(r.diagnostics.report(),
+               Contains(".ysir: damaged (checksum mismatch)") && Contains("s.yaml:16"));
+  }
+  SECTION("an unknown solver, waves without excitation") {
+    const auto r = load(
+        "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: panel}\n"
+        "    he: {body: barge, method: impulse_response, hull: meshes/barge.stl, solver: "
+        "test_solver, cache: cache,\n"
+        "         settings: {scale: 1}}\n");
+    CHECK_THAT(find(r, "mechanics.hydrodynamics.hd.solver")->message,
+               Contains("unknown solver") && Contains("test_solver"));
+    CHECK_THAT(find(r, "mechanics.hydrodynamics.he")->message, Contains("no excitation"));
+  }
+}
+
+TEST_CASE("rankine_td is built by the method registered for it") {
+  testing::SceneDir dir;
+  meshes(dir);
+  int built = 0;
+  registerTimeDomainMethod(
+      {"rankine_td",
+       [&built](const std::string& name, const dynamics::Model& model, int body,
+                const HydrodynamicsRequest& q, std::shared_ptr<const forces::AiryWaves> sea)
+           -> std::unique_ptr<forces::ForceProvider> {
+         ++built;
+         CHECK(q.hull);
+         CHECK(q.settings.at("panel_size") == 0.5);
+         HydrodynamicsRequest r = q;
+         r.settings["scale"] = 1;
+         r.headings = {0.0};
+         return std::make_unique<ImpulseResponseForce>(
+             name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
+       },
+       {}});
+  const auto r = scene::loadScene(
+      dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: "
+                                    "meshes/barge.stl, settings: {panel_size: 0.5}}\n")));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  auto root = scene::assemble(*r.scene);
+  CHECK(built >= 1);  // (the door's checks build the system too)
+}

@@ -302,6 +302,22 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
         if (m[key]) r.fail(m[key], k + "." + key, std::string("'") + key + "' goes with method: impulse_response");
       if (!q.hull) r.fail(m, k, "missing required key 'hull' (the hull mesh in the body frame, .obj or .stl)");
       if (!q.hull || !check(td->check)) continue;
+      if (td->addedMass) {  // (A_inf) => the body's added mass, unless the body has its own
+        try {
+          const auto aInf = td->addedMass(q);
+          for (auto& b : spec.bodies)
+            if (b.name == h.body) {
+              if (b.addedMass || b.addedMassHull)
+                r.fail(m, k, "body '" + b.name + "' has an added_mass block; " + how +
+                                 " puts its own A_inf on the left-hand side: remove one of the two");
+              b.addedMass = aInf;
+              b.addedMassAbout = Vector3::Zero();
+            }
+        } catch (const std::exception& e) {
+          r.fail(m, k, e.what());
+          continue;
+        }
+      }
       h.build = [build = td->build, q](const std::string& name, const dynamics::Model& model, int b,
                                        std::shared_ptr<const forces::AiryWaves> sea) { return build(name, model, b, q, sea); };
       spec.hydrodynamics.push_back(std::move(h));

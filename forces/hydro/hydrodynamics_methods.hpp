@@ -53,6 +53,9 @@ struct TimeDomainMethod {
       const HydrodynamicsRequest& request, std::shared_ptr<const AiryWaves> sea)>
       build;
   HydrodynamicsCheck check;  // may be empty
+  // (request) => the infinite-frequency added mass the body carries on the left-hand side (body
+  // axes about its origin, naval order), or empty when the provider needs none
+  std::function<ImpulseResponse::Matrix6(const HydrodynamicsRequest&)> addedMass;
 };
 
 // (solver) => registered under its name (a second one of that name replaces the first)

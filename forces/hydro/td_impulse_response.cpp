@@ -154,7 +154,8 @@ std::vector<Vector6d> excitation(const RankineTdModel& model, const Vector3& e_b
     a.noalias() = -(w.cN * cw + w.sN * sw);
     at.noalias() = -(w.cNt * cw + w.sNt * sw);
     pt.noalias() = w.cPt * cw + w.sPt * sw;
-    h[static_cast<std::size_t>(n)] = empStep(model, s.dt, a, at, state, scratch) + fk * pt;
+    h[static_cast<std::size_t>(n)] = empStep(model, s.dt, a, at, state, scratch);
+    if (s.froudeKrylov) h[static_cast<std::size_t>(n)] += fk * pt;
   }
   return h;
 }
@@ -250,6 +251,7 @@ std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transfor
         s.memory, s.cutoff, s.lead, s.bandStart, s.bandEnd})
     f.number(x);
   f.integer(s.frequencies);
+  if (!s.froudeKrylov) f.integer(-1);  // (diffraction only) => another key; the default's unchanged
   f.integer(static_cast<std::int64_t>(s.headings.size()));
   for (const double b : s.headings) f.number(b);
   static const char* hex = "0123456789abcdef";

@@ -48,6 +48,9 @@ struct ImpulseResponseSettings {
   int frequencies = 240;   ///< quadrature points on [0, 3 w_c]
   double bandStart = 0.0;  ///< w1, rad/s: K's damping kept below (0: raw K, no band limit)
   double bandEnd = 0.0;    ///< w2 > w1, rad/s: and tapered to 0 here
+  /// true: the excitation is Froude-Krylov + diffraction; false: diffraction only (for a body
+  /// whose hydrostatics already integrates the incident pressure)
+  bool froudeKrylov = true;
 };
 
 /// (model, panels per wavelength) => the frequency of the deep-water wave whose length is that

@@ -2,8 +2,8 @@
 // computed by a solver registered at run time (as part A's time-domain solver will be), written
 // to the cache by its key and read from there the second time (the solver not called again), its
 // A_inf put on the body's left-hand side, the provider running in the scene on the one sea; a
-// response given as a file; rankine_td refused while nothing provides it and built once something
-// does; a registered check's problem, a damaged cache file and wrong keys refused at their lines.
+// response given as a file; rankine_td refused without its settings, the solver's two paths
+// (marched and convolved) agreeing on one scene, and a registered method built; a registered check's problem, a damaged cache file and wrong keys refused at their lines.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -98,15 +98,78 @@ const std::string kEntry =
 
 }  // namespace
 
-TEST_CASE("rankine_td is refused while nothing provides it") {
+TEST_CASE("rankine_td without its free-surface settings is refused at its entry") {
   testing::SceneDir dir;
   meshes(dir);
   const auto r = scene::loadScene(dir.write(
       "s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl}\n")));
-  const auto* d = find(r, "mechanics.hydrodynamics.hd.method");
+  const auto* d = find(r, "mechanics.hydrodynamics.hd");
   REQUIRE(d);
   CHECK(d->where.line == 16);
-  CHECK(d->message == "rankine_td: not available in this build");
+  CHECK_THAT(d->message, Contains("missing setting 'truncation_radius'"));
+}
+
+namespace {
+// (hydrodynamics entry or "") => the box barge released 0.3 m above its draft in calm water, its
+// heave z(t) sampled every 0.25 s over 16 s
+std::vector<double> heaveDecay(const testing::SceneDir& dir, const std::string& entry) {
+  const std::string yaml = R"(schema_version: 1
+integrator: {method: rk4, dt: 0.05}
+mechanics:
+  water: {density: 1025}
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 0.8]}}
+      mass: 246000
+      inertia: [1.64e6, 8.53e6, 9.51e6]
+  hydrostatics:
+    hull: {body: barge, mesh: meshes/barge.stl}
+)" + (entry.empty() ? std::string() : "  hydrodynamics:\n" + entry);
+  const auto r = scene::loadScene(dir.write("decay.yaml", yaml));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  auto root = scene::assemble(*r.scene);
+  const auto ch = models::collectChannels(*root);
+  devs::Simulator sim(*root);
+  std::vector<double> z;
+  for (double t = 0.0; t <= 16.0 + 1e-9; t += 0.25) {
+    sim.runUntil(t);
+    z.push_back(channel(ch, "barge.z") - 0.5);
+  }
+  return z;
+}
+}  // namespace
+
+TEST_CASE("rankine_td marched with the run and its impulse responses convolved agree in a scene") {
+  testing::SceneDir dir;
+  meshes(dir);
+  // (one free surface for both paths: 8 panels around, out to 60 m, a 25 m damping zone)
+  const std::string settings =
+      "settings: {truncation_radius: 60, first_spacing: 1.5, max_spacing: 4, longest_period: 4}";
+  const auto td = heaveDecay(
+      dir, "    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl, dt: 0.05, " + settings + "}\n");
+  const auto ir = heaveDecay(dir, "    hd: {body: barge, method: impulse_response, hull: meshes/barge.stl, "
+                                  "solver: rankine_td, dt: 0.05, memory: 16, cache: cache, excitation: false, " +
+                                      settings + "}\n");
+  const auto none = heaveDecay(dir, "");
+  REQUIRE(td.size() == ir.size());
+  // (same radiation, two paths) => the same heave history within a few per cent of the release
+  double worst = 0.0, tdLate = 0.0, noneLate = 0.0;
+  for (std::size_t k = 0; k < td.size(); ++k) {
+    worst = std::max(worst, std::abs(td[k] - ir[k]));
+    if (k >= 32) {  // (after 8 s)
+      tdLate = std::max(tdLate, std::abs(td[k]));
+      noneLate = std::max(noneLate, std::abs(none[k]));
+    }
+  }
+  INFO("largest difference " << worst << " m of a 0.3 m release; after 8 s: " << tdLate
+                             << " m with radiation, " << noneLate << " m without");
+  CHECK(std::abs(td[0] - 0.3) < 1e-9);
+  CHECK(worst < 0.03 * 0.3);
+  // (radiation damping) => the heave decays; without it, it does not
+  CHECK(tdLate < 0.5 * 0.3);
+  CHECK(noneLate > 0.8 * 0.3);
 }
 
 TEST_CASE("an impulse response solved once then read from the cache drives the body") {
@@ -239,6 +302,7 @@ TEST_CASE("rankine_td is built by the method registered for it") {
          return std::make_unique<ImpulseResponseForce>(
              name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
        },
+       {},
        {}});
   const auto r = scene::loadScene(
       dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: "

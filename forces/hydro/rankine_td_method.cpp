@@ -1,0 +1,153 @@
+#include "forces/hydro/rankine_td_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+
+#include "forces/hydro/emp_scheme.hpp"
+#include "forces/hydro/rankine_td_provider.hpp"
+#include "forces/hydro/td_checks.hpp"
+#include "forces/hydro/wetted_surface.hpp"
+
+namespace yardsim::forces::hydro {
+namespace {
+
+const std::set<std::string> kSettings = {
+    "truncation_radius", "first_spacing", "max_spacing", "growth", "longest_period",
+    "damping_width", "damping_strength", "cutoff", "band_start", "band_end", "froude_krylov",
+    "panel_step"};
+
+// (request, name, default; NaN: required) => the setting
+double setting(const HydrodynamicsRequest& q, const std::string& name, double fallback) {
+  const auto it = q.settings.find(name);
+  if (it != q.settings.end()) return it->second;
+  if (std::isnan(fallback))
+    throw std::invalid_argument("rankine_td: missing setting '" + name +
+                                "' (settings: truncation_radius, first_spacing, max_spacing in m)");
+  return fallback;
+}
+
+// (request) => the hull in the world at its mean pose, the still-water level at z = 0
+PanelMesh hullWorld(const HydrodynamicsRequest& q) {
+  PanelMesh hull = panelMesh(*q.hull);
+  for (Vector3& v : hull.vertices) {
+    v = q.X_WB.R * v + q.X_WB.p;
+    v.z() -= q.water.level;
+  }
+  return hull;
+}
+
+}  // namespace
+
+ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
+  for (const auto& [name, value] : q.settings)
+    if (!kSettings.count(name)) throw std::invalid_argument("rankine_td: unknown setting '" + name + "'");
+  if (!q.hull) throw std::invalid_argument("rankine_td: needs the hull mesh ('hull')");
+  ImpulseResponseSettings s;
+  FreeSurfaceSettings& fs = s.solver.freeSurface;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  fs.truncationRadius = setting(q, "truncation_radius", nan);
+  fs.firstSpacing = setting(q, "first_spacing", nan);
+  fs.maxSpacing = setting(q, "max_spacing", nan);
+  fs.growth = setting(q, "growth", fs.growth);
+  if (q.settings.count("longest_period")) {
+    fs = defaultBeach(fs, setting(q, "longest_period", nan), q.water.gravity);
+  } else {
+    fs.dampingWidth = setting(q, "damping_width", 0.0);
+    fs.dampingStrength = setting(q, "damping_strength", 0.0);
+  }
+  if (!(fs.truncationRadius > 0 && fs.firstSpacing > 0 && fs.maxSpacing >= fs.firstSpacing &&
+        fs.growth >= 1 && fs.dampingWidth >= 0 && fs.dampingWidth < fs.truncationRadius &&
+        fs.dampingStrength >= 0))
+    throw std::invalid_argument(
+        "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= 1, "
+        "0 <= damping_width < truncation_radius, damping_strength >= 0");
+  s.solver.rho = q.water.density;
+  s.solver.g = q.water.gravity;
+  s.solver.depth = q.water.depth;
+  s.solver.waterLevel = 0.0;  // (hull placed relative to the level)
+  s.dt = q.dt;
+  s.memory = q.memory;
+  s.headings = q.headings;
+  s.cutoff = setting(q, "cutoff", 0.0);
+  s.bandStart = setting(q, "band_start", 0.0);
+  s.bandEnd = setting(q, "band_end", 0.0);
+  s.froudeKrylov = setting(q, "froude_krylov", 0.0) != 0.0;
+  return s;
+}
+
+std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest& q) {
+  // (one model per request key) => kept for the door, the added mass and the build
+  static std::mutex lock;
+  static std::map<std::string, std::shared_ptr<const RankineTdModel>> built;
+  const ImpulseResponseSettings s = rankineTdSettings(q);
+  const PanelMesh hull_B = panelMesh(*q.hull);
+  dynamics::Transform X_WB = q.X_WB;
+  X_WB.p.z() -= q.water.level;
+  const std::string key = impulseResponseKey(hull_B, X_WB, s);
+  const std::lock_guard<std::mutex> guard(lock);
+  auto& model = built[key];
+  if (!model) model = std::make_shared<const RankineTdModel>(hull_B, X_WB, s.solver);
+  return model;
+}
+
+std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const AiryWaves& sea) {
+  std::vector<std::string> problems;
+  ImpulseResponseSettings s;
+  try {
+    s = rankineTdSettings(q);
+  } catch (const std::invalid_argument& e) {
+    return {e.what()};
+  }
+  const PanelMesh hull_W = hullWorld(q);
+  if (auto m = checkTruncation(hull_W, s.solver.freeSurface)) return {*m};
+  try {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < sea.size(); ++i) shortest = std::min(shortest, sea.component(i).period);
+    if (std::isfinite(shortest)) {
+      const FreeSurfaceMesh surface = buildFreeSurface(wettedSurface(hull_W), s.solver.freeSurface);
+      if (auto m = checkPanelSize(surface, s.solver.freeSurface, shortest, q.water.gravity))
+        problems.push_back(*m);
+    }
+    const auto model = rankineTdModel(q);
+    const double step = setting(q, "panel_step", q.dt);
+    if (auto m = checkEmpStep(empLimit(*model), step)) problems.push_back(*m);
+  } catch (const std::exception& e) {
+    problems.push_back(std::string("rankine_td: ") + e.what());
+  }
+  return problems;
+}
+
+namespace {
+// (load) => rankine_td registered as an impulse-response solver and as a time-domain method
+const bool registered = [] {
+  registerImpulseResponseSolver(
+      {"rankine_td",
+       [](const HydrodynamicsRequest& q) {
+         ImpulseResponseSettings s = rankineTdSettings(q);
+         const auto model = rankineTdModel(q);
+         if (!s.headings.empty() && !(s.cutoff > 0)) s.cutoff = resolvedFrequency(*model);
+         return computeImpulseResponse(*model, s);
+       },
+       checkRankineTd});
+  registerTimeDomainMethod(
+      {"rankine_td",
+       [](const std::string& name, const dynamics::Model& model, int body,
+          const HydrodynamicsRequest& q, std::shared_ptr<const AiryWaves>) -> std::unique_ptr<ForceProvider> {
+         return std::make_unique<RankineTdProvider>(name, model, body, rankineTdModel(q),
+                                                    setting(q, "panel_step", q.dt));
+       },
+       checkRankineTd,
+       [](const HydrodynamicsRequest& q) {
+         const auto model = rankineTdModel(q);
+         return toBodyAxes(model->aInf(), model->rotation());
+       }});
+  return true;
+}();
+}  // namespace
+
+}  // namespace yardsim::forces::hydro

@@ -15,12 +15,21 @@
 #include "scene/assembler.hpp"
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
+#include "scene/resource_limits.hpp"
 
 namespace yardsim::cli {
 
 int runCommand(const RunArgs& a) {
   auto scene = loadAndReport(a.scene);
   if (!scene) return kInvalidInput;
+  // (--until) => the run's ceilings checked again for the end time given on the command line
+  if (a.until >= 0) {
+    models::Diagnostics d;
+    scene::checkResourceLimits(*scene, a.until, "--until", d);
+    for (const auto& e : d.all()) std::fprintf(stderr, "%s\n", models::format(e).c_str());
+    if (d.hasErrors()) return kInvalidInput;
+  }
+  if (!prepareOutputFolder(a.outdir)) return kInvalidInput;
   run::RunOptions opt;
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;

@@ -9,6 +9,7 @@
 #include "scene/integrator_reader.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/provider_readers.hpp"
+#include "scene/resource_limits.hpp"
 #include "scene/run_settings_reader.hpp"
 #include "scene/stiffness_guard.hpp"
 #include "models/port_types.hpp"
@@ -35,10 +36,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
-                                         "params",         "inputs",     "outputs",
-                                         "components",     "couplings",  "mechanics"};
-const std::vector<std::string> kRootKeys{"record", "report", "until", "seed", "integrator", "trace", "wp"};
+const std::vector<std::string> kFileKeys{"schema_version", "name",      "description",
+                                         "params",         "inputs",    "outputs",
+                                         "components",     "couplings", "mechanics"};
+const std::vector<std::string> kRootKeys{"record",     "report", "until", "seed",
+                                         "integrator", "trace",  "wp",    "limits"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type", "include", "coupled", "params",
@@ -462,6 +464,8 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors())
+    checkResourceLimits(*scene, scene->until, "", r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;

@@ -12,14 +12,18 @@ using models::didYouMean;
 
 namespace {
 // (node, budget) => the budget left after counting the node and everything below it, as aliases
-// expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes)
-std::size_t countNodes(const YAML::Node& n, std::size_t budget) {
+// expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes); the first
+// mapping key that is not a plain scalar (`? [a, b]: 1`, `~: 1`) in *badKey
+std::size_t countNodes(const YAML::Node& n, std::size_t budget, std::optional<YAML::Node>* badKey) {
   if (budget == 0) return 0;
   --budget;
   if (n.IsSequence())
-    for (const auto& e : n) budget = countNodes(e, budget);
+    for (const auto& e : n) budget = countNodes(e, budget, badKey);
   else if (n.IsMap())
-    for (auto it = n.begin(); it != n.end() && budget > 0; ++it) budget = countNodes(it->second, budget);
+    for (auto it = n.begin(); it != n.end() && budget > 0; ++it) {
+      if (!it->first.IsScalar() && !*badKey) badKey->emplace(it->first);
+      budget = countNodes(it->second, budget, badKey);
+    }
   return budget;
 }
 }  // namespace
@@ -57,10 +61,17 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
                   "or move it to its own file)");
       return std::nullopt;
     }
-    if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes) == 0) {
+    std::optional<YAML::Node> badKey;
+    if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes, &badKey) == 0) {
       diags.error({file.string(), 1, 1}, "",
                   "the document expands to more than " + std::to_string(kMaxSceneNodes) +
                       " nodes (YAML aliases repeated into each other?); a scene is far smaller");
+      return std::nullopt;
+    }
+    if (badKey) {
+      diags.error(
+          markOf(*badKey, file.string()), "",
+          "a key must be a plain name, got " + shown(*badKey) + " (a list, mapping or empty key)");
       return std::nullopt;
     }
     if (docs.empty() || !docs[0].IsMap()) {

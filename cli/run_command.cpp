@@ -29,7 +29,6 @@ int runCommand(const RunArgs& a) {
     for (const auto& e : d.all()) std::fprintf(stderr, "%s\n", models::format(e).c_str());
     if (d.hasErrors()) return kInvalidInput;
   }
-  if (!prepareOutputFolder(a.outdir)) return kInvalidInput;
   run::RunOptions opt;
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
@@ -60,6 +59,7 @@ int runCommand(const RunArgs& a) {
                  al.kind == "over_mbl" ? "passed its minimum breaking load, tension [N]" : "crossed its threshold, value",
                  al.worst);
   };
+  if (!prepareOutputFolder(a.outdir)) return kInvalidInput;
   std::unique_ptr<devs::Coupled> root;
   try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
     root = scene::assemble(*scene);

@@ -58,3 +58,16 @@ TEST_CASE("a YAML alias bomb is refused at once, not expanded") {
   CHECK_THAT(errors(dir.write("bomb.yaml", bomb)),
              Catch::Contains("expands to more than 1000000 nodes"));
 }
+
+TEST_CASE("a mapping key that is not a plain name is refused at its place") {
+  testing::SceneDir dir;
+  // (fuzzer finding) a list or an empty key reached the readers' key checks and threw there
+  CHECK_THAT(errors(dir.write("list_key.yaml", "schema_version: 1\nparams:\n  ? [a, b]\n  : 1\n")),
+             Catch::Contains("list_key.yaml:3:5") &&
+                 Catch::Contains("a key must be a plain name, got a list"));
+  CHECK_THAT(errors(dir.write("null_key.yaml", "schema_version: 1\n~: 2\n")),
+             Catch::Contains("null_key.yaml:2:1") && Catch::Contains("a key must be a plain name"));
+  models::Diagnostics d;
+  CHECK(scene::readYamlFile(dir.write("plain.yaml", "schema_version: 1\n1: 2\ntrue: 3\n"), {}, "",
+                            d));
+}

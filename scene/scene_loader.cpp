@@ -7,6 +7,7 @@
 
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
+#include "scene/loop_gap_check.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/provider_readers.hpp"
 #include "scene/resource_limits.hpp"
@@ -466,6 +467,7 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors())
     checkResourceLimits(*scene, scene->until, "", r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkInitialLoops(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) r.scene = std::move(scene);
   return r;

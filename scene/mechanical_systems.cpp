@@ -6,11 +6,12 @@
 #include <map>
 #include <set>
 
-#include "scene/mechanics_reader.hpp"
-#include "mechanics/build.hpp"
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rotation.hpp"
+#include "mechanics/build.hpp"
+#include "scene/mechanics_reader.hpp"
 #include "scene/provider_readers.hpp"
+#include "scene/spec_reader.hpp"
 #include "scene/yaml_source.hpp"
 
 namespace yardsim::scene {
@@ -394,13 +395,39 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& c : all.currentLoads) on(c.body)->spec.currentLoads.push_back(c);
   for (const auto& d : all.dampers) on(d.body)->spec.dampers.push_back(d);
 
+  // (message naming "body 'x'") => where that body's added_mass (or else its first value) is
+  // written, and its key path; the root otherwise
+  auto bodyPlace = [&](const std::string& message) -> std::pair<SourceMark, std::string> {
+    const auto at = message.find("body '");
+    const auto end = at == std::string::npos ? at : message.find('\'', at + 6);
+    if (end != std::string::npos) {
+      const std::string full = message.substr(at + 6, end - at - 6);
+      for (const auto& f : fragments)
+        for (const auto& b : f.spec.bodies) {
+          const YAML::Node& m = f.owner->mechanics;
+          if (prefixed(f.owner->path, b.name) != full || !m.IsMap() || !m["bodies"] ||
+              !m["bodies"][b.name])
+            continue;
+          const YAML::Node body = m["bodies"][b.name];
+          const bool am = message.find("added mass") != std::string::npos && body["added_mass"];
+          const YAML::Node n = spec::Reader::marked(am ? body["added_mass"] : body);
+          const std::string key =
+              joinKey(f.owner->keyPath, "mechanics.bodies." + b.name + (am ? ".added_mass" : ""));
+          if (n.IsDefined() && !n.Mark().is_null())
+            return {{f.owner->mechanicsWhere.file, n.Mark().line + 1, n.Mark().column + 1}, key};
+          return {f.owner->mechanicsWhere, key};
+        }
+    }
+    return {scene.root.where, "mechanics"};
+  };
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {
     try {
       // (spec) => built once, with the kernel's own checks (inertia, tree) naming the body
       s->built = std::make_shared<const mechanics::BuiltMechanics>(buildMechanics(s->spec));
     } catch (const std::exception& e) {
-      diags.error(scene.root.where, "mechanics", std::string("mechanical system '") + s->name + "': " + e.what());
+      const auto [where, key] = bodyPlace(e.what());
+      diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());
     }
     if (scene.root.child(s->name))
       diags.error(scene.root.where, "components." + s->name,

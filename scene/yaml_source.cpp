@@ -1,5 +1,8 @@
 #include "scene/yaml_source.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -7,10 +10,50 @@
 namespace yardsim::scene {
 
 using models::Diagnostics;
-using models::SourceMark;
 using models::didYouMean;
+using models::SourceMark;
 
 namespace {
+// Counts a stream's documents and stops at the start of the second (the exception ends the parse).
+class SecondDocument final : public YAML::EventHandler {
+ public:
+  struct Found {
+    YAML::Mark mark;
+  };
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ == 2) throw Found{mark};
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  int documents_ = 0;
+};
+
+// (YAML text) => where its second document starts, or nullopt when it has one (or none);
+// throws YAML::ParserException on a syntax error before that
+std::optional<YAML::Mark> secondDocument(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  SecondDocument counter;
+  try {
+    while (parser.HandleNextDocument(counter)) {
+    }
+  } catch (const SecondDocument::Found& f) {
+    return f.mark;
+  }
+  return std::nullopt;
+}
+
 // (node, budget) => the budget left after counting the node and everything below it, as aliases
 // expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes); the first
 // mapping key that is not a plain scalar (`? [a, b]: 1`, `~: 1`) in *badKey
@@ -29,20 +72,23 @@ std::size_t countNodes(const YAML::Node& n, std::size_t budget, std::optional<YA
 }  // namespace
 
 std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const SourceMark& from,
-                                       const std::string& keyPath, Diagnostics& diags, std::string* text) {
+                                       const std::string& keyPath, Diagnostics& diags,
+                                       std::string* text) {
   const SourceMark at = from.file.empty() ? SourceMark{file.string()} : from;
   // (path) => a regular file below the size limit (a device or a FIFO would never end)
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     diags.error(at, keyPath,
-                std::filesystem::exists(file, ec) ? "'" + file.string() + "' is not a regular file"
-                                                  : "cannot read scene file '" + file.string() + "'");
+                std::filesystem::exists(file, ec)
+                    ? "'" + file.string() + "' is not a regular file"
+                    : "cannot read scene file '" + file.string() + "'");
     return std::nullopt;
   }
   if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxSceneFileBytes) {
     diags.error(at, keyPath,
-                "'" + file.string() + "' has " + std::to_string(size) + " bytes; a scene file has at most " +
-                    std::to_string(kMaxSceneFileBytes) + " (meshes belong in mesh files)");
+                "'" + file.string() + "' has " + std::to_string(size) +
+                    " bytes; a scene file has at most " + std::to_string(kMaxSceneFileBytes) +
+                    " (meshes belong in mesh files)");
     return std::nullopt;
   }
   std::ifstream in(file, std::ios::binary);
@@ -54,13 +100,23 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
   ss << in.rdbuf();
   if (text) *text = ss.str();
   try {
-    const std::vector<YAML::Node> docs = YAML::LoadAll(ss.str());
-    if (docs.size() > 1) {
-      diags.error(markOf(docs[1], file.string()), "",
-                  "a scene file holds one YAML document; a second one starts here (remove the '---' line, "
-                  "or move it to its own file)");
+    // (text) => the start of a second document, if any, found without reading further (a stray
+    // ',' before the first node makes yaml-cpp's LoadAll produce empty documents without end)
+    if (const auto second = secondDocument(ss.str())) {
+      const std::string& t = ss.str();
+      const std::size_t pos =
+          std::min<std::size_t>(static_cast<std::size_t>(std::max(second->pos, 0)), t.size());
+      diags.error({file.string(), second->line + 1, second->column + 1}, "",
+                  t.compare(pos, 3, "---") == 0 ? "a scene file holds one YAML document; a second "
+                                                  "one starts here (remove the '---' line, "
+                                                  "or move it to its own file)"
+                                                : "YAML syntax error: '" + t.substr(pos, 1) +
+                                                      "' outside any mapping or list");
       return std::nullopt;
     }
+    std::vector<YAML::Node> docs;
+    if (const YAML::Node doc = YAML::Load(ss.str()); doc.IsDefined() && !doc.IsNull())
+      docs.push_back(doc);
     std::optional<YAML::Node> badKey;
     if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes, &badKey) == 0) {
       diags.error({file.string(), 1, 1}, "",
@@ -80,7 +136,8 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
     }
     return docs[0];
   } catch (const YAML::ParserException& e) {
-    diags.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "", "YAML syntax error: " + e.msg);
+    diags.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "",
+                "YAML syntax error: " + e.msg);
     return std::nullopt;
   }
 }

@@ -4,6 +4,7 @@
 #include "scene/yaml_source.hpp"
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 
 #include "scene/scene_loader.hpp"
@@ -23,7 +24,8 @@ TEST_CASE("a scene file is one YAML document, a mapping, in a regular file of at
   testing::SceneDir dir;
   CHECK_THAT(errors("/dev/zero"), Catch::Contains("'/dev/zero' is not a regular file"));
   CHECK_THAT(errors(dir.write("two.yaml", "schema_version: 1\n---\nfoo: 1\n")),
-             Catch::Contains("two.yaml:3:1") && Catch::Contains("a second one starts here"));
+             Catch::Contains("two.yaml:2:1") &&
+                 Catch::Contains("a second one starts here"));  // at the '---' line
   CHECK_THAT(errors(dir.write("list.yaml", "- 1\n- 2\n")), Catch::Contains("must be a mapping"));
   CHECK_THAT(errors(dir.path() / "missing.yaml"), Catch::Contains("cannot read scene file"));
   {
@@ -70,4 +72,15 @@ TEST_CASE("a mapping key that is not a plain name is refused at its place") {
   models::Diagnostics d;
   CHECK(scene::readYamlFile(dir.write("plain.yaml", "schema_version: 1\n1: 2\ntrue: 3\n"), {}, "",
                             d));
+}
+
+TEST_CASE("a stray comma before the first node is a located syntax error and does not hang") {
+  // (fuzzer finding, scene_loader_fuzz timeout) yaml-cpp's LoadAll read this as empty documents
+  // without end, taking all the memory; the loader now stops at the second document
+  testing::SceneDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THAT(errors(dir.write("comma.yaml", "# a comment\n, (x)\nschema_version: 1\n")),
+             Catch::Contains("comma.yaml:2:1") &&
+                 Catch::Contains("YAML syntax error: ',' outside any mapping or list"));
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
 }

@@ -54,20 +54,32 @@ std::optional<YAML::Mark> secondDocument(const std::string& text) {
   return std::nullopt;
 }
 
-// (node, budget) => the budget left after counting the node and everything below it, as aliases
-// expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes); the first
-// mapping key that is not a plain scalar (`? [a, b]: 1`, `~: 1`) in *badKey
-std::size_t countNodes(const YAML::Node& n, std::size_t budget, std::optional<YAML::Node>* badKey) {
-  if (budget == 0) return 0;
-  --budget;
+// What one walk over a document found: the nodes left of the budget, the first mapping key that
+// is not a plain scalar (`? [a, b]: 1`, `~: 1`), and whether it nests too deep.
+struct Walk {
+  std::size_t budget = kMaxSceneNodes;
+  std::optional<YAML::Node> badKey;
+  bool tooDeep = false;
+};
+
+// (node, its depth) => counted into the walk as aliases expand it; stops when the budget is
+// spent (an alias bomb of a few lines expands to billions of nodes) or below kMaxSceneDepth (an
+// alias inside its own anchor, `a: &a [*a]`, is a node that contains itself)
+void walk(const YAML::Node& n, Walk& w, int depth) {
+  if (w.budget == 0) return;
+  if (depth > kMaxSceneDepth) {
+    w.tooDeep = true;
+    w.budget = 0;
+    return;
+  }
+  --w.budget;
   if (n.IsSequence())
-    for (const auto& e : n) budget = countNodes(e, budget, badKey);
+    for (const auto& e : n) walk(e, w, depth + 1);
   else if (n.IsMap())
-    for (auto it = n.begin(); it != n.end() && budget > 0; ++it) {
-      if (!it->first.IsScalar() && !*badKey) badKey->emplace(it->first);
-      budget = countNodes(it->second, budget, badKey);
+    for (auto it = n.begin(); it != n.end() && w.budget > 0; ++it) {
+      if (!it->first.IsScalar() && !w.badKey) w.badKey.emplace(it->first);
+      walk(it->second, w, depth + 1);
     }
-  return budget;
 }
 }  // namespace
 
@@ -117,17 +129,25 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
     std::vector<YAML::Node> docs;
     if (const YAML::Node doc = YAML::Load(ss.str()); doc.IsDefined() && !doc.IsNull())
       docs.push_back(doc);
-    std::optional<YAML::Node> badKey;
-    if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes, &badKey) == 0) {
+    Walk w;
+    if (!docs.empty()) walk(docs[0], w, 0);
+    if (w.tooDeep) {
+      diags.error({file.string(), 1, 1}, "",
+                  "the document nests deeper than " + std::to_string(kMaxSceneDepth) +
+                      " levels (a YAML alias inside its own anchor, such as a: &a [*a]?); a scene "
+                      "is far flatter");
+      return std::nullopt;
+    }
+    if (w.budget == 0) {
       diags.error({file.string(), 1, 1}, "",
                   "the document expands to more than " + std::to_string(kMaxSceneNodes) +
                       " nodes (YAML aliases repeated into each other?); a scene is far smaller");
       return std::nullopt;
     }
-    if (badKey) {
-      diags.error(
-          markOf(*badKey, file.string()), "",
-          "a key must be a plain name, got " + shown(*badKey) + " (a list, mapping or empty key)");
+    if (w.badKey) {
+      diags.error(markOf(*w.badKey, file.string()), "",
+                  "a key must be a plain name, got " + shown(*w.badKey) +
+                      " (a list, mapping or empty key)");
       return std::nullopt;
     }
     if (docs.empty() || !docs[0].IsMap()) {

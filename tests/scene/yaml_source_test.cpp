@@ -84,3 +84,16 @@ TEST_CASE("a stray comma before the first node is a located syntax error and doe
                  Catch::Contains("YAML syntax error: ',' outside any mapping or list"));
   CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
 }
+
+TEST_CASE("an alias inside its own anchor is refused and does not overflow the stack") {
+  // (fuzzer finding, scene_loader_fuzz stack overflow) a: &a [x, *a] is a node that contains
+  // itself; counting its nodes recursed without end
+  testing::SceneDir dir;
+  CHECK_THAT(errors(dir.write("self.yaml", "schema_version: 1\na: &a [x, *a, *a]\n")),
+             Catch::Contains("self.yaml:1:1") && Catch::Contains("nests deeper than 64 levels"));
+  // 60 levels of lists are still a document (a scene nests a dozen)
+  models::Diagnostics d;
+  CHECK(scene::readYamlFile(dir.write("deep.yaml", "schema_version: 1\na: " + std::string(60, '[') +
+                                                       std::string(60, ']') + "\n"),
+                            {}, "", d));
+}

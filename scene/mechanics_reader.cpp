@@ -354,8 +354,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       if (er.required(n, "sheave", k, "{body, point: [x, y, z]}"))
         eq.sheave = point(er, n["sheave"], k + ".sheave");
       const YAML::Node br = n["branches"];
-      if (!br.IsSequence() || br.size() < 2) {
-        er.fail(br, k + ".branches", "expected a list of at least 2 branches, each a list of points");
+      if (!br || !br.IsSequence() || br.size() < 2) {
+        er.fail(br ? br : n, k + ".branches",
+                "expected a list of at least 2 branches, each a list of points");
       } else {
         for (std::size_t j = 0; j < br.size(); ++j)
           eq.branches.push_back(points(er, br[j], k + ".branches[" + std::to_string(j) + "]", 1));
@@ -386,8 +387,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
         ldr.fail(n["frame"], l.name + ".frame", "expected world or body, got '" + frame + "'");
       l.bodyFrame = frame == "body";
       const YAML::Node series = n["series"];
-      if (!series.IsSequence() || series.size() == 0) {
-        ldr.fail(series, l.name + ".series", "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
+      if (!series || !series.IsSequence() || series.size() == 0) {
+        ldr.fail(series ? series : n, l.name + ".series",
+                 "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
         continue;
       }
       double last = -std::numeric_limits<double>::infinity();

@@ -63,7 +63,7 @@ struct Reader {
   }
   bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
             const std::string& key) const {
-    if (!map.IsMap()) {
+    if (!map || !map.IsMap()) {
       fail(map, key, "expected a mapping");
       return false;
     }
@@ -93,7 +93,7 @@ struct Reader {
   }
   std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t size) const {
     std::vector<double> out;
-    if (!n.IsSequence() || (size && n.size() != size)) {
+    if (!n || !n.IsSequence() || (size && n.size() != size)) {
       fail(n, key, "expected a list of " + (size ? std::to_string(size) + " " : std::string()) + "numbers");
       return std::vector<double>(size, 0.0);
     }

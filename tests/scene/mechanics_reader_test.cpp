@@ -184,3 +184,21 @@ TEST_CASE(
     CHECK(d.where.column > 0);
   }
 }
+
+TEST_CASE("a load without series and an equalizer without branches are located errors") {
+  // (fuzzer finding, scene_loader_fuzz) a missing list read as a list threw yaml-cpp's InvalidNode
+  testing::SceneDir dir;
+  const std::string ok =
+      "        a:\n          parent: world\n          joint: {type: free}\n          mass: 1\n"
+      "          inertia: [1, 1, 1]\n";
+  for (const auto& [extra, key] : std::vector<std::pair<std::string, std::string>>{
+           {"      loads:\n        push: {body: a}\n", "components.m.params.loads.push.series"},
+           {"      equalizers:\n        eq: {sheave: {body: a}, EA: 1.0e6, L0: 1}\n",
+            "components.m.params.equalizers.eq.branches"}}) {
+    const auto r = load(dir, ok + extra);
+    INFO(r.diagnostics.report());
+    REQUIRE(r.diagnostics.errorCount() == 1);
+    CHECK(r.diagnostics.all().front().keyPath == key);
+    CHECK(r.diagnostics.all().front().where.line == 14);
+  }
+}

@@ -68,7 +68,9 @@ class Loader {
     scene->sha256 = sha256Hex(text);
     scene->root.name = file.stem().string();
     scene->root.where = {file.string(), 1, 1};
-    stack_.push_back(fs::weakly_canonical(file));
+    std::error_code ec;
+    const fs::path canon = fs::weakly_canonical(file, ec);
+    stack_.push_back(ec ? file : canon);
     Scope scope;
     fileBody(scene->root, doc, file, scope, overrides, true);
     readRunSettings(*scene, doc, file.string(), d_);
@@ -218,7 +220,14 @@ class Loader {
       return false;
     }
     const fs::path file = dir / inc.Scalar();
-    const fs::path canon = fs::weakly_canonical(file);
+    std::error_code
+        ec;  // (a name too long for the file system, ...) => refused where it is written
+    const fs::path canon = fs::weakly_canonical(file, ec);
+    if (ec) {
+      d_.error(markOf(inc, f), joinKey(kp, "include"),
+               "cannot read '" + inc.Scalar() + "': " + ec.message());
+      return false;
+    }
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] != canon) continue;
       std::string chain;

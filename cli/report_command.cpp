@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "cli/exit_codes.hpp"
@@ -19,8 +20,14 @@ int reportCommand(const std::string& outdir, bool quiet) {
                  outdir.c_str());
     return kInvalidInput;
   }
-  output::writeReport(outdir);
-  if (!quiet) logger("cli")->info("report: {}", (std::filesystem::path(outdir) / "report.html").string());
+  try {  // (the run's files) => the page; a damaged file is the user's input, named with its line
+    output::writeReport(outdir);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "report: %s\n", e.what());
+    return kInvalidInput;
+  }
+  if (!quiet)
+    logger("cli")->info("report: {}", (std::filesystem::path(outdir) / "report.html").string());
   return kOk;
 }
 

@@ -16,6 +16,7 @@
 #include "run/profile.hpp"
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
+#include "scene/resource_limits.hpp"
 
 namespace yardsim::cli {
 
@@ -23,6 +24,13 @@ int runCommand(const RunArgs& a) {
   run::PhaseTimes phases;
   auto scene = loadAndReport(a.scene, &phases);
   if (!scene) return kInvalidInput;
+  // (--until) => the run's ceilings checked again for the end time given on the command line
+  if (a.until >= 0) {
+    models::Diagnostics d;
+    scene::checkResourceLimits(*scene, a.until, "--until", d);
+    for (const auto& e : d.all()) std::fprintf(stderr, "%s\n", models::format(e).c_str());
+    if (d.hasErrors()) return kInvalidInput;
+  }
   run::RunOptions opt;
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
@@ -57,6 +65,7 @@ int runCommand(const RunArgs& a) {
                                                : "crossed its threshold, value",
                  al.worst);
   };
+  if (!prepareOutputFolder(a.outdir)) return kInvalidInput;
   std::unique_ptr<devs::Coupled> root;
   try {  // (scene) => its models; the initial state can fail numerically (no static equilibrium)
     const run::Stopwatch building;

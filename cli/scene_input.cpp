@@ -1,6 +1,8 @@
 #include "cli/scene_input.hpp"
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include "scene/scene_loader.hpp"
 
@@ -18,6 +20,27 @@ std::unique_ptr<scene::Scene> loadAndReport(const std::string& file, run::PhaseT
     std::fprintf(stderr, "%s: %zu error(s); nothing was simulated\n", file.c_str(),
                  r.diagnostics.errorCount());
   return std::move(r.scene);
+}
+
+bool prepareOutputFolder(const std::string& outdir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (outdir.empty()) {
+    std::fprintf(stderr, "-o: expected an output folder, got an empty name\n");
+    return false;
+  }
+  fs::create_directories(outdir, ec);
+  if (ec || !fs::is_directory(outdir)) {
+    std::fprintf(stderr, "-o: cannot create the output folder '%s': %s\n", outdir.c_str(),
+                 ec ? ec.message().c_str() : "a file of that name is in the way");
+    return false;
+  }
+  const fs::path probe = fs::path(outdir) / ".yardsim_write_test";
+  const bool writable = static_cast<bool>(std::ofstream(probe));
+  fs::remove(probe, ec);
+  if (!writable)
+    std::fprintf(stderr, "-o: cannot write into the output folder '%s'\n", outdir.c_str());
+  return writable;
 }
 
 }  // namespace yardsim::cli

@@ -12,4 +12,8 @@ namespace yardsim::cli {
 std::unique_ptr<scene::Scene> loadAndReport(const std::string& file,
                                             run::PhaseTimes* times = nullptr);
 
+// (output folder) => created if need be and checked writable (a file is created and removed in
+// it); false once the reason is printed to stderr (the caller exits with status 1)
+bool prepareOutputFolder(const std::string& outdir);
+
 }  // namespace yardsim::cli

@@ -16,6 +16,7 @@ int wpCommand(const WpArgs& a) {
   if (a.repeats > 0) spec.repeats = a.repeats;
   for (const auto& d : diags.all()) std::fprintf(stderr, "%s\n", models::format(d).c_str());
   if (diags.hasErrors()) return kInvalidInput;
+  if (!prepareOutputFolder(a.outdir)) return kInvalidInput;
   try {
     const auto log = [&](const std::string& line) {
       if (!a.quiet) std::fprintf(stderr, "wp: %s\n", line.c_str());

@@ -16,6 +16,17 @@ if(YARDSIM_SANITIZE)
   target_link_options(yardsim_flags INTERFACE
     $<BUILD_INTERFACE:-fsanitize=address,undefined>)
 endif()
+if(YARDSIM_FUZZ)
+  # every library instrumented for libFuzzer's coverage and the sanitizers; the fuzz targets
+  # add -fsanitize=fuzzer (tests/fuzz/CMakeLists.txt)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "YARDSIM_FUZZ needs clang (libFuzzer): -DCMAKE_CXX_COMPILER=clang++-14")
+  endif()
+  target_compile_options(yardsim_flags INTERFACE
+    $<BUILD_INTERFACE:-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+      -fno-sanitize-recover=all>)
+  target_link_options(yardsim_flags INTERFACE $<BUILD_INTERFACE:-fsanitize=address,undefined>)
+endif()
 install(TARGETS yardsim_flags EXPORT yardsimTargets)
 
 # yardsim_layer(NAME SOURCES... [DEPENDS targets...])

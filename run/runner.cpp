@@ -216,7 +216,17 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       const double next = std::min(recordAt, checkpointAt);
       std::size_t steps = 0;
       while (sim.nextEventTime() <= next) {
-        sim.step();
+        try {
+          sim.step();
+        } catch (const devs::SimulationError&) {
+          // (a model that failed at the record time) => its last valid state, committed at that
+          // time before the step that failed (dtss/atomic.hpp: look-ahead), is the last row
+          if (recorder && next == recordAt && sim.time() == next) {
+            recorder->sample(next);
+            reached = next;
+          }
+          throw;
+        }
         if (++steps % 64 == 0) report(sim.time());
       }
       if (std::isinf(next)) break;  // until no event is left

@@ -77,8 +77,9 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
     if (!(b.addedMassRho > 0.0)) r.fail(n["rho"], key + ".rho", "expected a water density > 0, kg/m^3");
   }
   const YAML::Node h = n["hull"];
-  if (!h.IsScalar()) {
-    r.fail(h, key + ".hull", "expected the path of a closed hull mesh (.obj or .stl) in the body frame");
+  if (!h || !h.IsScalar()) {
+    r.fail(h ? h : n, key + ".hull",
+           "expected the path of a closed hull mesh (.obj or .stl) in the body frame");
     return;
   }
   std::filesystem::path path(h.Scalar());

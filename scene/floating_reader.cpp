@@ -206,7 +206,8 @@ void hulls(const Reader& r, const YAML::Node& n, const std::string& file, const 
     body(r, m, h.name, bodies, h.body);
     const dynamics::Transform X = r.pose(m["placement"], h.name + ".placement");
     const double scale = r.number(m["scale"], h.name + ".scale", 1.0);
-    if (!(scale > 0)) r.fail(m["scale"], h.name + ".scale", "the scale must be > 0");
+    const bool scaleOk = scale >= 1e-3 && scale <= 1e3;  // mm to km: a scale of 1e200 is a typo
+    if (!scaleOk) r.fail(m["scale"], h.name + ".scale", "the scale must be from 0.001 to 1000");
     if (!m["mesh"] || !m["mesh"].IsScalar()) {
       r.fail(m, h.name, "missing required key 'mesh' (an OBJ or STL file, relative to this YAML file)");
       continue;
@@ -214,7 +215,7 @@ void hulls(const Reader& r, const YAML::Node& n, const std::string& file, const 
     const std::filesystem::path path = dir / m["mesh"].Scalar();
     try {
       h.mesh = std::make_shared<const forces::TriangleMesh>(
-          forces::transformed(forces::readClosedMesh(path.lexically_normal().string()), X, scale > 0 ? scale : 1.0));
+          forces::transformed(forces::readClosedMesh(path.lexically_normal().string()), X, scaleOk ? scale : 1.0));
     } catch (const forces::MeshError& e) {
       r.fail(m["mesh"], h.name + ".mesh", e.what());
       continue;

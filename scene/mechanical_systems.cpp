@@ -12,7 +12,10 @@
 #include "mechanics/system.hpp"
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rotation.hpp"
+#include "mechanics/build.hpp"
+#include "scene/mechanics_reader.hpp"
 #include "scene/provider_readers.hpp"
+#include "scene/spec_reader.hpp"
 #include "scene/yaml_source.hpp"
 
 namespace yardsim::scene {
@@ -46,6 +49,34 @@ struct Fragment {
   Transform X_WP;  // the instance's accumulated placement
   MechanicsSpec spec;
 };
+
+// (node, text) => the first scalar below the node (itself included) that reads the text, or an
+// undefined node
+YAML::Node findScalar(const YAML::Node& n, const std::string& text) {
+  if (n.IsScalar()) return n.Scalar() == text ? n : YAML::Node(YAML::NodeType::Undefined);
+  if (n.IsSequence())
+    for (const auto& e : n)
+      if (YAML::Node hit = findScalar(e, text); hit.IsDefined()) return hit;
+  if (n.IsMap())
+    for (auto it = n.begin(); it != n.end(); ++it)
+      if (YAML::Node hit = findScalar(it->second, text); hit.IsDefined()) return hit;
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
+// (fragment, section, element, name it gives) => where the fragment writes that name inside
+// mechanics.<section>.<element> (the offending value), or the mechanics block when not found
+SourceMark placeOf(const Fragment& f, const std::string& section, const std::string& element,
+                   const std::string& value) {
+  const YAML::Node& m = f.owner->mechanics;
+  SourceMark where = f.owner->mechanicsWhere;
+  if (!m.IsMap() || !m[section] || !m[section].IsMap() || !m[section][element]) return where;
+  const YAML::Node hit = findScalar(m[section][element], value);
+  if (hit.IsDefined() && !hit.Mark().is_null()) {
+    where.line = hit.Mark().line + 1;
+    where.column = hit.Mark().column + 1;
+  }
+  return where;
+}
 
 // (instance tree, accumulated placement) => every fragment, parsed
 void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>& out,
@@ -161,12 +192,16 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     all.current = r.current;
     all.wind = r.wind;
   }
-  auto resolve = [&](const Fragment& f, const std::string& name, const std::string& what) {
+  // (fragment, body name it writes, what names it, its section and element) => the full name, or
+  // an error at the offending value
+  auto resolve = [&](const Fragment& f, const std::string& name, const std::string& what,
+                     const std::string& section, const std::string& element) {
     const std::string full = resolveName(f.owner->path, name, names);
     if (full.empty()) {
       std::vector<std::string> known = names;
       known.push_back("world");
-      diags.error(f.owner->mechanicsWhere, joinKey(f.owner->keyPath, "mechanics"),
+      diags.error(placeOf(f, section, element, name),
+                  joinKey(f.owner->keyPath, "mechanics." + section + "." + element),
                   what + " names unknown body '" + name + "'", didYouMean(name, known));
     }
     return full.empty() ? std::string("world") : full;
@@ -177,59 +212,71 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& f : fragments) {
     const std::string& path = f.owner->path;
     for (auto b : f.spec.bodies) {
+      const std::string own = b.name;
       b.name = prefixed(path, b.name);
       b.jointName = prefixed(path, b.jointName);
-      b.parent = resolve(f, b.parent, "body '" + b.name + "'");
+      b.parent = resolve(f, b.parent, "body '" + b.name + "'", "bodies", own);
       if (b.parent == "world") b.X_PJ = f.X_WP * b.X_PJ;
       all.bodies.push_back(std::move(b));
     }
     for (auto r : f.spec.ropes) {
+      const std::string own = r.name;
       r.name = prefixed(path, r.name);
       for (auto& [body, p] : r.path) {
-        body = resolve(f, body, "rope '" + r.name + "'");
+        body = resolve(f, body, "rope '" + r.name + "'", "ropes", own);
         p = place(f, body, p);
       }
       all.ropes.push_back(std::move(r));
     }
     for (auto e : f.spec.equalizers) {
+      const std::string own = e.name;
       e.name = prefixed(path, e.name);
-      e.sheave.first = resolve(f, e.sheave.first, "equalizer '" + e.name + "'");
+      e.sheave.first = resolve(f, e.sheave.first, "equalizer '" + e.name + "'", "equalizers", own);
       e.sheave.second = place(f, e.sheave.first, e.sheave.second);
       for (auto& branch : e.branches)
         for (auto& [body, p] : branch) {
-          body = resolve(f, body, "equalizer '" + e.name + "'");
+          body = resolve(f, body, "equalizer '" + e.name + "'", "equalizers", own);
           p = place(f, body, p);
         }
       all.equalizers.push_back(std::move(e));
     }
     for (auto l : f.spec.loads) {
+      const std::string own = l.name;
       l.name = prefixed(path, l.name);
-      l.body = resolve(f, l.body, "load '" + l.name + "'");
+      l.body = resolve(f, l.body, "load '" + l.name + "'", "loads", own);
       all.loads.push_back(std::move(l));
     }
     // (floating providers) => full names, bodies resolved
-    auto provider = [&](auto p, const char* what) {
+    auto provider = [&](auto p, const char* what, const char* section) {
+      const std::string own = p.name;
       p.name = prefixed(path, p.name);
-      p.body = resolve(f, p.body, std::string(what) + " '" + p.name + "'");
+      p.body = resolve(f, p.body, std::string(what) + " '" + p.name + "'", section, own);
       return p;
     };
-    for (const auto& h : f.spec.hulls) all.hulls.push_back(provider(h, "hydrostatics"));
-    for (const auto& w : f.spec.windLoads) all.windLoads.push_back(provider(w, "wind load"));
-    for (const auto& c : f.spec.currentLoads) all.currentLoads.push_back(provider(c, "current load"));
-    for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping"));
-    for (const auto& h : f.spec.hydrodynamics) all.hydrodynamics.push_back(provider(h, "hydrodynamics"));
-    for (auto c : f.spec.providers) {  // (registered readers' providers) => full names, points placed
+    for (const auto& h : f.spec.hulls)
+      all.hulls.push_back(provider(h, "hydrostatics", "hydrostatics"));
+    for (const auto& w : f.spec.windLoads)
+      all.windLoads.push_back(provider(w, "wind load", "wind_loads"));
+    for (const auto& c : f.spec.currentLoads)
+      all.currentLoads.push_back(provider(c, "current load", "current_loads"));
+    for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping", "damping"));
+    for (const auto& h : f.spec.hydrodynamics)
+      all.hydrodynamics.push_back(provider(h, "hydrodynamics", "hydrodynamics"));
+    for (auto c :
+         f.spec.providers) {  // (registered readers' providers) => full names, points placed
+      const std::string own = c.name;
       c.name = prefixed(path, c.name);
       for (auto& [body, p] : c.attachments) {
-        body = resolve(f, body, c.kind + " '" + c.name + "'");
+        body = resolve(f, body, c.kind + " '" + c.name + "'", c.kind, own);
         p = place(f, body, p);
       }
       all.providers.push_back(std::move(c));
     }
     for (auto l : f.spec.loops) {
+      const std::string own = l.name;
       l.name = prefixed(path, l.name);
-      l.bodyA = resolve(f, l.bodyA, "loop '" + l.name + "'");
-      l.bodyB = resolve(f, l.bodyB, "loop '" + l.name + "'");
+      l.bodyA = resolve(f, l.bodyA, "loop '" + l.name + "'", "loops", own);
+      l.bodyB = resolve(f, l.bodyB, "loop '" + l.name + "'", "loops", own);
       if (l.bodyA == "world") l.X_AF = f.X_WP * l.X_AF;
       if (l.bodyB == "world") l.X_BG = f.X_WP * l.X_BG;
       all.loops.push_back(std::move(l));
@@ -246,8 +293,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
         // (names as the fragment would write them) => the suggestion
         std::vector<std::string> seen;
         const std::string own = f.owner->path.empty() ? "" : f.owner->path + ".";
-        for (const auto& e : elements) seen.push_back(!own.empty() && e.starts_with(own) ? e.substr(own.size()) : e);
-        diags.error(f.owner->mechanicsWhere, joinKey(joinKey(f.owner->keyPath, "mechanics"), "watch." + w.name),
+        for (const auto& e : elements)
+          seen.push_back(!own.empty() && e.starts_with(own) ? e.substr(own.size()) : e);
+        diags.error(placeOf(f, "watch", w.name, w.element + "." + w.quantity),
+                    joinKey(joinKey(f.owner->keyPath, "mechanics"), "watch." + w.name + ".channel"),
                     "unknown element '" + w.element + "'", didYouMean(w.element, seen));
         continue;
       }
@@ -354,6 +403,31 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& d : all.dampers) on(d.body)->spec.dampers.push_back(d);
   for (const auto& h : all.hydrodynamics) on(h.body)->spec.hydrodynamics.push_back(h);
 
+  // (message naming "body 'x'") => where that body's added_mass (or else its first value) is
+  // written, and its key path; the root otherwise
+  auto bodyPlace = [&](const std::string& message) -> std::pair<SourceMark, std::string> {
+    const auto at = message.find("body '");
+    const auto end = at == std::string::npos ? at : message.find('\'', at + 6);
+    if (end != std::string::npos) {
+      const std::string full = message.substr(at + 6, end - at - 6);
+      for (const auto& f : fragments)
+        for (const auto& b : f.spec.bodies) {
+          const YAML::Node& m = f.owner->mechanics;
+          if (prefixed(f.owner->path, b.name) != full || !m.IsMap() || !m["bodies"] ||
+              !m["bodies"][b.name])
+            continue;
+          const YAML::Node body = m["bodies"][b.name];
+          const bool am = message.find("added mass") != std::string::npos && body["added_mass"];
+          const YAML::Node n = spec::Reader::marked(am ? body["added_mass"] : body);
+          const std::string key =
+              joinKey(f.owner->keyPath, "mechanics.bodies." + b.name + (am ? ".added_mass" : ""));
+          if (n.IsDefined() && !n.Mark().is_null())
+            return {{f.owner->mechanicsWhere.file, n.Mark().line + 1, n.Mark().column + 1}, key};
+          return {f.owner->mechanicsWhere, key};
+        }
+    }
+    return {scene.root.where, "mechanics"};
+  };
   std::vector<std::shared_ptr<const MechanicalSystem>> out;
   for (auto& s : systems) {
     try {
@@ -365,7 +439,8 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
                       [](const auto& p) { return bool(p.buildFromSystem); }))
         mechanics::System(*s->built, {}, s->name);
     } catch (const std::exception& e) {
-      diags.error(scene.root.where, "mechanics", std::string("mechanical system '") + s->name + "': " + e.what());
+      const auto [where, key] = bodyPlace(e.what());
+      diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());
     }
     if (scene.root.child(s->name))
       diags.error(scene.root.where, "components." + s->name,

@@ -30,14 +30,13 @@ using spec::Reader;
 // (joint mapping) => joint type, axes, initial state
 void joint(const Reader& r, const YAML::Node& n, const std::string& key, MechanicsSpec::Body& b) {
   b.jointName = b.name + "_joint";
-  if (!n) {
-    r.fail(n, key, "missing required key 'joint' ({type: revolute|prismatic|cylindrical|universal|"
-                   "spherical|planar|fixed|free, ...})");
+  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg", "hold"}, key))
     return;
-  }
-  if (!r.keys(n, {"name", "type", "axis", "axis2", "q0", "q0_deg", "v0", "v0_deg", "hold"}, key)) return;
-  if (n["name"]) b.jointName = n["name"].as<std::string>();
-  const std::string type = n["type"] && n["type"].IsScalar() ? n["type"].Scalar() : "";
+  b.jointName = r.text(n["name"], key + ".name", b.jointName);
+  if (!r.required(n, "type", key,
+                  "fixed, revolute, prismatic, cylindrical, universal, spherical, planar or free"))
+    return;
+  const std::string type = r.text(n["type"], key + ".type", "");
   const Vector3 axis = r.vec3(n["axis"], key + ".axis", Vector3::UnitZ());
   const Vector3 axis2 = r.vec3(n["axis2"], key + ".axis2", Vector3::UnitY());
   using dynamics::Joint;
@@ -200,11 +199,16 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     }
     if (!r.keys(n, {"parent", "joint", "placement", "mass", "com", "inertia", "geometry", "added_mass"}, b.name))
       continue;
-    b.parent = n["parent"] && n["parent"].IsScalar() ? n["parent"].Scalar() : "";
-    if (b.parent.empty()) r.fail(n, b.name, "missing required key 'parent' (a body name or world)");
-    joint(r, n["joint"], b.name + ".joint", b);
+    if (r.required(n, "parent", b.name, "a body name or world"))
+      b.parent = r.text(n["parent"], b.name + ".parent", "");
+    if (r.required(
+            n, "joint", b.name,
+            "{type: revolute|prismatic|cylindrical|universal|spherical|planar|fixed|free, ...}"))
+      joint(r, n["joint"], b.name + ".joint", b);
+    else
+      b.jointName = b.name + "_joint";
     b.X_PJ = r.pose(n["placement"], b.name + ".placement");
-    b.mass = r.number(n["mass"], b.name + ".mass", 0.0, true);
+    if (r.required(n, "mass", b.name, "kg")) b.mass = r.number(n["mass"], b.name + ".mass", 0.0);
     if (n["mass"] && !(b.mass > 0)) r.fail(n["mass"], b.name + ".mass", "mass must be > 0 kg");
     b.com = r.vec3(n["com"], b.name + ".com", Vector3::Zero());
     if (const YAML::Node in = n["inertia"]) {
@@ -249,19 +253,30 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       l.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       if (!lr.keys(n, {"body_a", "frame_a", "body_b", "frame_b", "constrain"}, l.name)) continue;
-      l.bodyA = n["body_a"] ? n["body_a"].as<std::string>() : "";
-      l.bodyB = n["body_b"] ? n["body_b"].as<std::string>() : "";
-      for (const auto* bn : {&l.bodyA, &l.bodyB})
-        if (!names.count(*bn)) lr.fail(n, l.name, "unknown body '" + *bn + "' in loop '" + l.name + "'");
+      l.bodyA = lr.text(n["body_a"], l.name + ".body_a", "");
+      l.bodyB = lr.text(n["body_b"], l.name + ".body_b", "");
+      for (const char* end : {"body_a", "body_b"}) {
+        const std::string& bn = end[5] == 'a' ? l.bodyA : l.bodyB;
+        if (!names.count(bn))
+          lr.fail(n[end] ? n[end] : n, l.name + "." + end,
+                  "unknown body '" + bn + "' in loop '" + l.name + "'");
+      }
       l.X_AF = lr.pose(n["frame_a"], l.name + ".frame_a");
       l.X_BG = lr.pose(n["frame_b"], l.name + ".frame_b");
-      const std::string c = n["constrain"] ? n["constrain"].as<std::string>() : "point";
-      if (c == "point") l.mask = dynamics::kPointConstraint;
-      else if (c == "axis") l.mask = dynamics::kAxisConstraint;
-      else if (c == "cylinder") l.mask = dynamics::kCylinderConstraint;
-      else if (c == "weld") l.mask = dynamics::kAxisConstraint | dynamics::kRotZ;
-      else if (c == "planar_point") l.mask = dynamics::kPlanarPointConstraint;  // x, y of frame_a
-      else lr.fail(n["constrain"], l.name + ".constrain", "expected point, axis, cylinder, weld or planar_point, got '" + c + "'");
+      const std::string c = lr.text(n["constrain"], l.name + ".constrain", "point");
+      if (c == "point")
+        l.mask = dynamics::kPointConstraint;
+      else if (c == "axis")
+        l.mask = dynamics::kAxisConstraint;
+      else if (c == "cylinder")
+        l.mask = dynamics::kCylinderConstraint;
+      else if (c == "weld")
+        l.mask = dynamics::kAxisConstraint | dynamics::kRotZ;
+      else if (c == "planar_point")
+        l.mask = dynamics::kPlanarPointConstraint;  // x, y of frame_a
+      else
+        lr.fail(n["constrain"], l.name + ".constrain",
+                "expected point, axis, cylinder, weld or planar_point, got '" + c + "'");
       spec.loops.push_back(std::move(l));
     }
   } else if (loops.IsDefined() && !loops.IsNull()) {
@@ -271,7 +286,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   auto point = [&](const Reader& rd, const YAML::Node& n, const std::string& k) {
     MechanicsSpec::Point out{"world", Vector3::Zero()};
     if (!rd.keys(n, {"body", "point"}, k)) return out;
-    out.first = n["body"] ? n["body"].as<std::string>() : "world";
+    out.first = rd.text(n["body"], k + ".body", "world");
     if (!names.count(out.first)) {
       std::vector<std::string> known(names.begin(), names.end());
       const std::string hint = didYouMean(out.first, known);
@@ -293,8 +308,10 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
   // (EA, L0, damping, min_length, mbl) => the rope material, checked
   auto material = [](const Reader& rd, const YAML::Node& n, const std::string& k) {
     MechanicsSpec::Material m;
-    m.ea = rd.number(n["EA"], k + ".EA", 0.0, true);
-    m.l0 = rd.number(n["L0"], k + ".L0", 0.0, true);
+    if (rd.required(n, "EA", k, "N, the axial stiffness of one part"))
+      m.ea = rd.number(n["EA"], k + ".EA", 0.0);
+    if (rd.required(n, "L0", k, "m, the unstretched length"))
+      m.l0 = rd.number(n["L0"], k + ".L0", 0.0);
     m.damping = rd.number(n["damping"], k + ".damping", 0.0);
     m.minLength = rd.number(n["min_length"], k + ".min_length", 0.01);
     m.mbl = rd.number(n["mbl"], k + ".mbl", 0.0);
@@ -317,7 +334,8 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       auto keys = materialKeys;
       keys.insert(keys.end(), {"path", "parts"});
       if (!rr.keys(n, keys, k)) continue;
-      rope.path = points(rr, n["path"], k + ".path", 2);
+      if (rr.required(n, "path", k, "a list of at least 2 points {body, point: [x, y, z]}"))
+        rope.path = points(rr, n["path"], k + ".path", 2);
       rope.material = material(rr, n, k);
       const double parts = rr.number(n["parts"], k + ".parts", 1.0);
       rope.parts = static_cast<int>(parts);
@@ -340,10 +358,12 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       auto keys = materialKeys;
       keys.insert(keys.end(), {"sheave", "branches"});
       if (!er.keys(n, keys, k)) continue;
-      eq.sheave = point(er, n["sheave"], k + ".sheave");
+      if (er.required(n, "sheave", k, "{body, point: [x, y, z]}"))
+        eq.sheave = point(er, n["sheave"], k + ".sheave");
       const YAML::Node br = n["branches"];
-      if (!br.IsSequence() || br.size() < 2) {
-        er.fail(br, k + ".branches", "expected a list of at least 2 branches, each a list of points");
+      if (!br || !br.IsSequence() || br.size() < 2) {
+        er.fail(br ? br : n, k + ".branches",
+                "expected a list of at least 2 branches, each a list of points");
       } else {
         for (std::size_t j = 0; j < br.size(); ++j)
           eq.branches.push_back(points(er, br[j], k + ".branches[" + std::to_string(j) + "]", 1));
@@ -364,9 +384,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       l.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       if (!ldr.keys(n, {"body", "point", "frame", "series"}, l.name)) continue;
-      l.body = n["body"] && n["body"].IsScalar() ? n["body"].Scalar() : "";
-      if (l.body.empty()) ldr.fail(n, l.name, "missing required key 'body'");
-      else if (!names.count(l.body) || l.body == "world")
+      if (ldr.required(n, "body", l.name, "the body it acts on"))
+        l.body = ldr.text(n["body"], l.name + ".body", "");
+      if (!l.body.empty() && (!names.count(l.body) || l.body == "world"))
         ldr.fail(n["body"], l.name + ".body", "unknown body '" + l.body + "'");
       l.point = ldr.vec3(n["point"], l.name + ".point", Vector3::Zero());
       const std::string frame = n["frame"] && n["frame"].IsScalar() ? n["frame"].Scalar() : "world";
@@ -374,8 +394,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
         ldr.fail(n["frame"], l.name + ".frame", "expected world or body, got '" + frame + "'");
       l.bodyFrame = frame == "body";
       const YAML::Node series = n["series"];
-      if (!series.IsSequence() || series.size() == 0) {
-        ldr.fail(series, l.name + ".series", "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
+      if (!series || !series.IsSequence() || series.size() == 0) {
+        ldr.fail(series ? series : n, l.name + ".series",
+                 "expected a list of rows [t, fx, fy, fz, mx, my, mz] (s, N, N m)");
         continue;
       }
       double last = -std::numeric_limits<double>::infinity();

@@ -1,5 +1,6 @@
 // Registration of the scene type `multibody` (see multibody_model.hpp and docs/multibody_scenes.md).
 #include "scene/mechanics_reader.hpp"
+#include "scene/loop_gap_check.hpp"
 #include "mechanics/build.hpp"
 #include "dynamics/model_builder.hpp"
 #include "models/multibody/multibody_model.hpp"
@@ -140,7 +141,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             return;
           }
           try {
-            buildMechanics(spec);
+            for (const auto& [name, message] : openLoops(buildMechanics(spec))) c.error("loops", message);
           } catch (const dynamics::ModelError& e) {
             c.error("bodies", e.what());
           }

@@ -93,9 +93,10 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
       diags.error(markOf(r, f), "record", "expected {interval: seconds, channels: [globs]}");
     } else {
       checkKeys(r, {"interval", "channels"}, f, "record", diags);
-      if (const YAML::Node i = r["interval"])
+      if (const YAML::Node i = r["interval"]) {
         number(i, "record.interval", s.record.interval, true);
-      else
+        s.record.where = markOf(i, f);
+      } else
         diags.error(markOf(r, f), "record", "missing required key 'interval' (seconds)");
       const YAML::Node ch = r["channels"];
       if (ch && hasKind(ch, ParamKind::StringList))
@@ -107,6 +108,23 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
     }
   }
   if (const YAML::Node r = doc["report"]) reportSettings(s, r, f, diags);
+  // (limits: {steps, rows}) => the ceilings raised (or lowered) by the scene
+  if (const YAML::Node l = doc["limits"]) {
+    if (!l.IsMap()) {
+      diags.error(markOf(l, f), "limits", "expected {steps: N, rows: N} (the ceilings of one run)");
+    } else {
+      checkKeys(l, {"steps", "rows"}, f, "limits", diags);
+      for (auto [key, out] :
+           {std::pair{"steps", &s.limits.steps}, std::pair{"rows", &s.limits.rows}})
+        if (const YAML::Node n = l[key]) {
+          if (!hasKind(n, ParamKind::Number) || !(n.as<double>() >= 1) || !(n.as<double>() <= 1e15))
+            diags.error(markOf(n, f), std::string("limits.") + key,
+                        "expected a number from 1 to 1e15, got " + shown(n));
+          else
+            *out = n.as<double>();
+        }
+    }
+  }
   if (const YAML::Node t = doc["trace"]) {
     if (!hasKind(t, ParamKind::StringList)) {
       diags.error(markOf(t, f), "trace", "expected a list of trace sinks: jsonl, chrome, csv");

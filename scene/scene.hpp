@@ -62,6 +62,15 @@ struct Instance {
 struct RecordSpec {
   double interval = 0.0;              // s; 0: nothing recorded
   std::vector<std::string> channels;  // globs over channel names
+  SourceMark where;                   // record.interval
+};
+
+// Ceilings on one run's cost (scene/resource_limits.hpp); the root key `limits:` raises them.
+inline constexpr double kDefaultMaxSteps = 1e8;  // steps of one fixed-step model
+inline constexpr double kDefaultMaxRows = 1e6;   // rows of timeseries.csv
+struct LimitsSpec {
+  double steps = kDefaultMaxSteps;
+  double rows = kDefaultMaxRows;
 };
 
 // What the HTML report shows (docs/report.md): the recorded channels it plots and the static
@@ -110,6 +119,7 @@ struct Scene {
   std::string stiffnessCheck = "warn";
   SourceMark integratorWhere;  // the `integrator:` block, for diagnostics about the step
   RecordSpec record;
+  LimitsSpec limits;
   ReportSpec report;
   std::vector<std::string> trace;  // sink names from the scene: jsonl, chrome, csv
   Instance root;

@@ -9,8 +9,10 @@
 #include "models/port_types.hpp"
 #include "scene/coupling_graph.hpp"
 #include "scene/integrator_reader.hpp"
+#include "scene/loop_gap_check.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/provider_readers.hpp"
+#include "scene/resource_limits.hpp"
 #include "scene/run_settings_reader.hpp"
 #include "scene/sha256.hpp"
 #include "scene/stiffness_guard.hpp"
@@ -37,11 +39,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kFileKeys{"schema_version", "name",       "description",
-                                         "params",         "inputs",     "outputs",
-                                         "components",     "couplings",  "mechanics"};
+const std::vector<std::string> kFileKeys{"schema_version", "name",      "description",
+                                         "params",         "inputs",    "outputs",
+                                         "components",     "couplings", "mechanics"};
 const std::vector<std::string> kRootKeys{"record",     "report", "until", "seed",
-                                         "integrator", "trace",  "wp",    "database"};
+                                         "integrator", "trace",  "wp",    "limits",
+                                         "database"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type",   "include",   "coupled",    "facility",
@@ -68,7 +71,9 @@ class Loader {
     scene->sha256 = sha256Hex(text);
     scene->root.name = file.stem().string();
     scene->root.where = {file.string(), 1, 1};
-    stack_.push_back(fs::weakly_canonical(file));
+    std::error_code ec;
+    const fs::path canon = fs::weakly_canonical(file, ec);
+    stack_.push_back(ec ? file : canon);
     if (doc.IsMap() && doc["database"]) yard_.open(doc["database"], file, d_);
     Scope scope;
     fileBody(scene->root, doc, file, scope, overrides, true);
@@ -229,7 +234,14 @@ class Loader {
       return false;
     }
     const fs::path file = facility ? facility->modelFile : dir / inc.Scalar();
-    const fs::path canon = fs::weakly_canonical(file);
+    std::error_code
+        ec;  // (a name too long for the file system, ...) => refused where it is written
+    const fs::path canon = fs::weakly_canonical(file, ec);
+    if (ec) {
+      d_.error(markOf(inc, f), joinKey(kp, "include"),
+               "cannot read '" + inc.Scalar() + "': " + ec.message());
+      return false;
+    }
     for (std::size_t i = 0; i < stack_.size(); ++i) {
       if (stack_[i] != canon) continue;
       std::string chain;
@@ -486,6 +498,9 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors())
+    checkResourceLimits(*scene, scene->until, "", r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkInitialLoops(*scene, r.diagnostics);
   r.validationSeconds = since(t0);
   t0 = Clock::now();
   if (scene && !r.diagnostics.hasErrors()) checkStiffness(*scene, r.diagnostics);

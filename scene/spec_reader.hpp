@@ -24,8 +24,30 @@ struct Reader {
   const MechanicsReport& report;
   std::string param;
 
+  // (node, key path, message) => reported at the node; a node that is not there (a missing key
+  // read from a mapping) is reported at the parameter's place
   void fail(const YAML::Node& at, const std::string& key, const std::string& msg) const {
-    report(param, marked(at), key, msg);
+    report(param, at.IsDefined() ? marked(at) : YAML::Node(), key, msg);
+  }
+  // (mapping, key, key path, what it holds) => whether the mapping has the key; if not, a
+  // "missing required key" at the mapping
+  bool required(const YAML::Node& map, const char* name, const std::string& key,
+                const std::string& what) const {
+    if (map.IsMap() && map[name]) return true;
+    fail(map, key, std::string("missing required key '") + name + "' (" + what + ")");
+    return false;
+  }
+  // (node, key path, fallback) => the text of a scalar (a name); a list or mapping is reported
+  std::string text(const YAML::Node& n, const std::string& key, const std::string& fallback) const {
+    if (!n) return fallback;
+    if (!n.IsScalar()) {
+      fail(n, key,
+           "expected a name, got " + std::string(n.IsSequence() ? "a list"
+                                                 : n.IsMap()    ? "a mapping"
+                                                                : "nothing"));
+      return fallback;
+    }
+    return n.Scalar();
   }
   // (node) => itself when it knows its place in the file, else its first element or key that
   // does (collections rebuilt while resolving $references lose their marks)
@@ -41,7 +63,7 @@ struct Reader {
   }
   bool keys(const YAML::Node& map, const std::vector<std::string>& allowed,
             const std::string& key) const {
-    if (!map.IsMap()) {
+    if (!map || !map.IsMap()) {
       fail(map, key, "expected a mapping");
       return false;
     }
@@ -71,7 +93,7 @@ struct Reader {
   }
   std::vector<double> numbers(const YAML::Node& n, const std::string& key, std::size_t size) const {
     std::vector<double> out;
-    if (!n.IsSequence() || (size && n.size() != size)) {
+    if (!n || !n.IsSequence() || (size && n.size() != size)) {
       fail(n, key, "expected a list of " + (size ? std::to_string(size) + " " : std::string()) + "numbers");
       return std::vector<double>(size, 0.0);
     }

@@ -1,5 +1,8 @@
 #include "scene/yaml_source.hpp"
 
+#include <yaml-cpp/eventhandler.h>
+
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -7,38 +10,97 @@
 namespace yardsim::scene {
 
 using models::Diagnostics;
-using models::SourceMark;
 using models::didYouMean;
+using models::SourceMark;
 
 namespace {
-// (node, budget) => the budget left after counting the node and everything below it, as aliases
-// expand it; stops at 0 (an alias bomb of a few lines expands to billions of nodes)
-std::size_t countNodes(const YAML::Node& n, std::size_t budget) {
-  if (budget == 0) return 0;
-  --budget;
+// Counts a stream's documents and stops at the start of the second (the exception ends the parse).
+class SecondDocument final : public YAML::EventHandler {
+ public:
+  struct Found {
+    YAML::Mark mark;
+  };
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++documents_ == 2) throw Found{mark};
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+ private:
+  int documents_ = 0;
+};
+
+// (YAML text) => where its second document starts, or nullopt when it has one (or none);
+// throws YAML::ParserException on a syntax error before that
+std::optional<YAML::Mark> secondDocument(const std::string& text) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  SecondDocument counter;
+  try {
+    while (parser.HandleNextDocument(counter)) {
+    }
+  } catch (const SecondDocument::Found& f) {
+    return f.mark;
+  }
+  return std::nullopt;
+}
+
+// What one walk over a document found: the nodes left of the budget, the first mapping key that
+// is not a plain scalar (`? [a, b]: 1`, `~: 1`), and whether it nests too deep.
+struct Walk {
+  std::size_t budget = kMaxSceneNodes;
+  std::optional<YAML::Node> badKey;
+  bool tooDeep = false;
+};
+
+// (node, its depth) => counted into the walk as aliases expand it; stops when the budget is
+// spent (an alias bomb of a few lines expands to billions of nodes) or below kMaxSceneDepth (an
+// alias inside its own anchor, `a: &a [*a]`, is a node that contains itself)
+void walk(const YAML::Node& n, Walk& w, int depth) {
+  if (w.budget == 0) return;
+  if (depth > kMaxSceneDepth) {
+    w.tooDeep = true;
+    w.budget = 0;
+    return;
+  }
+  --w.budget;
   if (n.IsSequence())
-    for (const auto& e : n) budget = countNodes(e, budget);
+    for (const auto& e : n) walk(e, w, depth + 1);
   else if (n.IsMap())
-    for (auto it = n.begin(); it != n.end() && budget > 0; ++it) budget = countNodes(it->second, budget);
-  return budget;
+    for (auto it = n.begin(); it != n.end() && w.budget > 0; ++it) {
+      if (!it->first.IsScalar() && !w.badKey) w.badKey.emplace(it->first);
+      walk(it->second, w, depth + 1);
+    }
 }
 }  // namespace
 
 std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const SourceMark& from,
-                                       const std::string& keyPath, Diagnostics& diags, std::string* text) {
+                                       const std::string& keyPath, Diagnostics& diags,
+                                       std::string* text) {
   const SourceMark at = from.file.empty() ? SourceMark{file.string()} : from;
   // (path) => a regular file below the size limit (a device or a FIFO would never end)
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
     diags.error(at, keyPath,
-                std::filesystem::exists(file, ec) ? "'" + file.string() + "' is not a regular file"
-                                                  : "cannot read scene file '" + file.string() + "'");
+                std::filesystem::exists(file, ec)
+                    ? "'" + file.string() + "' is not a regular file"
+                    : "cannot read scene file '" + file.string() + "'");
     return std::nullopt;
   }
   if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxSceneFileBytes) {
     diags.error(at, keyPath,
-                "'" + file.string() + "' has " + std::to_string(size) + " bytes; a scene file has at most " +
-                    std::to_string(kMaxSceneFileBytes) + " (meshes belong in mesh files)");
+                "'" + file.string() + "' has " + std::to_string(size) +
+                    " bytes; a scene file has at most " + std::to_string(kMaxSceneFileBytes) +
+                    " (meshes belong in mesh files)");
     return std::nullopt;
   }
   std::ifstream in(file, std::ios::binary);
@@ -50,17 +112,42 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
   ss << in.rdbuf();
   if (text) *text = ss.str();
   try {
-    const std::vector<YAML::Node> docs = YAML::LoadAll(ss.str());
-    if (docs.size() > 1) {
-      diags.error(markOf(docs[1], file.string()), "",
-                  "a scene file holds one YAML document; a second one starts here (remove the '---' line, "
-                  "or move it to its own file)");
+    // (text) => the start of a second document, if any, found without reading further (a stray
+    // ',' before the first node makes yaml-cpp's LoadAll produce empty documents without end)
+    if (const auto second = secondDocument(ss.str())) {
+      const std::string& t = ss.str();
+      const std::size_t pos =
+          std::min<std::size_t>(static_cast<std::size_t>(std::max(second->pos, 0)), t.size());
+      diags.error({file.string(), second->line + 1, second->column + 1}, "",
+                  t.compare(pos, 3, "---") == 0 ? "a scene file holds one YAML document; a second "
+                                                  "one starts here (remove the '---' line, "
+                                                  "or move it to its own file)"
+                                                : "YAML syntax error: '" + t.substr(pos, 1) +
+                                                      "' outside any mapping or list");
       return std::nullopt;
     }
-    if (!docs.empty() && countNodes(docs[0], kMaxSceneNodes) == 0) {
+    std::vector<YAML::Node> docs;
+    if (const YAML::Node doc = YAML::Load(ss.str()); doc.IsDefined() && !doc.IsNull())
+      docs.push_back(doc);
+    Walk w;
+    if (!docs.empty()) walk(docs[0], w, 0);
+    if (w.tooDeep) {
+      diags.error({file.string(), 1, 1}, "",
+                  "the document nests deeper than " + std::to_string(kMaxSceneDepth) +
+                      " levels (a YAML alias inside its own anchor, such as a: &a [*a]?); a scene "
+                      "is far flatter");
+      return std::nullopt;
+    }
+    if (w.budget == 0) {
       diags.error({file.string(), 1, 1}, "",
                   "the document expands to more than " + std::to_string(kMaxSceneNodes) +
                       " nodes (YAML aliases repeated into each other?); a scene is far smaller");
+      return std::nullopt;
+    }
+    if (w.badKey) {
+      diags.error(markOf(*w.badKey, file.string()), "",
+                  "a key must be a plain name, got " + shown(*w.badKey) +
+                      " (a list, mapping or empty key)");
       return std::nullopt;
     }
     if (docs.empty() || !docs[0].IsMap()) {
@@ -69,7 +156,8 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
     }
     return docs[0];
   } catch (const YAML::ParserException& e) {
-    diags.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "", "YAML syntax error: " + e.msg);
+    diags.error({file.string(), e.mark.line + 1, e.mark.column + 1}, "",
+                "YAML syntax error: " + e.msg);
     return std::nullopt;
   }
 }

@@ -21,6 +21,8 @@ using models::SourceMark;
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;
 // ... and expand, with their YAML aliases, to at most this many nodes.
 inline constexpr std::size_t kMaxSceneNodes = 1000000;
+// ... nested at most this deep (a YAML alias inside its own anchor would nest without end)
+inline constexpr int kMaxSceneDepth = 64;
 
 // (file, where it was named from (empty for the root), the key that named it) => its one YAML
 // document, a mapping; or nullopt with the reason (unreadable, not a regular file, too large,

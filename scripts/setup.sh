@@ -14,6 +14,7 @@ packages=(
   chromium  # the report's browser test (tests/report)
   python3-h5py  # the sweep tests' independent HDF5 reader (tests/studies)
   libboost-filesystem1.74-dev libboost-system1.74-dev  # only to configure Pinocchio for bench/peers
+  clang-14 libclang-rt-14-dev  # the CI fuzzer (YARDSIM_FUZZ, tests/fuzz): libFuzzer and the sanitizers' runtimes
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -83,13 +83,50 @@ until: 1000
   CHECK(yardsim::testing::CsvFile(dir.file("out/timeseries.csv")).rows.size() >= 2);
 }
 
-TEST_CASE("yardsim exits 3 when it cannot write its output") {
+TEST_CASE("an output folder that cannot be made or written is a user error (exit 1)") {
   yardsim::testing::SceneDir dir;
   dir.write("file", "not a folder");
   const auto r = runYardsim("run " + kGpt + " -o " + dir.file("file/out") + " --quiet");
   INFO(r.out);
-  CHECK(r.status == 3);
-  CHECK_THAT(r.out, Catch::Contains("internal error"));
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("-o: cannot create the output folder") &&
+                        !Catch::Contains("internal error"));
+  const auto empty = runYardsim("run " + kGpt + " -o '' --quiet");
+  INFO(empty.out);
+  CHECK(empty.status == 1);
+  CHECK_THAT(empty.out, Catch::Contains("-o: expected an output folder"));
+}
+
+TEST_CASE("yardsim report on a damaged timeseries.csv names the file and line (exit 1)") {
+  yardsim::testing::SceneDir dir;
+  REQUIRE(runYardsim("run " + kGpt + " -o " + dir.file("out") + " --quiet").status == 0);
+  std::ifstream in(dir.file("out/timeseries.csv"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const auto header = text.find("time[s]");
+  const auto row = text.find('\n', text.find('\n', header) + 1) + 1;  // the second data row
+  text.replace(row, text.find(',', row) - row, "abc");
+  dir.write("out/timeseries.csv", text);
+  const auto r = runYardsim("report " + dir.file("out"));
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("out/timeseries.csv:") &&
+                        Catch::Contains(": expected a number, got 'abc'") &&
+                        !Catch::Contains("internal error"));
+}
+
+TEST_CASE("--until beyond the step ceiling is refused before the run (exit 1)") {
+  yardsim::testing::SceneDir dir;
+  const auto scene = dir.write("s.yaml",
+                               "schema_version: 1\ncomponents:\n  s: {type: spring_mass, params: "
+                               "{mass: 1, stiffness: 1, x0: 1, dt: 0.01}}\nuntil: 5\n");
+  const auto r =
+      runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --until 1e300 --quiet");
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("s.yaml:3:") && Catch::Contains("components.s.params.dt") &&
+                        Catch::Contains("over --until 1e+300 s"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "out"));  // nothing was simulated
 }
 
 TEST_CASE("yardsim validate --print-resolved lists exactly what will run") {

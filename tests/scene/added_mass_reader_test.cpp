@@ -93,6 +93,30 @@ components:
   CHECK_THAT(r.diagnostics.all()[0].message, Catch::Contains("body 'barge'") && Catch::Contains("dry"));
 }
 
+TEST_CASE("a dry hull in a scene's mechanics is reported at its added_mass, not at 1:1") {
+  testing::SceneDir dir;
+  forces::writeObj(forces::boxMesh(dynamics::Vector3(10, 4, 2), 5, 2, 2), dir.file("pontoon.obj"));
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 5]}}
+      mass: 1000
+      inertia: [100, 200, 300]
+      added_mass: {hull: pontoon.obj}
+until: 1
+)"));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  const auto& d = r.diagnostics.all()[0];
+  CHECK_THAT(d.message, Catch::Contains("body 'barge'") && Catch::Contains("dry"));
+  CHECK(d.keyPath == "mechanics.bodies.barge.added_mass");
+  CHECK(d.where.line == 10);  // the hull's file name
+  CHECK(d.where.column == 26);
+}
+
 TEST_CASE("bad added mass input is refused with its position") {
   testing::SceneDir dir;
   dir.write("open.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

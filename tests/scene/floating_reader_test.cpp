@@ -176,6 +176,17 @@ TEST_CASE("bad floating input is refused at its line with the key path") {
     CHECK(d->where.line == 7);
     CHECK_THAT(d->message, Contains("breaking limit"));
   }
+  SECTION("a hull scale of 1e200: refused at the scale, not at run time") {
+    std::string s = sceneYaml();
+    s.replace(s.find("mesh: meshes/barge.stl"), 22, "mesh: meshes/barge.stl, scale: 1e200");
+    const auto r = scene::loadScene(dir.write("s.yaml", s));
+    INFO(r.diagnostics.report());
+    const auto* d = find(r, "mechanics.hydrostatics.hull.scale");
+    REQUIRE(d);
+    CHECK(d->where.line == 16);
+    CHECK_THAT(d->message, Contains("from 0.001 to 1000"));
+    CHECK(r.diagnostics.errorCount() == 1);
+  }
   SECTION("a provider on an unknown body") {
     std::string s = sceneYaml();
     s.replace(s.find("wind: {body: barge"), 18, "wind: {body: barg");

@@ -109,6 +109,17 @@ TEST_CASE("a fragment naming a body that exists nowhere is refused with a sugges
   REQUIRE_FALSE(r.scene);
   CHECK_THAT(r.diagnostics.report(), Catch::Contains("unknown body 'blok'") &&
                                          Catch::Contains("did you mean 'block'?"));
+  // issue 14: located at the offending value in crane.yaml, not at the first key of mechanics:
+  const std::string crane =
+      std::string(kCrane).replace(std::string(kCrane).find("body: block"), 11, "body: blok");
+  const auto at = crane.find("blok");
+  const auto lineStart = crane.rfind('\n', at) + 1;
+  const auto& d = r.diagnostics.all().front();
+  CHECK(d.where.file.ends_with("crane.yaml"));
+  CHECK(d.where.line == 1 + static_cast<int>(std::count(
+                                crane.begin(), crane.begin() + static_cast<long>(at), '\n')));
+  CHECK(d.where.column == static_cast<int>(at - lineStart) + 1);
+  CHECK_THAT(d.keyPath, Catch::Contains("mechanics.ropes.hoist"));
 }
 
 TEST_CASE("a scene with mechanics needs an integrator step") {
@@ -206,6 +217,14 @@ TEST_CASE("watches and loads in fragments resolve like other names, unknown elem
   REQUIRE_FALSE(bad.scene);
   CHECK_THAT(bad.diagnostics.report(), Catch::Contains("watch.taut") && Catch::Contains("unknown element 'hoits'") &&
                                            Catch::Contains("did you mean 'hoist'?"));
+  // issue 14: at the channel's value in crane.yaml, not at the first key of its mechanics:
+  const auto& d = bad.diagnostics.all().front();
+  const auto at = crane.find("hoits.tension");
+  CHECK(d.where.file.ends_with("crane.yaml"));
+  CHECK(d.where.line == 1 + static_cast<int>(std::count(
+                                crane.begin(), crane.begin() + static_cast<long>(at), '\n')));
+  CHECK(d.where.column == static_cast<int>(at - crane.rfind('\n', at)));
+  CHECK_THAT(d.keyPath, Catch::EndsWith("mechanics.watch.taut.channel"));
 }
 
 TEST_CASE("a placement with roll, pitch and yaw, nested twice, puts a body where the hand computation does") {

@@ -139,3 +139,66 @@ mechanics:
     CHECK(r.diagnostics.report().find(bad.substr(0, bad.find(':'))) != std::string::npos);
   }
 }
+
+TEST_CASE(
+    "missing keys and lists where a name belongs are located errors inside a multibody component") {
+  testing::SceneDir dir;
+  // issue 14: each of these was "internal error: invalid node; first invalid key" (exit 3)
+  struct Case {
+    std::string bodies, keyPath, message;
+    int line;
+  };
+  const std::string ok =
+      "        a:\n          parent: world\n          joint: {type: revolute, axis: [0, 1, 0]}\n"
+      "          mass: 1\n          inertia: [1, 1, 1]\n";
+  const std::vector<Case> cases{
+      {"        a:\n          parent: world\n          joint: {type: revolute}\n          inertia: "
+       "[1, 1, 1]\n",
+       "components.m.params.bodies.a", "missing required key 'mass'", 9},
+      {"        a:\n          parent: world\n          mass: 1\n          inertia: [1, 1, 1]\n",
+       "components.m.params.bodies.a", "missing required key 'joint'", 9},
+      {"        a:\n          parent: world\n          joint: {axis: [0, 1, 0]}\n          mass: "
+       "1\n"
+       "          inertia: [1, 1, 1]\n",
+       "components.m.params.bodies.a.joint", "missing required key 'type'", 10},
+      {"        a:\n          parent: [world]\n          joint: {type: fixed}\n          mass: 1\n"
+       "          inertia: [1, 1, 1]\n",
+       "components.m.params.bodies.a.parent", "expected a name, got a list", 9},
+      {ok + "      ropes:\n        r: {EA: 1.0e6, L0: 1}\n", "components.m.params.ropes.r",
+       "missing required key 'path'", 14},
+      {ok + "      ropes:\n        r: {path: [{point: [0, 0, 1]}, {body: [a], point: [0, 0, 0]}], "
+            "EA: 1.0e6, L0: 1}\n",
+       "components.m.params.ropes.r.path[1].body", "expected a name, got a list", 14},
+      {ok + "      ropes:\n        r: {path: [{point: [0, 0, 1]}, {body: a, point: [0, 0, 0]}], "
+            "L0: 1}\n",
+       "components.m.params.ropes.r", "missing required key 'EA'", 14},
+  };
+  for (const auto& c : cases) {
+    const auto r = load(dir, c.bodies);
+    INFO(c.bodies << r.diagnostics.report());
+    REQUIRE(r.diagnostics.errorCount() == 1);
+    const auto& d = r.diagnostics.all().front();
+    CHECK(d.keyPath == c.keyPath);
+    CHECK_THAT(d.message, Catch::Contains(c.message));
+    CHECK(d.where.line == c.line);
+    CHECK(d.where.column > 0);
+  }
+}
+
+TEST_CASE("a load without series and an equalizer without branches are located errors") {
+  // (fuzzer finding, scene_loader_fuzz) a missing list read as a list threw yaml-cpp's InvalidNode
+  testing::SceneDir dir;
+  const std::string ok =
+      "        a:\n          parent: world\n          joint: {type: free}\n          mass: 1\n"
+      "          inertia: [1, 1, 1]\n";
+  for (const auto& [extra, key] : std::vector<std::pair<std::string, std::string>>{
+           {"      loads:\n        push: {body: a}\n", "components.m.params.loads.push.series"},
+           {"      equalizers:\n        eq: {sheave: {body: a}, EA: 1.0e6, L0: 1}\n",
+            "components.m.params.equalizers.eq.branches"}}) {
+    const auto r = load(dir, ok + extra);
+    INFO(r.diagnostics.report());
+    REQUIRE(r.diagnostics.errorCount() == 1);
+    CHECK(r.diagnostics.all().front().keyPath == key);
+    CHECK(r.diagnostics.all().front().where.line == 14);
+  }
+}

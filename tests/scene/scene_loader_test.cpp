@@ -340,3 +340,18 @@ TEST_CASE("NaN and infinities are refused at the door wherever a number is read,
     CHECK(r.diagnostics.report().find("s.yaml:") != std::string::npos);
   }
 }
+
+TEST_CASE("an include whose name the file system cannot take is a located error") {
+  // (fuzzer finding, scene_loader_fuzz) std::filesystem::weakly_canonical threw on a name longer
+  // than the file system allows
+  testing::SceneDir dir;
+  const auto r = scene::loadScene(dir.write(
+      "s.yaml",
+      "schema_version: 1\ncomponents:\n  a: {include: " + std::string(300, 'x') + "/part.yaml}\n"));
+  INFO(r.diagnostics.report());
+  REQUIRE_FALSE(r.scene);
+  REQUIRE(r.diagnostics.errorCount() == 1);
+  CHECK(r.diagnostics.all().front().keyPath == "components.a.include");
+  CHECK(r.diagnostics.all().front().where.line == 3);
+  CHECK_THAT(r.diagnostics.all().front().message, Catch::Contains("cannot read"));
+}

@@ -4,6 +4,7 @@
 #include "scene/yaml_source.hpp"
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <fstream>
 
 #include "scene/scene_loader.hpp"
@@ -23,7 +24,8 @@ TEST_CASE("a scene file is one YAML document, a mapping, in a regular file of at
   testing::SceneDir dir;
   CHECK_THAT(errors("/dev/zero"), Catch::Contains("'/dev/zero' is not a regular file"));
   CHECK_THAT(errors(dir.write("two.yaml", "schema_version: 1\n---\nfoo: 1\n")),
-             Catch::Contains("two.yaml:3:1") && Catch::Contains("a second one starts here"));
+             Catch::Contains("two.yaml:2:1") &&
+                 Catch::Contains("a second one starts here"));  // at the '---' line
   CHECK_THAT(errors(dir.write("list.yaml", "- 1\n- 2\n")), Catch::Contains("must be a mapping"));
   CHECK_THAT(errors(dir.path() / "missing.yaml"), Catch::Contains("cannot read scene file"));
   {
@@ -57,4 +59,41 @@ TEST_CASE("a YAML alias bomb is refused at once, not expanded") {
   testing::SceneDir dir;
   CHECK_THAT(errors(dir.write("bomb.yaml", bomb)),
              Catch::Contains("expands to more than 1000000 nodes"));
+}
+
+TEST_CASE("a mapping key that is not a plain name is refused at its place") {
+  testing::SceneDir dir;
+  // (fuzzer finding) a list or an empty key reached the readers' key checks and threw there
+  CHECK_THAT(errors(dir.write("list_key.yaml", "schema_version: 1\nparams:\n  ? [a, b]\n  : 1\n")),
+             Catch::Contains("list_key.yaml:3:5") &&
+                 Catch::Contains("a key must be a plain name, got a list"));
+  CHECK_THAT(errors(dir.write("null_key.yaml", "schema_version: 1\n~: 2\n")),
+             Catch::Contains("null_key.yaml:2:1") && Catch::Contains("a key must be a plain name"));
+  models::Diagnostics d;
+  CHECK(scene::readYamlFile(dir.write("plain.yaml", "schema_version: 1\n1: 2\ntrue: 3\n"), {}, "",
+                            d));
+}
+
+TEST_CASE("a stray comma before the first node is a located syntax error and does not hang") {
+  // (fuzzer finding, scene_loader_fuzz timeout) yaml-cpp's LoadAll read this as empty documents
+  // without end, taking all the memory; the loader now stops at the second document
+  testing::SceneDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THAT(errors(dir.write("comma.yaml", "# a comment\n, (x)\nschema_version: 1\n")),
+             Catch::Contains("comma.yaml:2:1") &&
+                 Catch::Contains("YAML syntax error: ',' outside any mapping or list"));
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+}
+
+TEST_CASE("an alias inside its own anchor is refused and does not overflow the stack") {
+  // (fuzzer finding, scene_loader_fuzz stack overflow) a: &a [x, *a] is a node that contains
+  // itself; counting its nodes recursed without end
+  testing::SceneDir dir;
+  CHECK_THAT(errors(dir.write("self.yaml", "schema_version: 1\na: &a [x, *a, *a]\n")),
+             Catch::Contains("self.yaml:1:1") && Catch::Contains("nests deeper than 64 levels"));
+  // 60 levels of lists are still a document (a scene nests a dozen)
+  models::Diagnostics d;
+  CHECK(scene::readYamlFile(dir.write("deep.yaml", "schema_version: 1\na: " + std::string(60, '[') +
+                                                       std::string(60, ']') + "\n"),
+                            {}, "", d));
 }

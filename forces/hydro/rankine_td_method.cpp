@@ -123,6 +123,10 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
 }
 
 namespace {
+// (added mass from the panels) => its symmetric part: the discrete A_ij = -rho int psi_j N_i dS
+// is symmetric only to the panel error, and the multibody model takes a symmetric one
+ImpulseResponse::Matrix6 symmetric(const ImpulseResponse::Matrix6& a) { return 0.5 * (a + a.transpose()); }
+
 // (load) => rankine_td registered as an impulse-response solver and as a time-domain method
 const bool registered = [] {
   registerImpulseResponseSolver(
@@ -131,7 +135,9 @@ const bool registered = [] {
          ImpulseResponseSettings s = rankineTdSettings(q);
          const auto model = rankineTdModel(q);
          if (!s.headings.empty() && !(s.cutoff > 0)) s.cutoff = resolvedFrequency(*model);
-         return computeImpulseResponse(*model, s);
+         ImpulseResponse ir = computeImpulseResponse(*model, s);
+         ir.aInf = symmetric(ir.aInf);
+         return ir;
        },
        checkRankineTd});
   registerTimeDomainMethod(
@@ -144,7 +150,7 @@ const bool registered = [] {
        checkRankineTd,
        [](const HydrodynamicsRequest& q) {
          const auto model = rankineTdModel(q);
-         return toBodyAxes(model->aInf(), model->rotation());
+         return symmetric(toBodyAxes(model->aInf(), model->rotation()));
        }});
   return true;
 }();

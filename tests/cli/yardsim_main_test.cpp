@@ -115,7 +115,7 @@ TEST_CASE("yardsim report on a damaged timeseries.csv names the file and line (e
                         !Catch::Contains("internal error"));
 }
 
-TEST_CASE("--until beyond the step ceiling is refused before the run (exit 1)") {
+TEST_CASE("an --until beyond the step ceiling is refused before the run (exit 1)") {
   yardsim::testing::SceneDir dir;
   const auto scene = dir.write("s.yaml",
                                "schema_version: 1\ncomponents:\n  s: {type: spring_mass, params: "

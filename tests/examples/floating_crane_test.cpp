@@ -12,6 +12,7 @@
 #include "models/multibody/multibody_model.hpp"
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/channel_reader.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
@@ -19,16 +20,7 @@ using namespace yardsim;
 namespace {
 constexpr double kG = 9.81;
 
-// (model) => the channels' current values, by name
-struct Reader {
-  std::map<std::string, models::Channel> byName;
-  explicit Reader(const models::MultibodyModel& mb) {
-    std::vector<models::Channel> all;
-    mb.channels(all);
-    for (auto& c : all) byName.emplace(c.name, c);
-  }
-  double operator()(const std::string& name) const { return byName.at(name).read(); }
-};
+using Reader = testing::ChannelReader;
 }  // namespace
 
 TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and heel") {

@@ -11,6 +11,7 @@
 #include "scene/assembler.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/channel_reader.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
@@ -18,16 +19,7 @@ using namespace yardsim;
 namespace {
 constexpr double kG = 9.81;
 
-// (model) => the channels' current values, by name
-struct Reader {
-  std::map<std::string, models::Channel> byName;
-  explicit Reader(const models::MultibodyModel& mb) {
-    std::vector<models::Channel> all;
-    mb.channels(all);
-    for (auto& c : all) byName.emplace(c.name, c);
-  }
-  double operator()(const std::string& name) const { return byName.at(name).read(); }
-};
+using Reader = testing::ChannelReader;
 
 const char* kRopes[] = {"GOC201.upper_fore", "GOC201.upper_aft", "GOC201.lower_fore", "GOC201.lower_aft",
                         "GOC202.upper_fore", "GOC202.upper_aft", "GOC202.lower_fore", "GOC202.lower_aft"};

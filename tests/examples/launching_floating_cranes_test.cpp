@@ -14,6 +14,7 @@
 #include "models/multibody/multibody_model.hpp"
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/channel_reader.hpp"
 #include "support/record_collector.hpp"
 
 using namespace yardsim;
@@ -21,15 +22,9 @@ using namespace yardsim;
 namespace {
 constexpr double kG = 9.81;
 
-// (model) => the channels' current values, by name
-struct Reader {
-  std::map<std::string, models::Channel> byName;
-  explicit Reader(const models::MultibodyModel& mb) {
-    std::vector<models::Channel> all;
-    mb.channels(all);
-    for (auto& c : all) byName.emplace(c.name, c);
-  }
-  double operator()(const std::string& name) const { return byName.at(name).read(); }
+// (model) => the channels' current values, by name, and points of bodies in the world
+struct Reader : testing::ChannelReader {
+  using testing::ChannelReader::ChannelReader;
   // (body, point in the body frame) => the point in the world, from the body's channels
   // (R = Rz(yaw) Ry(pitch) Rx(roll))
   Eigen::Vector3d world(const std::string& b, const Eigen::Vector3d& p) const {

@@ -10,7 +10,10 @@ n=0
 while IFS= read -r yaml; do
   dir="$(dirname "$yaml")"
   seed="$out/scene/$(echo "${yaml#"$root"/}" | tr '/' '_')"
-  { echo "#@ file $(basename "$yaml")"; cat "$yaml"
+  # (lumped lines) => 2 segments in the seed: with 20 the stiffness guard's dense eigenproblem
+  # (hundreds of node states) takes longer than the 10 s hang limit in the instrumented -O1
+  # build, while the reader is exercised just the same
+  { echo "#@ file $(basename "$yaml")"; sed -E 's/segments: [0-9]+/segments: 2/' "$yaml"
     for f in "$dir"/*.yaml "$dir"/*.obj "$dir"/*.stl "$dir"/*.csv; do
       [ -f "$f" ] && [ "$f" != "$yaml" ] && { echo; echo "#@ file $(basename "$f")"; cat "$f"; }
     done; } > "$seed"

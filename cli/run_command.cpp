@@ -44,11 +44,15 @@ int runCommand(const RunArgs& a) {
                          "docs/report.md)\n", a.scene.c_str());
     return kInvalidInput;
   }
-  if (a.report && std::find(opt.trace.begin(), opt.trace.end(), "jsonl") == opt.trace.end())
-    opt.trace.push_back("jsonl");  // the report's actor timeline reads it
+  // (--report, no trace.jsonl asked) => the outputs-only trace: what the page reads (actor
+  // spans, events), not the per-step records (docs/report.md)
+  if (a.report && std::find(opt.trace.begin(), opt.trace.end(), "jsonl") == opt.trace.end() &&
+      std::find(opt.trace.begin(), opt.trace.end(), "events") == opt.trace.end())
+    opt.trace.push_back("events");
   for (const auto& t : opt.trace)
-    if (t != "jsonl" && t != "chrome" && t != "csv") {
-      std::fprintf(stderr, "--trace: unknown sink '%s' (expected jsonl, chrome or csv)\n", t.c_str());
+    if (t != "jsonl" && t != "events" && t != "chrome" && t != "csv") {
+      std::fprintf(stderr, "--trace: unknown sink '%s' (expected jsonl, events, chrome or csv)\n",
+                   t.c_str());
       return kInvalidInput;
     }
   ProgressPrinter printer;

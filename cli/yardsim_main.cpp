@@ -47,9 +47,13 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_option("-o,--outdir", run.outdir, "output folder")->capture_default_str();
   runCmd->add_option("--until", run.until, "end time in s (default: the scene's `until`)")
       ->check(finiteNonNegative("s"));
-  runCmd->add_option("--trace", run.trace, "trace sinks: jsonl,chrome,csv")->delimiter(',');
+  runCmd
+      ->add_option("--trace", run.trace,
+                   "trace sinks: jsonl,events,chrome,csv (events: outputs only)")
+      ->delimiter(',');
   runCmd->add_flag("--quiet", run.quiet, "no progress or summary");
-  runCmd->add_flag("--report", run.report, "also write OUTDIR/report.html (adds the jsonl trace)");
+  runCmd->add_flag("--report", run.report,
+                   "also write OUTDIR/report.html (adds the events trace unless jsonl is asked)");
   runCmd->add_flag("--profile", run.profile,
                    "print one line: wall time of reading, validation, stiffness guard, build, simulate and output");
   runCmd->add_option("--max-transitions-per-instant", run.maxTransitionsPerInstant,

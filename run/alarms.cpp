@@ -4,8 +4,10 @@
 #include <cmath>
 
 #include "devs/atomic.hpp"
+#include "devs/coupled.hpp"
 #include "devs/port.hpp"
 #include "models/multibody/messages.hpp"
+#include "models/multibody/multibody_model.hpp"
 
 namespace yardsim::run {
 
@@ -36,6 +38,21 @@ void AlarmMonitor::raise(const std::string& model, const std::string& element,
   if (occurrence) ++it->count;
   const bool closest = kind == "clearance_below" || kind == "touched";  // worst: nearest
   if (closest ? value < it->worst : std::abs(value) > std::abs(it->worst)) it->worst = value;
+}
+
+void raiseToRopePeaks(std::vector<Alarm>& alarms, const devs::Model& root) {
+  if (!root.isAtomic()) {
+    for (const auto& c : static_cast<const devs::Coupled&>(root).components())
+      raiseToRopePeaks(alarms, *c);
+    return;
+  }
+  const auto* mb = dynamic_cast<const models::MultibodyModel*>(&root);
+  if (mb == nullptr) return;
+  // (ropes of this model) => their running peaks onto their over_mbl alarms
+  for (std::size_t r = 0; r < mb->system().ropes().size(); ++r)
+    for (Alarm& a : alarms)
+      if (a.kind == "over_mbl" && a.model == mb->path() && a.element == mb->rope(r).name())
+        a.worst = std::max(a.worst, mb->state().x.peakTension[r]);
 }
 
 std::size_t AlarmMonitor::alarmCount() const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "devs/listener.hpp"
+#include "devs/model.hpp"
 
 namespace yardsim::run {
 
@@ -21,9 +22,14 @@ struct Alarm {
   std::string severity;  // alarm (over_mbl, crossed, over_hook_load) or notice (slack, taut)
   double first = 0.0;    // s: the first occurrence, as located
   std::size_t count = 0;
-  double worst = 0.0;  // SI: the largest value reported (tension in N for over_mbl, hook load
-                       // in N for over_hook_load)
+  double worst = 0.0;  // SI: the largest value reported (for over_mbl the rope's peak tension
+                       // in N, raiseToRopePeaks; hook load in N for over_hook_load)
 };
+
+// (alarms, the model tree at the end of the run) => every over_mbl alarm's worst value is its
+// rope's peak tension over every step (the event is located where the tension crosses the MBL,
+// so its own value is the MBL; the peak comes after, between events)
+void raiseToRopePeaks(std::vector<Alarm>& alarms, const devs::Model& root);
 
 class AlarmMonitor final : public devs::Listener {
  public:

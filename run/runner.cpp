@@ -1,5 +1,6 @@
 #include "run/runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "output/gltf_writer.hpp"
 #include "output/replay_recorder.hpp"
 #include "run/checkpoint_file.hpp"
+#include "run/event_trace.hpp"
 #include "run/hook_load_monitor.hpp"
 #include "run/profile.hpp"
 #include "run/run_summary.hpp"
@@ -133,6 +135,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   auto finish = [&] {
     facts.tEnd = reached;
     facts.alarms = alarms.alarms();
+    raiseToRopePeaks(facts.alarms, root);
     facts.wall = wall();
     output([&] {
       if (replaying) writeGlb(replay.replay(), opt.outdir / "replay.glb");
@@ -150,20 +153,30 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
                                     "' cannot be checkpointed: its state type has no StateCodec "
                                     "(docs/extending.md, checkpoints)");
     // (trace names) => sinks, only those asked for; record sinks go on at their sequence number
-    std::vector<std::unique_ptr<devs::Listener>> sinks, timed;
+    // (events and jsonl both asked) => the full trace alone: it holds the outputs too
+    std::vector<std::unique_ptr<devs::Listener>> sinks, timed, filters;
     std::vector<devs::RecordSink*> records;
+    const bool full = std::find(opt.trace.begin(), opt.trace.end(), "jsonl") != opt.trace.end();
     for (const auto& name : opt.trace) {
-      if (name == "jsonl")
+      if (name == "events" && full) continue;
+      if (name == "jsonl" || name == "events")
         sinks.push_back(std::make_unique<devs::JsonlTraceSink>(devs::TraceStream(opt.outdir / "trace.jsonl")));
       else if (name == "chrome")
         sinks.push_back(std::make_unique<devs::ChromeTraceSink>(devs::TraceStream(opt.outdir / "trace.json")));
       else if (name == "csv")
         sinks.push_back(std::make_unique<devs::CsvTraceSink>(devs::TraceStream(opt.outdir / "trace.csv")));
       else
-        throw std::invalid_argument("unknown trace sink '" + name + "' (expected jsonl, chrome or csv)");
+        throw std::invalid_argument("unknown trace sink '" + name +
+                                    "' (expected jsonl, events, chrome or csv)");
       if (auto* r = dynamic_cast<devs::RecordSink*>(sinks.back().get())) records.push_back(r);
-      if (opt.profile) timed.push_back(std::make_unique<TimedListener>(*sinks.back(), outputSeconds));
-      sim.addListener(opt.profile ? *timed.back() : *sinks.back());
+      // (events) => the sink sees the outputs only; (profile) => its hooks timed
+      devs::Listener* listener = sinks.back().get();
+      if (name == "events")
+        listener = filters.emplace_back(std::make_unique<OutputsOnly>(*listener)).get();
+      if (opt.profile)
+        listener =
+            timed.emplace_back(std::make_unique<TimedListener>(*listener, outputSeconds)).get();
+      sim.addListener(*listener);
     }
     sim.addListener(alarms);
     // (cranes of the yard database with a hook-load curve) => checked after every step
@@ -252,6 +265,7 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     result.samples = recorder ? recorder->rows() : 0;
     result.stats = sim.stats();
     result.alarms = alarms.alarms();
+    raiseToRopePeaks(result.alarms, root);
     if (opt.progress) opt.progress({result.tEnd, opt.until, result.wall});
     reached = sim.time();
   } catch (const devs::CheckpointError&) {

@@ -25,7 +25,9 @@ struct Progress {
 struct RunOptions {
   std::filesystem::path outdir;
   double until;                     // end time, s
-  std::vector<std::string> trace;   // sinks: jsonl (trace.jsonl), chrome (trace.json), csv (trace.csv)
+  std::vector<std::string>
+      trace;  // sinks: jsonl (trace.jsonl), events (trace.jsonl, outputs
+              // only: run/event_trace.hpp), chrome (trace.json), csv (trace.csv)
   std::function<void(const Progress&)> progress;  // called at most every progressPeriod
   double progressPeriod = 0.1;      // s of wall time
   std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below

@@ -14,7 +14,7 @@ using models::ParamKind;
 
 namespace {
 
-const std::vector<std::string> kTraceSinks{"jsonl", "chrome", "csv"};
+const std::vector<std::string> kTraceSinks{"jsonl", "events", "chrome", "csv"};
 
 // ({plots: [globs], static: {channel: value}}) => what the report shows
 void reportSettings(Scene& s, const YAML::Node& r, const std::string& f, Diagnostics& diags) {
@@ -133,7 +133,7 @@ void readRunSettings(Scene& s, const YAML::Node& doc, const std::string& f, Diag
         const std::string sink = e.Scalar();
         if (std::find(kTraceSinks.begin(), kTraceSinks.end(), sink) == kTraceSinks.end())
           diags.error(markOf(e, f), "trace",
-                      "unknown trace sink '" + sink + "'; expected jsonl, chrome or csv",
+                      "unknown trace sink '" + sink + "'; expected jsonl, events, chrome or csv",
                       didYouMean(sink, kTraceSinks));
         else
           s.trace.push_back(sink);

@@ -99,3 +99,32 @@ TEST_CASE("a run without safety events lists none") {
   CHECK(m.alarms().empty());
   CHECK(m.alarmCount() == 0);
 }
+
+TEST_CASE("over_mbl's worst value is the rope's peak tension not the MBL it crossed") {
+  // (a block let go at zero stretch on an undamped rope) => the tension crosses the MBL (0.9 m g)
+  // on its way up and peaks at 2 m g (energy: m g x = k x^2 / 2); the event is located at the
+  // crossing, where the tension is the MBL
+  testing::SceneDir dir;
+  std::string text = kScene;
+  text.replace(text.find("q0: -9.999"), 10, "q0: -10.0");
+  text.replace(text.find("damping: 2.0e5"), 14, "damping: 0.0");
+  text.replace(text.find("until: 2"), 8,
+               "until: 0.05");  // one swing: the peak at pi / omega = 0.031 s
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", text));
+  auto root = scene::assemble(*scene);
+  std::vector<run::Alarm> firsts;
+  run::RunOptions opt{dir.path() / "out", scene->until, {}, {}, 0.1, 2000};
+  opt.onAlarm = [&](const run::Alarm& a) { firsts.push_back(a); };
+  const auto r = run::runScene(*scene, *root, opt);
+  const double m = 1000.0, g = 9.81;
+  REQUIRE(!firsts.empty());
+  CHECK(firsts[0].kind == "over_mbl");
+  CHECK(firsts[0].worst == Approx(8829.0).epsilon(1e-6));  // at the crossing, as located
+  const run::Alarm& mbl = r.alarms[0];
+  REQUIRE(mbl.kind == "over_mbl");
+  CHECK(mbl.count == 1);
+  CHECK(mbl.worst == Approx(2 * m * g).epsilon(2e-3));  // the peak, after the crossing
+  const YAML::Node json = YAML::LoadFile((dir.path() / "out/run.json").string());
+  CHECK(json["alarms"][0]["worst"].as<double>() == mbl.worst);
+  CHECK(json["ropes"][0]["peak"].as<double>() == mbl.worst);
+}

@@ -13,6 +13,7 @@
 #include "models/channels.hpp"
 #include "output/base64.hpp"
 #include "output/html_page.hpp"
+#include "output/report_events.hpp"
 
 namespace yardsim::output {
 
@@ -110,8 +111,13 @@ void writeReport(const fs::path& outdir) {
   } else {
     notes.push_back("no run.json: header facts, static levels and actor kinds are unknown");
   }
-  if (fs::exists(outdir / "trace.jsonl")) actors = actorSpans(outdir / "trace.jsonl", std::move(actors));
-  else if (!actors.empty()) notes.push_back("no trace.jsonl: the actor timeline has no bars (run with --trace jsonl or --report)");
+  std::vector<ReportEvent> events;
+  if (fs::exists(outdir / "trace.jsonl")) {
+    actors = actorSpans(outdir / "trace.jsonl", std::move(actors));
+    events = reportEvents(outdir / "trace.jsonl");
+  } else if (!actors.empty())
+    notes.push_back(
+        "no trace.jsonl: the actor timeline has no bars (run with --trace jsonl or --report)");
 
   std::string d = "{\"kind\":\"run\",\"run\":" + runJson + ",\"meta\":{";
   bool first = true;
@@ -166,8 +172,10 @@ void writeReport(const fs::path& outdir) {
     appendJsonNumber(d += ",\"end\":", actors[i].end);
     d += "}";
   }
+  d += "],\"events\":";
+  appendEventsJson(d, events);
   // (replay.glb) => its bytes
-  d += "],\"glb\":";
+  d += ",\"glb\":";
   if (fs::exists(outdir / "replay.glb")) {
     const std::string glb = readFile(outdir / "replay.glb");
     d += '"';

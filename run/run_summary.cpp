@@ -33,7 +33,8 @@ void actors(const Instance& in, std::string& out) {
   for (const auto& c : in.children) actors(*c, out);
 }
 
-// (model tree) => "{model, method, dt}" of every multibody model
+// (model tree) => "{model, method, dt, water_level}" of every multibody model (water_level:
+// where it has a sea)
 void systems(const devs::Model& m, std::string& out) {
   if (!m.isAtomic()) {
     for (const auto& c : static_cast<const devs::Coupled&>(m).components()) systems(*c, out);
@@ -46,6 +47,13 @@ void systems(const devs::Model& m, std::string& out) {
     appendJsonString(out, mb->options().integrator.method);
     out += ",\"dt\":";
     appendJsonNumber(out, mb->options().dt);
+    // (a sea, or a hull floating in the default one) => the still-water level, m: the replay's
+    // water surface
+    const auto& sea = mb->builtMechanics().environment;
+    if (sea.hasWater || !sea.hulls.empty()) {
+      out += ",\"water_level\":";
+      appendJsonNumber(out, sea.water.level);
+    }
     // (the system at its start) => its stiffest mode: what the stiffness guard judged
     try {
       const mechanics::StiffnessEstimate e = mechanics::estimateStiffness(mb->builtMechanics(), mb->system().servo());

@@ -6,13 +6,17 @@ import uplotCss from 'uplot/dist/uPlot.min.css';
 import css from './style.css';
 import { bytes, el, float32, fmt, readData } from './data.js';
 import { makePlots } from './plots.js';
+import { alarmBanner, alarmMarkers, closestApproaches } from './alarms.js';
+import { groupSeries, num } from './units.js';
 import { makeTimeline } from './timeline.js';
 import { makeReplay } from './replay3d.js';
 import { renderLogLog } from './loglog.js';
 import { renderFigure } from './figure.js';
 import { renderSweep } from './sweep.js';
 
-function header(data, tEnd, root) {
+// (page data, end time, every recorded series, root, onTime) => the header: title, alarm banner,
+// run facts, the ropes' peaks in the tensions' display unit (the one of their plot)
+function header(data, tEnd, recorded, root, onTime) {
   const run = data.run || {};
   root.append(el('h1', {}, `yardsim report: ${run.scene || data.meta.scene || '(unknown scene)'}`));
   const systems = (run.systems || []).map(s => `${s.method}, dt = ${fmt(s.dt)} s (${s.model})`);
@@ -26,15 +30,18 @@ function header(data, tEnd, root) {
   row('real-time factor', run.real_time_factor !== undefined ? `${fmt(run.real_time_factor, 3)} ×` : '–');
   if (run.status === 'failed') row('status', `failed: ${run.message}`, 'failed');
   row('yardsim', run.yardsim || data.meta.yardsim || '–');
-  const peaks = el('table', { class: 'peaks' },
-    el('tr', {}, el('th', {}, 'rope'), el('th', {}, 'peak tension [kN]'), el('th', {}, 'at [s]'),
-      el('th', {}, 'static [kN]'), el('th', {}, 'peak / static')));
+  const tensions = groupSeries(recorded.filter(s => /\.(peak_)?tension$/.test(s.name) && s.unit === 'N'))[0] || { unit: 'kN', factor: 1e-3 };
+  const force = { unit: tensions.unit, factor: tensions.factor };
+  const peaks = el('table', { class: 'peaks', id: 'peaks' },
+    el('tr', {}, el('th', {}, 'rope'), el('th', {}, `peak tension [${force.unit}]`), el('th', {}, 'at [s]'),
+      el('th', {}, `static [${force.unit}]`), el('th', {}, 'peak / static')));
   for (const p of data.peaks) {
     peaks.append(el('tr', {}, el('td', {}, p.channel.replace(/\.tension$/, '')),
-      el('td', { class: 'num' }, fmt(p.peak / 1000)), el('td', { class: 'num' }, fmt(p.time)),
-      el('td', { class: 'num' }, p.static === null ? '–' : fmt(p.static / 1000)),
+      el('td', { class: 'num' }, num(p.peak * force.factor)), el('td', { class: 'num' }, fmt(p.time)),
+      el('td', { class: 'num' }, p.static === null ? '–' : num(p.static * force.factor)),
       el('td', { class: 'num' }, p.static ? fmt(p.peak / p.static, 3) : '–')));
   }
+  alarmBanner(run.alarms || [], force, root, onTime);
   root.append(el('div', { class: 'facts' }, facts, data.peaks.length ? peaks : el('div', {}, 'no rope tension recorded')));
   for (const n of data.notes) root.append(el('p', { class: 'notes' }, n));
 }
@@ -63,7 +70,10 @@ async function main() {
   const tEnd = time.length ? time[time.length - 1] : 0;
   const root = el('div', { id: 'report' });
   document.body.append(root);
-  header(data, tEnd, root);
+  const recorded = data.series.map(s => ({ ...s, values: float32(s.data) }));
+  const events = data.events || [];
+  let setTime = () => {};
+  header(data, tEnd, recorded, root, (t, from) => setTime(t, from));
 
   // (controls) => slider, play/pause, speed
   const slider = el('input', { type: 'range', id: 'time-slider', min: '0', max: String(tEnd), step: String(tEnd / 2000 || 1), value: '0' });
@@ -77,24 +87,28 @@ async function main() {
   root.append(el('h2', {}, '3D replay'), replayBox, el('div', { class: 'controls' }, play, speed, slider, label));
   const timelineBox = el('div', { id: 'timeline' });
   root.append(el('h2', {}, 'Actors'), timelineBox);
+  const closestBox = el('div', { id: 'closest-approaches' });
+  root.append(closestBox);
   const plotBox = el('div', { class: 'plots', id: 'plots' });
   root.append(el('h2', {}, 'Time series'), plotBox);
 
-  const series = data.plots.map(i => ({ ...data.series[i], values: float32(data.series[i].data) }));
+  const series = data.plots.map(i => recorded[i]);
+  const markers = alarmMarkers((data.run && data.run.alarms) || [], events);
   let now = 0;
   let replay = null;
   const views = {};
   // (t, who moved it) => every view at t except the one that moved it
-  function setTime(t, from) {
+  setTime = (t, from) => {
     now = Math.min(Math.max(t, 0), tEnd);
     if (from !== 'slider') slider.value = String(now);
     label.textContent = `t = ${fmt(now, 5)} s`;
     if (replay) replay.setTime(now);
     if (from !== 'plot') views.plots.setTime(now);
     views.timeline.setTime(now);
-  }
-  views.plots = makePlots(series, time, data.static, plotBox, setTime);
-  views.timeline = makeTimeline(data.actors, tEnd, timelineBox, setTime);
+  };
+  views.plots = makePlots(series, recorded, time, data.static, markers, plotBox, setTime);
+  views.timeline = makeTimeline(data.actors, tEnd, timelineBox, setTime, markers);
+  const closest = closestApproaches(recorded, time, events, closestBox, setTime);
   slider.addEventListener('input', () => setTime(Number(slider.value), 'slider'));
   let playing = false, last = 0;
   function frame(ts) {
@@ -110,13 +124,18 @@ async function main() {
     play.textContent = playing ? 'pause' : 'play';
     if (playing) { if (now >= tEnd) setTime(0, 'play'); last = 0; requestAnimationFrame(frame); }
   });
-  if (data.glb) replay = await makeReplay(bytes(data.glb), replayBox);
+  // (run.json's systems, the contact channels) => the replay's water surface and contact forces
+  const levels = ((data.run && data.run.systems) || []).map(x => x.water_level).filter(x => x !== undefined);
+  // (collision sets: a `<set>.normal_force` channel) => their `<set>.<body>.fz` channels
+  const sets = recorded.filter(s => /\.normal_force$/.test(s.name)).map(s => s.name.replace(/normal_force$/, ''));
+  const contacts = recorded.filter(s => s.unit === 'N' && /\.fz$/.test(s.name) && sets.some(p => s.name.startsWith(p)));
+  if (data.glb) replay = await makeReplay(bytes(data.glb), replayBox, { water: levels.length ? levels[0] : null, contacts, time });
   else {
     replayBox.className = '';
     replayBox.append(el('p', { class: 'notes' }, 'no replay.glb: the scene has no bodies, or records nothing'));
   }
   setTime(0, 'init');
-  window.yardsim = { data, plots: views.plots.plots, replay, setTime, time: () => now, ready: true };
+  window.yardsim = { data, plots: views.plots.plots, groups: views.plots.groups, markers, closest, replay, setTime, time: () => now, ready: true };
 }
 
 window.yardsim = { ready: false };

@@ -1,23 +1,27 @@
 // The 3D replay (three.js): replay.glb's bodies (one mesh each) posed at the report's time from
-// its animation tracks, the ropes as lines through their attachment points, a ground grid.
+// its animation tracks, the ropes as lines through their attachment points, a ground grid; for a
+// floating scene the still-water surface, for a scene with contact the contact force on each
+// body as an arrow (overlays.js).
 import {
   AmbientLight, Box3, BufferGeometry, Color, DirectionalLight, Float32BufferAttribute, GridHelper,
   HemisphereLight, Line, LineBasicMaterial, PerspectiveCamera, Scene, Vector3, WebGLRenderer,
 } from 'three';
+import { contactArrows, waterSurface } from './overlays.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
-// (glb bytes, container) => Promise of {bodies, setTime(t), render(), scene, duration}
-export function makeReplay(glb, container) {
+// (glb bytes, container, overlays {water: level in m or null, contacts: [{name, values}], time})
+// => Promise of {bodies, setTime(t), render(), scene, duration, water, arrows}
+export function makeReplay(glb, container, overlays = {}) {
   return new Promise((resolve, reject) => {
     const buffer = glb.buffer.slice(glb.byteOffset, glb.byteOffset + glb.byteLength);
     new GLTFLoader().parse(buffer, '', gltf => {
-      try { resolve(build(gltf, container)); } catch (e) { reject(e); }
+      try { resolve(build(gltf, container, overlays)); } catch (e) { reject(e); }
     }, reject);
   });
 }
 
-function build(gltf, container) {
+function build(gltf, container, overlays) {
   const scene = new Scene();
   scene.background = new Color(0xe9eef3);
   scene.add(gltf.scene);
@@ -92,9 +96,12 @@ function build(gltf, container) {
   const radius = Math.max(size.length() / 2, 0.5);
   // (extent) => a ground grid about four radii wide, in round metres, 20 divisions
   const decade = Math.pow(10, Math.floor(Math.log10(radius * 4)));
-  const grid = new GridHelper(Math.ceil((radius * 4) / decade) * decade, 20, 0x9aa5b1, 0xc5ccd3);
+  const gridSize = Math.ceil((radius * 4) / decade) * decade;
+  const grid = new GridHelper(gridSize, 20, 0x9aa5b1, 0xc5ccd3);
   grid.position.set(centre.x, Math.min(0, bounds.min.y), centre.z);
   scene.add(grid);
+  const water = overlays.water !== null && overlays.water !== undefined ? waterSurface(scene, world, overlays.water, centre, gridSize) : null;
+  const arrows = contactArrows(scene, bodies, overlays.contacts || [], overlays.time, radius);
   const camera = new PerspectiveCamera(40, 1, radius / 100, radius * 100);
   camera.position.copy(centre).add(new Vector3(0.8, 0.45, 1.6).normalize().multiplyScalar(radius * 2.6));
   const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -113,5 +120,5 @@ function build(gltf, container) {
   controls.addEventListener('change', () => renderer.render(scene, camera));
   window.addEventListener('resize', resize);
   resize();
-  return { bodies, duration, scene, setTime(t) { setTime(t); render(); } };
+  return { bodies, duration, scene, water, arrows, setTime(t) { setTime(t); arrows.setTime(t); render(); } };
 }

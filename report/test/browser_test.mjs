@@ -155,16 +155,75 @@ async function checkSweep(page) {
 async function checkReport(page) {
 
   const drawn = await drawnPixels(page);
-  const units = new Set(data.plots.map(i => data.series[i].unit));
-  check('one plot per unit, each with drawn pixels', drawn.length === units.size && drawn.length > 0 && drawn.every(n => n > 500),
-    `${drawn.length} canvases for ${units.size} units, pixels drawn ${drawn.join(', ')}`);
+  const groups = await page.evaluate(() => window.yardsim.plots.map(u => ({
+    ...u.group, title: u.root.querySelector('.u-title') && u.root.querySelector('.u-title').textContent,
+    ylabel: u.axes[1].label,  // uPlot draws it on the canvas
+    ticks: u.axes[1]._values || [], max: Math.max(...u.data.slice(1).flatMap(d => [...d].filter(Number.isFinite).map(Math.abs))),
+  })));
+  check('one plot per quantity group, each with drawn pixels', drawn.length === groups.length && drawn.length > 0 && drawn.every(n => n > 500),
+    `${drawn.length} canvases for ${groups.length} groups, pixels drawn ${drawn.join(', ')}`);
+  const plotted = groups.flatMap(g => g.channels);
+  check('every plotted channel in one plot', plotted.length === data.plots.length && data.plots.every(i => plotted.includes(data.series[i].name)),
+    `${plotted.length} in plots, ${data.plots.length} plotted`);
+  check('every plot has a title and its unit in the axis label', groups.every(g => g.title && g.ylabel && g.ylabel.endsWith(`[${g.unit}]`)),
+    groups.map(g => `${g.title}: ${g.ylabel}`).join('; '));
+  // (forces, masses, energies) => an engineering unit that keeps the numbers between 1 and 1000
+  const ladder = { N: ['N', 'kN', 'MN'], kg: ['kg', 't'], J: ['J', 'kJ', 'MJ'], W: ['W', 'kW', 'MW'] };
+  const scaled = groups.filter(g => ladder[g.si]);
+  check('forces in kN or MN (masses in t, ...) chosen by magnitude', scaled.every(g => ladder[g.si].includes(g.unit) &&
+    (g.max < 1000 || g.unit === ladder[g.si].at(-1)) && (g.max >= 1 || g.unit === g.si || g.max === 0)),
+  scaled.map(g => `${g.title} [${g.unit}] max ${g.max.toPrecision(3)}`).join('; '));
+  check('angles in degrees', groups.filter(g => g.si === 'rad').every(g => g.unit === 'deg'));
+  const tensions = groups.find(g => g.title === 'Rope tensions');
+  if (tensions) {
+    const head = await page.$eval('#peaks tr th:nth-child(2)', th => th.textContent).catch(() => '');
+    check('the header table and the tension plot say the same unit', head.includes(`[${tensions.unit}]`), `${head} / ${tensions.unit}`);
+  }
+  const noise = await page.evaluate(() => document.body.innerText.match(/\d(\.\d+)?e-(1\d|[2-9]\d)/g));
+  const tickNoise = groups.flatMap(g => g.ticks).filter(v => /e-(1\d|[2-9]\d)/.test(String(v)));
+  check('no round-off noise (e-10 and below) in the text or the tick labels', !noise && !tickNoise.length, `${noise} ${tickNoise}`);
+
+  // (run.json's alarms) => a red banner with a line per alarm, and markers, exactly when there are alarms
+  const alarms = ((data.run && data.run.alarms) || []).filter(a => a.severity === 'alarm');
+  const banner = await page.evaluate(() => {
+    const b = document.getElementById('alarm-banner');
+    return b && { items: [...b.querySelectorAll('li')].map(li => li.textContent), color: getComputedStyle(b).borderColor };
+  });
+  if (alarms.length) {
+    check('a red banner lists every alarm', banner && banner.items.length === alarms.length && /207, 34, 46/.test(banner.color),
+      JSON.stringify(banner));
+    const force = tensions ? tensions.unit : 'kN';
+    const factor = { N: 1, kN: 1e-3, MN: 1e-6 }[force];
+    for (const a of alarms.filter(x => x.kind === 'over_mbl')) {
+      const rope = data.run.ropes.find(r => r.name === a.element || r.name.endsWith(`.${a.element}`));
+      const shown = banner.items.find(t => t.includes(a.element) && t.startsWith('over_mbl'));
+      const value = shown && Number(shown.match(/worst ([-0-9.e]+) /)[1]);
+      check(`the banner gives ${a.element}'s peak tension (not its MBL) in ${force}`, rope && value &&
+        Math.abs(value - rope.peak * factor) < 1e-3 * rope.peak * factor && rope.peak > rope.mbl && shown.includes(` ${force}`), shown);
+    }
+    const markers = await page.evaluate(() => ({ n: window.yardsim.markers.length, tl: document.querySelectorAll('.tl-marker').length }));
+    check('alarm markers on the plots and the timeline', markers.n >= alarms.length && markers.tl === markers.n, JSON.stringify(markers));
+    const mark = await page.$('.tl-marker');
+    await mark.scrollIntoView();
+    const target = await page.evaluate(() => window.yardsim.markers[0].t);
+    await mark.click();
+    const now = await page.evaluate(() => window.yardsim.time());
+    check('a click on a marker moves the time there', Math.abs(now - target) < 1e-9, `${now} vs ${target}`);
+  } else {
+    check('no banner for a run without alarms', banner === null);
+  }
+
+  // (closest approaches) => a row per clearance watch
+  const watches = data.series.filter(x => x.unit === 'm' && /\.distance$/.test(x.name));
+  const closest = await page.$$eval('#closest tr', r => Math.max(0, r.length - 1));
+  check('a closest-approach row per clearance watch', closest === watches.length, `${closest} rows, ${watches.length} watches`);
 
   // (three.js scene) => one mesh per body of replay.glb
   const meshes = await page.evaluate(() => {
     const r = window.yardsim.replay;
     if (!r) return null;
     const out = [];
-    r.scene.traverse(o => { if (o.isMesh) out.push(o.userData.body); });
+    r.scene.traverse(o => { if (o.isMesh && o.userData.body !== undefined) out.push(o.userData.body); });
     return out;
   });
   if (bodies.length)
@@ -172,6 +231,28 @@ async function checkReport(page) {
       bodies.every(b => meshes.includes(b.name)), `${meshes && meshes.length} meshes, ${bodies.length} bodies`);
   else
     check('no bodies, no replay', meshes === null && data.glb === null);
+
+  // (a sea in run.json) => the water plane at its level, translucent; none on land
+  const level = ((data.run && data.run.systems) || []).map(x => x.water_level).find(x => x !== undefined);
+  const water = await page.evaluate(() => {
+    const w = window.yardsim.replay && window.yardsim.replay.scene.getObjectByName('water');
+    return w && { y: w.getWorldPosition(w.position.clone()).y, opacity: w.material.opacity, transparent: w.material.transparent };
+  });
+  if (level !== undefined) check('a translucent water plane at the water level', water && Math.abs(water.y - level) < 1e-6 && water.transparent && water.opacity < 1, JSON.stringify(water));
+  else check('no water plane on land', !water);
+  // (contact force channels) => an arrow per body with a force, shown where the force is
+  const sets = data.series.filter(x => /\.normal_force$/.test(x.name)).map(x => x.name.replace(/normal_force$/, ''));
+  const contacts = data.series.filter(x => x.unit === 'N' && /\.fz$/.test(x.name) && sets.some(p => x.name.startsWith(p)));
+  if (contacts.length) {
+    const arrows = await page.evaluate(() => {
+      const y = window.yardsim;
+      y.setTime(y.data.run.t_end, 'test');
+      return y.replay.arrows.list.map(a => ({ channel: a.channel, visible: a.arrow.visible, force: a.force, max: a.max }));
+    });
+    check('contact forces drawn as arrows at the end of the run', arrows.length > 0 && arrows.every(a => a.visible === Math.abs(a.force) > 1e-3 * a.max) && arrows.some(a => a.visible),
+      JSON.stringify(arrows));
+    await page.evaluate(() => window.yardsim.setTime(0, 'test'));
+  }
 
   // (slider clicked at 3/4) => the time, the most-travelled body and the plot cursors follow
   // the block (a body named block) when there is one, else the body that travels most
@@ -212,7 +293,7 @@ async function checkReport(page) {
     `slider ${hovered.slider}, cursor at t = ${over.t}`);
 
   // (timeline) => one row per actor
-  const rows = await page.$$eval('.tl-row', r => r.length);
+  const rows = await page.$$eval('.tl-row:not(.tl-alarm-row)', r => r.length);
   check('one timeline row per actor', rows === actors.size, `${rows} rows, ${actors.size} actors`);
   const bars = await page.$$eval('.tl-bar', r => r.length);
   check('a bar for every actor that started', bars === [...actors].filter(a => data.actors.find(x => x.path === a && x.start >= 0)).length, `${bars} bars`);

@@ -1,0 +1,100 @@
+// The run's safety events on the page (run.json "alarms", the trace's events): a red banner in
+// the header with one line per alarm (kind, element, first time, count, worst value in the
+// page's units; a click seeks the replay there), the notices in a quiet line below, the times of
+// every occurrence as markers for the plots and the timeline, and the table of the closest
+// approaches of the clearance watches.
+import { el } from './data.js';
+import { displayUnit, maxAbs, num } from './units.js';
+
+const what = {
+  over_mbl: 'over its minimum breaking load',
+  over_hook_load: 'over its hook-load curve',
+  crossed: 'crossed its threshold',
+  clearance_below: 'clearance below its limit',
+  touched: 'touched',
+  slack: 'slack', taut: 'taut', contact: 'contact', release: 'release',
+};
+
+// (alarm, the force unit of the page) => its worst value with a unit
+function worst(a, force) {
+  if (a.kind === 'over_mbl' || a.kind === 'over_hook_load') return `${num(a.worst * force.factor)} ${force.unit}`;
+  if (a.kind === 'clearance_below' || a.kind === 'touched' || a.kind === 'slack' || a.kind === 'taut') {
+    const d = displayUnit('m', Math.abs(a.worst));
+    return `${num(a.worst * d.factor)} ${d.unit}`;
+  }
+  if (a.kind === 'contact' || a.kind === 'release') return `${num(a.worst * 1e3)} mm deep`;
+  return num(a.worst);  // a watch: in its channel's SI unit
+}
+
+// (alarms, events) => per alarm the times of its occurrences: its first, and every event of its
+// model, element and kind in the trace
+export function alarmTimes(alarms, events) {
+  return alarms.map(a => {
+    const ts = new Set([a.first]);
+    for (const e of events) if (e.model === a.model && e.element === a.element && e.what === a.kind) ts.add(e.t);
+    return [...ts].sort((x, y) => x - y);
+  });
+}
+
+// (alarms, events) => plot and timeline markers [{t, color, label, severity}]
+export function alarmMarkers(alarms, events) {
+  const times = alarmTimes(alarms, events);
+  const out = [];
+  alarms.forEach((a, i) => {
+    for (const t of times[i])
+      out.push({ t, severity: a.severity, color: a.severity === 'alarm' ? '#cf222e' : '#8c959f', label: `${a.element} ${a.kind}` });
+  });
+  return out.filter(m => m.severity === 'alarm');
+}
+
+// (alarms, force display unit, root, onTime) => the banner (only when there is an alarm) and the
+// notices line
+export function alarmBanner(alarms, force, root, onTime) {
+  const line = a => {
+    const item = el('li', { class: 'alarm-item', 'data-kind': a.kind },
+      el('b', {}, a.kind), ` ${a.element} ${what[a.kind] || ''}: first at t = ${num(a.first, 6)} s, ${a.count} time${a.count === 1 ? '' : 's'}, worst ${worst(a, force)}`);
+    item.title = 'click: show this time';
+    item.addEventListener('click', () => onTime(a.first, 'alarm'));
+    return item;
+  };
+  const bad = alarms.filter(a => a.severity === 'alarm');
+  if (bad.length) {
+    root.append(el('div', { class: 'alarm-banner', id: 'alarm-banner' },
+      el('div', { class: 'alarm-title' }, `${bad.length} alarm${bad.length === 1 ? '' : 's'} in this run`),
+      el('ul', {}, ...bad.map(line))));
+  }
+  const notices = alarms.filter(a => a.severity !== 'alarm');
+  if (notices.length) {
+    const list = el('ul', {}, ...notices.map(line));
+    root.append(el('details', { class: 'notices-list', id: 'notices' }, el('summary', {}, `${notices.length} notice${notices.length === 1 ? '' : 's'} (slack/taut ropes, contacts)`), list));
+  }
+}
+
+// (every recorded series, time, events, container, onTime) => the table of the clearance
+// watches' closest approaches: minimum distance, when, between what (from the watch's last
+// clearance_below/touched event at or before it), or nothing when the scene has no watch
+export function closestApproaches(series, time, events, container, onTime) {
+  const watches = series.filter(s => s.unit === 'm' && /\.distance$/.test(s.name));
+  if (!watches.length) return [];
+  const rows = watches.map(s => {
+    let k = -1;
+    for (let i = 0; i < s.values.length; i++) if (Number.isFinite(s.values[i]) && (k < 0 || s.values[i] < s.values[k])) k = i;
+    const watch = s.name.replace(/\.distance$/, '');
+    const near = events.filter(e => e.element === watch && (e.what === 'clearance_below' || e.what === 'touched'));
+    const pair = near.length ? near[near.length - 1].detail : '';
+    return { watch, min: k >= 0 ? s.values[k] : NaN, t: k >= 0 ? time[k] : NaN, pair, events: near.length };
+  });
+  const d = displayUnit('m', maxAbs(rows.map(r => r.min)));
+  const table = el('table', { class: 'closest', id: 'closest' },
+    el('tr', {}, el('th', {}, 'clearance watch'), el('th', {}, `minimum distance [${d.unit}]`), el('th', {}, 'at [s]'),
+      el('th', {}, 'pair and witness points (last event)'), el('th', {}, 'events')));
+  for (const r of rows) {
+    const tr = el('tr', {}, el('td', {}, r.watch), el('td', { class: 'num' }, num(r.min * d.factor)), el('td', { class: 'num' }, num(r.t, 6)),
+      el('td', {}, r.pair || '– (no clearance_below or touched event)'), el('td', { class: 'num' }, String(r.events)));
+    tr.addEventListener('click', () => onTime(r.t, 'closest'));
+    table.append(tr);
+  }
+  container.append(el('h2', {}, 'Closest approaches'), table,
+    el('p', { class: 'hint' }, 'Sampled on the record grid; a watch reports the range (its `range`, by default `below`) when nothing is nearer.'));
+  return rows;
+}

@@ -330,6 +330,41 @@ mechanics:
   CHECK(bad.status != 4);
 }
 
+TEST_CASE(
+    "the report's lift over MBL exits 4 with --fail-on alarm and --report writes the events trace "
+    "only") {
+  yardsim::testing::SceneDir dir;
+  const std::string scene = std::string(YARDSIM_SOURCE_DIR) + "/tests/report/data/over_mbl.yaml";
+  auto slurp = [](const std::filesystem::path& f) {
+    std::ifstream in(f);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const auto strict =
+      runYardsim("run " + scene + " -o " + dir.file("a") + " --quiet --report --fail-on alarm");
+  INFO(strict.out);
+  CHECK(strict.status == 4);
+  CHECK(
+      std::filesystem::exists(dir.path() / "a/report.html"));  // the report is written all the same
+  // (--report, the scene asks no trace) => trace.jsonl holds the outputs only: the event, the actor
+  const std::string events = slurp(dir.path() / "a/trace.jsonl");
+  CHECK(events.find("\"value\":\"hoist over_mbl ") != std::string::npos);
+  CHECK(events.find("\"model\":\"haul\",\"kind\":\"out\",\"port\":\"finished\"") !=
+        std::string::npos);
+  CHECK(events.find("\"kind\":\"state\"") == std::string::npos);
+  CHECK(events.find("\"kind\":\"int\"") == std::string::npos);
+  // (--trace jsonl) => the full trace as before, with the same outputs in it
+  const auto full =
+      runYardsim("run " + scene + " -o " + dir.file("b") + " --quiet --report --trace jsonl");
+  CHECK(full.status == 0);
+  const std::string trace = slurp(dir.path() / "b/trace.jsonl");
+  CHECK(trace.find("\"kind\":\"state\"") != std::string::npos);
+  CHECK(trace.size() > 10 * events.size());
+  const auto bad =
+      runYardsim("run " + scene + " -o " + dir.file("c") + " --quiet --trace everything");
+  CHECK(bad.status == 1);
+  CHECK_THAT(bad.out, Catch::Contains("expected jsonl, events, chrome or csv"));
+}
+
 TEST_CASE("yardsim refuses a bad --until, --repeats or command with exit 1 and says why") {
   yardsim::testing::SceneDir dir;
   for (const std::string until : {"-5", "nan", "inf", "1e400", "x"}) {

@@ -5,6 +5,7 @@
 
 #include "devs/trace_format.hpp"
 #include "mechanics/stiffness_estimate.hpp"
+#include "models/channels.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "run/timeseries_writer.hpp"
 
@@ -104,6 +105,38 @@ void ropes(const devs::Model& m, const Scene& scene, std::string& out) {
   }
 }
 
+// (alarm, model tree, its channels) => the SI unit of its worst value: N for loads over a limit,
+// m for distances and rope lengths, the watched channel's unit for a crossing ("" if unknown)
+std::string alarmUnit(const Alarm& a, const devs::Model& root,
+                      const std::vector<models::Channel>& channels) {
+  if (a.kind == "over_mbl" || a.kind == "over_hook_load") return "N";
+  if (a.kind == "clearance_below" || a.kind == "touched" || a.kind == "contact" ||
+      a.kind == "release" || a.kind == "slack" || a.kind == "taut")
+    return "m";
+  if (a.kind != "crossed") return "";
+  // (the watch of that name in its multibody model) => the channel of its element and quantity
+  const devs::Model* m = &root;
+  std::vector<const devs::Model*> todo{&root};
+  const MultibodyModel* mb = nullptr;
+  while (!todo.empty() && mb == nullptr) {
+    m = todo.back();
+    todo.pop_back();
+    if (!m->isAtomic())
+      for (const auto& c : static_cast<const devs::Coupled&>(*m).components())
+        todo.push_back(c.get());
+    else if (const auto* x = dynamic_cast<const MultibodyModel*>(m); x && x->path() == a.model)
+      mb = x;
+  }
+  if (mb == nullptr) return "";
+  for (const auto& w : mb->builtMechanics().watches) {
+    if (w.name != a.element) continue;
+    const std::string local = w.element + "." + w.quantity;
+    for (const auto& c : channels)
+      if (c.name == local || c.name == mb->path() + "." + local) return c.unit;
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string runSummaryJson(const Scene& scene, const devs::Model& root, const RunFacts& f) {
@@ -135,6 +168,8 @@ std::string runSummaryJson(const Scene& scene, const devs::Model& root, const Ru
   o += "]";
   key("alarms");
   o += "[";
+  const auto channels =
+      f.alarms.empty() ? std::vector<models::Channel>{} : models::collectChannels(root);
   for (std::size_t i = 0; i < f.alarms.size(); ++i) {
     const Alarm& a = f.alarms[i];
     o += i ? ",{\"model\":" : "{\"model\":";
@@ -145,6 +180,7 @@ std::string runSummaryJson(const Scene& scene, const devs::Model& root, const Ru
     number("first", a.first);
     number("count", static_cast<double>(a.count));
     number("worst", a.worst);
+    text("unit", alarmUnit(a, root, channels));
     o += "}";
   }
   o += "]";

@@ -15,15 +15,17 @@ const what = {
   slack: 'slack', taut: 'taut', contact: 'contact', release: 'release',
 };
 
-// (alarm, the force unit of the page) => its worst value with a unit
+// (alarm, the force unit of the page) => its worst value with a unit: forces in the page's force
+// unit (the tension plot's), the rest in the display unit of run.json's SI unit for it
 function worst(a, force) {
-  if (a.kind === 'over_mbl' || a.kind === 'over_hook_load') return `${num(a.worst * force.factor)} ${force.unit}`;
-  if (a.kind === 'clearance_below' || a.kind === 'touched' || a.kind === 'slack' || a.kind === 'taut') {
-    const d = displayUnit('m', Math.abs(a.worst));
-    return `${num(a.worst * d.factor)} ${d.unit}`;
-  }
+  const si = a.unit !== undefined ?
+      a.unit :
+      (a.kind === 'over_mbl' || a.kind === 'over_hook_load' ? 'N' : '');
+  if (si === 'N') return `${num(a.worst * force.factor)} ${force.unit}`;
   if (a.kind === 'contact' || a.kind === 'release') return `${num(a.worst * 1e3)} mm deep`;
-  return num(a.worst);  // a watch: in its channel's SI unit
+  if (!si) return num(a.worst);
+  const d = displayUnit(si, Math.abs(a.worst));
+  return `${num(a.worst * d.factor)} ${d.unit}`;
 }
 
 // (alarms, events) => per alarm the times of its occurrences: its first, and every event of its

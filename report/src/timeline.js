@@ -40,7 +40,7 @@ export function makeTimeline(actors, tEnd, container, onTime, markers = []) {
   if (markers.length) {
     const track = el('div', { class: 'tl-track tl-alarms' });
     for (const m of markers) {
-      const mark = el('div', { class: 'tl-marker', style: `left:${pct(m.t)};background:${m.color}` });
+      const mark = el('div', { class: 'tl-marker', 'data-t': String(m.t), style: `left:${pct(m.t)};background:${m.color}` });
       mark.title = `${m.label} at ${fmt(m.t, 6)} s`;
       mark.addEventListener('click', e => { e.stopPropagation(); onTime(m.t, 'alarm'); });
       track.append(mark);

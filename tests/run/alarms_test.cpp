@@ -82,6 +82,11 @@ TEST_CASE("a rope over its MBL and a watch crossing are alarms, in run.json with
   const YAML::Node json = YAML::LoadFile((dir.path() / "out/run.json").string());
   REQUIRE(json["alarms"].size() == r.alarms.size());
   CHECK(json["alarms"][0]["kind"].as<std::string>() == r.alarms[0].kind);
+  // (each alarm's worst value) => with its SI unit: the tension in N, the watched lift.q in m
+  for (const auto& a : json["alarms"]) {
+    const auto kind = a["kind"].as<std::string>();
+    CHECK(a["unit"].as<std::string>() == (kind == "over_mbl" ? "N" : "m"));  // taut: a length
+  }
   REQUIRE(json["ropes"].size() == 1);
   const YAML::Node rope = json["ropes"][0];
   CHECK(rope["name"].as<std::string>() == "hoist");

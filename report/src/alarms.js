@@ -9,7 +9,7 @@ import { displayUnit, maxAbs, num } from './units.js';
 const what = {
   over_mbl: 'over its minimum breaking load',
   over_hook_load: 'over its hook-load curve',
-  crossed: 'crossed its threshold',
+  crossed: 'past its threshold',
   clearance_below: 'clearance below its limit',
   touched: 'touched',
   slack: 'slack', taut: 'taut', contact: 'contact', release: 'release',

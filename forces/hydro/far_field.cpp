@@ -31,7 +31,8 @@ double radiatedPower(const RankineTdModel& model, const Eigen::VectorXcd& surfac
     sum += std::norm(surfaceAmplitude[static_cast<Eigen::Index>(i)]) * panels[i].area;
     area += panels[i].area;
   }
-  if (area <= 0.0) throw std::invalid_argument("radiatedPower: no free-surface panel in the annulus");
+  if (area <= 0.0)
+    throw std::invalid_argument("radiatedPower: no free-surface panel in the annulus");
   const RankineTdSettings& s = model.settings();
   // (the panels cover the annulus only approximately) => scale by the annulus' exact area
   const double ring = std::numbers::pi * (rOuter * rOuter - rInner * rInner);

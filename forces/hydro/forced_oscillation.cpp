@@ -55,8 +55,9 @@ RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode,
   out.damping = -scale * fc / (s.amplitude * s.omega);
   out.dt = dt;
   // (zeta = C cos + S sin) => Re((C - i S) e^{i w t})
-  out.surfaceAmplitude = (scale / s.amplitude) * (zc.cast<std::complex<double>>() -
-                                                  std::complex<double>(0.0, 1.0) * zs.cast<std::complex<double>>());
+  out.surfaceAmplitude =
+      (scale / s.amplitude) * (zc.cast<std::complex<double>>() -
+                               std::complex<double>(0.0, 1.0) * zs.cast<std::complex<double>>());
   return out;
 }
 

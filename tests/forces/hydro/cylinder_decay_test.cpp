@@ -59,8 +59,7 @@ Decay release(const dynamics::Model& model, const forces::ForceProvider& p, doub
   dynamics::MultibodySystem system(model);
   double stepStart = 0.0;
   system.setForces([&](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs,
-                       const dynamics::Data& d, dynamics::ExternalForces& f,
-                       Eigen::VectorXd& tau) {
+                       const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
     tau[0] -= kC33 * qs[0];
     p.evaluate(forces::Stage{ts, model, d, qs, vs, scratch.get(), stepStart}, f, tau);
   });
@@ -121,8 +120,8 @@ TEST_CASE("a floating cylinder's heave decay agrees on both hydrodynamic paths")
   for (std::size_t n = 0; n < marched.z.size(); ++n)
     worst = std::max(worst, std::abs(marched.z[n] - convolved.z[n]));
   INFO("largest difference " << worst << " m of 0.05; periods " << marched.period << " and "
-                             << convolved.period << " s; damping ratios " << marched.zeta
-                             << " and " << convolved.zeta);
+                             << convolved.period << " s; damping ratios " << marched.zeta << " and "
+                             << convolved.zeta);
   // (measured: 4.3 % of the release after 12 s, periods 0.35 % and damping ratios 6 % apart; the
   // convolution's A_inf carries the band-limited part of K, its K is sampled every 80 ms)
   CHECK(worst < 0.05 * 0.05);

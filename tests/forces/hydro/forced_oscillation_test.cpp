@@ -61,9 +61,9 @@ TEST_CASE("forced heave of a floating hemisphere matches Hulme 1982") {
   struct Row {
     double ka, a, b;
   };
-  for (const Row row : {Row{0.3, 0.7157, 0.3254}, Row{0.6, 0.5381, 0.3271},
-                        Row{1.0, 0.4284, 0.2484}, Row{2.0, 0.3884, 0.1031},
-                        Row{3.0, 0.4111, 0.0452}}) {
+  for (const Row row :
+       {Row{0.3, 0.7157, 0.3254}, Row{0.6, 0.5381, 0.3271}, Row{1.0, 0.4284, 0.2484},
+        Row{2.0, 0.3884, 0.1031}, Row{3.0, 0.4111, 0.0452}}) {
     const auto [a, b] = coefficients(row.ka, 2);
     INFO("ka " << row.ka << ": A " << a << " (Hulme " << row.a << "), B " << b << " (Hulme "
                << row.b << ")");

@@ -17,8 +17,8 @@
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydro/forced_oscillation.hpp"
 #include "forces/hydro/impulse_response_force.hpp"
-#include "forces/hydro/td_impulse_response.hpp"
 #include "forces/hydro/rankine_td_provider.hpp"
+#include "forces/hydro/td_impulse_response.hpp"
 #include "td_fixtures.hpp"
 
 using namespace yardsim;
@@ -199,13 +199,13 @@ TEST_CASE("a barge heaving in a regular beam wave moves alike on both paths") {
   const auto run = [&](const dynamics::Matrix6& aInf, auto makeProvider) {
     dynamics::ModelBuilder b;
     b.setGravity(Vector3::Zero());
-    b.addBody("barge", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
-              dynamics::Transform::identity(),
-              dynamics::makeInertia(mass, Vector3(0.0, 0.0, -0.5),
-                                    mass * Eigen::Matrix3d::Identity()));
+    b.addBody(
+        "barge", "world", dynamics::Joint::prismatic(Vector3::UnitZ()),
+        dynamics::Transform::identity(),
+        dynamics::makeInertia(mass, Vector3(0.0, 0.0, -0.5), mass * Eigen::Matrix3d::Identity()));
     // (the box's discrete A_inf is symmetric only to the panel error) => its symmetric part
-    b.setAddedMass("barge", dynamics::addedMassAboutOrigin(0.5 * (aInf + aInf.transpose()),
-                                                           Vector3::Zero()));
+    b.setAddedMass(
+        "barge", dynamics::addedMassAboutOrigin(0.5 * (aInf + aInf.transpose()), Vector3::Zero()));
     const dynamics::Model model = b.build();
     const auto p = makeProvider(model);
     auto scratch = p->makeScratch();

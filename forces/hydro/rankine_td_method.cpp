@@ -17,9 +17,9 @@ namespace yardsim::forces::hydro {
 namespace {
 
 const std::set<std::string> kSettings = {
-    "truncation_radius", "first_spacing", "max_spacing",      "growth",
-    "longest_period",    "damping_width", "damping_strength", "cutoff",
-    "band_start",        "band_end",      "froude_krylov",    "panel_step"};
+    "truncation_radius", "first_spacing", "max_spacing", "growth", "longest_period",
+    "damping_width", "damping_strength", "cutoff", "band_start", "band_end", "froude_krylov",
+    "panel_step"};
 
 // (request, name, default; NaN: required) => the setting
 double setting(const HydrodynamicsRequest& q, const std::string& name, double fallback) {
@@ -45,8 +45,7 @@ PanelMesh hullWorld(const HydrodynamicsRequest& q) {
 
 ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
   for (const auto& [name, value] : q.settings)
-    if (!kSettings.count(name))
-      throw std::invalid_argument("rankine_td: unknown setting '" + name + "'");
+    if (!kSettings.count(name)) throw std::invalid_argument("rankine_td: unknown setting '" + name + "'");
   if (!q.hull) throw std::invalid_argument("rankine_td: needs the hull mesh ('hull')");
   ImpulseResponseSettings s;
   FreeSurfaceSettings& fs = s.solver.freeSurface;
@@ -65,8 +64,7 @@ ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
         fs.growth >= 1 && fs.dampingWidth >= 0 && fs.dampingWidth < fs.truncationRadius &&
         fs.dampingStrength >= 0))
     throw std::invalid_argument(
-        "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= "
-        "1, "
+        "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= 1, "
         "0 <= damping_width < truncation_radius, damping_strength >= 0");
   s.solver.rho = q.water.density;
   s.solver.g = q.water.gravity;
@@ -109,8 +107,7 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
   if (auto m = checkTruncation(hull_W, s.solver.freeSurface)) return {*m};
   try {
     double shortest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < sea.size(); ++i)
-      shortest = std::min(shortest, sea.component(i).period);
+    for (std::size_t i = 0; i < sea.size(); ++i) shortest = std::min(shortest, sea.component(i).period);
     if (std::isfinite(shortest)) {
       const FreeSurfaceMesh surface = buildFreeSurface(wettedSurface(hull_W), s.solver.freeSurface);
       if (auto m = checkPanelSize(surface, s.solver.freeSurface, shortest, q.water.gravity))
@@ -128,23 +125,21 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
 namespace {
 // (added mass from the panels) => its symmetric part: the discrete A_ij = -rho int psi_j N_i dS
 // is symmetric only to the panel error, and the multibody model takes a symmetric one
-ImpulseResponse::Matrix6 symmetric(const ImpulseResponse::Matrix6& a) {
-  return 0.5 * (a + a.transpose());
-}
+ImpulseResponse::Matrix6 symmetric(const ImpulseResponse::Matrix6& a) { return 0.5 * (a + a.transpose()); }
 
 // (load) => rankine_td registered as an impulse-response solver and as a time-domain method
 const bool registered = [] {
-  registerImpulseResponseSolver({"rankine_td",
-                                 [](const HydrodynamicsRequest& q) {
-                                   ImpulseResponseSettings s = rankineTdSettings(q);
-                                   const auto model = rankineTdModel(q);
-                                   if (!s.headings.empty() && !(s.cutoff > 0))
-                                     s.cutoff = resolvedFrequency(*model);
-                                   ImpulseResponse ir = computeImpulseResponse(*model, s);
-                                   ir.aInf = symmetric(ir.aInf);
-                                   return ir;
-                                 },
-                                 checkRankineTd});
+  registerImpulseResponseSolver(
+      {"rankine_td",
+       [](const HydrodynamicsRequest& q) {
+         ImpulseResponseSettings s = rankineTdSettings(q);
+         const auto model = rankineTdModel(q);
+         if (!s.headings.empty() && !(s.cutoff > 0)) s.cutoff = resolvedFrequency(*model);
+         ImpulseResponse ir = computeImpulseResponse(*model, s);
+         ir.aInf = symmetric(ir.aInf);
+         return ir;
+       },
+       checkRankineTd});
   registerTimeDomainMethod(
       {"rankine_td",
        [](const std::string& name, const dynamics::Model& model, int body,

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A(ka) and B(ka) of a floating hemisphere (SVG, no dependencies) from hydro_hemisphere_td's CSV,
-with Hulme's (1982, Table 2) surge values.
+with Hulme's (1982) surge (Table 2) and heave (Table 1) values.
 
 Usage: python3 bench/hydro/plot_hemisphere_td.py hemisphere_td.csv > docs/hydrodynamics_hemisphere_td.svg
 """
@@ -13,6 +13,14 @@ HULME_SURGE_A = [(0.1, 0.5223), (0.2, 0.5515), (0.3, 0.5848), (0.4, 0.6175), (0.
                  (2.0, 0.2493), (2.5, 0.1961), (3.0, 0.1720)]
 HULME_SURGE_B = [(0.1, 0.0010), (0.2, 0.0082), (0.3, 0.0255), (0.4, 0.0557), (0.5, 0.0987), (0.6, 0.1516), (0.7, 0.2092),
                  (0.8, 0.2653), (0.9, 0.3145), (1.0, 0.3535), (1.2, 0.3978), (1.4, 0.4060)]
+
+# Hulme 1982, Table 1 (heave): Ka, A33 / (rho 2/3 pi a^3), B33 / (rho 2/3 pi a^3 omega), as transcribed in
+# the reference data of symbiotic-engineering/MarineHydro.jl (test/consistency_with_analytical_solutions.jl)
+HULME_HEAVE = [(0.1, 0.8627, 0.1816), (0.2, 0.7938, 0.2793), (0.3, 0.7157, 0.3254), (0.4, 0.6452, 0.3410),
+               (0.5, 0.5861, 0.3391), (0.6, 0.5381, 0.3271), (0.7, 0.4999, 0.3098), (0.8, 0.4698, 0.2899),
+               (0.9, 0.4464, 0.2691), (1.0, 0.4284, 0.2484), (1.2, 0.4047, 0.2096), (1.4, 0.3924, 0.1756),
+               (1.6, 0.3871, 0.1469), (1.8, 0.3864, 0.1229), (2.0, 0.3884, 0.1031), (2.5, 0.3988, 0.0674),
+               (3.0, 0.4111, 0.0452)]
 
 rows = list(csv.DictReader(open(sys.argv[1])))
 W, H, L, R, T, B = 760, 330, 60, 20, 30, 50
@@ -56,7 +64,9 @@ for mode in ("surge", "heave"):
     out += series(right, 0.5, [(x, b) for x, _, b in pts], colours[mode], False)
 out += series(left, 1.0, HULME_SURGE_A, colours["surge"], True)
 out += series(right, 0.5, HULME_SURGE_B, colours["surge"], True)
+out += series(left, 1.0, [(x, a) for x, a, _ in HULME_HEAVE], colours["heave"], True)
+out += series(right, 0.5, [(x, b) for x, _, b in HULME_HEAVE], colours["heave"], True)
 out.append(f'<text x="{left + 10}" y="{T + 16}" fill="{colours["surge"]}">surge: line yardsim rankine_td, circles Hulme 1982</text>')
-out.append(f'<text x="{left + 10}" y="{T + 32}" fill="{colours["heave"]}">heave: yardsim rankine_td</text>')
+out.append(f'<text x="{left + 10}" y="{T + 32}" fill="{colours["heave"]}">heave: line yardsim rankine_td, circles Hulme 1982</text>')
 out.append("</svg>")
 print("\n".join(out))

@@ -1,6 +1,7 @@
 #include "forces/hydro/forced_oscillation.hpp"
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <stdexcept>
 
@@ -26,6 +27,7 @@ RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode,
   Eigen::VectorXd a(normal.size());
   const Eigen::VectorXd none;
   Eigen::Matrix<double, 6, 1> fs = Eigen::Matrix<double, 6, 1>::Zero(), fc = fs;
+  Eigen::VectorXd zs = Eigen::VectorXd::Zero(state.zeta.size()), zc = zs;
   const int steps = s.periods * perPeriod, first = (s.periods - s.analysisPeriods) * perPeriod;
   for (int n = 0; n < steps; ++n) {
     // (t_n) => xi_dot of the ramped sine, the hull's normal velocity, the memory force
@@ -40,6 +42,10 @@ RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode,
     if (n >= first) {
       fs += f * std::sin(s.omega * t);
       fc += f * std::cos(s.omega * t);
+      // (zeta^n+1 lives at t_n + dt/2) => its sine and cosine sums
+      const double th = s.omega * (t + 0.5 * dt);
+      zs += std::sin(th) * state.zeta;
+      zc += std::cos(th) * state.zeta;
     }
   }
   // (sums over whole periods) => Fourier coefficients, then A and B
@@ -48,6 +54,10 @@ RadiationCoefficients forcedOscillation(const RankineTdModel& model, int mode,
   out.addedMass = model.aInf().col(mode) + scale * fs / (s.amplitude * s.omega * s.omega);
   out.damping = -scale * fc / (s.amplitude * s.omega);
   out.dt = dt;
+  // (zeta = C cos + S sin) => Re((C - i S) e^{i w t})
+  out.surfaceAmplitude =
+      (scale / s.amplitude) * (zc.cast<std::complex<double>>() -
+                               std::complex<double>(0.0, 1.0) * zs.cast<std::complex<double>>());
   return out;
 }
 

@@ -8,6 +8,8 @@
 // so with F^M the memory force (emp_scheme.hpp),
 //   A_ij = A_inf,ij + (2/T_a) int F^M_i sin(w t) dt / (xi_0 w^2),  B_ij = -(2/T_a) int F^M_i cos(w
 //   t) dt / (xi_0 w).
+// The free-surface elevation is Fourier-analysed the same way (its complex amplitude per panel,
+// for the far-field energy balance, far_field.hpp).
 // W axes about the body origin; A kg (kg m, kg m^2), B kg/s (...); w rad/s.
 #include <Eigen/Core>
 
@@ -28,6 +30,9 @@ struct RadiationCoefficients {
   Eigen::Matrix<double, 6, 1> addedMass;  ///< column `mode` of A(w)
   Eigen::Matrix<double, 6, 1> damping;    ///< column `mode` of B(w)
   double dt = 0.0;                        ///< the step used, s
+  /// complex free-surface elevation per unit amplitude, one per free-surface panel:
+  /// zeta(t) = Re(surfaceAmplitude e^{i w t}) xi_0 in the steady state, m per m (or per rad)
+  Eigen::VectorXcd surfaceAmplitude;
 };
 
 /// (model, mode 0..5, settings) => column `mode` of A(w) and B(w).

@@ -143,9 +143,12 @@ const bool registered = [] {
   registerTimeDomainMethod(
       {"rankine_td",
        [](const std::string& name, const dynamics::Model& model, int body,
-          const HydrodynamicsRequest& q, std::shared_ptr<const AiryWaves>) -> std::unique_ptr<ForceProvider> {
+          const HydrodynamicsRequest& q,
+          std::shared_ptr<const AiryWaves> sea) -> std::unique_ptr<ForceProvider> {
+         // (the scene's sea) => radiation + diffraction (+ Froude-Krylov with froude_krylov: 1)
          return std::make_unique<RankineTdProvider>(name, model, body, rankineTdModel(q),
-                                                    setting(q, "panel_step", q.dt));
+                                                    setting(q, "panel_step", q.dt), std::move(sea),
+                                                    rankineTdSettings(q).froudeKrylov);
        },
        checkRankineTd,
        [](const HydrodynamicsRequest& q) {

@@ -16,10 +16,11 @@ class Scratch final : public ProviderScratch {
   explicit Scratch(const RankineTdModel& m)
       : state(quietSurface(m)),
         emp(makeEmpScratch(m)),
-        a(Eigen::VectorXd::Zero(m.problem().bodyCount())) {}
+        a(Eigen::VectorXd::Zero(m.problem().bodyCount())),
+        at(Eigen::VectorXd::Zero(m.problem().bodyCount())) {}
   FreeSurfaceState state;
   EmpScratch emp;
-  Eigen::VectorXd a;
+  Eigen::VectorXd a, at, cw, sw;
   double last = -std::numeric_limits<double>::infinity();  ///< time of the last panel step, s
   Vector6 held = Vector6::Zero();                          ///< F^M held since then, W axes
 
@@ -43,14 +44,25 @@ class Scratch final : public ProviderScratch {
   }
 };
 
+// (k, z <= 0 below the level, depth h) => cosh k(z+h) / cosh kh and sinh k(z+h) / cosh kh, in
+// forms that neither overflow nor lose the deep-water limit e^{kz}
+std::pair<double, double> depthFactors(double k, double z, double h) {
+  const double e = std::exp(k * z);
+  if (!std::isfinite(h)) return {e, e};
+  const double a = std::exp(-2.0 * k * (z + h)), b = std::exp(-2.0 * k * h);
+  return {e * (1.0 + a) / (1.0 + b), e * (1.0 - a) / (1.0 + b)};
+}
+
 }  // namespace
 
 RankineTdProvider::RankineTdProvider(std::string name, const dynamics::Model& model, int body,
-                                     std::shared_ptr<const RankineTdModel> panels, double panelStep)
+                                     std::shared_ptr<const RankineTdModel> panels, double panelStep,
+                                     std::shared_ptr<const AiryWaves> sea, bool froudeKrylov)
     : ForceProvider(std::move(name)),
       body_(body),
       panels_(std::move(panels)),
-      panelStep_(panelStep) {
+      panelStep_(panelStep),
+      sea_(std::move(sea)) {
   const std::string me = "rankine_td '" + this->name() + "': ";
   if (body_ < 1 || body_ >= model.nbodies)
     throw std::invalid_argument(me + "body " + std::to_string(body_) +
@@ -59,10 +71,51 @@ RankineTdProvider::RankineTdProvider(std::string name, const dynamics::Model& mo
   if (!(panelStep_ > 0.0)) throw std::invalid_argument(me + "the panel step must be > 0");
   if (const auto m = checkEmpStep(empLimit(*panels_, 100), panelStep_))
     throw std::invalid_argument(me + *m);
+  if (!sea_ || sea_->calm()) return;
+  // (sea components, mean hull centroids) => the incident tables: for eta = a cos(theta),
+  // theta = k (x cos b + y sin b) - w t + phase, phi_I = g a / w cosh/cosh sin(theta), so
+  //   dphi_I/dn     = g a k / w (cc n_h cos theta + sc n_z sin theta)
+  //   d2phi_I/dndt  = g a k (cc n_h sin theta - sc n_z cos theta)
+  //   dphi_I/dt     = -g a cc cos theta,
+  // with cos theta = cp cos(w t) + sp sin(w t), sin theta = sp cos(w t) - cp sin(w t),
+  // cp, sp = cos, sin(k (x cos b + y sin b) + phase)
+  const int nb = panels_->problem().bodyCount(), nc = static_cast<int>(sea_->size());
+  const double g = panels_->settings().g, rho = panels_->settings().rho,
+               h = panels_->settings().depth;
+  for (Eigen::MatrixXd* m : {&cN_, &sN_, &cNt_, &sNt_}) m->setZero(nb, nc);
+  cF_.setZero(6, nc);
+  sF_.setZero(6, nc);
+  omega_.resize(nc);
+  for (int i = 0; i < nc; ++i) {
+    const WaveComponent& c = sea_->component(static_cast<std::size_t>(i));
+    const double a = 0.5 * c.height, k = sea_->wavenumber(static_cast<std::size_t>(i)),
+                 w = sea_->frequency(static_cast<std::size_t>(i));
+    const Vector3 e(std::cos(c.direction), std::sin(c.direction), 0.0);
+    omega_[i] = w;
+    for (int p = 0; p < nb; ++p) {
+      const Panel& q = panels_->problem().body()[static_cast<std::size_t>(p)];
+      const double th = k * q.centroid.dot(e) + c.phase, cp = std::cos(th), sp = std::sin(th);
+      const auto [cc, sc] = depthFactors(k, q.centroid.z(), h);
+      const double nh = q.normal.dot(e), nz = q.normal.z(), v = g * a * k / w;
+      cN_(p, i) = v * (cc * nh * cp + sc * nz * sp);
+      sN_(p, i) = v * (cc * nh * sp - sc * nz * cp);
+      cNt_(p, i) = w * v * (cc * nh * sp - sc * nz * cp);
+      sNt_(p, i) = w * v * (-cc * nh * cp - sc * nz * sp);
+      if (froudeKrylov) {
+        // (rho phi_t A N) => the Froude-Krylov force's cosine and sine parts
+        const Vector6 n = rho * q.area * panels_->modes().row(p).transpose();
+        cF_.col(i) += -g * a * cc * cp * n;
+        sF_.col(i) += -g * a * cc * sp * n;
+      }
+    }
+  }
 }
 
 std::unique_ptr<ProviderScratch> RankineTdProvider::makeScratch() const {
-  return std::make_unique<Scratch>(*panels_);
+  auto s = std::make_unique<Scratch>(*panels_);
+  s->cw.resize(omega_.size());
+  s->sw.resize(omega_.size());
+  return s;
 }
 
 Vector6 RankineTdProvider::velocity_W(const Stage& s) const {
@@ -80,8 +133,23 @@ const Vector6& RankineTdProvider::memoryForce(const Stage& s, ProviderScratch& s
   const bool stepStartStage = s.t == s.stepStart || !std::isfinite(s.stepStart);
   if (stepStartStage && s.t >= c.last + panelStep_ * (1.0 - 1e-9)) {
     c.a.noalias() = panels_->modes() * velocity_W(s);
-    const Eigen::VectorXd none;
-    c.held = empStep(*panels_, panelStep_, c.a, none, c.state, c.emp);
+    if (omega_.size() == 0) {
+      const Eigen::VectorXd none;
+      c.held = empStep(*panels_, panelStep_, c.a, none, c.state, c.emp);
+    } else {
+      // (the incident wave at t) => -dphi_I/dn on the hull, -d2phi_I/dndt for dphi^M/dt, F-K
+      const double r = sea_->ramp(s.t);
+      c.cw = r * (omega_ * s.t).array().cos();
+      c.sw = r * (omega_ * s.t).array().sin();
+      c.a.noalias() -= cN_ * c.cw;
+      c.a.noalias() -= sN_ * c.sw;
+      c.at.setZero();
+      c.at.noalias() -= cNt_ * c.cw;
+      c.at.noalias() -= sNt_ * c.sw;
+      c.held = empStep(*panels_, panelStep_, c.a, c.at, c.state, c.emp);
+      c.held.noalias() += cF_ * c.cw;
+      c.held.noalias() += sF_ * c.sw;
+    }
     c.last = s.t;
   }
   return c.held;

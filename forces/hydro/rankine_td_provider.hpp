@@ -1,7 +1,17 @@
 #pragma once
 // rankine_td: the radiation memory force of one floating body from the time-domain Rankine-panel
-// solver, run at its own rate (a multiple of the mechanics step). Linear about the mean pose,
-// zero forward speed, no incident wave (diffraction and the sea are the irregular-sea side's).
+// solver, run at its own rate (a multiple of the mechanics step), and with a sea the diffraction
+// force of its incident waves (regular and irregular: every component of forces::AiryWaves).
+// Linear about the mean pose, zero forward speed.
+//
+// Diffraction: the disturbance potential's hull condition gets -dphi_I/dn and its dphi^M/dt
+// problem -d2phi_I/(dn dt) at the mean panel centroids (linear Airy kinematics on the sea's depth,
+// unstretched, times the sea's ramp(t); the ramp's own rate is neglected, as on the
+// impulse-response path), so the held force is radiation + diffraction. With froudeKrylov the
+// incident pressure's force rho int dphi_I/dt N dS on the mean wetted surface is added as well;
+// without it (the default in scenes) the hydrostatics provider's nonlinear Froude-Krylov force is
+// the only one, as on the impulse-response path with `froude_krylov: 0`. Per panel step the
+// incident terms cost 4 Nb Nc multiply-adds (Nb hull panels, Nc components; tables made once).
 //
 // Coupling (DESIGN.md, expensive providers): the body carries the infinite-frequency added mass
 // on the left-hand side of the multibody equations (addedMass() below, set with
@@ -20,6 +30,7 @@
 // potential per panel, the time of the last panel step and the held force.
 #include <memory>
 
+#include "forces/airy_waves.hpp"
 #include "forces/force_provider.hpp"
 #include "forces/hydro/emp_scheme.hpp"
 
@@ -28,10 +39,12 @@ namespace yardsim::forces::hydro {
 class RankineTdProvider final : public ForceProvider {
  public:
   /// (name, multibody model, body >= 1, the panel model built at the body's mean pose, panel step
-  /// in s) => the provider; throws std::invalid_argument naming it for a bad body or a panel step
-  /// above the emp limit of the model's free surface (with the numbers).
+  /// in s, the sea or nullptr (radiation only), Froude-Krylov included) => the provider; throws
+  /// std::invalid_argument naming it for a bad body or a panel step above the emp limit of the
+  /// model's free surface (with the numbers).
   RankineTdProvider(std::string name, const dynamics::Model& model, int body,
-                    std::shared_ptr<const RankineTdModel> panels, double panelStep);
+                    std::shared_ptr<const RankineTdModel> panels, double panelStep,
+                    std::shared_ptr<const AiryWaves> sea = nullptr, bool froudeKrylov = false);
 
   int body() const { return body_; }
   double panelStep() const { return panelStep_; }
@@ -57,6 +70,12 @@ class RankineTdProvider final : public ForceProvider {
   int body_;
   std::shared_ptr<const RankineTdModel> panels_;
   double panelStep_;
+  std::shared_ptr<const AiryWaves> sea_;
+  // the incident wave at the hull centroids, per component i (columns) as
+  // q(t) = ramp(t) (C.col(i) cos(w_i t) + S.col(i) sin(w_i t)) summed over i:
+  // dphi_I/dn (Nb x Nc, m/s), d2phi_I/(dn dt) (Nb x Nc, m/s^2), the Froude-Krylov force (6 x Nc, N)
+  Eigen::MatrixXd cN_, sN_, cNt_, sNt_, cF_, sF_;
+  Eigen::VectorXd omega_;  // rad/s per component
 };
 
 }  // namespace yardsim::forces::hydro

@@ -1,6 +1,7 @@
 #include "dynamics/aba.hpp"
 
 #include "dynamics/checks.hpp"
+#include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::dynamics {
@@ -8,11 +9,13 @@ namespace yardsim::dynamics {
 namespace {
 
 // (q, v, tau, fext; with kPlaced, d.X_PB and d.X_WB already hold q's placements) => ddq
-// flatten: inline every Eigen helper into the three passes (GCC otherwise leaves 6x6 products as calls)
+// flatten (YARDSIM_FLATTEN): inline every Eigen helper into the three passes (GCC otherwise leaves
+// 6x6 products as calls)
 template <bool kPlaced>
-[[gnu::flatten]] const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const Eigen::VectorXd& q,
-                                                  const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
-                                                  const ExternalForces* fext) {
+YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const Eigen::VectorXd& q,
+                                                 const Eigen::VectorXd& v,
+                                                 const Eigen::VectorXd& tau,
+                                                 const ExternalForces* fext) {
   // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
     const int p = m.parent[i];

@@ -1,12 +1,14 @@
 #include "dynamics/crba.hpp"
 
 #include "dynamics/checks.hpp"
+#include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::dynamics {
 
-// flatten: inline every Eigen helper (GCC otherwise leaves small products as calls)
-[[gnu::flatten]] const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
+// flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products as
+// calls)
+YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "crba");
   // (q) => X_WB, S_W, IC_W = X_WB^* (I + A) X_WB^-1 (A: added mass)
   for (int i = 1; i < m.nbodies; ++i) {

@@ -1,6 +1,7 @@
 #include "dynamics/rnea.hpp"
 
 #include "dynamics/checks.hpp"
+#include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace yardsim::dynamics {
@@ -23,10 +24,12 @@ inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, cons
   return Ia + crossForce(v, Iv);
 }
 
-// flatten: inline every Eigen helper (GCC otherwise leaves small products and cross products as calls)
+// flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products and
+// cross products as calls)
 template <bool kZeroAcc>
-[[gnu::flatten]] void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                               const Eigen::VectorXd* ddq, const ExternalForces* fext, Eigen::VectorXd& out) {
+YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
+                              const Eigen::VectorXd& v, const Eigen::VectorXd* ddq,
+                              const ExternalForces* fext, Eigen::VectorXd& out) {
   d.A_W[0].head<3>().setZero();
   d.A_W[0].tail<3>() = -m.gravity;
   // (q, v, ddq) => X_WB, S_W, V_W, A_W, F_W = I_W A_W + V_W x* I_W V_W - F_ext_W

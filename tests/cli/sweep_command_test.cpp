@@ -60,7 +60,7 @@ std::map<std::string, std::string> records(const fs::path& out) {
 
 }  // namespace
 
-TEST_CASE("Local cores, MPI ranks and a Slurm array give the same HDF5 case table") {
+TEST_CASE("Local cores, MPI ranks and a Slurm array give the same HDF5 case table", "[long]") {
   yardsim::testing::SceneDir dir;
   const std::string local = dir.file("local"), mpi = dir.file("mpi"), array = dir.file("array");
   const Result l = shell(kExe + " sweep " + kSweep + " -o " + local + " -j 2 --quiet");

@@ -13,7 +13,10 @@
 
 using namespace yardsim;
 
-TEST_CASE("floating barge: draft, trim, wind heel and roll period of the hand formulas, and waves roll it") {
+TEST_CASE(
+    "floating barge: draft, trim, wind heel and roll period of the hand formulas, and waves roll "
+    "it",
+    "[long]") {
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/floating_barge/scene.yaml");
   auto root = scene::assemble(*scene);
   testing::SceneDir out;

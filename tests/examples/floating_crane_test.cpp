@@ -23,7 +23,7 @@ constexpr double kG = 9.81;
 using Reader = testing::ChannelReader;
 }  // namespace
 
-TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and heel") {
+TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and heel", "[long]") {
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                        "/examples/floating_crane/rated_lift.yaml");
   auto root = scene::assemble(*scene);

@@ -38,7 +38,8 @@ std::string withoutSceneLines(const std::string& text) {
 }  // namespace
 
 TEST_CASE(
-    "the goliath turnover from the yard database equals the hand-typed scene to the last digit") {
+    "the goliath turnover from the yard database equals the hand-typed scene to the last digit",
+    "[long]") {
   yardsim::testing::SceneDir dir;
   const std::string db = dir.file("yard.sqlite");
   auto r = shell(kSource + "/examples/yard/build_fixture.sh " + kYardsim + " " + db);

@@ -25,7 +25,8 @@ const char* kRopes[] = {"GOC201.upper_fore", "GOC201.upper_aft", "GOC201.lower_f
                         "GOC202.upper_fore", "GOC202.upper_aft", "GOC202.lower_fore", "GOC202.lower_aft"};
 }  // namespace
 
-TEST_CASE("goliath turnover: statics, hoisting overshoot, action order, turnover and lowering") {
+TEST_CASE("goliath turnover: statics, hoisting overshoot, action order, turnover and lowering",
+          "[long]") {
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                         "/examples/goliath_turnover/scene.yaml");
   auto root = scene::assemble(*scene);
@@ -168,7 +169,8 @@ Operation runWithDrive(double accel, double jerk) {
 }
 }  // namespace
 
-TEST_CASE("goliath turnover with ramped hoist drives: smaller dynamic peaks than speed steps") {
+TEST_CASE("goliath turnover with ramped hoist drives: smaller dynamic peaks than speed steps",
+          "[long]") {
   const double v = 0.083, a = 0.02;  // m/s, m/s^2: full speed in 4.15 s
   const Operation step = runWithDrive(0.0, 0.0), ramp = runWithDrive(a, 0.0);
   // (trapezoidal hoist) => it ends v/a later than at a constant speed

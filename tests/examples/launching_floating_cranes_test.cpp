@@ -68,7 +68,8 @@ void give(scene::ParamOverrides& o, const std::string& name, const std::string& 
 }
 }  // namespace
 
-TEST_CASE("launching by two floating cranes: statics in air and water and floating free") {
+TEST_CASE("launching by two floating cranes: statics in air and water and floating free",
+          "[long]") {
   scene::ParamOverrides o;
   give(o, "air_speed", "0.1");
   give(o, "water_speed", "0.05");

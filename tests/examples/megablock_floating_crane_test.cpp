@@ -39,7 +39,8 @@ void give(scene::ParamOverrides& o, const std::string& name, const std::string& 
 
 TEST_CASE(
     "megablock with a floating crane: statics and action order and transport and peak over "
-    "static") {
+    "static",
+    "[long]") {
   scene::ParamOverrides o;
   give(o, "haul_in", "-2.0");
   give(o, "travel", "10.0");

@@ -19,8 +19,8 @@
 
 using namespace yardsim;
 
-TEST_CASE(
-    "moored barge: offset and line tensions of the hand calculation of the mooring stiffness") {
+TEST_CASE("moored barge: offset and line tensions of the hand calculation of the mooring stiffness",
+          "[long]") {
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                        "/examples/moored_barge/scene.yaml");
   auto root = scene::assemble(*scene);
@@ -110,7 +110,8 @@ TEST_CASE(
   CHECK(worst < 2e-5 * largest);
 }
 
-TEST_CASE("moored barge on lumped lines: at rest where the quasi-static catenaries hold it") {
+TEST_CASE("moored barge on lumped lines: at rest where the quasi-static catenaries hold it",
+          "[long]") {
   // (examples/moored_barge/lumped.yaml, and the same scene with catenary lines) => both stay at
   // rest at the start; the lumped lines' fairlead tension within 1.5 % of the catenary's (20
   // segments of 15.7 m: the touchdown falls between nodes; tests/forces/lines/

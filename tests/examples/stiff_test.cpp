@@ -131,7 +131,9 @@ TEST_CASE("hook on a 16-part hoist over slings holding 920 t: omega_max 119 rad/
   else CHECK_THAT(past.failure, Catch::Contains("hook") && Catch::Contains("suggestion"));
 }
 
-TEST_CASE("3500 t block under a lumped 24-part hoist: omega_max ~1.4e3 rad/s, RK4 needs dt <= ~2 ms") {
+TEST_CASE(
+    "3500 t block under a lumped 24-part hoist: omega_max ~1.4e3 rad/s, RK4 needs dt <= ~2 ms",
+    "[long]") {
   auto scene = scene::loadSceneOrThrow(example("block_3500t"));
   const auto e = estimateOf(*scene);
   CHECK(e.omegaMax == Approx(1.4e3).epsilon(0.02));
@@ -241,7 +243,8 @@ TEST_CASE("mass ratio 1e6: refused at a careless step with a step that works, wh
   CHECK(rise < 1.0);  // RK4 inside its limit only removes energy (from the shackle's fast mode)
 }
 
-TEST_CASE("one hour of simulated time: semi-implicit Euler's energy error stays bounded (no drift)") {
+TEST_CASE("one hour of simulated time: semi-implicit Euler's energy error stays bounded (no drift)",
+          "[long]") {
   auto scene = scene::loadSceneOrThrow(example("block_920t"));
   scene->record.interval = 10.0;
   testing::SceneDir dir;

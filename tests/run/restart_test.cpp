@@ -77,7 +77,8 @@ double actorTime(const Output& o, const std::string& actor, const std::string& p
 }
 }  // namespace
 
-TEST_CASE("the goliath turnover restarted in the middle of the turnover equals the whole run") {
+TEST_CASE("the goliath turnover restarted in the middle of the turnover equals the whole run",
+          "[long]") {
   testing::SceneDir dir;
   const fs::path scene = kExamples / "goliath_turnover/scene.yaml";
   const Output whole = runScene(scene, dir.path() / "whole", 50.0);
@@ -100,7 +101,7 @@ TEST_CASE("the goliath turnover restarted in the middle of the turnover equals t
   CHECK_FALSE(fs::exists(dir.path() / "restarted/checkpoints/t000300.000.ckpt"));
 }
 
-TEST_CASE("the floating barge restarted in waves equals the whole run") {
+TEST_CASE("the floating barge restarted in waves equals the whole run", "[long]") {
   testing::SceneDir dir;
   const fs::path scene = kExamples / "floating_barge/scene.yaml";
   const Output whole = runScene(scene, dir.path() / "whole", 35.0);
@@ -127,7 +128,8 @@ TEST_CASE("an adaptive CVODE scene restarted from a checkpoint equals the run th
   checkConcatenation(whole, restarted, 60.0);
 }
 
-TEST_CASE("the moored barge restarted in waves equals the whole run (the catenaries' warm start)") {
+TEST_CASE("the moored barge restarted in waves equals the whole run (the catenaries' warm start)",
+          "[long]") {
   testing::SceneDir dir;
   const fs::path scene = kExamples / "moored_barge/scene.yaml";
   const Output whole = runScene(scene, dir.path() / "whole", 35.0);
@@ -136,8 +138,8 @@ TEST_CASE("the moored barge restarted in waves equals the whole run (the catenar
   checkConcatenation(whole, restarted, 70.0);
 }
 
-TEST_CASE(
-    "a buoy on lumped mooring lines restarted mid-swing equals the whole run (nodes in q, v)") {
+TEST_CASE("a buoy on lumped mooring lines restarted mid-swing equals the whole run (nodes in q, v)",
+          "[long]") {
   // (two lumped lines of 10 segments: their 18 inner nodes are bodies, so their positions and
   // velocities are part of the multibody state's q and v and of its checkpoint) => under CVODE
   // BDF. (Under HHT the restarted run differs in the last digit: the whole run keeps reusing

@@ -34,7 +34,7 @@ std::pair<double, double> coefficients(double ka, int mode, int n = 8) {
 
 }  // namespace
 
-TEST_CASE("forced surge of a floating hemisphere matches Hulme 1982") {
+TEST_CASE("forced surge of a floating hemisphere matches Hulme 1982", "[long]") {
   // Hulme 1982 Table 2: K a, A11 / (rho 2/3 pi a^3), B11 / (rho 2/3 pi a^3 omega)
   struct Row {
     double ka, a, b;

@@ -55,7 +55,8 @@ std::pair<double, double> fromRetardation(const ImpulseResponse& r, double w, in
 
 }  // namespace
 
-TEST_CASE("the impulse responses agree with forced oscillation and with the Haskind relation") {
+TEST_CASE("the impulse responses agree with forced oscillation and with the Haskind relation",
+          "[long]") {
   // one model and one set of responses for both checks (the set-up is the slow part)
   const RankineTdModel model(cubeSphere(1.0, 6), yardsim::dynamics::Transform{}, impulseSettings());
   ImpulseResponseSettings s = settings(model);

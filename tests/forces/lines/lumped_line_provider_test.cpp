@@ -92,7 +92,8 @@ std::string rk4For(int segments) {
 
 }  // namespace
 
-TEST_CASE("lumped line: at rest it reproduces the catenary fairlead tension and converges") {
+TEST_CASE("lumped line: at rest it reproduces the catenary fairlead tension and converges",
+          "[long]") {
   const forces::CatenaryParameters chain{314.0, 1.2e9, weight(), true, 0.0};
   const auto c = forces::solveCatenary(chain, 300.0, 39.0);
   REQUIRE(c.status == forces::CatenaryStatus::Converged);
@@ -148,7 +149,7 @@ until: )" +
          std::to_string(until) + "\n";
 }
 
-TEST_CASE("lumped line: the energy balance closes without dissipation and with it") {
+TEST_CASE("lumped line: the energy balance closes without dissipation and with it", "[long]") {
   const double kinetic0 = 0.5 * 2.0e5 * 0.25;  // J: the buoy released at 0.5 m/s
   SECTION("no damping, no drag, no bed: only the integrator's error") {
     testing::SceneDir dir;
@@ -191,7 +192,7 @@ TEST_CASE("lumped line: the energy balance closes without dissipation and with i
   }
 }
 
-TEST_CASE("lumped line: released off its rest the moored buoy settles back to it") {
+TEST_CASE("lumped line: released off its rest the moored buoy settles back to it", "[long]") {
   testing::SceneDir rest, dir;
   const auto still =
       simulate(rest, between(", cdn: 2.4", "{method: hht, dt: 0.05}", 0.0, 1.0), 1.0);
@@ -211,7 +212,8 @@ TEST_CASE("lumped line: released off its rest the moored buoy settles back to it
   CHECK(std::abs(csv.rows.back()[t] - still.rows.back()[t]) < 0.1 * still.rows.back()[t]);
 }
 
-TEST_CASE("lumped line: implicit methods step the nodes at 0.05 s and rest where RK4 does") {
+TEST_CASE("lumped line: implicit methods step the nodes at 0.05 s and rest where RK4 does",
+          "[long]") {
   const forces::CatenaryParameters chain{314.0, 1.2e9, weight(), true, 0.0};
   const auto c = forces::solveCatenary(chain, 290.0, 39.0);
   const double exact = std::hypot(c.hf, c.vf);

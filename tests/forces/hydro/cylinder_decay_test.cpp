@@ -91,7 +91,7 @@ Decay release(const dynamics::Model& model, const forces::ForceProvider& p, doub
 
 }  // namespace
 
-TEST_CASE("a floating cylinder's heave decay agrees on both hydrodynamic paths") {
+TEST_CASE("a floating cylinder's heave decay agrees on both hydrodynamic paths", "[long]") {
   // (free surface sized for ka = 0.4: the decay's w_n is about 2.5 rad/s, ka 0.65)
   const auto pm = std::make_shared<const RankineTdModel>(
       verticalCylinder(1.0, -1.0, 0.5, kSides, 6, 2), dynamics::Transform{},

@@ -56,7 +56,7 @@ TEST_CASE("forced surge at short waves matches Hulme's added mass") {
   CHECK(b > 0.0);
 }
 
-TEST_CASE("forced heave of a floating hemisphere matches Hulme 1982") {
+TEST_CASE("forced heave of a floating hemisphere matches Hulme 1982", "[long]") {
   // Hulme 1982 Table 1: K a, A33 / (rho 2/3 pi a^3), B33 / (rho 2/3 pi a^3 omega)
   struct Row {
     double ka, a, b;

@@ -177,7 +177,7 @@ TEST_CASE(
   CHECK(still[2] / still[1] > 0.999);
 }
 
-TEST_CASE("a barge heaving in a regular beam wave moves alike on both paths") {
+TEST_CASE("a barge heaving in a regular beam wave moves alike on both paths", "[long]") {
   // (a 4 x 2 m box at 1 m draft on a heave joint, a linear spring C33 = rho g A_wp) in a regular
   // wave of 0.1 m travelling along the body's y axis (beam sea): the provider marching radiation
   // + diffraction + Froude-Krylov against the Cummins convolution with the excitation response

@@ -282,6 +282,12 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       all.loops.push_back(std::move(l));
     }
   }
+  // (providers that take every body with a geometry: the scene-level collision) => attachments
+  for (auto& c : all.providers)
+    if (c.everyBodyWithGeometry && c.attachments.empty())
+      for (const auto& b : all.bodies)
+        if (b.visual.shape != MechanicsSpec::Visual::Shape::Auto)
+          c.attachments.push_back({b.name, dynamics::Vector3::Zero()});
   // (watches) => their elements resolved among every fragment's bodies, joints and ropes
   std::vector<std::string> elements;
   for (const auto& b : all.bodies) elements.insert(elements.end(), {b.name, b.jointName});
@@ -438,6 +444,18 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       if (std::any_of(s->spec.providers.begin(), s->spec.providers.end(),
                       [](const auto& p) { return bool(p.buildFromSystem); }))
         mechanics::System(*s->built, {}, s->name);
+    } catch (const ProviderPlaceError& e) {
+      // (a provider's problem at a node of its entry) => the fragment that declared it
+      SourceMark where = scene.root.where;
+      std::string key = e.key;
+      for (const auto& f : fragments)
+        for (const auto& p : f.spec.providers)
+          if (prefixed(f.owner->path, p.name) == e.provider) {
+            where = f.owner->mechanicsWhere;
+            if (e.line > 0) where = {where.file, e.line, e.column};
+            if (!e.rootKey) key = joinKey(f.owner->keyPath, "mechanics." + p.kind + "." + e.key);
+          }
+      diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());
     } catch (const std::exception& e) {
       const auto [where, key] = bodyPlace(e.what());
       diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());

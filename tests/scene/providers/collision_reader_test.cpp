@@ -449,3 +449,42 @@ collision:
   CHECK(!load("good.yaml", "clearance:\n  near: {between: [box, box], below: 1}\n")
              .diagnostics.hasErrors());
 }
+
+TEST_CASE("collision scene: an equalizer's branches are watched with its own diameter") {
+  // branch from the sheave (0, 0, 10) to (2, 0, 0): the line 10 x + 2 z = 20; the post's nearest
+  // edge (2.5, y, 4.5) lies 14 / sqrt(104) from it, minus the radius 0.025 m
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    load:
+      parent: world
+      joint: {name: load_z, type: prismatic, axis: [0, 0, 1]}
+      mass: 1000
+      inertia: [100, 100, 100]
+      geometry: {box: [0.5, 0.5, 0.5]}
+    post:
+      parent: world
+      joint: {name: post_fix, type: fixed}
+      placement: {xyz: [3, 0, 5]}
+      mass: 100
+      inertia: [10, 10, 10]
+      geometry: {box: [1, 1, 1]}
+  equalizers:
+    eq1:
+      sheave: {point: [0, 0, 10]}
+      branches: [[{body: load, point: [-2, 0, 0]}], [{body: load, point: [2, 0, 0]}]]
+      EA: 2.0e8
+      L0: 21.0                  # slack: nothing moves
+      diameter: 0.05
+clearance:
+  eq_post: {between: [eq1, post], below: 0.5, range: 5}
+record: {interval: 0.5, channels: ["*"]}
+trace: [jsonl]
+)",
+                            1.0);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r)
+    CHECK(at(csv, r, "eq_post.distance[m]") == Approx(14 / std::sqrt(104.0) - 0.025).margin(1e-9));
+}

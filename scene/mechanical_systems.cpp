@@ -119,7 +119,12 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
         where.line = at.Mark().line + 1;
         where.column = at.Mark().column + 1;
       }
-      diags.error(where, base + "." + param + (key.empty() ? "" : "." + key), msg);
+      std::string path = base + "." + param + (key.empty() ? "" : "." + key);
+      // (the scene-level collision the loader put in the root's mechanics) => its keys as written
+      if (inst.path.empty() && param == "collision" && key.starts_with("collision") &&
+          inst.mechanics["collision"]["collision"]["_scene"])
+        path = key.starts_with("collision.clearance.") ? key.substr(10) : key;
+      diags.error(where, path, msg);
     };
     // bodies may be absent from a fragment that only adds ropes: skip the "at least one" rule
     if (!inst.mechanics["bodies"]) p.set("bodies", YAML::Load("{__none__: ~}"), inst.mechanicsWhere);

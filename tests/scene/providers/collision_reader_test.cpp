@@ -446,6 +446,13 @@ collision:
   CHECK_THAT(ignored.diagnostics.report(), Contains("ignored.yaml:14:") &&
                                                Contains("collision.ignore[0]") &&
                                                Contains("'crate' is not a body with a geometry"));
+  // (problems found at read time) => the keys as written at the scene root
+  const auto stiffness = load("stiffness.yaml", "  points_per_pair: 0\n");
+  CHECK_THAT(stiffness.diagnostics.report(),
+             Contains("stiffness.yaml:14:20: error: collision.points_per_pair: must be >= 1"));
+  const auto below = load("below.yaml", "clearance:\n  near: {between: [box, box], below: -1}\n");
+  CHECK_THAT(below.diagnostics.report(),
+             Contains("below.yaml:15:") && Contains("error: clearance.near.below"));
   CHECK(!load("good.yaml", "clearance:\n  near: {between: [box, box], below: 1}\n")
              .diagnostics.hasErrors());
 }

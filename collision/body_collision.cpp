@@ -25,7 +25,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
   };
   // (shapes) => the contact world
   for (const BodyShape& s : spec_.shapes) {
-    contactIds_.push_back(contact_.add(s.shape, poseOf(s, kin), {s.name, {s.body}}));
+    contactIds_.push_back(spec_.contact ? contact_.add(s.shape, poseOf(s, kin), {s.name, {s.body}})
+                                        : -1);
     // (shape) => the points of it that can touch the ground, in its frame
     std::vector<Vector3> points;
     const Vector3 h = s.shape.size / 2;
@@ -128,7 +129,7 @@ void BodyCollision::update(const dynamics::Data& kin) {
     const BodyShape& s = spec_.shapes[i];
     if (s.body == 0) continue;  // the world's shapes never move
     const Transform X_WS = poseOf(s, kin);
-    contact_.setPose(contactIds_[i], X_WS);
+    if (contactIds_[i] >= 0) contact_.setPose(contactIds_[i], X_WS);
     if (clearanceShapeIds_[i] >= 0) clearance_.setPose(clearanceShapeIds_[i], X_WS);
   }
   for (std::size_t r = 0; r < spec_.ropes.size(); ++r)
@@ -163,7 +164,7 @@ void BodyCollision::groundContacts(const BodyShape& s, const Transform& X_WS,
 
 double BodyCollision::groundPenetration() const {
   double deepest = -std::numeric_limits<double>::infinity();
-  if (!spec_.ground) return deepest;
+  if (!spec_.ground || !spec_.contact) return deepest;
   const double top = spec_.groundHeight;
   for (std::size_t i = 0; i < spec_.shapes.size(); ++i) {
     if (!touchesGround_[i]) continue;
@@ -181,7 +182,7 @@ double BodyCollision::groundPenetration() const {
 }
 
 void BodyCollision::contacts(std::vector<forces::ContactPoint>& out) {
-  if (spec_.shapes.empty()) return;
+  if (spec_.shapes.empty() || !spec_.contact) return;
   if (spec_.ground)
     for (const BodyShape& s : spec_.shapes)
       if (touchesGround_[static_cast<std::size_t>(&s - spec_.shapes.data())])

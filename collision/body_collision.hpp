@@ -57,6 +57,8 @@ struct BodyCollisionSpec {
   std::vector<int> pairLaw;                 // [m_a * materialCount + m_b] => law index
   std::vector<ClearanceSpec> watches;
   int maxPointsPerPair = 4;
+  // false: no contact world (only the clearance watches): contacts() gives nothing
+  bool contact = true;
   // the ground: the half-space z <= groundHeight (world), contact computed here, not by FCL:
   // a point at every vertex of a box or mesh below it, the lowest point of a sphere and of a
   // capsule's end spheres, 16 points on each rim of a cylinder (FCL gives one point for a face

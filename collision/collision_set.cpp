@@ -21,14 +21,43 @@ std::string point(const Vector3& p) {
 
 CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> world,
                            std::vector<forces::ContactMaterial> materials,
-                           const std::vector<std::pair<std::string, int>>& reactionBodies)
-    : ForceProvider(name), world_(std::move(world)) {
+                           const std::vector<std::pair<std::string, int>>& reactionBodies,
+                           Options options)
+    : ForceProvider(name), world_(std::move(world)), options_(options) {
   // (stage) => the world at the stage's poses, its contact points
   auto source = [w = world_](const forces::Stage& s, std::vector<forces::ContactPoint>& out) {
     w->update(s.data);
     w->contacts(out);
   };
   contact_ = std::make_unique<forces::ContactForce>(name, source, std::move(materials));
+  if (options_.contact) addContactOutputs(reactionBodies);
+  const auto& watches = world_->spec().watches;
+  for (std::size_t w = 0; w < watches.size(); ++w) {
+    const double below = watches[w].below;
+    auto distance = [this, w](const forces::Stage& s) {
+      world_->update(s.data);
+      return world_->clearance(w).distance;
+    };
+    auto detail = [this, w](const forces::Stage& s) {
+      world_->update(s.data);
+      const WatchReading r = world_->clearance(w);
+      if (r.a.empty()) return std::string("nothing within range");
+      return r.a + " at " + point(r.pa_W) + ", " + r.b + " at " + point(r.pb_W);
+    };
+    const std::string element =
+        options_.watchesAtTop ? watches[w].name : this->name() + "." + watches[w].name;
+    outputs_.push_back({watches[w].name + ".distance", "m", distance, options_.watchesAtTop});
+    events_.push_back({element, "clearance_below", "",
+                       [distance, below](const forces::Stage& s) { return below - distance(s); },
+                       distance, detail});
+    events_.push_back({element, "touched", "",
+                       [distance](const forces::Stage& s) { return -distance(s); }, distance,
+                       detail});
+  }
+}
+
+void CollisionSet::addContactOutputs(
+    const std::vector<std::pair<std::string, int>>& reactionBodies) {
   outputs_.push_back({"points", "-", [this](const forces::Stage& s) {
                         std::unique_ptr<forces::ProviderScratch> t;
                         return static_cast<double>(collected(s, t).points.size());
@@ -58,28 +87,6 @@ CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> worl
   events_.push_back({this->name(), "contact", "release",
                      [this](const forces::Stage& s) { return penetration(s); },
                      [this](const forces::Stage& s) { return penetration(s); }, nullptr});
-  const auto& watches = world_->spec().watches;
-  for (std::size_t w = 0; w < watches.size(); ++w) {
-    const double below = watches[w].below;
-    auto distance = [this, w](const forces::Stage& s) {
-      world_->update(s.data);
-      return world_->clearance(w).distance;
-    };
-    auto detail = [this, w](const forces::Stage& s) {
-      world_->update(s.data);
-      const WatchReading r = world_->clearance(w);
-      if (r.a.empty()) return std::string("nothing within range");
-      return r.a + " at " + point(r.pa_W) + ", " + r.b + " at " + point(r.pb_W);
-    };
-    const std::string element = this->name() + "." + watches[w].name;
-    outputs_.push_back({watches[w].name + ".distance", "m", distance});
-    events_.push_back({element, "clearance_below", "",
-                       [distance, below](const forces::Stage& s) { return below - distance(s); },
-                       distance, detail});
-    events_.push_back({element, "touched", "",
-                       [distance](const forces::Stage& s) { return -distance(s); }, distance,
-                       detail});
-  }
 }
 
 const forces::ContactForce::Scratch& CollisionSet::collected(
@@ -107,6 +114,7 @@ double CollisionSet::penetration(const forces::Stage& s) const {
 
 forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) const {
   forces::StiffnessHint out;
+  if (!options_.contact) return out;
   const double g = model.gravity.norm();
   for (const BodyShape& s : world_->spec().shapes) {
     // (a body fixed to the world through fixed joints only) => it cannot move: no mode

@@ -30,11 +30,23 @@ class CollisionSet final : public forces::ForceProvider,
                            public forces::ProviderEvents,
                            public forces::ProviderStiffness {
  public:
+  struct Options {
+    // false: only the clearance watches (no points, normal_force, fz, contact/release)
+    bool contact = true;
+    // true: each watch's channel is `<watch>.distance` and its events' element `<watch>` (the
+    // scene-level form); false: `<set>.<watch>.distance` and `<set>.<watch>`
+    bool watchesAtTop = false;
+  };
   // (name, the world of the set's bodies, one contact law per material pair, the names of the
-  // bodies whose fz is a channel with their indices) => the provider
+  // bodies whose fz is a channel with their indices, options) => the provider
   CollisionSet(std::string name, std::shared_ptr<BodyCollision> world,
                std::vector<forces::ContactMaterial> materials,
-               const std::vector<std::pair<std::string, int>>& reactionBodies);
+               const std::vector<std::pair<std::string, int>>& reactionBodies, Options options);
+  CollisionSet(std::string name, std::shared_ptr<BodyCollision> world,
+               std::vector<forces::ContactMaterial> materials,
+               const std::vector<std::pair<std::string, int>>& reactionBodies)
+      : CollisionSet(std::move(name), std::move(world), std::move(materials), reactionBodies,
+                     Options{}) {}
 
   const std::vector<forces::ProviderOutput>& outputs() const override { return outputs_; }
   const std::vector<forces::ProviderEvent>& events() const override { return events_; }
@@ -64,6 +76,8 @@ class CollisionSet final : public forces::ForceProvider,
   // temporary
   const forces::ContactForce::Scratch& collected(
       const forces::Stage& s, std::unique_ptr<forces::ProviderScratch>& temporary) const;
+  // (bodies whose fz is a channel) => points, normal_force, <body>.fz, contact/release
+  void addContactOutputs(const std::vector<std::pair<std::string, int>>& reactionBodies);
   // (stage) => the deepest penetration of the set, > 0 in contact
   double penetration(const forces::Stage& s) const;
 
@@ -71,6 +85,7 @@ class CollisionSet final : public forces::ForceProvider,
   std::unique_ptr<forces::ContactForce> contact_;
   std::vector<forces::ProviderOutput> outputs_;
   std::vector<forces::ProviderEvent> events_;
+  Options options_;
 };
 
 }  // namespace yardsim::collision

@@ -20,6 +20,7 @@ struct ProviderOutput {
   std::string name;  // "force" => the channel <provider>.force
   std::string unit;  // "N", "m", "rad", ...
   std::function<double(const Stage&)> read;
+  bool global = false;  // true: the channel is `name` itself, not <provider>.name
 };
 
 class ProviderOutputs {

@@ -66,6 +66,7 @@ struct MechanicsSpec {
   using Point = std::pair<std::string, dynamics::Vector3>;  // (body, p_B)
   struct Material {
     double ea = 0.0, l0 = 0.0, damping = 0.0, minLength = 0.01, mbl = 0.0;  // mbl 0: none
+    double diameter = 0.0;  // m, the rope's own (collision capsules); 0: not given
   };
   struct Rope {
     std::string name;
@@ -152,6 +153,9 @@ struct MechanicsSpec {
     ProviderBuild build;
     ProviderBodies bodies = {};  // empty: the provider owns no body
     ProviderBuildFromSystem buildFromSystem = {};
+    // true: when the fragments are merged, every body with a geometry becomes an attachment
+    // (the scene-level `collision:`: bodies need not be listed)
+    bool everyBodyWithGeometry = false;
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;

@@ -119,7 +119,12 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
         where.line = at.Mark().line + 1;
         where.column = at.Mark().column + 1;
       }
-      diags.error(where, base + "." + param + (key.empty() ? "" : "." + key), msg);
+      std::string path = base + "." + param + (key.empty() ? "" : "." + key);
+      // (the scene-level collision the loader put in the root's mechanics) => its keys as written
+      if (inst.path.empty() && param == "collision" && key.starts_with("collision") &&
+          inst.mechanics["collision"]["collision"]["_scene"])
+        path = key.starts_with("collision.clearance.") ? key.substr(10) : key;
+      diags.error(where, path, msg);
     };
     // bodies may be absent from a fragment that only adds ropes: skip the "at least one" rule
     if (!inst.mechanics["bodies"]) p.set("bodies", YAML::Load("{__none__: ~}"), inst.mechanicsWhere);
@@ -282,6 +287,12 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       all.loops.push_back(std::move(l));
     }
   }
+  // (providers that take every body with a geometry: the scene-level collision) => attachments
+  for (auto& c : all.providers)
+    if (c.everyBodyWithGeometry && c.attachments.empty())
+      for (const auto& b : all.bodies)
+        if (b.visual.shape != MechanicsSpec::Visual::Shape::Auto)
+          c.attachments.push_back({b.name, dynamics::Vector3::Zero()});
   // (watches) => their elements resolved among every fragment's bodies, joints and ropes
   std::vector<std::string> elements;
   for (const auto& b : all.bodies) elements.insert(elements.end(), {b.name, b.jointName});
@@ -438,6 +449,18 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       if (std::any_of(s->spec.providers.begin(), s->spec.providers.end(),
                       [](const auto& p) { return bool(p.buildFromSystem); }))
         mechanics::System(*s->built, {}, s->name);
+    } catch (const ProviderPlaceError& e) {
+      // (a provider's problem at a node of its entry) => the fragment that declared it
+      SourceMark where = scene.root.where;
+      std::string key = e.key;
+      for (const auto& f : fragments)
+        for (const auto& p : f.spec.providers)
+          if (prefixed(f.owner->path, p.name) == e.provider) {
+            where = f.owner->mechanicsWhere;
+            if (e.line > 0) where = {where.file, e.line, e.column};
+            if (!e.rootKey) key = joinKey(f.owner->keyPath, "mechanics." + p.kind + "." + e.key);
+          }
+      diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());
     } catch (const std::exception& e) {
       const auto [where, key] = bodyPlace(e.what());
       diags.error(where, key, std::string("mechanical system '") + s->name + "': " + e.what());

@@ -305,7 +305,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     for (std::size_t i = 0; i < n.size(); ++i) out.push_back(point(rd, n[i], k + "[" + std::to_string(i) + "]"));
     return out;
   };
-  // (EA, L0, damping, min_length, mbl) => the rope material, checked
+  // (EA, L0, damping, min_length, mbl, diameter) => the rope material, checked
   auto material = [](const Reader& rd, const YAML::Node& n, const std::string& k) {
     MechanicsSpec::Material m;
     if (rd.required(n, "EA", k, "N, the axial stiffness of one part"))
@@ -315,13 +315,17 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     m.damping = rd.number(n["damping"], k + ".damping", 0.0);
     m.minLength = rd.number(n["min_length"], k + ".min_length", 0.01);
     m.mbl = rd.number(n["mbl"], k + ".mbl", 0.0);
+    m.diameter = rd.number(n["diameter"], k + ".diameter", 0.0);
+    if (n["diameter"] && !(m.diameter > 0))
+      rd.fail(n["diameter"], k + ".diameter", "diameter must be > 0 m");
     if (n["EA"] && !(m.ea > 0)) rd.fail(n["EA"], k + ".EA", "EA must be > 0 N");
     if (n["L0"] && !(m.l0 > 0)) rd.fail(n["L0"], k + ".L0", "L0 must be > 0 m");
     if (m.damping < 0) rd.fail(n["damping"], k + ".damping", "damping must be >= 0 N s/m");
     if (n["mbl"] && !(m.mbl > 0)) rd.fail(n["mbl"], k + ".mbl", "mbl must be > 0 N (leave it out for a rope without one)");
     return m;
   };
-  const std::vector<std::string> materialKeys{"EA", "L0", "damping", "min_length", "mbl"};
+  const std::vector<std::string> materialKeys{"EA",         "L0",  "damping",
+                                              "min_length", "mbl", "diameter"};
 
   const YAML::Node ropes = p.node("ropes");
   const Reader rr{report, "ropes"};

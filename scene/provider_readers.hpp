@@ -7,7 +7,9 @@
 // provider: one list, counted by the energy balance and the stiffness estimate, with the
 // channels <name>.energy [J] and <name>.power [W]. Problems are reported at their YAML nodes.
 #include <functional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -16,6 +18,25 @@
 #include "scene/spec_reader.hpp"
 
 namespace yardsim::scene {
+
+// A problem a provider finds only when it is built from its whole system (a pattern that matches
+// nothing, a shape the kernel refuses), at a node of its entry: line and column (1-based) in the
+// file of the fragment that declared it, the key path below `mechanics.<kind>` (or from the
+// scene root when `rootKey`), and the provider's full name.
+struct ProviderPlaceError : std::invalid_argument {
+  ProviderPlaceError(const std::string& message, std::string provider_, int line_, int column_,
+                     std::string key_, bool rootKey_ = false)
+      : std::invalid_argument(message),
+        provider(std::move(provider_)),
+        line(line_),
+        column(column_),
+        key(std::move(key_)),
+        rootKey(rootKey_) {}
+  std::string provider;
+  int line = 0, column = 0;
+  std::string key;
+  bool rootKey = false;
+};
 
 // (entry name, its node, the reader that reports problems at their nodes with key paths below
 // the block, the entry's key path) => the provider's spec (kind and name are filled in after)

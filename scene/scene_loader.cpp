@@ -42,9 +42,9 @@ namespace {
 const std::vector<std::string> kFileKeys{"schema_version", "name",      "description",
                                          "params",         "inputs",    "outputs",
                                          "components",     "couplings", "mechanics"};
-const std::vector<std::string> kRootKeys{"record",     "report", "until", "seed",
-                                         "integrator", "trace",  "wp",    "limits",
-                                         "database"};
+const std::vector<std::string> kRootKeys{"record",     "report",    "until",    "seed",
+                                         "integrator", "trace",     "wp",       "limits",
+                                         "database",   "collision", "clearance"};
 const std::vector<std::string> kInlineKeys{"description", "params",    "inputs",   "outputs",
                                            "components",  "couplings", "mechanics"};
 const std::vector<std::string> kComponentKeys{"type",   "include",   "coupled",    "facility",
@@ -77,6 +77,7 @@ class Loader {
     if (doc.IsMap() && doc["database"]) yard_.open(doc["database"], file, d_);
     Scope scope;
     fileBody(scene->root, doc, file, scope, overrides, true);
+    if (doc.IsMap()) sceneCollision(scene->root, doc, file.string(), scope);
     readRunSettings(*scene, doc, file.string(), d_);
     yard_.resolveLugPoints(scene->root, d_);
     yard_.describe(*scene);
@@ -89,6 +90,38 @@ class Loader {
   std::optional<YAML::Node> parse(const fs::path& file, const SourceMark& from,
                                   const std::string& keyPath, std::string* text = nullptr) {
     return readYamlFile(file, from, keyPath, d_, text);
+  }
+
+  // (the root's `collision:` and `clearance:`) => one collision set named `collision` in the
+  // root's mechanics, which every body with a geometry joins unless `bodies:` lists them
+  // (scene/providers/collision_reader.cpp, docs/collision.md)
+  void sceneCollision(Instance& root, const YAML::Node& doc, const std::string& f, Scope& scope) {
+    const YAML::Node col = doc["collision"], watch = doc["clearance"];
+    if (!col && !watch) return;
+    if (col && !col.IsMap()) {
+      d_.error(markOf(col, f), "collision",
+               "expected a mapping {ground, materials, contact, ignore, shapes, bodies, ...}");
+      return;
+    }
+    if (watch && !watch.IsMap()) {
+      d_.error(markOf(watch, f), "clearance", "expected {name: {between: [a, b], below: m}, ...}");
+      return;
+    }
+    YAML::Node entry =
+        col ? resolveRefs(col, scope, f, "collision", d_) : YAML::Node(YAML::NodeType::Map);
+    if (watch) entry["clearance"] = resolveRefs(watch, scope, f, "clearance", d_);
+    entry["_scene"] = col ? "contact" : "watch";
+    if (!root.mechanics.IsDefined() || !root.mechanics.IsMap()) {
+      root.mechanics = YAML::Node(YAML::NodeType::Map);
+      root.mechanicsWhere = markOf(col ? col : watch, f);
+    }
+    const YAML::Node sets = root.mechanics["collision"];
+    if (sets && sets.IsMap() && sets["collision"]) {
+      d_.error(markOf(sets["collision"], f), "mechanics.collision.collision",
+               "the set name 'collision' is the scene-level collision's: rename this set");
+      return;
+    }
+    root.mechanics["collision"]["collision"] = entry;
   }
 
   // (a file's top-level mapping) => a coupled instance; overrides replace its params' defaults

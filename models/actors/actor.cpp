@@ -3,7 +3,7 @@
 namespace yardsim::models {
 
 std::ostream& operator<<(std::ostream& os, const ActorState& s) {
-  static const char* names[] = {"waiting", "starting", "running", "finishing", "done"};
+  static const char* names[] = {"waiting", "starting", "running", "finishing", "done", "stopping"};
   return os << names[static_cast<int>(s.phase)];
 }
 
@@ -27,9 +27,19 @@ bool Actor::ready(const ActorState& s) const {
   return false;
 }
 
+bool Actor::stopsOn(const MechanicsEvent& e) const {
+  const std::string full = e.element + "." + e.what;
+  for (const auto& name : rule_.stopOn)
+    if (full == name || (full.size() > name.size() && full.ends_with("." + name))) return true;
+  return false;
+}
+
 void Actor::output(const ActorState& s) const {
   scratch_.clear();
-  if (s.phase == ActorState::Phase::Waiting || s.phase == ActorState::Phase::Starting) {
+  if (s.phase == ActorState::Phase::Stopping) {
+    onStop(scratch_);
+    finished.add(path());
+  } else if (s.phase == ActorState::Phase::Waiting || s.phase == ActorState::Phase::Starting) {
     started.add(path());
     onStart(scratch_);
     if (duration() == 0.0) {
@@ -67,17 +77,27 @@ void Actor::externalTransition(ActorState& s, devs::Time e) const {
     s.sigma = 0.0;
   }
   if (s.phase == ActorState::Phase::Running)
-    for (const auto& ev : event.values())
+    for (const auto& ev : event.values()) {
       if (ev.actor == path() && finishesOn(ev)) {
         s.phase = ActorState::Phase::Finishing;
         s.sigma = 0.0;
+      } else if (stopsOn(ev)) {  // (a stop_on event) => stopped at once, its time the event's
+        s.phase = ActorState::Phase::Stopping;
+        s.sigma = 0.0;
+        break;
       }
+    }
 }
 
 std::vector<ParamSpec> startParams() {
   return {{"start_at", ParamKind::Number, false, "~", "s", "start at this time"},
-          {"after_all", ParamKind::StringList, false, "~", "", "start when all these actors have finished"},
-          {"after_any", ParamKind::StringList, false, "~", "", "start when any of these actors has finished"}};
+          {"after_all", ParamKind::StringList, false, "~", "",
+           "start when all these actors have finished"},
+          {"after_any", ParamKind::StringList, false, "~", "",
+           "start when any of these actors has finished"},
+          {"stop_on", ParamKind::StringList, false, "~", "",
+           "stop at once on any of these events <element>.<kind> while running (e.g. "
+           "rope_block.touched)"}};
 }
 
 StartRule startRule(const Params& p) {
@@ -91,6 +111,7 @@ StartRule startRule(const Params& p) {
   } else {
     r.at = p.node("start_at").IsNull() ? 0.0 : p.number("start_at");
   }
+  if (!p.node("stop_on").IsNull()) r.stopOn = p.strings("stop_on");
   return r;
 }
 

@@ -23,10 +23,14 @@ struct StartRule {
   Kind kind = Kind::At;
   double at = 0.0;
   std::vector<std::string> names;  // actors (path or last path component)
+  // `stop_on`: events `<element>.<kind>` (or a trailing part of it: `rope_block.touched`) that
+  // stop the actor while it runs, as its own finish would but at once (a wire actor stops its
+  // winch): the event's located time is the stop's
+  std::vector<std::string> stopOn;
 };
 
 struct ActorState {
-  enum class Phase { Waiting, Starting, Running, Finishing, Done };
+  enum class Phase { Waiting, Starting, Running, Finishing, Done, Stopping };
   Phase phase = Phase::Waiting;
   devs::Time sigma = devs::kInfinity;
   devs::Time clock = 0.0;
@@ -59,6 +63,8 @@ class Actor : public devs::Atomic<ActorState> {
   // runs (infinity: until finishesOn says so), and which mechanics events finish it.
   virtual void onStart(std::vector<SetPoint>& out) const = 0;
   virtual void onFinish(std::vector<SetPoint>& /*out*/) const {}
+  // (stopped by a `stop_on` event while running) => its set-points; by default its finish's
+  virtual void onStop(std::vector<SetPoint>& out) const { onFinish(out); }
   virtual devs::Time duration() const { return devs::kInfinity; }
   virtual bool finishesOn(const MechanicsEvent& /*e*/) const { return false; }
 
@@ -68,12 +74,13 @@ class Actor : public devs::Atomic<ActorState> {
   void internalTransition(ActorState& s) const override;
   void externalTransition(ActorState& s, devs::Time e) const override;
   bool ready(const ActorState& s) const;
+  bool stopsOn(const MechanicsEvent& e) const;
 
   StartRule rule_;
   mutable std::vector<SetPoint> scratch_;
 };
 
-// The parameters every actor type takes: start_at, after_all, after_any (one of them).
+// The parameters every actor type takes: start_at, after_all, after_any (one of them), stop_on.
 std::vector<ParamSpec> startParams();
 StartRule startRule(const Params& p);
 void checkStart(const Params& p, ParamCheck& c);

@@ -32,6 +32,13 @@ class WireActor final : public Actor {
     s.jerk = jerk_;
     out.push_back(s);
   }
+  // (stopped by a stop_on event) => the winch stops where it is
+  void onStop(std::vector<SetPoint>& out) const override {
+    SetPoint s;
+    s.kind = SetPoint::Kind::WinchStop;
+    s.element = rope_;
+    out.push_back(s);
+  }
   bool finishesOn(const MechanicsEvent& e) const override {
     return e.element == rope_ && e.what == "done";
   }

@@ -11,6 +11,8 @@ std::ostream& operator<<(std::ostream& os, const SetPoint& s) {
       if (s.accel > 0) os << " accel " << s.accel;
       if (s.jerk > 0) os << " jerk " << s.jerk;
       return os;
+    case SetPoint::Kind::WinchStop:
+      return os << s.element << " stop";
     case SetPoint::Kind::ActorLoad:
       return os << s.element << " load (" << s.force[0] << "," << s.force[1] << "," << s.force[2]
                 << ")";

@@ -9,12 +9,13 @@ namespace yardsim::models {
 // A set-point for one mechanical element, applied by the multibody model at the exact time it
 // arrives.
 struct SetPoint {
-  enum class Kind { JointTarget, WinchPayout, ActorLoad };
+  enum class Kind { JointTarget, WinchPayout, ActorLoad, WinchStop };
   Kind kind = Kind::JointTarget;
   std::string element;  // joint, rope or body name inside the multibody model
   std::string actor;    // path of the actor that sent it (echoed in the events it causes)
   // JointTarget: drive the joint to `target` (rad or m) at `speed` (rad/s or m/s, > 0)
   // WinchPayout: change the rope's unstretched length by `amount` (m, < 0 hoists) at `speed`
+  // WinchStop: the rope's winch stops at once (what was planned after now is dropped)
   double target = 0.0, speed = 0.0, amount = 0.0;
   // WinchPayout: the drive's acceleration (m/s^2) and jerk (m/s^3) limits; 0: none (the speed
   // steps at once, or ramps as a trapezoid)

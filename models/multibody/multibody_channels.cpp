@@ -74,10 +74,11 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
     out.push_back(
         {p->name() + ".energy", "J", [this, p] { return p->potentialEnergy(committedStage(p)); }});
     out.push_back({p->name() + ".power", "W", [this, p] { return p->power(committedStage(p)); }});
-    // (outputs the provider declares) => <name>.<output>, read with its scratch
+    // (outputs the provider declares) => <name>.<output> (or <output> when global), read with
+    // its scratch
     if (const auto* o = dynamic_cast<const forces::ProviderOutputs*>(p))
       for (const forces::ProviderOutput& v : o->outputs())
-        out.push_back({p->name() + "." + v.name, v.unit,
+        out.push_back({(v.global ? "" : p->name() + ".") + v.name, v.unit,
                        [this, p, &v] { return v.read(committedStage(p)); }});
   }
   // (system-wide quantities) => under the model's own name when element names are paths

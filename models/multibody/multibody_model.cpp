@@ -208,6 +208,19 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         mechanics::startWinch(sp, r, rope.winch(), t, s.amount, {s.speed, s.accel, s.jerk}, s.actor);
         break;
       }
+      case SetPoint::Kind::WinchStop: {  // (an actor stopped) => the winch at rest from t on
+        const int r = system_.ropeIndex(s.element);
+        if (r < 0)
+          throw devs::SimulationError("multibody '" + path() + "': winch stop from '" + s.actor +
+                                      "' names '" + s.element + "', which is not a rope here");
+        forces::Rope& rope = *system_.ropes()[static_cast<std::size_t>(r)];
+        rope.winch().dropPlannedAfter(t);
+        rope.setPayoutRate(t, 0.0);
+        auto& job = sp.winches[static_cast<std::size_t>(r)];
+        job.active = false;
+        job.pieces = rope.winch().history();
+        break;
+      }
     }
   }
 }

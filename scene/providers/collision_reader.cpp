@@ -1,10 +1,13 @@
-// The `collision:` key of a `mechanics:` block (docs/collision.md): one entry is one collision
-// set of a mechanical system — the bodies that touch (each body's `geometry` is its collision
-// shape unless `shapes:` gives another), an optional ground, materials and the contact law of
-// each material pair (forces/contact.hpp, evaluated at every integrator stage), ignored pairs,
-// and clearance watches between bodies and ropes (collision/body_collision.hpp). Channels:
-// <name>.points, <name>.normal_force, <name>.<body>.fz per body, <name>.<watch>.distance per
-// watch, and <name>.energy / <name>.power like every provider.
+// The `collision:` key of a `mechanics:` block (docs/collision.md), and the scene-level
+// `collision:` / `clearance:` that the loader turns into one such entry named `collision` (every
+// body with a geometry unless `bodies:` lists them; watch channels `<watch>.distance`, events on
+// element `<watch>`): one entry is one collision set of a mechanical system — the bodies that touch
+// (each body's `geometry` is its collision shape unless `shapes:` gives another), an optional
+// ground, materials and the contact law of each material pair (forces/contact.hpp, evaluated at
+// every integrator stage), ignored pairs, and clearance watches between bodies and ropes
+// (collision/body_collision.hpp). Channels: <name>.points, <name>.normal_force, <name>.<body>.fz
+// per body, <name>.<watch>.distance per watch, and <name>.energy / <name>.power like every
+// provider.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -14,6 +17,7 @@
 #include "dynamics/kinematics.hpp"
 #include "forces/contact.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
+#include "scene/provider_readers.hpp"
 #include "scene/providers/reader_support.hpp"
 
 namespace yardsim::scene::providers {
@@ -29,7 +33,13 @@ struct WatchSpec {
   std::string name;
   std::vector<std::string> a, b;
   double below = 0.0, range = 0.0;
-  std::string where;  // "line L, column C" of `between`
+  int line = 0, column = 0;  // of `between`
+};
+
+// Where a name was written (1-based line and column) and its key below the entry.
+struct NamePlace {
+  int line = 0, column = 0;
+  std::string key;
 };
 
 // Everything an entry says, read at the door; resolved against the built system later.
@@ -43,8 +53,24 @@ struct CollisionSpec {
   std::vector<std::pair<std::string, std::string>> ignore;
   std::vector<WatchSpec> watches;
   int pointsPerPair = 4;
-  double ropeDiameter = 0.04;  // m, the capsules of the ropes that watches name
+  double ropeDiameter = 0.04;  // m, the capsules of ropes that give no diameter of their own
+  // the scene-level form (`collision:` / `clearance:` at the root, the loader's `_scene`): the
+  // bodies default to every body with a geometry, watch channels and events are `<watch>`, and
+  // without `collision:` (only `clearance:`) there is no contact
+  bool sceneLevel = false, contact = true;
+  std::string keyRoot;  // what keys start with in messages: "<set>" or "collision"
+  // names given under shapes, materials and ignore, where: checked against the bodies once they
+  // are known (at the door for a listed set, when the system is built for a scene-level one)
+  std::vector<std::pair<std::string, NamePlace>> named;
+  std::vector<NamePlace> bodyPlaces;  // per listed body
+  NamePlace place;                    // the entry's
 };
+
+// (node) => its 1-based line and column
+NamePlace placeOf(const YAML::Node& n, std::string key) {
+  const YAML::Node m = spec::Reader::marked(n);
+  return {m.Mark().line + 1, m.Mark().column + 1, std::move(key)};
+}
 
 // (name, pattern with `*`) => whether the pattern matches the whole name
 bool matches(const std::string& name, const std::string& pattern) {
@@ -65,13 +91,6 @@ bool matches(const std::string& name, const std::string& pattern) {
   }
   while (p < pattern.size() && pattern[p] == '*') ++p;
   return p == pattern.size();
-}
-
-// (node) => "line L, column C" (1-based), for problems found once the system is built
-std::string where(const YAML::Node& n) {
-  const YAML::Node m = spec::Reader::marked(n);
-  return "line " + std::to_string(m.Mark().line + 1) + ", column " +
-         std::to_string(m.Mark().column + 1);
 }
 
 // ({box: [lx, ly, lz]} | {sphere: r} | {cylinder: {radius, length}} | {capsule: {radius,
@@ -172,15 +191,34 @@ std::vector<std::string> names(const spec::Reader& r, const YAML::Node& n, const
 // (entry) => what it says, every problem reported at its node
 CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::string& key) {
   CollisionSpec c;
+  c.keyRoot = key;
+  if (const YAML::Node scene = n["_scene"]) {  // (the loader's mark) => the scene-level form
+    c.sceneLevel = true;
+    c.contact = scene.Scalar() == "contact";
+  }
   if (!r.keys(n,
               {"bodies", "shapes", "ground", "materials", "contact", "ignore", "clearance",
-               "points_per_pair", "rope_diameter"},
+               "points_per_pair", "rope_diameter", "_scene"},
               key))
     return c;
-  if (!n["bodies"])
-    r.fail(n, key, "missing required key 'bodies' (the bodies that touch: [a, b, ...])");
-  else
+  c.place = placeOf(n, key);
+  if (n["bodies"]) {
     c.bodies = names(r, n["bodies"], key + ".bodies");
+    for (std::size_t i = 0; i < c.bodies.size(); ++i)
+      c.bodyPlaces.push_back(placeOf(n["bodies"][i], key + ".bodies[" + std::to_string(i) + "]"));
+  } else if (!c.sceneLevel)
+    r.fail(n, key, "missing required key 'bodies' (the bodies that touch: [a, b, ...])");
+  // (a name under shapes, materials or ignore) => checked now against listed bodies, or kept
+  auto member = [&](const std::string& b, const YAML::Node& at, const std::string& k,
+                    bool groundToo) {
+    if (groundToo && b == "ground") return;
+    if (c.sceneLevel && !n["bodies"]) {
+      c.named.emplace_back(b, placeOf(at, k));
+      return;
+    }
+    if (std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
+      r.fail(at, k, "'" + b + "' is not one of bodies" + (groundToo ? " (or ground)" : ""));
+  };
   if (const YAML::Node s = n["shapes"]) {
     if (!s.IsMap())
       r.fail(s, key + ".shapes", "expected {body: shape, ...}");
@@ -188,8 +226,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       for (auto it = s.begin(); it != s.end(); ++it) {
         const std::string b = it->first.as<std::string>();
         c.shapes.emplace(b, readShape(r, it->second, key + ".shapes." + b));
-        if (std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-          r.fail(it->first, key + ".shapes." + b, "'" + b + "' is not one of bodies");
+        member(b, it->first, key + ".shapes." + b, false);
       }
   }
   if (const YAML::Node g = n["ground"]) {  // (ground: z) => the half-space below z (world)
@@ -202,9 +239,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     else
       for (auto it = m.begin(); it != m.end(); ++it) {
         const std::string b = it->first.as<std::string>();
-        if (b != "ground" && std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-          r.fail(it->first, key + ".materials." + b,
-                 "'" + b + "' is not one of bodies (or ground)");
+        member(b, it->first, key + ".materials." + b, true);
         if (it->second.IsScalar())
           c.materials[b] = it->second.Scalar();
         else
@@ -212,7 +247,9 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       }
   }
   const YAML::Node laws = n["contact"];
-  if (!laws || !laws.IsMap() || !laws["default"]) {
+  if (!c.contact) {  // (only `clearance:` at the scene root) => no contact, no law
+    c.laws["default"] = {};
+  } else if (!laws || !laws.IsMap() || !laws["default"]) {
     r.fail(laws ? laws : n, key + ".contact",
            "expected {default: {law, k, ...}, material_a/material_b: {...}, ...} with a default");
   } else {
@@ -240,9 +277,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
           continue;
         }
         for (const auto& b : pair)
-          if (b != "ground" && std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-            r.fail(ig[i], key + ".ignore[" + std::to_string(i) + "]",
-                   "'" + b + "' is not one of bodies (or ground)");
+          member(b, ig[i], key + ".ignore[" + std::to_string(i) + "]", true);
         c.ignore.emplace_back(pair[0], pair[1]);
       }
   }
@@ -278,7 +313,9 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
         ws.b = side(1);
         ws.below = nonNegative(r, e["below"], k + ".below", 0.0, true);
         ws.range = nonNegative(r, e["range"], k + ".range", ws.below);
-        ws.where = where(between);
+        const NamePlace at = placeOf(between, k + ".between");
+        ws.line = at.line;
+        ws.column = at.column;
         c.watches.push_back(std::move(ws));
       }
   }
@@ -310,27 +347,33 @@ bool shapeOf(const MechanicsSpec::Visual& v, const dynamics::SpatialInertia& in,
   }
 }
 
-// The built collision set: its world and the contact provider's outputs.
-struct Built {
-  std::shared_ptr<collision::BodyCollision> world;
-  std::vector<std::string> bodyNames;  // as written, per attachment
-  std::vector<int> bodies;             // body index per attachment
-};
-
 // (what the entry says, its provider name, the built system, attachments = its bodies) => the
-// collision set's contact provider with its channels; std::invalid_argument naming the entry
-// and the place in the file for a name that matches nothing or a shape the kernel refuses
+// collision set's contact provider with its channels; ProviderPlaceError at the entry's node for
+// a name that matches nothing, a body without a usable shape or a shape the kernel refuses
 std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::string& name,
                                              const BuiltMechanics& mech,
                                              const std::vector<forces::Attachment>& at) {
   const dynamics::Model& model = mech.model;
   const std::string prefix = name.substr(0, name.rfind('.') + 1);  // the fragment's path
-  auto fail = [&](const std::string& msg) {
-    throw std::invalid_argument("collision '" + name + "': " + msg);
+  // (message, where and which key) => the problem at its place in the file
+  auto fail = [&](const std::string& msg, int line, int column, const std::string& key) {
+    throw scene::ProviderPlaceError("collision '" + name + "': " + msg, name, line, column,
+                                    c.sceneLevel && key.starts_with(c.keyRoot + ".clearance.")
+                                        ? key.substr(c.keyRoot.size() + 1)
+                                        : key,
+                                    c.sceneLevel);
   };
+  // (the bodies: as listed, or every body with a geometry by its full name) => per attachment
+  std::vector<std::string> bodies = c.bodies;
+  if (bodies.empty())
+    for (const auto& a : at) bodies.push_back(model.names[static_cast<std::size_t>(a.body)]);
+  for (const auto& [b, where] : c.named)  // (names under shapes, materials, ignore) => bodies
+    if (std::find(bodies.begin(), bodies.end(), b) == bodies.end())
+      fail("'" + b + "' is not a body with a geometry", where.line, where.column, where.key);
   collision::BodyCollisionSpec spec;
   spec.bodyCount = model.nbodies;
   spec.maxPointsPerPair = c.pointsPerPair;
+  spec.contact = c.contact;
   // (materials) => names, the pair table from the laws
   std::vector<std::string> materialNames{"default"};
   auto materialOf = [&](const std::string& body) {
@@ -341,26 +384,27 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
     materialNames.push_back(m);
     return static_cast<int>(materialNames.size() - 1);
   };
-  Built built;
-  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+  std::vector<std::pair<std::string, int>> reactions;  // (name as written, body index)
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
     const int body = at.at(i).body;
+    const auto& visual = mech.visuals.at(static_cast<std::size_t>(body));
     collision::BodyShape s{
-        body, model.names[static_cast<std::size_t>(body)], {}, {}, materialOf(c.bodies[i])};
-    if (const auto it = c.shapes.find(c.bodies[i]); it != c.shapes.end()) {
+        body, model.names[static_cast<std::size_t>(body)], {}, {}, materialOf(bodies[i])};
+    if (const auto it = c.shapes.find(bodies[i]); it != c.shapes.end()) {
       s.shape = it->second;
       s.X_BS = {dynamics::Matrix3::Identity(), model.inertias[static_cast<std::size_t>(body)].com};
     } else {
       try {
-        if (!shapeOf(mech.visuals.at(static_cast<std::size_t>(body)),
-                     model.inertias[static_cast<std::size_t>(body)], s.shape, s.X_BS))
-          fail("body '" + c.bodies[i] + "' has no geometry: give it one, or a shape under shapes:");
+        if (!shapeOf(visual, model.inertias[static_cast<std::size_t>(body)], s.shape, s.X_BS))
+          fail("body '" + bodies[i] + "' has no geometry: give it one, or a shape under shapes:",
+               c.bodyPlaces.at(i).line, c.bodyPlaces.at(i).column, c.bodyPlaces.at(i).key);
       } catch (const forces::MeshError& e) {
-        fail("body '" + c.bodies[i] + "': its mesh cannot be used for contact: " + e.what());
+        throw std::invalid_argument("collision '" + name + "': body '" + bodies[i] +
+                                    "': its mesh cannot be used for contact: " + e.what());
       }
     }
     spec.shapes.push_back(std::move(s));
-    built.bodies.push_back(body);
-    built.bodyNames.push_back(c.bodies[i]);
+    reactions.emplace_back(bodies[i], body);
   }
   spec.ground = c.ground;
   spec.groundHeight = c.groundHeight;
@@ -384,17 +428,27 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
       spec.ignore.emplace_back(i, model.parent[static_cast<std::size_t>(i)]);
   auto indexOf = [&](const std::string& n) {
     if (n == "ground") return 0;
-    const auto it = std::find(c.bodies.begin(), c.bodies.end(), n);
-    return at.at(static_cast<std::size_t>(it - c.bodies.begin())).body;
+    const auto it = std::find(bodies.begin(), bodies.end(), n);
+    return at.at(static_cast<std::size_t>(it - bodies.begin())).body;
   };
   for (const auto& [a, b] : c.ignore) spec.ignore.emplace_back(indexOf(a), indexOf(b));
-  // (watches) => the shapes and ropes their patterns match, by full name
+  // (ropes, and each branch of an equalizer from its sheave) => capsules with their own diameter
+  // (the set's rope_diameter when they give none); only those a watch names are built
+  auto bodyOf = [&](const std::string& b) { return b == "world" ? 0 : model.bodyIndex(b); };
   for (const auto& r : mech.ropes) {
-    collision::RopeShape rope{r.name, {}, c.ropeDiameter};
-    for (const auto& [body, p] : r.path)
-      rope.path.emplace_back(body == "world" ? 0 : model.bodyIndex(body), p);
+    collision::RopeShape rope{
+        r.name, {}, r.material.diameter > 0 ? r.material.diameter : c.ropeDiameter};
+    for (const auto& [body, p] : r.path) rope.path.emplace_back(bodyOf(body), p);
     spec.ropes.push_back(std::move(rope));
   }
+  for (const auto& e : mech.equalizers)
+    for (const auto& branch : e.branches) {
+      collision::RopeShape rope{
+          e.name, {}, e.material.diameter > 0 ? e.material.diameter : c.ropeDiameter};
+      rope.path.emplace_back(bodyOf(e.sheave.first), e.sheave.second);
+      for (const auto& [body, p] : branch) rope.path.emplace_back(bodyOf(body), p);
+      spec.ropes.push_back(std::move(rope));
+    }
   for (const WatchSpec& w : c.watches) {
     collision::ClearanceSpec cs{w.name, {}, {}, {}, {}, w.below, w.range};
     auto side = [&](const std::vector<std::string>& patterns, std::vector<int>& shapes,
@@ -408,8 +462,10 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
           if (matches(spec.ropes[i].name, p) || matches(spec.ropes[i].name, prefix + p))
             ropes.push_back(static_cast<int>(i));
         if (shapes.size() + ropes.size() == before)
-          fail("clearance '" + w.name + "' (" + w.where + "): '" + p +
-               "' matches no body of bodies: and no rope");
+          fail("clearance '" + w.name + "': '" + p + "' matches no body" +
+                   (c.sceneLevel && c.bodies.empty() ? " with a geometry" : " of bodies:") +
+                   ", no rope and no equalizer",
+               w.line, w.column, c.keyRoot + ".clearance." + w.name + ".between");
       }
     };
     side(w.a, cs.shapesA, cs.ropesA);
@@ -418,15 +474,18 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
   }
   dynamics::Data kin(model);
   dynamics::forwardKinematics(model, kin, mech.q0, mech.v0);
+  std::shared_ptr<collision::BodyCollision> world;
   try {
-    built.world = std::make_shared<collision::BodyCollision>(std::move(spec), kin);
+    world = std::make_shared<collision::BodyCollision>(std::move(spec), kin);
   } catch (const collision::CollisionError& e) {
-    fail(e.what());
+    fail(e.what(), c.place.line, c.place.column, c.place.key);
   }
-  std::vector<std::pair<std::string, int>> reactions;
-  for (std::size_t i = 0; i < built.bodies.size(); ++i)
-    reactions.emplace_back(built.bodyNames[i], built.bodies[i]);
-  return std::make_unique<collision::CollisionSet>(name, built.world, std::move(laws), reactions);
+  collision::CollisionSet::Options options;
+  options.contact = c.contact;
+  options.watchesAtTop = c.sceneLevel;
+  if (!c.contact) reactions.clear();
+  return std::make_unique<collision::CollisionSet>(name, std::move(world), std::move(laws),
+                                                   reactions, options);
 }
 
 }  // namespace
@@ -444,6 +503,7 @@ YARDSIM_REGISTER_PROVIDER(
           MechanicsSpec::ProviderSpec out;
           const CollisionSpec c = readEntry(n, r, key);
           for (const auto& b : c.bodies) out.attachments.push_back({b, dynamics::Vector3::Zero()});
+          out.everyBodyWithGeometry = c.sceneLevel && c.bodies.empty();
           out.buildFromSystem = [c](const std::string& name, const BuiltMechanics& mech,
                                     const std::vector<forces::Attachment>& at) {
             return build(c, name, mech, at);

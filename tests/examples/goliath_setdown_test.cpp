@@ -37,16 +37,16 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
     for (const char* r : {"upper_fore", "upper_aft", "lower_fore", "lower_aft"})
       ropes += 4 * end[col(std::string(c) + "." + r + ".tension[N]")];
   const double supports =
-      -(end[col("setdown.support_fore.fz[N]")] + end[col("setdown.support_aft.fz[N]")]);
-  CHECK(end[col("setdown.points[-]")] >= 4);
-  CHECK(end[col("setdown.block.fz[N]")] == Approx(supports).epsilon(1e-9));
+      -(end[col("collision.support_fore.fz[N]")] + end[col("collision.support_aft.fz[N]")]);
+  CHECK(end[col("collision.points[-]")] >= 4);
+  CHECK(end[col("collision.block.fz[N]")] == Approx(supports).epsilon(1e-9));
   CHECK(supports > 0.9 * weight);  // the supports carry the block
   CHECK(supports + ropes == Approx(weight).epsilon(2e-3));
   // (the whole operation) => the minimum clearances, all positive, the block's inside its range
   double minBlock = 1e9, minBeam = 1e9;
   for (const auto& row : csv.rows) {
-    minBlock = std::min(minBlock, row[col("setdown.rope_block.distance[m]")]);
-    minBeam = std::min(minBeam, row[col("setdown.rope_beam.distance[m]")]);
+    minBlock = std::min(minBlock, row[col("rope_block.distance[m]")]);
+    minBeam = std::min(minBeam, row[col("rope_beam.distance[m]")]);
   }
   INFO("minimum clearance rope-block " << minBlock << " m, rope-beam " << minBeam << " m");
   CHECK(minBeam > 0.5);  // the lower ropes stay clear of the beam
@@ -55,23 +55,23 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
   // about minus a radius, and no crossing is located (nothing crosses: it starts there)
   CHECK(minBlock < 0.0);
   CHECK(minBlock > -0.03);
-  CHECK(csv.rows[0][col("setdown.rope_block.distance[m]")] < 0.0);
+  CHECK(csv.rows[0][col("rope_block.distance[m]")] < 0.0);
   std::ifstream trace(dir.path() / "out" / "trace.jsonl");
   int contacts = 0, releases = 0, below = 0, touched = 0;
   for (std::string line; std::getline(trace, line);) {
     if (line.find("\"kind\":\"out\"") == std::string::npos)
       continue;  // the model's, not the actors' copies
-    if (line.find("setdown.rope_block clearance_below") != std::string::npos) ++below;
-    if (line.find("setdown.rope_block touched") != std::string::npos) {
+    if (line.find("rope_block clearance_below") != std::string::npos) ++below;
+    if (line.find("rope_block touched") != std::string::npos) {
       ++touched;
       CHECK(line.find("upper_") != std::string::npos);
       CHECK(line.find("block at (") != std::string::npos);
     }
-    if (line.find("setdown contact") != std::string::npos) {
+    if (line.find("collision contact") != std::string::npos) {
       ++contacts;
       CHECK(std::stod(line.substr(line.find("\"t\":") + 4)) > 400.0);
     }
-    if (line.find("setdown release") != std::string::npos) ++releases;
+    if (line.find("collision release") != std::string::npos) ++releases;
   }
   CHECK(contacts == 1);  // contact once, in the lowering (after 400 s), never released
   CHECK(releases == 0);

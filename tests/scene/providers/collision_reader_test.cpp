@@ -282,9 +282,10 @@ record: {interval: 1, channels: ["floor.*"]}
   const auto unknown =
       load("unknown.yaml", "      bodies: [box]\n" + law +
                                "      clearance: {near: {between: [box, crane*], below: 1}}");
-  CHECK_THAT(unknown.diagnostics.report(), Contains("unknown.yaml:") &&
+  // (a problem found once the system is built) => at the node itself (the between list)
+  CHECK_THAT(unknown.diagnostics.report(), Contains("unknown.yaml:15:36:") &&
                                                Contains("'crane*' matches no body") &&
-                                               Contains("line 15, column"));
+                                               Contains("floor.clearance.near.between"));
   const auto body = load("body.yaml", "      bodies: [box, crate]\n" + law);
   CHECK_THAT(body.diagnostics.report(), Contains("body.yaml:") && Contains("unknown body 'crate'"));
   const auto size =
@@ -304,4 +305,193 @@ record: {interval: 1, channels: ["floor.*"]}
   const auto noLaw = load("nolaw.yaml", "      bodies: [box]");
   CHECK_THAT(noLaw.diagnostics.report(), Contains("nolaw.yaml:13:") && Contains("with a default"));
   CHECK(!load("good.yaml", "      bodies: [box]\n" + law).diagnostics.hasErrors());
+}
+
+namespace {
+
+// the rope-and-cart geometry of the clearance test above in the scene-level spelling: a rope of
+// its own diameter 0.06 m on x = 0, the cart's face at x = q - 1 moving at -0.5 m/s from q = 3
+// (distance 1.97 - 0.5 t, touching at 3.94 s); `actors` are the scene's components
+std::string ropeCartScene(const std::string& actors) {
+  return R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+)" + actors +
+         R"(
+mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    hook:
+      parent: world
+      joint: {name: hook_z, type: prismatic, axis: [0, 0, 1]}
+      mass: 100
+      inertia: [1, 1, 1]
+    cart:
+      parent: hook
+      joint: {name: cart_x, type: prismatic, axis: [1, 0, 0], q0: 3, v0: -0.5}
+      mass: 1000
+      inertia: [100, 100, 100]
+      geometry: {box: [2, 2, 2]}
+  ropes:
+    hoist: {path: [{point: [0, 0, 10]}, {body: hook, point: [0, 0, 0]}], EA: 1.0e6, L0: 10.5,
+            diameter: 0.06}
+clearance:
+  rope_cart: {between: [hoist, cart], below: 1.0, range: 3}
+record: {interval: 0.5, channels: ["*"]}
+trace: [jsonl]
+)";
+}
+
+}  // namespace
+
+TEST_CASE("collision scene: the scene-level collision takes every body with a geometry") {
+  // the resting box of the first test without a list of bodies: force = weight, sink m g / (4 k)
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, R"(schema_version: 1
+integrator: {method: hht, dt: 0.01}
+mechanics:
+  bodies:
+    box:
+      parent: world
+      joint: {name: box_free, type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 1000
+      inertia: [166.7, 166.7, 166.7]
+      geometry: {box: [1, 1, 1]}
+    bare:                     # no geometry: takes no part
+      parent: world
+      joint: {name: bare_free, type: free, q0: {xyz: [0, 0, -5]}}
+      mass: 10
+      inertia: [1, 1, 1]
+collision:
+  ground: 0
+  contact: {default: {law: linear, k: 1.0e8, c: 2.0e5, mu: 0.3}}
+record: {interval: 0.5, channels: ["*"]}
+trace: [jsonl]
+)",
+                            5.0);
+  const std::size_t last = csv.rows.size() - 1;
+  CHECK(at(csv, last, "collision.box.fz[N]") == Approx(1000 * kG).epsilon(1e-6));
+  CHECK(0.5 - at(csv, last, "box.z[m]") == Approx(1000 * kG / 4e8).epsilon(1e-3));
+  CHECK(csv.column("collision.bare.fz[N]") < 0);
+  CHECK(at(csv, last, "collision.points[-]") == 4);
+}
+
+TEST_CASE("collision scene: a scene-level watch uses the rope's own diameter") {
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, ropeCartScene(""), 4.2);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const double t = at(csv, r, "time[s]");
+    CHECK(at(csv, r, "rope_cart.distance[m]") == Approx(1.97 - 0.5 * t).margin(1e-6));
+  }
+  CHECK(csv.column("collision.points[-]") < 0);  // clearance only: no contact channels
+  const auto touched = traced(dir, "\"value\":\"rope_cart touched");
+  REQUIRE(touched.size() >= 1);
+  CHECK(timeOf(touched[0]) == Approx(3.94).margin(1e-6));
+  CHECK_THAT(touched[0], Contains("hoist at (0.030,"));
+}
+
+TEST_CASE("collision scene: an actor stops a winch when the rope touches the block edge") {
+  // haul in 5 m at 0.1 m/s, stopped by rope_cart.touched at 3.94 s; then `after` (after_all:
+  // the stopped actor) pays out 1 m at 0.5 m/s: the unstretched length is 10.5 - 0.1 t until
+  // 3.94 s, 10.106 + 0.5 (t - 3.94) for 2 s, then 11.106
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, ropeCartScene(R"(components:
+  haul: {type: wire_actor, params: {rope: hoist, payout: -5, speed: 0.1, stop_on: [rope_cart.touched]}}
+  after: {type: wire_actor, params: {rope: hoist, payout: 1, speed: 0.5, after_all: [haul]}})"),
+                            8.0);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r) {
+    const double t = at(csv, r, "time[s]");
+    const double expected = t <= 3.94   ? 10.5 - 0.1 * t
+                            : t <= 5.94 ? 10.106 + 0.5 * (t - 3.94)
+                                        : 11.106;
+    INFO("t = " << t);
+    CHECK(at(csv, r, "hoist.unstretched_length[m]") == Approx(expected).margin(1e-9));
+  }
+  const auto touched = traced(dir,
+                              "\"model\":\"mechanics\",\"kind\":\"out\",\"port\":\"event\","
+                              "\"value\":\"rope_cart touched");
+  const auto stopped = traced(dir,
+                              "\"model\":\"haul\",\"kind\":\"out\",\"port\":\"setpoint\","
+                              "\"value\":\"hoist stop\"");
+  REQUIRE(touched.size() == 1);
+  REQUIRE(stopped.size() == 1);
+  CHECK(timeOf(touched[0]) == Approx(3.94).margin(1e-6));
+  CHECK(timeOf(stopped[0]) == timeOf(touched[0]));  // at the located time, not a step later
+}
+
+TEST_CASE("collision scene: scene-level mistakes are refused at their place") {
+  testing::SceneDir dir;
+  auto load = [&](const std::string& name, const std::string& extra) {
+    return scene::loadScene(dir.write(name, R"(schema_version: 1
+integrator: {method: hht, dt: 0.01}
+mechanics:
+  bodies:
+    box:
+      parent: world
+      joint: {name: box_free, type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 1000
+      inertia: [166.7, 166.7, 166.7]
+      geometry: {box: [1, 1, 1]}
+collision:
+  ground: 0
+  contact: {default: {law: linear, k: 1.0e8}}
+)" + extra));
+  };
+  const auto pattern =
+      load("pattern.yaml", "clearance:\n  near: {between: [box, crane*], below: 1}\n");
+  CHECK_THAT(pattern.diagnostics.report(),
+             Contains("pattern.yaml:15:20:") &&
+                 Contains("'crane*' matches no body with a geometry") &&
+                 Contains("clearance.near.between"));
+  const auto ignored = load("ignored.yaml", "  ignore: [[box, crate]]\n");
+  CHECK_THAT(ignored.diagnostics.report(), Contains("ignored.yaml:14:") &&
+                                               Contains("collision.ignore[0]") &&
+                                               Contains("'crate' is not a body with a geometry"));
+  // (problems found at read time) => the keys as written at the scene root
+  const auto stiffness = load("stiffness.yaml", "  points_per_pair: 0\n");
+  CHECK_THAT(stiffness.diagnostics.report(),
+             Contains("stiffness.yaml:14:20: error: collision.points_per_pair: must be >= 1"));
+  const auto below = load("below.yaml", "clearance:\n  near: {between: [box, box], below: -1}\n");
+  CHECK_THAT(below.diagnostics.report(),
+             Contains("below.yaml:15:") && Contains("error: clearance.near.below"));
+  CHECK(!load("good.yaml", "clearance:\n  near: {between: [box, box], below: 1}\n")
+             .diagnostics.hasErrors());
+}
+
+TEST_CASE("collision scene: an equalizer's branches are watched with its own diameter") {
+  // branch from the sheave (0, 0, 10) to (2, 0, 0): the line 10 x + 2 z = 20; the post's nearest
+  // edge (2.5, y, 4.5) lies 14 / sqrt(104) from it, minus the radius 0.025 m
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    load:
+      parent: world
+      joint: {name: load_z, type: prismatic, axis: [0, 0, 1]}
+      mass: 1000
+      inertia: [100, 100, 100]
+      geometry: {box: [0.5, 0.5, 0.5]}
+    post:
+      parent: world
+      joint: {name: post_fix, type: fixed}
+      placement: {xyz: [3, 0, 5]}
+      mass: 100
+      inertia: [10, 10, 10]
+      geometry: {box: [1, 1, 1]}
+  equalizers:
+    eq1:
+      sheave: {point: [0, 0, 10]}
+      branches: [[{body: load, point: [-2, 0, 0]}], [{body: load, point: [2, 0, 0]}]]
+      EA: 2.0e8
+      L0: 21.0                  # slack: nothing moves
+      diameter: 0.05
+clearance:
+  eq_post: {between: [eq1, post], below: 0.5, range: 5}
+record: {interval: 0.5, channels: ["*"]}
+trace: [jsonl]
+)",
+                            1.0);
+  for (std::size_t r = 0; r < csv.rows.size(); ++r)
+    CHECK(at(csv, r, "eq_post.distance[m]") == Approx(14 / std::sqrt(104.0) - 0.025).margin(1e-9));
 }

@@ -16,7 +16,7 @@
 
 using namespace yardsim;
 
-TEST_CASE("goliath set-down: the supports carry the weight and the rope clearances are reported") {
+TEST_CASE("goliath set-down: the supports carry the weight and the rope clearances are reported", "[long]") {
   testing::SceneDir dir;
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                        "/examples/goliath_turnover/scene_setdown.yaml");

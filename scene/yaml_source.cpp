@@ -168,6 +168,13 @@ SourceMark markOf(const YAML::Node& node, const std::string& file) {
   return {file, m.line + 1, m.column + 1};
 }
 
+YAML::Node mapKey(const YAML::Node& map, const std::string& key) {
+  if (map.IsMap())
+    for (auto it = map.begin(); it != map.end(); ++it)
+      if (it->first.IsScalar() && it->first.Scalar() == key && !it->first.Mark().is_null()) return it->first;
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
 std::string joinKey(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }

@@ -154,6 +154,9 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
     }
     return stiffSubspace(Jr, options.rankTolerance, V);
   };
+  // (rank-revealing or not, q) => q searched; without rank revealing every direction is taken as
+  // stiff (the minimum-norm search of before, which may move directions without stiffness)
+  auto search = [&](bool rankRevealing) {
   EquilibriumResult result;
   result.residual = residual(q, a);
   result.rank = static_cast<int>(nv);
@@ -161,7 +164,8 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
   int neutral = 0;  // accepted moves in a row that did not lower the residual
   while (result.residual > options.tolerance && result.iterations < options.maxIterations) {
     ++result.iterations;
-    const int rank = result.rank = jacobian();
+    const int revealed = jacobian();
+    const int rank = result.rank = rankRevealing ? revealed : static_cast<int>(nv);
     const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());  // 1/s^2
     // (J, a, sigma) => a step of (J - sigma I) dx = -a: Newton's when sigma = 0, a step along
     // the accelerations when J vanishes (a slack rope); sigma grows until the step is accepted,
@@ -214,10 +218,24 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
     result.residual = residual(q, a);
   }
   result.converged = result.residual <= options.tolerance;
-  if (!result.converged) {  // (q where the search stopped) => what has no stiffness and a force
-    result.rank = jacobian();
-    result.unbalanced = unbalancedDirections(model, V.rightCols(nv - result.rank), q, a, options.tolerance);
+  return result;
+  };
+  const Eigen::VectorXd q0 = q;
+  EquilibriumResult result = search(true);
+  if (result.converged) return result;
+  // (q where the search stopped) => what has no stiffness and a force
+  result.rank = jacobian();
+  result.unbalanced = unbalancedDirections(model, V.rightCols(nv - result.rank), q, a, options.tolerance);
+  // (q0) => the minimum-norm search of before, when the rank-revealing one stalls where stiffness
+  // appears only after a move (a barge pulled sideways by an inclined rope that is still slack)
+  const Eigen::VectorXd stopped = q;
+  q = q0;
+  EquilibriumResult plain = search(false);
+  if (plain.converged) {
+    plain.minimumNorm = true;
+    return plain;
   }
+  q = stopped;
   return result;
 }
 

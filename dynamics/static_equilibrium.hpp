@@ -44,6 +44,9 @@ struct EquilibriumResult {
   int iterations = 0;
   double residual = 0.0;  // max |a| at the returned configuration
   int rank = 0;           // of J at the last iteration (model.nv: every direction stiff)
+  /// Found only by the minimum-norm search of before, from the initial q, after the rank-revealing
+  /// one stalled: directions without stiffness may have moved.
+  bool minimumNorm = false;
   /// When not converged: the directions without stiffness at the returned configuration along
   /// which a net force acts (why there is no equilibrium: a wind on an unmoored barge).
   std::vector<UnbalancedDirection> unbalanced;

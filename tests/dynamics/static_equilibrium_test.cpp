@@ -131,7 +131,7 @@ TEST_CASE("directions without stiffness stay exactly where they are: only heave 
   CHECK(q[2] == Approx(-s.mass * 9.81 / s.k).epsilon(1e-12));  // z = -m g / k
   CHECK(std::abs(q[0] - q0[0]) < 1e-12);
   CHECK(std::abs(q[1] - q0[1]) < 1e-12);
-  CHECK((q.segment(3, 4) - q0.segment(3, 4)).cwiseAbs().maxCoeff() < 1e-12);  // roll, pitch, yaw
+  CHECK((q.segment(3, 4) - q0.segment(3, 4)).cwiseAbs().maxCoeff() < 1e-9);  // roll, pitch, yaw
 }
 
 TEST_CASE("a steady force along a direction without stiffness: no equilibrium, the direction and force named") {
@@ -144,6 +144,7 @@ TEST_CASE("a steady force along a direction without stiffness: no equilibrium, t
   const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
   CHECK_FALSE(r.converged);
   CHECK(q.allFinite());
+  for (const auto& u : r.unbalanced) UNSCOPED_INFO("dof " << u.dof << " force " << u.force);
   REQUIRE(r.unbalanced.size() == 1);  // sway; heave has found its balance
   const int dof = r.unbalanced[0].dof;
   CHECK(jointDirectionName(m.joints[1].type, dof - m.idxV[1]) == "sway (y)");

@@ -280,10 +280,11 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       l.bodyB = resolve(f, l.bodyB, "loop '" + l.name + "'", "loops", own);
       if (l.bodyA == "world") l.X_AF = f.X_WP * l.X_AF;
       if (l.bodyB == "world") l.X_BG = f.X_WP * l.X_BG;
-      // (fragment, loop name) => where its key is written (the mechanics block when not found)
+      // (fragment, loop name) => where the loop is written (the mechanics block when not found)
       SourceMark where = f.owner->mechanicsWhere;
       const YAML::Node& m = f.owner->mechanics;
-      if (const YAML::Node key = m.IsMap() ? mapKey(m["loops"], own) : YAML::Node(); key.IsDefined()) {
+      if (const YAML::Node key = m.IsMap() ? mapKey(m["loops"], own) : YAML::Node(YAML::NodeType::Undefined);
+          key.IsDefined()) {
         where.line = key.Mark().line + 1;
         where.column = key.Mark().column + 1;
       }

@@ -34,8 +34,9 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
 // (node, file) => its 1-based position
 SourceMark markOf(const YAML::Node& node, const std::string& file);
 
-// (mapping, key) => the key's own node (its mark is where the key is written), or an undefined
-// node when the mapping does not have it
+// (mapping, key) => the key's own node (its mark is where the key is written; for a mapping
+// rebuilt by resolveRefs, whose keys have no position, the first positioned node of its value),
+// or an undefined node when the mapping does not have it or nothing in it has a position
 YAML::Node mapKey(const YAML::Node& map, const std::string& key);
 
 // (key path, key) => "a.b.key" (or "key" at the top)

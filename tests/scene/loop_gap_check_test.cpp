@@ -33,8 +33,9 @@ TEST_CASE("a loop open at the start is refused naming the loop and its gap") {
   INFO(r.diagnostics.report());
   REQUIRE(r.diagnostics.errorCount() == 1);
   CHECK(r.diagnostics.all().front().keyPath == "mechanics.loops.tie");
-  CHECK(r.diagnostics.all().front().where.line == 6);  // at the loop's key, not at `integrator:`
-  CHECK(r.diagnostics.all().front().where.column == 5);
+  // at the loop (its first value: `body_a: block`), not at `integrator:` or the mechanics block
+  CHECK(r.diagnostics.all().front().where.line == 6);
+  CHECK(r.diagnostics.all().front().where.column == 19);
   CHECK_THAT(r.diagnostics.all().front().message, Catch::Contains("loop 'tie' is open by 97 "));
 }
 

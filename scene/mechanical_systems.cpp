@@ -283,7 +283,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       // (fragment, loop name) => where the loop is written (the mechanics block when not found)
       SourceMark where = f.owner->mechanicsWhere;
       const YAML::Node& m = f.owner->mechanics;
-      if (const YAML::Node key = m.IsMap() ? mapKey(m["loops"], own) : YAML::Node(YAML::NodeType::Undefined);
+      if (const YAML::Node key = m.IsMap() ? placedEntry(m["loops"], own) : YAML::Node(YAML::NodeType::Undefined);
           key.IsDefined()) {
         where.line = key.Mark().line + 1;
         where.column = key.Mark().column + 1;

@@ -185,9 +185,15 @@ YAML::Node firstPlaced(const YAML::Node& node) {
 YAML::Node mapKey(const YAML::Node& map, const std::string& key) {
   if (map.IsMap())
     for (auto it = map.begin(); it != map.end(); ++it)
-      if (it->first.IsScalar() && it->first.Scalar() == key)
-        return it->first.Mark().is_null() ? firstPlaced(it->second) : it->first;
+      if (it->first.IsScalar() && it->first.Scalar() == key && !it->first.Mark().is_null())
+        return it->first;
   return YAML::Node(YAML::NodeType::Undefined);
+}
+
+YAML::Node placedEntry(const YAML::Node& map, const std::string& key) {
+  if (YAML::Node k = mapKey(map, key); k.IsDefined()) return k;
+  return map.IsMap() && map[key].IsDefined() ? firstPlaced(map[key])
+                                             : YAML::Node(YAML::NodeType::Undefined);
 }
 
 std::string joinKey(const std::string& path, const std::string& key) {

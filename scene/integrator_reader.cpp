@@ -81,7 +81,6 @@ dynamics::IntegratorSpec parseIntegratorSpec(const YAML::Node& n, const std::str
     else
       out = v.as<int>();
   };
-  number("dt", spec.dt);
   number("alpha", spec.alpha);
   number("rho_inf", spec.rhoInf);
   number("rtol", spec.rtol);
@@ -102,9 +101,10 @@ dynamics::IntegratorSpec parseIntegratorSpec(const YAML::Node& n, const std::str
       d.error(markOf(v, f), "integrator.loops", "expected projection, baumgarte or none, got " + shown(v),
               didYouMean(s, kinds));
   }
-  // (values) => ranges of the method's parameters, at the offending key (dt: by the mechanics)
+  // (values) => ranges of the method's parameters, at the offending key; dt is the caller's (the
+  // run settings read it with its range, a wp run sets its own): one error for a bad dt
   for (const auto& p : dynamics::checkIntegratorSpec(spec)) {
-    if (p.key == "dt" && !n["dt"]) continue;
+    if (p.key == "dt") continue;
     const YAML::Node at = n[p.key];
     d.error(markOf(at ? at : n, f), "integrator." + p.key, p.message);
   }

@@ -15,8 +15,9 @@ namespace yardsim::scene {
 
 using models::Diagnostics;
 
-// (integrator mapping, file) => spec; problems into diags. dt may be absent (0): the scene's
-// mechanics ask for it (mechanical_systems.cpp).
+// (integrator mapping, file) => spec without its dt (0); problems into diags. dt is the caller's
+// to read and check (scene/run_settings_reader.cpp: a positive number of seconds; the scene's
+// mechanics ask for it when absent, mechanical_systems.cpp).
 dynamics::IntegratorSpec parseIntegratorSpec(const YAML::Node& node, const std::string& file, Diagnostics& diags);
 
 }  // namespace yardsim::scene

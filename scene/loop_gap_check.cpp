@@ -30,11 +30,18 @@ std::vector<std::pair<std::string, std::string>> openLoops(const mechanics::Buil
 }
 
 void checkInitialLoops(const Scene& scene, models::Diagnostics& diags) {
+  // (system, loop name) => the place of the loop's key, found among the system's loops
   for (const auto& system : scene.systems)
     if (system->built)
-      for (const auto& [name, message] : openLoops(*system->built))
-        diags.error(scene.integratorWhere, "mechanics.loops." + name,
+      for (const auto& [name, message] : openLoops(*system->built)) {
+        const auto& loops = system->spec.loops;
+        std::size_t i = 0;
+        while (i < loops.size() && loops[i].name != name) ++i;
+        const bool placed = i < system->loopPlaces.size();
+        diags.error(placed ? system->loopPlaces[i].first : scene.integratorWhere,
+                    placed ? system->loopPlaces[i].second : "mechanics.loops." + name,
                     "mechanical system '" + system->name + "': " + message);
+      }
 }
 
 }  // namespace yardsim::scene

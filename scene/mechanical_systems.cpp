@@ -187,6 +187,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& f : fragments)
     for (const auto& b : f.spec.bodies) names.push_back(prefixed(f.owner->path, b.name));
   MechanicsSpec all;
+  std::vector<std::pair<SourceMark, std::string>> loopPlaces;  // parallel to all.loops
   if (fragments.front().owner == &scene.root) {  // the settings and the environment: the root's
     all.gravity = fragments.front().spec.gravity;
     all.settings = fragments.front().spec.settings;
@@ -284,6 +285,15 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
       l.bodyB = resolve(f, l.bodyB, "loop '" + l.name + "'", "loops", own);
       if (l.bodyA == "world") l.X_AF = f.X_WP * l.X_AF;
       if (l.bodyB == "world") l.X_BG = f.X_WP * l.X_BG;
+      // (fragment, loop name) => where the loop is written (the mechanics block when not found)
+      SourceMark where = f.owner->mechanicsWhere;
+      const YAML::Node& m = f.owner->mechanics;
+      if (const YAML::Node key = m.IsMap() ? placedEntry(m["loops"], own) : YAML::Node(YAML::NodeType::Undefined);
+          key.IsDefined()) {
+        where.line = key.Mark().line + 1;
+        where.column = key.Mark().column + 1;
+      }
+      loopPlaces.emplace_back(where, joinKey(f.owner->keyPath, "mechanics.loops." + own));
       all.loops.push_back(std::move(l));
     }
   }
@@ -399,7 +409,10 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (std::size_t i = 0; i < all.equalizers.size(); ++i)
     systemOf(eqAt[i])->spec.equalizers.push_back(all.equalizers[i]);
   for (std::size_t i = 0; i < all.loops.size(); ++i)
-    if (loopAt[i] >= 0) systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
+    if (loopAt[i] >= 0) {
+      systemOf(loopAt[i])->spec.loops.push_back(all.loops[i]);
+      systemOf(loopAt[i])->loopPlaces.push_back(loopPlaces[i]);
+    }
   for (const auto& l : all.loads)
     if (l.body != "world") systemOf(index.at(l.body))->spec.loads.push_back(l);
   for (std::size_t i = 0; i < all.providers.size(); ++i)

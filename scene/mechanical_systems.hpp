@@ -9,6 +9,7 @@
 // the fragment's own namespace first, then in the enclosing ones, then at the scene root.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "models/diagnostics.hpp"
@@ -20,10 +21,13 @@ namespace yardsim::scene {
 using mechanics::MechanicsSpec;
 using models::Diagnostics;
 using models::ElementRef;
+using models::SourceMark;
 
 struct MechanicalSystem {
   std::string name;    // the multibody model's name at the scene root: mechanics, mechanics2, ...
   MechanicsSpec spec;  // bodies, joints, ropes, equalizers, loops with full path names
+  // parallel to spec.loops: where each loop's key is written and its key path (mechanics.loops.x)
+  std::vector<std::pair<SourceMark, std::string>> loopPlaces;
   // the spec built once at validation (model, added mass from hulls, q0): shared by the stiffness
   // guard and the assembler; null when it could not be built (an error was reported)
   std::shared_ptr<const mechanics::BuiltMechanics> built;

@@ -1,6 +1,7 @@
 // Registration of the scene type `multibody` (see multibody_model.hpp and docs/multibody_scenes.md).
 #include "scene/mechanics_reader.hpp"
 #include "scene/loop_gap_check.hpp"
+#include "scene/yaml_source.hpp"
 #include "mechanics/build.hpp"
 #include "dynamics/model_builder.hpp"
 #include "models/multibody/multibody_model.hpp"
@@ -141,7 +142,7 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             return;
           }
           try {
-            for (const auto& [name, message] : openLoops(buildMechanics(spec))) c.error("loops", message);
+            for (const auto& [name, message] : openLoops(buildMechanics(spec))) c.errorAt("loops", mapKey(p.node("loops"), name), name, message);
           } catch (const dynamics::ModelError& e) {
             c.error("bodies", e.what());
           }

@@ -168,6 +168,34 @@ SourceMark markOf(const YAML::Node& node, const std::string& file) {
   return {file, m.line + 1, m.column + 1};
 }
 
+namespace {
+// (node) => it or its first descendant that carries a position (resolveRefs rebuilds maps and
+// sequences without one; the scalars keep theirs), or an undefined node
+YAML::Node firstPlaced(const YAML::Node& node) {
+  if (!node.Mark().is_null()) return node;
+  if (node.IsMap() || node.IsSequence())
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const YAML::Node child = node.IsMap() ? it->second : *it;
+      if (YAML::Node placed = firstPlaced(child); placed.IsDefined()) return placed;
+    }
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+}  // namespace
+
+YAML::Node mapKey(const YAML::Node& map, const std::string& key) {
+  if (map.IsMap())
+    for (auto it = map.begin(); it != map.end(); ++it)
+      if (it->first.IsScalar() && it->first.Scalar() == key && !it->first.Mark().is_null())
+        return it->first;
+  return YAML::Node(YAML::NodeType::Undefined);
+}
+
+YAML::Node placedEntry(const YAML::Node& map, const std::string& key) {
+  if (YAML::Node k = mapKey(map, key); k.IsDefined()) return k;
+  return map.IsMap() && map[key].IsDefined() ? firstPlaced(map[key])
+                                             : YAML::Node(YAML::NodeType::Undefined);
+}
+
 std::string joinKey(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // Reading YAML with its positions: marks as file:line:column, key checks with "did you mean",
 // duplicate keys, and `$name` parameter references resolved through nested scopes.
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +33,14 @@ std::optional<YAML::Node> readYamlFile(const std::filesystem::path& file, const 
 
 // (node, file) => its 1-based position
 SourceMark markOf(const YAML::Node& node, const std::string& file);
+
+// (mapping, key) => the key's own node (its mark is where the key is written), or an undefined
+// node when the mapping does not have it or the key has no position
+YAML::Node mapKey(const YAML::Node& map, const std::string& key);
+
+// (mapping, key) => mapKey, or for a mapping rebuilt by resolveRefs (whose keys have no
+// position) the first positioned node of the key's value, or an undefined node
+YAML::Node placedEntry(const YAML::Node& map, const std::string& key);
 
 // (key path, key) => "a.b.key" (or "key" at the top)
 std::string joinKey(const std::string& path, const std::string& key);

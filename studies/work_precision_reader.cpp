@@ -1,9 +1,13 @@
 #include "studies/work_precision_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
+#include "dynamics/integrators/factory.hpp"
+#include "models/diagnostics.hpp"
 #include "scene/yaml_source.hpp"
 
 namespace yardsim::studies {
@@ -22,6 +26,19 @@ std::string WpRun::param() const {
   else s << "dt=" << dt;
   return s.str();
 }
+
+namespace {
+constexpr int kMaxLevels = 20;     // halvings of dt0 in one sweep: 2^19 times the first run's steps
+constexpr int kMaxRepeats = 1000;  // timed runs after the warm-up
+constexpr double kMinRtol = 1e-15;  // below the double precision of the state
+
+// (number) => "1.2e+07" style text for messages
+std::string shortNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+}  // namespace
 
 WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
   WpSpec spec;
@@ -53,7 +70,33 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
   spec.until = positive(wp["until"], "wp.until", scene.until);
   if (!(spec.interval > 0)) d.error(markOf(wp, f), "wp.interval", "missing: the output grid step, s");
   if (!std::isfinite(spec.until)) d.error(markOf(wp, f), "wp.until", "missing: the scene runs without end; give wp.until");
-  spec.repeats = static_cast<int>(positive(wp["repeats"], "wp.repeats", 3.0));
+  // (grid) => every run records until / interval rows: held to the scene's ceiling
+  if (spec.interval > 0 && std::isfinite(spec.until) && spec.until / spec.interval > scene.limits.rows)
+    d.error(markOf(wp["interval"] ? wp["interval"] : wp, f), "wp.interval",
+            "an interval of " + shortNumber(spec.interval) + " s over wp.until = " + shortNumber(spec.until) +
+                " s is " + shortNumber(spec.until / spec.interval) + " rows per run, above the ceiling of " +
+                shortNumber(scene.limits.rows) + "; raise it with the root key `limits: {rows: " +
+                shortNumber(spec.until / spec.interval) + "}`");
+  // (node, key, range) => a whole number in [1, most], or an error there with the range
+  auto count = [&](const YAML::Node& n, const std::string& key, int most, int fallback) {
+    const double v = positive(n, key, fallback);
+    if (v == std::floor(v) && v <= most) return static_cast<int>(v);
+    d.error(markOf(n, f), key, "expected a whole number from 1 to " + std::to_string(most) + ", got " + shown(n));
+    return fallback;
+  };
+  spec.repeats = count(wp["repeats"], "wp.repeats", kMaxRepeats, 3);
+  // (method node, key) => its name, or an error naming the methods there are
+  auto method = [&](const YAML::Node& n, const std::string& key) {
+    const std::string name = n.IsScalar() ? n.Scalar() : "";
+    const auto known = dynamics::integratorMethodNames();
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      d.error(markOf(n, f), key, "unknown integrator method " + shown(n) + " (expected one of " + list + ")",
+              models::didYouMean(name, known));
+    }
+    return name;
+  };
   // (one run: method and dt or rtol) => the run
   auto single = [&](const YAML::Node& n, const std::string& key) {
     WpRun r;
@@ -61,11 +104,19 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
       d.error(markOf(n ? n : wp, f), key, "expected {method: name, dt: s} or {method: name, rtol: x}");
       return r;
     }
-    r.method = r.label = n["method"].as<std::string>();
+    r.method = r.label = method(n["method"], key + ".method");
     if (n["label"]) r.label = n["label"].as<std::string>();
     r.dt = positive(n["dt"], key + ".dt", 0.0);
     r.rtol = positive(n["rtol"], key + ".rtol", 0.0);
     if (!(r.dt > 0) && !(r.rtol > 0)) d.error(markOf(n, f), key, "give dt (fixed step) or rtol (adaptive)");
+    if (r.dt > 0 && std::isfinite(spec.until) && spec.until / r.dt > scene.limits.steps)
+      d.error(markOf(n["dt"], f), key + ".dt",
+              "a step of " + shortNumber(r.dt) + " s over wp.until = " + shortNumber(spec.until) + " s is " +
+                  shortNumber(spec.until / r.dt) + " steps, above the ceiling of " + shortNumber(scene.limits.steps) +
+                  "; raise it with the root key `limits: {steps: " + shortNumber(spec.until / r.dt) + "}`");
+    if (r.rtol > 0 && !(r.rtol <= 1.0 && r.rtol >= kMinRtol))
+      d.error(markOf(n["rtol"], f), key + ".rtol",
+              "expected a tolerance from " + shortNumber(kMinRtol) + " to 1, got " + shown(n["rtol"]));
     r.extra = YAML::Clone(n);
     for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) r.extra.remove(k);
     return r;
@@ -101,7 +152,7 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
       continue;
     }
     WpRun base;
-    base.method = base.label = m["method"].as<std::string>();
+    base.method = base.label = method(m["method"], key + ".method");
     if (m["label"]) base.label = m["label"].as<std::string>();
     base.extra = YAML::Clone(m);
     for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) base.extra.remove(k);
@@ -112,6 +163,12 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
         continue;
       }
       const double hi = positive(rt[0], key + ".rtol[0]", 1e-3), lo = positive(rt[1], key + ".rtol[1]", 1e-10);
+      if (!(hi <= 1.0 && lo >= kMinRtol && lo <= hi)) {
+        d.error(markOf(rt, f), key + ".rtol",
+                "expected [highest, lowest] with 1 >= highest >= lowest >= " + shortNumber(kMinRtol) + ", got " +
+                    shown(rt));
+        continue;
+      }
       for (double r = hi; r >= lo * (1 - 1e-9); r /= 10.0) {
         WpRun run = base;
         run.rtol = r;
@@ -119,12 +176,23 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
       }
     } else {
       const double dt0 = positive(m["dt0"], key + ".dt0", 0.0);
-      const double levels = positive(m["levels"], key + ".levels", 4.0);
+      const int levels = count(m["levels"], key + ".levels", kMaxLevels, 4);
       if (!(dt0 > 0)) {
         d.error(markOf(m, f), key, "missing dt0 (the longest step of the sweep, s) or rtol");
         continue;
       }
-      for (int k = 0; k < static_cast<int>(levels); ++k) {
+      // (dt0, levels) => the shortest step's count over wp.until, held to the scene's ceiling
+      const double steps = spec.until / (dt0 / std::pow(2.0, levels - 1));
+      if (std::isfinite(spec.until) && steps > scene.limits.steps) {
+        d.error(markOf(m["levels"] ? m["levels"] : m["dt0"], f), key + (m["levels"] ? ".levels" : ".dt0"),
+                "the shortest step dt0 / 2^" + std::to_string(levels - 1) + " over wp.until = " +
+                    shortNumber(spec.until) + " s is " + shortNumber(steps) + " steps, above the ceiling of " +
+                    shortNumber(scene.limits.steps) +
+                    "; fewer levels, a longer dt0 or wp.until, or raise the ceiling with the root key "
+                    "`limits: {steps: " + shortNumber(steps) + "}`");
+        continue;
+      }
+      for (int k = 0; k < levels; ++k) {
         WpRun run = base;
         run.dt = dt0 / std::pow(2.0, k);
         spec.runs.push_back(run);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
@@ -48,6 +49,27 @@ MultibodyOptions resolved(MultibodyOptions o) {
     o.integrator.loops = dynamics::LoopStabilization::None;
   return o;
 }
+
+std::string unbalancedText(const mechanics::System& system, const std::vector<dynamics::UnbalancedDirection>& u) {
+  // (directions without stiffness, their forces) => "hull: surge (x) has no stiffness and a net
+  // force of 12.3 kN; ..." (body; joint name beside a joint that is not free)
+  const auto& m = system.model();
+  std::string out;
+  for (const auto& d : u) {
+    const int body = m.dofBody[static_cast<std::size_t>(d.dof)];
+    const auto type = m.joints[static_cast<std::size_t>(body)].type;
+    const int k = d.dof - m.idxV[static_cast<std::size_t>(body)];
+    const bool rotation = dynamics::jointDirectionIsRotation(type, k);
+    const std::string& joint = system.description().jointNames[static_cast<std::size_t>(body)];
+    char force[64];
+    std::snprintf(force, sizeof force, "%.3g %s", std::abs(d.force) / 1e3, rotation ? "kN m" : "kN");
+    out += (out.empty() ? "" : "; ") + m.names[static_cast<std::size_t>(body)] + ": " +
+           std::string(dynamics::jointDirectionName(type, k)) +
+           (type == dynamics::JointType::Free || joint.empty() ? "" : " of joint '" + joint + "'") +
+           " has no stiffness and a net " + (rotation ? "moment" : "force") + " of " + force;
+  }
+  return out;
+}
 }  // namespace
 
 MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mechanics,
@@ -92,13 +114,18 @@ void MultibodyModel::settle() {
   ws_.data.setPoints = &x.setPoints;
   const auto r = dynamics::solveStaticEquilibrium(system_.model(), ws_.data.kernel, 0.0, x.q);
   ws_.data.setPoints = nullptr;
-  if (!r.converged)
+  if (!r.converged) {
+    const std::string search = "max |a| = " + std::to_string(r.residual) + " after " +
+                               std::to_string(r.iterations) + " Newton iterations";
+    if (r.unbalanced.empty())
+      throw NumericalError("multibody '" + path() + "'", 0.0,
+                           "no static equilibrium found from the given initial state (" + search + ")",
+                           "start closer to equilibrium, hold the joints that have no stiffness, or "
+                           "set equilibrium: false");
     throw NumericalError("multibody '" + path() + "'", 0.0,
-                         "no static equilibrium found from the given initial state (max |a| = " +
-                             std::to_string(r.residual) + " after " + std::to_string(r.iterations) +
-                             " Newton iterations)",
-                         "start closer to equilibrium, hold the joints that have no stiffness, or "
-                         "set equilibrium: false");
+                         "no static equilibrium: " + unbalancedText(system_, r.unbalanced) + " (" + search + ")",
+                         "add a mooring, a rope or a held joint there, or set equilibrium: false");
+  }
   x.v.setZero();
 }
 

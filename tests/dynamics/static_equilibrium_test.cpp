@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_builder.hpp"
@@ -84,4 +85,91 @@ TEST_CASE("a body with nothing to rest on has no equilibrium: reported, not thro
   CHECK_FALSE(r.converged);
   CHECK(r.residual == Approx(9.81));
   CHECK(q.allFinite());
+}
+
+namespace {
+// A free 2000 kg body held only by a vertical spring k (z - z_a) at its centre of mass: heave is
+// its one direction with stiffness; surge, sway, roll, pitch and yaw have none.
+struct HeaveSpring {
+  double mass = 2000.0, k = 5.0e4;
+  Vector3 side = Vector3::Zero();  // a steady force (N, world frame) at the centre of mass
+  Model model() const {
+    ModelBuilder b;
+    b.addBody("float", "world", Joint::free(), Transform::identity(),
+              makeInertia(mass, Vector3::Zero(), Vector3(400, 600, 900).asDiagonal()));
+    return b.build();
+  }
+  void attach(MultibodySystem& sys) const {
+    sys.setForces([this](double, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data& d, ExternalForces& f,
+                         Eigen::VectorXd&) {
+      const Vector3 p = d.X_WB[1].p;
+      f.addPointForceWorld(1, p, Vector3(0, 0, -k * p.z()) + side);
+    });
+  }
+  // (x, y, z, roll, pitch, yaw) => q of the free joint
+  static Eigen::VectorXd pose(double x, double y, double z, double roll, double pitch, double yaw) {
+    const Eigen::Quaterniond r = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
+    Eigen::VectorXd q(7);
+    q << x, y, z, r.w(), r.x(), r.y(), r.z();
+    return q;
+  }
+};
+}  // namespace
+
+TEST_CASE("directions without stiffness stay exactly where they are: only heave moves") {
+  const HeaveSpring s;
+  const Model m = s.model();
+  MultibodySystem sys(m);
+  s.attach(sys);
+  // (start) => 0.3 m below its rest height, displaced and turned in every free direction
+  const Eigen::VectorXd q0 = HeaveSpring::pose(3.0, -2.0, -s.mass * 9.81 / s.k - 0.3, 0.0, 0.0, 0.35);
+  Eigen::VectorXd q = q0;
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  REQUIRE(r.converged);
+  CHECK(r.rank == 1);  // heave only
+  CHECK(q[2] == Approx(-s.mass * 9.81 / s.k).epsilon(1e-12));  // z = -m g / k
+  CHECK(std::abs(q[0] - q0[0]) < 1e-12);
+  CHECK(std::abs(q[1] - q0[1]) < 1e-12);
+  CHECK((q.segment(3, 4) - q0.segment(3, 4)).cwiseAbs().maxCoeff() < 1e-9);  // roll, pitch, yaw
+}
+
+TEST_CASE("a steady force along a direction without stiffness: no equilibrium, the direction and force named") {
+  HeaveSpring s;
+  s.side = Vector3(0, 1.23e4, 0);  // 12.3 kN sideways
+  const Model m = s.model();
+  MultibodySystem sys(m);
+  s.attach(sys);
+  Eigen::VectorXd q = HeaveSpring::pose(0.0, 0.0, 0.1, 0.0, 0.0, 0.0);
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  CHECK_FALSE(r.converged);
+  CHECK(q.allFinite());
+  for (const auto& u : r.unbalanced) UNSCOPED_INFO("dof " << u.dof << " force " << u.force);
+  // (directions named) => translations of the body whose forces add up to the 12.3 kN push
+  // (the search leaves the body turned, so the push may show on more than one body axis)
+  REQUIRE_FALSE(r.unbalanced.empty());
+  double sum = 0.0;
+  for (const auto& u : r.unbalanced) {
+    CHECK_FALSE(jointDirectionIsRotation(m.joints[1].type, u.dof - m.idxV[1]));
+    sum += u.force * u.force;
+  }
+  CHECK(std::sqrt(sum) == Approx(1.23e4).epsilon(1e-6));
+}
+
+TEST_CASE("a free body between springs in every direction: every direction stiff (full rank)") {
+  ModelBuilder b;
+  b.addBody("block", "world", Joint::free(), Transform::identity(),
+            makeInertia(1000.0, Vector3(0.1, -0.05, 0.2), Vector3(300, 500, 700).asDiagonal()));
+  const Model m = b.build();
+  const Springs s;
+  MultibodySystem sys(m);
+  sys.setForces([&](double, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data& d, ExternalForces& f,
+                    Eigen::VectorXd&) {
+    for (int k = 0; k < 3; ++k) f.addPointForceWorld(1, s.point_W(d.X_WB[1], k), s.force_W(d.X_WB[1], k));
+  });
+  Eigen::VectorXd q = HeaveSpring::pose(0.0, 0.0, 9.0, 0.0, 0.0, 0.0);
+  const EquilibriumResult r = solveStaticEquilibrium(m, sys, 0.0, q);
+  REQUIRE(r.converged);
+  CHECK(r.rank == 6);
 }

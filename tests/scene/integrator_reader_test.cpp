@@ -117,3 +117,15 @@ TEST_CASE("every method steps a scene's mechanics and follows the same pendulum"
     CHECK(q == Approx(reference).margin(tol));
   }
 }
+
+TEST_CASE("an infinite or negative dt is one error at its value") {
+  testing::SceneDir dir;
+  for (const char* dt : {".inf", "-0.01", ".nan"}) {
+    const auto r = load(dir, std::string("integrator: {method: rk4, dt: ") + dt + "}");
+    INFO(r.diagnostics.report());
+    REQUIRE_FALSE(r.scene);
+    REQUIRE(r.diagnostics.errorCount() == 1);  // was three for .inf: reader, spec check, run settings
+    CHECK(r.diagnostics.all().front().keyPath == "integrator.dt");
+    CHECK_THAT(r.diagnostics.all().front().message, Catch::Contains("expected a positive number of seconds"));
+  }
+}

@@ -33,6 +33,9 @@ TEST_CASE("a loop open at the start is refused naming the loop and its gap") {
   INFO(r.diagnostics.report());
   REQUIRE(r.diagnostics.errorCount() == 1);
   CHECK(r.diagnostics.all().front().keyPath == "mechanics.loops.tie");
+  // at the loop (its first value: `body_a: block`), not at `integrator:` or the mechanics block
+  CHECK(r.diagnostics.all().front().where.line == 6);
+  CHECK(r.diagnostics.all().front().where.column == 19);
   CHECK_THAT(r.diagnostics.all().front().message, Catch::Contains("loop 'tie' is open by 97 "));
 }
 
@@ -48,6 +51,8 @@ TEST_CASE("a multibody component with an open loop is refused at its loops") {
       "{xyz: [0, 0, -1]}, body_b: world, frame_b: {xyz: [0, 0, -3]}}\nuntil: 1\n"));
   INFO(r.diagnostics.report());
   REQUIRE(r.diagnostics.errorCount() == 1);
-  CHECK(r.diagnostics.all().front().keyPath == "components.m.params.loops");
+  CHECK(r.diagnostics.all().front().keyPath == "components.m.params.loops.pin");
+  CHECK(r.diagnostics.all().front().where.line == 10);  // at the loop's key
+  CHECK(r.diagnostics.all().front().where.column == 9);
   CHECK_THAT(r.diagnostics.all().front().message, Catch::Contains("loop 'pin' is open by 2 "));
 }

@@ -77,3 +77,45 @@ TEST_CASE("wp mistakes are reported with their place") {
   parse("", none);
   CHECK_THAT(none.report(), Catch::Contains("no `wp:` block"));
 }
+
+TEST_CASE("wp refuses an unknown method and out-of-range levels and repeats at their place") {
+  models::Diagnostics d;
+  parse(R"(wp:
+  channels: [block.z]
+  interval: 0.1
+  until: 1
+  methods:
+    - {method: rk5, dt0: 0.01, levels: 2}
+    - {method: rk4, dt0: 0.01, levels: 1.0e9}
+    - {method: rk4, dt0: 0.01, levels: 2.5}
+  reference: {method: rk4, dt: 0.001}
+  check: {method: semi_implicit_euler, dt: 0.0001}
+  repeats: 1.0e300
+)", d);
+  const std::string report = d.report();
+  INFO(report);
+  CHECK_THAT(report, Catch::Contains("s.yaml:14:") && Catch::Contains("wp.methods[0].method") &&
+                         Catch::Contains("unknown integrator method"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:15:") && Catch::Contains("wp.methods[1].levels") &&
+                         Catch::Contains("from 1 to 20"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:16:") && Catch::Contains("wp.methods[2].levels"));
+  CHECK_THAT(report, Catch::Contains("wp.repeats") && Catch::Contains("from 1 to 1000"));
+}
+
+TEST_CASE("wp runs are held to the step and row ceilings of the scene") {
+  models::Diagnostics d;
+  parse(R"(wp:
+  channels: [block.z]
+  interval: 1.0e-7
+  until: 1
+  methods:
+    - {method: rk4, dt0: 1.0e-7, levels: 20}
+  reference: {method: rk4, dt: 1.0e-9}
+  check: {method: semi_implicit_euler, dt: 1.0e-7}
+)", d);
+  const std::string report = d.report();
+  INFO(report);
+  CHECK_THAT(report, Catch::Contains("wp.interval") && Catch::Contains("above the ceiling of 1e+06"));
+  CHECK_THAT(report, Catch::Contains("wp.methods[0].levels") && Catch::Contains("above the ceiling of 1e+08"));
+  CHECK_THAT(report, Catch::Contains("wp.reference.dt") && Catch::Contains("limits: {steps"));
+}

@@ -1,0 +1,86 @@
+// yardsim run, as a process, on scenes that start in static equilibrium (`equilibrium: true`):
+// a box barge released off its draft settles at the draft of the hand formula without moving in
+// surge, sway or yaw; an unmoored barge in a steady wind has no equilibrium, and the run says
+// which body and direction, exits 2 and still writes run.json.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "support/csv_file.hpp"
+#include "support/scene_files.hpp"
+#include "support/shell_command.hpp"
+
+namespace {
+
+// (arguments) => exit status and output of `yardsim arguments`
+yardsim::testing::ShellResult runYardsim(const std::string& args) {
+  return yardsim::testing::shell(std::string(YARDSIM_EXE) + " " + args);
+}
+
+// A 60 m x 20 m x 5 m box hull (examples/floating_barge) of 1500 t: its draft is
+// m / (rho L B) = 1.5e6 / (1025 x 60 x 20) = 1.2195122 m. Started 0.3 m too high, 3 m forward,
+// 2 m to port and turned 20 degrees; `extra` adds to the mechanics block.
+std::string barge(const std::string& extra) {
+  return R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+mechanics:
+  equilibrium: true
+  water: {density: 1025.0, level: 0.0, depth: 30.0}
+  bodies:
+    hull:
+      parent: world
+      joint: {type: free, q0: {xyz: [3.0, 2.0, -0.9195121951219512], rpy_deg: [0, 0, 20]}}
+      mass: 1.5e6
+      com: [0, 0, 2.0]
+      inertia: [5.3125e7, 4.53125e8, 5.0e8]
+  hydrostatics:
+    buoyancy: {body: hull, mesh: )" +
+         std::string(YARDSIM_SOURCE_DIR) + R"(/examples/floating_barge/barge_hull.obj}
+)" + extra + R"(record: {interval: 0.01, channels: ["hull.*"]}
+until: 0.01
+)";
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST_CASE("an unmoored box barge off its draft settles at the hand draft: surge sway and yaw unmoved") {
+  yardsim::testing::SceneDir dir;
+  const auto scene = dir.write("barge.yaml", barge(""));
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  const yardsim::testing::CsvFile csv(dir.file("out/timeseries.csv"));
+  REQUIRE(csv.rows.size() >= 1);
+  const auto& row = csv.rows.front();  // t = 0: the equilibrium the run starts from
+  REQUIRE(row[0] == 0.0);
+  auto at = [&](const std::string& channel) { return row[static_cast<std::size_t>(csv.column(channel))]; };
+  CHECK(std::abs(at("hull.z[m]") + 1.5e6 / (1025.0 * 60.0 * 20.0)) < 1e-9);  // keel at minus the draft
+  CHECK(std::abs(at("hull.x[m]") - 3.0) < 1e-9);
+  CHECK(std::abs(at("hull.y[m]") - 2.0) < 1e-9);
+  CHECK(std::abs(at("hull.yaw[rad]") - 20.0 * M_PI / 180.0) < 1e-9);
+  CHECK(std::abs(at("hull.roll[rad]")) < 1e-9);  // a symmetric box on an even keel stays upright
+  CHECK(std::abs(at("hull.pitch[rad]")) < 1e-9);
+}
+
+TEST_CASE("an unmoored barge in a steady side force has no equilibrium: body and direction named and exit 2") {
+  yardsim::testing::SceneDir dir;
+  // a steady 12.3 kN push along the hull's y axis (body frame), at the centre of the waterplane
+  const auto scene = dir.write(
+      "push.yaml", barge("  loads:\n    push: {body: hull, point: [0, 0, 1.2], frame: body, series: [[0, 0, 1.23e4, 0, "
+                         "0, 0, 0], [100, 0, 1.23e4, 0, 0, 0, 0]]}\n"));
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out, Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN") &&
+                        Catch::Contains("set equilibrium: false") && Catch::Contains("nothing was simulated"));
+  // (run.json) => written anyway: status failed, the reason naming the body and the direction
+  const std::string json = slurp(dir.file("out/run.json"));
+  CHECK_THAT(json, Catch::Contains("\"status\":\"failed\"") &&
+                       Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
+}

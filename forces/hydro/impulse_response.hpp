@@ -30,6 +30,9 @@ struct ImpulseResponse {
   std::vector<Matrix6> radiation;                 ///< K(t_k), N/(m s) (per unit velocity and time)
   std::vector<double> headings;                   ///< rad, one per excitation response
   double excitationStart = 0.0;                   ///< t0 of excitation[b][0], s (<= 0)
+  /// w_c, rad/s, of the window W(w) = exp(-(w / w_c)^2) the excitation responses carry (their
+  /// transfer function is X(w) W(w); ImpulseResponseForce divides W out); 0: no window
+  double excitationWindow = 0.0;
   std::vector<std::vector<Vector6>> excitation;   ///< h_beta(t0 + k dt), N/(m s) per unit elevation
   std::string key;                                ///< hash of the mesh and the settings that made it
 };

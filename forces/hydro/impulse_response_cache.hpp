@@ -1,10 +1,10 @@
 #pragma once
 // The disk cache of impulse responses (docs/hydrodynamics.md, "The cache"): one file per key
 // (ImpulseResponse::key, a hash of the hull mesh and the settings that made it), named
-// `<key>.ysir` in the cache folder. Format, version 1, every number little-endian:
+// `<key>.ysir` in the cache folder. Format, version 2, every number little-endian:
 //   "YSIMIR1\n" (8 bytes), u32 version, u32 key length, the key (UTF-8), f64 dt, 36 f64 aInf
 //   (row-major), u64 L then L x 36 f64 radiation (row-major), u64 H then H f64 headings, f64
-//   excitationStart, per heading u64 N then N x 6 f64 excitation, then u64 FNV-1a 64 of every
+//   excitationStart, f64 excitationWindow (version 2), per heading u64 N then N x 6 f64 excitation, then u64 FNV-1a 64 of every
 //   byte before it.
 // Doubles are stored as their bit patterns: a read gives back every value to the last bit.
 #include <filesystem>

@@ -70,6 +70,18 @@ ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Mod
   transfer_.assign(sea_->size() * order_.size() * 6, {0.0, 0.0});
   for (std::size_t i = 0; i < sea_->size(); ++i) {
     const double w = sea_->frequency(i);
+    // (the response's window W(w) = exp(-(w/w_c)^2)) => divided out, where it leaves X(w)
+    // recoverable (w <= 2 w_c: W >= e^-4); above, the response does not carry the wave
+    double window = 1.0;
+    if (const double wc = ir.excitationWindow; wc > 0.0) {
+      if (w > 2.0 * wc)
+        throw std::invalid_argument(
+            me + "a wave component of " + std::to_string(w) +
+            " rad/s lies above twice the excitation window's cutoff (" + std::to_string(wc) +
+            " rad/s); compute the response with a cutoff of at least " + std::to_string(0.5 * w) +
+            " rad/s (hydrodynamics.cutoff) on a free-surface mesh that resolves that wave");
+      window = std::exp(-(w / wc) * (w / wc));
+    }
     for (std::size_t b = 0; b < order_.size(); ++b) {
       const auto& h = ir.excitation[order_[b]];
       std::complex<double>* H = &transfer_[(i * order_.size() + b) * 6];
@@ -78,7 +90,7 @@ ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Mod
           throw std::invalid_argument(me + "an excitation sample is not finite");
         const double tau = ir.excitationStart + static_cast<double>(k) * ir.dt;
         const std::complex<double> e = std::polar(ir.dt, w * tau);
-        for (int r = 0; r < 6; ++r) H[r] += h[k][r] * e;
+        for (int r = 0; r < 6; ++r) H[r] += h[k][r] * e / window;
       }
     }
   }

@@ -123,6 +123,28 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
 }
 
 namespace {
+// (request, sea) => checkRankineTd, and for the impulse-response path the excitation window:
+// every wave component at most twice its cutoff (ImpulseResponseForce divides W(w) out there)
+std::vector<std::string> checkRankineTdResponse(const HydrodynamicsRequest& q, const AiryWaves& sea) {
+  std::vector<std::string> problems = checkRankineTd(q, sea);
+  if (!problems.empty() || q.headings.empty() || sea.size() == 0) return problems;
+  try {
+    double wc = rankineTdSettings(q).cutoff;
+    if (!(wc > 0)) wc = resolvedFrequency(*rankineTdModel(q));
+    double highest = 0.0;
+    for (std::size_t i = 0; i < sea.size(); ++i) highest = std::max(highest, sea.frequency(i));
+    if (highest > 2.0 * wc)
+      problems.push_back("rankine_td: the sea's highest component (" + std::to_string(highest) +
+                         " rad/s) lies above twice the excitation window's cutoff (" + std::to_string(wc) +
+                         " rad/s, " + (rankineTdSettings(q).cutoff > 0 ? "given" : "what the free-surface mesh resolves") +
+                         "); set cutoff to at least " + std::to_string(0.5 * highest) +
+                         " rad/s with a free-surface mesh that resolves it (smaller max_spacing)");
+  } catch (const std::exception& e) {
+    problems.push_back(std::string("rankine_td: ") + e.what());
+  }
+  return problems;
+}
+
 // (added mass from the panels) => its symmetric part: the discrete A_ij = -rho int psi_j N_i dS
 // is symmetric only to the panel error, and the multibody model takes a symmetric one
 ImpulseResponse::Matrix6 symmetric(const ImpulseResponse::Matrix6& a) { return 0.5 * (a + a.transpose()); }
@@ -139,7 +161,7 @@ const bool registered = [] {
          ir.aInf = symmetric(ir.aInf);
          return ir;
        },
-       checkRankineTd});
+       checkRankineTdResponse});
   registerTimeDomainMethod(
       {"rankine_td",
        [](const std::string& name, const dynamics::Model& model, int body,

@@ -184,6 +184,49 @@ TEST_CASE("the excitation is the convolution of its response with the incident e
   for (int r = 0; r < 6; ++r) CHECK(F[r] == Approx(G[r]).margin(1e-10 * G.cwiseAbs().maxCoeff()));
 }
 
+TEST_CASE("a windowed excitation response gives back its transfer function") {
+  // (h(t) = X0 g(t), g the window's unit-area pulse w_c / (2 sqrt(pi)) exp(-(w_c t / 2)^2), whose
+  // transform is W(w) = exp(-(w / w_c)^2): the response's transfer function is X0 W(w)) => with
+  // excitationWindow = w_c the force is X0 eta(t) at any w <= 2 w_c; without it, X0 W(w) eta(t)
+  const dynamics::Model model = block(dynamics::Joint::free());
+  const double wc = 2.0, dt = 0.02, t0 = -8.0;  // dt: the kernel's sample spacing
+  Vector6 X0;
+  X0 << 1e5, -2e5, 3e5, 4e4, -5e4, 6e4;
+  auto ir = std::make_shared<ImpulseResponse>(*heaveKernel(dt, 1.0));
+  ir->headings = {0.0};
+  ir->excitationStart = t0;
+  ir->excitation.resize(1);
+  for (int k = 0; k <= static_cast<int>(-2.0 * t0 / dt); ++k) {
+    const double t = t0 + dt * k;
+    ir->excitation[0].push_back(X0 * (wc / (2.0 * std::sqrt(M_PI)) * std::exp(-std::pow(wc * t / 2, 2))));
+  }
+  WaterProperties water;
+  water.start = -1e3;
+  const double w = 3.0;  // W(w) = exp(-2.25) = 0.105
+  const auto sea = std::make_shared<const AiryWaves>(
+      water, std::vector<WaveComponent>{{0.8, 2.0 * M_PI / w, 0.0, 0.3}});
+  dynamics::Data data(model);
+  const Eigen::VectorXd q = dynamics::neutralConfiguration(model), v = Eigen::VectorXd::Zero(model.nv);
+  dynamics::forwardKinematics(model, data, q, v);
+  auto largestError = [&](const ImpulseResponseForce& p, double scale) {
+    double worst = 0.0;
+    for (double t : {0.0, 1.1, 2.35, 7.9})
+      worst = std::max(worst, (p.excitation(Stage{t, model, data, q, v}) -
+                               scale * X0 * sea->elevation(0.0, 0.0, t)).cwiseAbs().maxCoeff());
+    return worst / (X0.cwiseAbs().maxCoeff() * 0.4);
+  };
+  ir->excitationWindow = wc;
+  CHECK(largestError(ImpulseResponseForce("waves", model, 1, ir, sea), 1.0) < 1e-6);
+  ir->excitationWindow = 0.0;  // (the window not divided out) => the wave's force cut to W(w)
+  CHECK(largestError(ImpulseResponseForce("waves", model, 1, ir, sea), std::exp(-2.25)) < 1e-6);
+  // (a wave above 2 w_c) => refused, naming the cutoff it needs
+  ir->excitationWindow = wc;
+  const auto shortSea = std::make_shared<const AiryWaves>(
+      water, std::vector<WaveComponent>{{0.2, 2.0 * M_PI / 4.5, 0.0, 0.3}});
+  CHECK_THROWS_WITH(ImpulseResponseForce("waves", model, 1, ir, shortSea),
+                    Catch::Contains("cutoff of at least 2.25"));
+}
+
 TEST_CASE("integrators that never stop at the step's start still feed the memory") {
   // (forced heave, stages only at the step's end, as an implicit method) => the same memory force
   // as stages at the start, to the step

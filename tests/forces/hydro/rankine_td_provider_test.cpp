@@ -240,12 +240,10 @@ TEST_CASE("a barge heaving in a regular beam wave moves alike on both paths", "[
   s.headings = {0.5 * std::numbers::pi};
   s.cutoff = 1.6 * omega;
   s.froudeKrylov = true;
-  ImpulseResponse raw = computeImpulseResponse(*pm, s);
-  // (the excitation response's transfer function is X(w) W(w), W = exp(-(w/w_c)^2): for one
-  // regular wave, h / W(w) has the transfer function X at w)
-  const double window = std::exp(-(omega / s.cutoff) * (omega / s.cutoff));
-  for (auto& sample : raw.excitation[0]) sample /= window;
-  const auto response = std::make_shared<const ImpulseResponse>(std::move(raw));
+  // (the excitation response's transfer function is X(w) W(w), W = exp(-(w/w_c)^2): the force
+  // divides W out, ImpulseResponse::excitationWindow)
+  const auto response = std::make_shared<const ImpulseResponse>(computeImpulseResponse(*pm, s));
+  REQUIRE(response->excitationWindow == s.cutoff);
   const auto convolved = run(response->aInf, [&](const dynamics::Model& m) {
     return std::make_unique<ImpulseResponseForce>("impulse_response", m, 1, response, sea);
   });

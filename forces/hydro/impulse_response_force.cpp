@@ -55,6 +55,8 @@ ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Mod
   if (ir.excitation.size() != ir.headings.size())
     throw std::invalid_argument(me + std::to_string(ir.headings.size()) + " headings but " +
                                 std::to_string(ir.excitation.size()) + " excitation responses");
+  if (!(std::isfinite(ir.excitationWindow) && ir.excitationWindow >= 0.0))
+    throw std::invalid_argument(me + "the excitation window's cutoff must be finite and >= 0 (0: none)");
   if (!(ir.excitationStart <= 0.0))
     throw std::invalid_argument(me + "the excitation must start at t0 <= 0");
   if (!sea_ || sea_->calm()) return;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -95,7 +96,28 @@ std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest&
   return model;
 }
 
-std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const AiryWaves& sea) {
+namespace {
+// (request, its settings, its model, sea) => a problem when a wave component lies above twice
+// the excitation window's cutoff (the given one, or what the free-surface mesh resolves):
+// ImpulseResponseForce divides W(w) out only up to there
+std::optional<std::string> checkExcitationWindow(const HydrodynamicsRequest& q,
+                                                 const ImpulseResponseSettings& s,
+                                                 const RankineTdModel& model, const AiryWaves& sea) {
+  if (q.headings.empty() || sea.size() == 0) return std::nullopt;
+  const double wc = s.cutoff > 0 ? s.cutoff : resolvedFrequency(model);
+  double highest = 0.0;
+  for (std::size_t i = 0; i < sea.size(); ++i) highest = std::max(highest, sea.frequency(i));
+  if (!(highest > 2.0 * wc)) return std::nullopt;
+  return "rankine_td: the sea's highest component (" + std::to_string(highest) +
+         " rad/s) lies above twice the excitation window's cutoff (" + std::to_string(wc) +
+         " rad/s, " + (s.cutoff > 0 ? "given" : "what the free-surface mesh resolves") +
+         "); set cutoff to at least " + std::to_string(0.5 * highest) +
+         " rad/s with a free-surface mesh that resolves it (smaller max_spacing)";
+}
+
+// (request, sea, whether the path convolves an excitation response) => the door's problems
+std::vector<std::string> checkRankineTdPath(const HydrodynamicsRequest& q, const AiryWaves& sea,
+                                            bool windowed) {
   std::vector<std::string> problems;
   ImpulseResponseSettings s;
   try {
@@ -116,35 +138,20 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
     const auto model = rankineTdModel(q);
     const double step = setting(q, "panel_step", q.dt);
     if (auto m = checkEmpStep(empLimit(*model), step)) problems.push_back(*m);
+    if (windowed)
+      if (auto m = checkExcitationWindow(q, s, *model, sea)) problems.push_back(*m);
   } catch (const std::exception& e) {
     problems.push_back(std::string("rankine_td: ") + e.what());
   }
   return problems;
+}
+}  // namespace
+
+std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const AiryWaves& sea) {
+  return checkRankineTdPath(q, sea, false);
 }
 
 namespace {
-// (request, sea) => checkRankineTd, and for the impulse-response path the excitation window:
-// every wave component at most twice its cutoff (ImpulseResponseForce divides W(w) out there)
-std::vector<std::string> checkRankineTdResponse(const HydrodynamicsRequest& q, const AiryWaves& sea) {
-  std::vector<std::string> problems = checkRankineTd(q, sea);
-  if (!problems.empty() || q.headings.empty() || sea.size() == 0) return problems;
-  try {
-    double wc = rankineTdSettings(q).cutoff;
-    if (!(wc > 0)) wc = resolvedFrequency(*rankineTdModel(q));
-    double highest = 0.0;
-    for (std::size_t i = 0; i < sea.size(); ++i) highest = std::max(highest, sea.frequency(i));
-    if (highest > 2.0 * wc)
-      problems.push_back("rankine_td: the sea's highest component (" + std::to_string(highest) +
-                         " rad/s) lies above twice the excitation window's cutoff (" + std::to_string(wc) +
-                         " rad/s, " + (rankineTdSettings(q).cutoff > 0 ? "given" : "what the free-surface mesh resolves") +
-                         "); set cutoff to at least " + std::to_string(0.5 * highest) +
-                         " rad/s with a free-surface mesh that resolves it (smaller max_spacing)");
-  } catch (const std::exception& e) {
-    problems.push_back(std::string("rankine_td: ") + e.what());
-  }
-  return problems;
-}
-
 // (added mass from the panels) => its symmetric part: the discrete A_ij = -rho int psi_j N_i dS
 // is symmetric only to the panel error, and the multibody model takes a symmetric one
 ImpulseResponse::Matrix6 symmetric(const ImpulseResponse::Matrix6& a) { return 0.5 * (a + a.transpose()); }
@@ -161,7 +168,9 @@ const bool registered = [] {
          ir.aInf = symmetric(ir.aInf);
          return ir;
        },
-       checkRankineTdResponse});
+       [](const HydrodynamicsRequest& q, const AiryWaves& sea) {
+         return checkRankineTdPath(q, sea, true);
+       }});
   registerTimeDomainMethod(
       {"rankine_td",
        [](const std::string& name, const dynamics::Model& model, int body,

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -225,6 +226,8 @@ TEST_CASE("a windowed excitation response gives back its transfer function") {
       water, std::vector<WaveComponent>{{0.2, 2.0 * M_PI / 4.5, 0.0, 0.3}});
   CHECK_THROWS_WITH(ImpulseResponseForce("waves", model, 1, ir, shortSea),
                     Catch::Contains("cutoff of at least 2.25"));
+  ir->excitationWindow = std::numeric_limits<double>::quiet_NaN();  // (a damaged response) => refused
+  CHECK_THROWS_WITH(ImpulseResponseForce("waves", model, 1, ir, sea), Catch::Contains("finite"));
 }
 
 TEST_CASE("integrators that never stop at the step's start still feed the memory") {

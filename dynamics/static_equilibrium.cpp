@@ -41,7 +41,8 @@ void jointFrameAccelerations(const Model& model, const Eigen::VectorXd& q, const
     if (type != JointType::Spherical && type != JointType::Free) continue;
     const int iq = model.idxQ[static_cast<std::size_t>(i)] + (type == JointType::Free ? 3 : 0);
     const int iv = model.idxV[static_cast<std::size_t>(i)];
-    const Eigen::Matrix3d R_JC = Eigen::Quaterniond(q[iq], q[iq + 1], q[iq + 2], q[iq + 3]).normalized().toRotationMatrix();
+    const Eigen::Matrix3d R_JC =
+        Eigen::Quaterniond(q[iq], q[iq + 1], q[iq + 2], q[iq + 3]).normalized().toRotationMatrix();
     r.segment<3>(iv) = R_JC * a.segment<3>(iv);
     if (type == JointType::Free) r.segment<3>(iv + 3) = R_JC * a.segment<3>(iv + 3);
   }
@@ -51,8 +52,8 @@ void jointFrameAccelerations(const Model& model, const Eigen::VectorXd& q, const
 // stiffness, in a basis of V0 aligned with the tangent coordinates that span it best (a column
 // pivoted QR of V0^T picks them): what keeps the system from rest where nothing resists
 std::vector<UnbalancedDirection> unbalancedDirections(const Model& model, const Eigen::MatrixXd& V0,
-                                                      const Eigen::VectorXd& q, const Eigen::VectorXd& a,
-                                                      double tolerance) {
+                                                      const Eigen::VectorXd& q,
+                                                      const Eigen::VectorXd& a, double tolerance) {
   std::vector<UnbalancedDirection> out;
   const Eigen::Index n0 = V0.cols();
   if (n0 == 0) return out;
@@ -84,18 +85,28 @@ std::string_view jointDirectionName(JointType type, int k) {
   static constexpr std::string_view free[6] = {"roll (rx)", "pitch (ry)", "yaw (rz)",
                                                "surge (x)", "sway (y)",   "heave (z)"};
   static constexpr std::string_view xyz[3] = {"x", "y", "z"};
-  static constexpr std::string_view sphere[3] = {"rotation about x", "rotation about y", "rotation about z"};
+  static constexpr std::string_view sphere[3] = {"rotation about x", "rotation about y",
+                                                 "rotation about z"};
   static constexpr std::string_view planar[3] = {"x", "y", "rotation"};
   switch (type) {
-    case JointType::Fixed: return "?";
-    case JointType::Revolute: return "rotation";
-    case JointType::Prismatic: return "translation";
-    case JointType::Cylindrical: return k == 0 ? "rotation" : "translation";
-    case JointType::Universal: return k == 0 ? "rotation about the first axis" : "rotation about the second axis";
-    case JointType::Spherical: return sphere[k];
-    case JointType::Planar: return planar[k];
-    case JointType::Free: return free[k];
-    case JointType::Translation: return xyz[k];
+    case JointType::Fixed:
+      return "?";
+    case JointType::Revolute:
+      return "rotation";
+    case JointType::Prismatic:
+      return "translation";
+    case JointType::Cylindrical:
+      return k == 0 ? "rotation" : "translation";
+    case JointType::Universal:
+      return k == 0 ? "rotation about the first axis" : "rotation about the second axis";
+    case JointType::Spherical:
+      return sphere[k];
+    case JointType::Planar:
+      return planar[k];
+    case JointType::Free:
+      return free[k];
+    case JointType::Translation:
+      return xyz[k];
   }
   return "?";
 }
@@ -104,11 +115,16 @@ bool jointDirectionIsRotation(JointType type, int k) {
   switch (type) {
     case JointType::Revolute:
     case JointType::Universal:
-    case JointType::Spherical: return true;
-    case JointType::Cylindrical: return k == 0;
-    case JointType::Planar: return k == 2;
-    case JointType::Free: return k < 3;
-    default: return false;
+    case JointType::Spherical:
+      return true;
+    case JointType::Cylindrical:
+      return k == 0;
+    case JointType::Planar:
+      return k == 2;
+    case JointType::Free:
+      return k < 3;
+    default:
+      return false;
   }
 }
 
@@ -157,75 +173,76 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
   // (rank-revealing or not, q) => q searched; without rank revealing every direction is taken as
   // stiff (the minimum-norm search of before, which may move directions without stiffness)
   auto search = [&](bool rankRevealing) {
-  EquilibriumResult result;
-  result.residual = residual(q, a);
-  result.rank = static_cast<int>(nv);
-  double sigma = 0.0;
-  int neutral = 0;  // accepted moves in a row that did not lower the residual
-  while (result.residual > options.tolerance && result.iterations < options.maxIterations) {
-    ++result.iterations;
-    const int revealed = jacobian();
-    const int rank = result.rank = rankRevealing ? revealed : static_cast<int>(nv);
-    const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());  // 1/s^2
-    // (J, a, sigma) => a step of (J - sigma I) dx = -a: Newton's when sigma = 0, a step along
-    // the accelerations when J vanishes (a slack rope); sigma grows until the step is accepted,
-    // then shrinks again (Levenberg-Marquardt on the residual). With directions without
-    // stiffness (rank < nv) the step is dx = V_r y, y the least-squares solution of
-    // (Jr - sigma I) V_r y = -r (the joint-frame accelerations), plus, with sigma > 0, a fall
-    // V_0 V_0^T a / sigma along the net acceleration where it does not vanish: a free direction
-    // without force never moves. With every direction stiff the step is the one above, as before
-    const auto step = [&]() {
-      if (rank == nv) {
-        Eigen::MatrixXd A = J;
-        A.diagonal().array() -= sigma;
-        dx = A.completeOrthogonalDecomposition().solve(-a);
-        return;
-      }
-      dx.setZero();
-      if (rank > 0) {
-        const auto Vr = V.leftCols(rank);
-        const Eigen::MatrixXd A = Jr * Vr - sigma * Vr;
-        dx = Vr * A.completeOrthogonalDecomposition().solve(-r);
-      }
-      const auto V0 = V.rightCols(nv - rank);
-      const Eigen::VectorXd n = V0.transpose() * a;
-      if (sigma > 0.0 && n.norm() > options.tolerance) dx += V0 * n / sigma;
-    };
-    bool accepted = false;
-    for (int tries = 0; tries < 60 && !accepted; ++tries) {
-      step();
-      bool descent = false;
-      if (dx.allFinite()) {
-        integrate(model, q, dx, 1.0, qTrial);
-        normalizeConfiguration(model, qTrial);
-        const double trial = trialResidual(qTrial, aTrial);
-        // a descent, or (with sigma > 0) a move that changes nothing yet: falling onto a slack
-        // rope leaves the residual at g until the rope bites; such moves keep their size and
-        // are limited in number (a body with nothing under it falls forever)
-        descent = trial < result.residual;
-        accepted = descent || (sigma > 0.0 && neutral < options.maxNeutralSteps &&
-                               trial <= result.residual * (1.0 + 1e-12));
-      }
-      if (accepted) {
-        neutral = descent ? 0 : neutral + 1;
-        if (descent) sigma = sigma * 0.1 < 1e-12 * scale ? 0.0 : sigma * 0.1;
-      } else {
-        sigma = sigma == 0.0 ? 1e-6 * scale : sigma * 10.0;
-      }
-    }
-    if (!accepted) break;  // no descent: the best configuration found is kept
-    q = qTrial;
+    EquilibriumResult result;
     result.residual = residual(q, a);
-  }
-  result.converged = result.residual <= options.tolerance;
-  return result;
+    result.rank = static_cast<int>(nv);
+    double sigma = 0.0;
+    int neutral = 0;  // accepted moves in a row that did not lower the residual
+    while (result.residual > options.tolerance && result.iterations < options.maxIterations) {
+      ++result.iterations;
+      const int revealed = jacobian();
+      const int rank = result.rank = rankRevealing ? revealed : static_cast<int>(nv);
+      const double scale = std::max(1.0, J.cwiseAbs().maxCoeff());  // 1/s^2
+      // (J, a, sigma) => a step of (J - sigma I) dx = -a: Newton's when sigma = 0, a step along
+      // the accelerations when J vanishes (a slack rope); sigma grows until the step is accepted,
+      // then shrinks again (Levenberg-Marquardt on the residual). With directions without
+      // stiffness (rank < nv) the step is dx = V_r y, y the least-squares solution of
+      // (Jr - sigma I) V_r y = -r (the joint-frame accelerations), plus, with sigma > 0, a fall
+      // V_0 V_0^T a / sigma along the net acceleration where it does not vanish: a free direction
+      // without force never moves. With every direction stiff the step is the one above, as before
+      const auto step = [&]() {
+        if (rank == nv) {
+          Eigen::MatrixXd A = J;
+          A.diagonal().array() -= sigma;
+          dx = A.completeOrthogonalDecomposition().solve(-a);
+          return;
+        }
+        dx.setZero();
+        if (rank > 0) {
+          const auto Vr = V.leftCols(rank);
+          const Eigen::MatrixXd A = Jr * Vr - sigma * Vr;
+          dx = Vr * A.completeOrthogonalDecomposition().solve(-r);
+        }
+        const auto V0 = V.rightCols(nv - rank);
+        const Eigen::VectorXd n = V0.transpose() * a;
+        if (sigma > 0.0 && n.norm() > options.tolerance) dx += V0 * n / sigma;
+      };
+      bool accepted = false;
+      for (int tries = 0; tries < 60 && !accepted; ++tries) {
+        step();
+        bool descent = false;
+        if (dx.allFinite()) {
+          integrate(model, q, dx, 1.0, qTrial);
+          normalizeConfiguration(model, qTrial);
+          const double trial = trialResidual(qTrial, aTrial);
+          // a descent, or (with sigma > 0) a move that changes nothing yet: falling onto a slack
+          // rope leaves the residual at g until the rope bites; such moves keep their size and
+          // are limited in number (a body with nothing under it falls forever)
+          descent = trial < result.residual;
+          accepted = descent || (sigma > 0.0 && neutral < options.maxNeutralSteps &&
+                                 trial <= result.residual * (1.0 + 1e-12));
+        }
+        if (accepted) {
+          neutral = descent ? 0 : neutral + 1;
+          if (descent) sigma = sigma * 0.1 < 1e-12 * scale ? 0.0 : sigma * 0.1;
+        } else {
+          sigma = sigma == 0.0 ? 1e-6 * scale : sigma * 10.0;
+        }
+      }
+      if (!accepted) break;  // no descent: the best configuration found is kept
+      q = qTrial;
+      result.residual = residual(q, a);
+    }
+    result.converged = result.residual <= options.tolerance;
+    return result;
   };
   const Eigen::VectorXd q0 = q;
   EquilibriumResult result = search(true);
   if (result.converged) return result;
   // (q where the search stopped) => what has no stiffness and a force
   result.rank = jacobian();
-  result.unbalanced = unbalancedDirections(model, V.rightCols(nv - result.rank), q, a, options.tolerance);
+  result.unbalanced =
+      unbalancedDirections(model, V.rightCols(nv - result.rank), q, a, options.tolerance);
   // (q0) => the minimum-norm search of before, when the rank-revealing one stalls where stiffness
   // appears only after a move (a barge pulled sideways by an inclined rope that is still slack)
   const Eigen::VectorXd stopped = q;

@@ -99,7 +99,8 @@ TEST_CASE("launching by two floating cranes: statics in air and water and floati
   // 2. lowered (air 2 m at 0.1 m/s, water 1 m at 0.05 m/s from t = 35 s): in the water the wires
   // carry the weight less the buoyancy, quasi-statically
   // (each hoist drive ramps at a = 0.02 m/s^2: a stage of d at v takes d / v + v / a)
-  const double accel = 0.02, air = 10.0 + 2.0 / 0.1 + 0.1 / accel, wet = air + 1.0 / 0.05 + 0.05 / accel;
+  const double accel = 0.02, air = 10.0 + 2.0 / 0.1 + 0.1 / accel,
+               wet = air + 1.0 / 0.05 + 0.05 / accel;
   int inWater = 0;
   for (double t = air + 2.0; t <= wet; t += 1.0) {
     sim.runUntil(t);

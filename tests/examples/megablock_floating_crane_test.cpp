@@ -100,7 +100,8 @@ TEST_CASE(
   }
   for (int k = 1; k <= 9; ++k) {
     CHECK(started.at("lower" + std::to_string(k)) == Approx(moved).margin(1e-9));
-    CHECK(finished.at("lower" + std::to_string(k)) == Approx(moved + 2.0 / 0.083 + ramp).margin(1e-6));
+    CHECK(finished.at("lower" + std::to_string(k)) ==
+          Approx(moved + 2.0 / 0.083 + ramp).margin(1e-6));
   }
 
   // 3. the block has gone 10 m along +x with the cranes and is back at its height
@@ -145,9 +146,12 @@ TEST_CASE(
 // x = 40..44 m) between the dock's side walls (|y| >= 26 m) and set down on the two rows of dock
 // blocks (tops at z = 0). The clearance watches' channels give the distances at every recorded
 // instant; their minimum must stay positive (no `touched` event either), and at the end the block
-// rests on the dock blocks beyond the gate, the contact carrying what the slackened ropes no longer do.
-TEST_CASE("megablock with a floating crane: the block clears the dock gate and sets down on the dock blocks",
-          "[long]") {
+// rests on the dock blocks beyond the gate, the contact carrying what the slackened ropes no longer
+// do.
+TEST_CASE(
+    "megablock with a floating crane: the block clears the dock gate and sets down on the dock "
+    "blocks",
+    "[long]") {
   scene::ParamOverrides o;
   give(o, "sea", "[]");
   auto loaded = scene::loadScene(
@@ -177,14 +181,14 @@ TEST_CASE("megablock with a floating crane: the block clears the dock gate and s
     if (firstContact < 0.0 && read("collision.points") > 0.0) firstContact = t;
     if (std::abs(t - 440.0) < 1e-6) z440 = read("block.z");
   }
-  INFO("minimum clearance to the gate " << gate << " m (block at x = " << xAtGate << " m), to the walls "
-                                        << walls << " m, first contact at " << firstContact << " s");
+  INFO("minimum clearance to the gate " << gate << " m (block at x = " << xAtGate
+                                        << " m), to the walls " << walls << " m, first contact at "
+                                        << firstContact << " s");
   CHECK(overGate);
   CHECK(gate > 0.5);   // the gate's top 6 m, the hoisted block's bottom about 7.9 m
   CHECK(gate < 2.5);   // ... and the watch does measure the gate (not its 30 m range)
   CHECK(walls > 5.0);  // the walls 10 m beside the block's sides
-  for (const auto& r : rec.ofKind("out"))
-    CHECK(r.value.find("touched") == std::string::npos);
+  for (const auto& r : rec.ofKind("out")) CHECK(r.value.find("touched") == std::string::npos);
   // the block has passed the gate: its aft end beyond the gate's far face
   CHECK(read("block.x") - 24.0 > 44.0);
   // it touches down during the hoist-down and rests on the dock blocks (bottom at z = 0; the
@@ -197,5 +201,6 @@ TEST_CASE("megablock with a floating crane: the block clears the dock gate and s
   const double fz = read("collision.block.fz");
   CHECK(fz > 0.1 * block * kG);
   CHECK(fz < block * kG * (1 + 1e-3));
-  CHECK(read("collision.dock_block_fore.fz") + read("collision.dock_block_aft.fz") == Approx(-fz).epsilon(1e-9));
+  CHECK(read("collision.dock_block_fore.fz") + read("collision.dock_block_aft.fz") ==
+        Approx(-fz).epsilon(1e-9));
 }

@@ -31,7 +31,7 @@ const char* kSlings[] = {"sling1", "sling2", "sling3", "sling4"};
 // (name, value) => a parameter override as a sweep gives it
 void give(scene::ParamOverrides& o, const std::string& name, const std::string& value) {
   scene::ParamOverride& v = o[name];
-  v.value = YAML::Node(value);
+  v.value = YAML::Load(value);
   v.where.file = "megablock_floating_crane_test.cpp";
   v.keyPath = "params." + name;
 }
@@ -80,14 +80,16 @@ TEST_CASE(
                balance0 = read("mechanics.energy_balance");
 
   // 2. the action list: hoist 2 m, transport 10 m, hoist down 2 m
-  sim.runUntil(5.0 + 2.0 / 0.083 + 10.0 / 0.4 + 2.0 / 0.083 + 15.0);
+  // (each hoist drive ramps at a = 0.02 m/s^2: a trapezoid of d / v + v / a)
+  const double ramp = 0.083 / 0.02;
+  sim.runUntil(5.0 + 2.0 / 0.083 + ramp + 10.0 / 0.4 + 2.0 / 0.083 + ramp + 15.0);
   std::map<std::string, double> started, finished;
   for (const auto& r : rec.ofKind("out")) {
     if (r.port == "started") started[r.model] = r.t;
     if (r.port == "finished") finished[r.model] = r.t;
   }
   REQUIRE(finished.size() == 21);
-  const double hoisted = 5.0 + 2.0 / 0.083;
+  const double hoisted = 5.0 + 2.0 / 0.083 + ramp;
   for (int k = 1; k <= 9; ++k)
     CHECK(finished.at("hoist" + std::to_string(k)) == Approx(hoisted).margin(1e-6));
   double moved = 0.0;
@@ -98,16 +100,15 @@ TEST_CASE(
   }
   for (int k = 1; k <= 9; ++k) {
     CHECK(started.at("lower" + std::to_string(k)) == Approx(moved).margin(1e-9));
-    CHECK(finished.at("lower" + std::to_string(k)) == Approx(moved + 2.0 / 0.083).margin(1e-6));
+    CHECK(finished.at("lower" + std::to_string(k)) ==
+          Approx(moved + 2.0 / 0.083 + ramp).margin(1e-6));
   }
 
   // 3. the block has gone 10 m along +x with the cranes and is back at its height
-  CHECK(read("GOC201.travel.q") == Approx(10.0).margin(5e-3));
-  CHECK(read("GOC202.travel.q") == Approx(10.0).margin(5e-3));
+  // (the travel servos yield to the swinging block: up to 5.2 mm in the full run, calm or not)
+  CHECK(read("GOC201.travel.q") == Approx(10.0).margin(1e-2));
+  CHECK(read("GOC202.travel.q") == Approx(10.0).margin(1e-2));
   CHECK(read("fc_travel.q") == Approx(10.0).margin(0.02));  // its servo yields to the tow force
-  // (the block swings along x on its ~53 m ropes after the stop: amplitude about v / omega =
-  // 0.4 / sqrt(9.81 / 53) = 0.93 m)
-  CHECK(read("block.x") - x0 == Approx(10.0).margin(1.0));
   CHECK(read("block.z") - z0 == Approx(0.0).margin(0.1));
   // every rope is loaded above its static tension by the hoist starts, the transport, wind and
   // waves; peak over static within 1.0 .. 1.6 (stated in the README)
@@ -124,4 +125,82 @@ TEST_CASE(
   // energy: kinetic + potential - work of winches, drives, damping, wind and waves stays
   // constant, to a small fraction of the energy of lifting the hung mass 1 m
   CHECK(std::abs(read("mechanics.energy_balance") - balance0) < 1e-3 * hung * kG * 1.0);
+
+  // 4. the block swings along x on its ~53 m ropes after the stop, with an amplitude of about
+  // v / omega = 0.4 / sqrt(9.81 / 53) = 0.93 m, about the 10 m it was carried: over one period
+  // (14.6 s) the middle of its range is 10 m from its start and the half range about v / omega
+  double lo = 1e9, hi = -1e9;
+  const double from = sim.time();
+  for (double t = from + 0.1; t <= from + 14.6 + 1e-9; t += 0.1) {
+    sim.runUntil(t);
+    lo = std::min(lo, read("block.x") - x0);
+    hi = std::max(hi, read("block.x") - x0);
+  }
+  INFO("block.x - x0 over one pendulum period: " << lo << " .. " << hi << " m");
+  CHECK(0.5 * (lo + hi) == Approx(10.0).margin(0.3));
+  CHECK(0.5 * (hi - lo) > 0.3);
+  CHECK(0.5 * (hi - lo) < 1.5);
+}
+
+// The full operation in calm water: the block is carried over the dock gate (its top at z = 6 m,
+// x = 40..44 m) between the dock's side walls (|y| >= 26 m) and set down on the two rows of dock
+// blocks (tops at z = 0). The clearance watches' channels give the distances at every recorded
+// instant; their minimum must stay positive (no `touched` event either), and at the end the block
+// rests on the dock blocks beyond the gate, the contact carrying what the slackened ropes no longer
+// do.
+TEST_CASE(
+    "megablock with a floating crane: the block clears the dock gate and sets down on the dock "
+    "blocks",
+    "[long]") {
+  scene::ParamOverrides o;
+  give(o, "sea", "[]");
+  auto loaded = scene::loadScene(
+      std::string(YARDSIM_SOURCE_DIR) + "/examples/megablock_floating_crane/scene.yaml", o);
+  INFO(loaded.diagnostics.report());
+  REQUIRE(loaded.scene);
+  auto root = scene::assemble(*loaded.scene);
+  devs::Simulator sim(*root);
+  testing::RecordCollector rec(false);
+  sim.addListener(rec);
+  const auto& mb = static_cast<const models::MultibodyModel&>(*root->findComponent("mechanics"));
+  const Reader read(mb);
+  const dynamics::Model& m = mb.mechanics();
+  const double block = m.inertias[m.bodyIndex("block")].mass;
+
+  // (every 0.1 s of the operation) => the smallest clearances, and where the block was then
+  double gate = 1e9, walls = 1e9, xAtGate = 0.0, firstContact = -1.0, z440 = 0.0;
+  bool overGate = false;
+  for (double t = 0.1; t <= 450.0 + 1e-9; t += 0.1) {
+    sim.runUntil(t);
+    const double g = read("gate.distance");
+    if (g < gate) gate = g, xAtGate = read("block.x");
+    walls = std::min({walls, read("wall_ps.distance"), read("wall_sb.distance")});
+    // (the block's 48 m span along x straddles the gate's 40..44 m)
+    const double x = read("block.x");
+    if (x + 24.0 > 44.0 && x - 24.0 < 40.0) overGate = true;
+    if (firstContact < 0.0 && read("collision.points") > 0.0) firstContact = t;
+    if (std::abs(t - 440.0) < 1e-6) z440 = read("block.z");
+  }
+  INFO("minimum clearance to the gate " << gate << " m (block at x = " << xAtGate
+                                        << " m), to the walls " << walls << " m, first contact at "
+                                        << firstContact << " s");
+  CHECK(overGate);
+  CHECK(gate > 0.5);   // the gate's top 6 m, the hoisted block's bottom about 7.9 m
+  CHECK(gate < 2.5);   // ... and the watch does measure the gate (not its 30 m range)
+  CHECK(walls > 5.0);  // the walls 10 m beside the block's sides
+  for (const auto& r : rec.ofKind("out")) CHECK(r.value.find("touched") == std::string::npos);
+  // the block has passed the gate: its aft end beyond the gate's far face
+  CHECK(read("block.x") - 24.0 > 44.0);
+  // it touches down during the hoist-down and rests on the dock blocks (bottom at z = 0; the
+  // penetration of four points of 2e9 N/m under at most its weight is below 5 mm)
+  CHECK(firstContact > 302.0);
+  CHECK(read("collision.points") >= 4.0);
+  CHECK(read("block.z") == Approx(6.0).margin(0.01));
+  CHECK(std::abs(read("block.z") - z440) < 1e-3);  // at rest
+  // the dock blocks carry a share of the block's weight, never more than all of it
+  const double fz = read("collision.block.fz");
+  CHECK(fz > 0.1 * block * kG);
+  CHECK(fz < block * kG * (1 + 1e-3));
+  CHECK(read("collision.dock_block_fore.fz") + read("collision.dock_block_aft.fz") ==
+        Approx(-fz).epsilon(1e-9));
 }

@@ -1,7 +1,8 @@
 // yardsim run, as a process, on scenes that start in static equilibrium (`equilibrium: true`):
 // a box barge released off its draft settles at the draft of the hand formula without moving in
 // surge, sway or yaw; an unmoored barge in a steady wind has no equilibrium, and the run says
-// which body and direction, exits 2 and still writes run.json.
+// which body and direction, exits 2 and still writes run.json. The options run_command checks
+// against the scene: --checkpoint-every held to 1 ms and the checkpoint ceiling.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -37,7 +38,8 @@ mechanics:
   hydrostatics:
     buoyancy: {body: hull, mesh: )" +
          std::string(YARDSIM_SOURCE_DIR) + R"(/examples/floating_barge/barge_hull.obj}
-)" + extra + R"(record: {interval: 0.01, channels: ["hull.*"]}
+)" + extra +
+         R"(record: {interval: 0.01, channels: ["hull.*"]}
 until: 0.01
 )";
 }
@@ -49,7 +51,8 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("an unmoored box barge off its draft settles at the hand draft: surge sway and yaw unmoved") {
+TEST_CASE(
+    "an unmoored box barge off its draft settles at the hand draft: surge sway and yaw unmoved") {
   yardsim::testing::SceneDir dir;
   const auto scene = dir.write("barge.yaml", barge(""));
   const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
@@ -59,8 +62,11 @@ TEST_CASE("an unmoored box barge off its draft settles at the hand draft: surge 
   REQUIRE(csv.rows.size() >= 1);
   const auto& row = csv.rows.front();  // t = 0: the equilibrium the run starts from
   REQUIRE(row[0] == 0.0);
-  auto at = [&](const std::string& channel) { return row[static_cast<std::size_t>(csv.column(channel))]; };
-  CHECK(std::abs(at("hull.z[m]") + 1.5e6 / (1025.0 * 60.0 * 20.0)) < 1e-9);  // keel at minus the draft
+  auto at = [&](const std::string& channel) {
+    return row[static_cast<std::size_t>(csv.column(channel))];
+  };
+  CHECK(std::abs(at("hull.z[m]") + 1.5e6 / (1025.0 * 60.0 * 20.0)) <
+        1e-9);  // keel at minus the draft
   CHECK(std::abs(at("hull.x[m]") - 3.0) < 1e-9);
   CHECK(std::abs(at("hull.y[m]") - 2.0) < 1e-9);
   CHECK(std::abs(at("hull.yaw[rad]") - 20.0 * M_PI / 180.0) < 1e-9);
@@ -68,19 +74,53 @@ TEST_CASE("an unmoored box barge off its draft settles at the hand draft: surge 
   CHECK(std::abs(at("hull.pitch[rad]")) < 1e-9);
 }
 
-TEST_CASE("an unmoored barge in a steady side force has no equilibrium: body and direction named and exit 2") {
+TEST_CASE(
+    "an unmoored barge in a steady side force has no equilibrium: body and direction named and "
+    "exit 2") {
   yardsim::testing::SceneDir dir;
   // a steady 12.3 kN push along the hull's y axis (body frame), at the centre of the waterplane
-  const auto scene = dir.write(
-      "push.yaml", barge("  loads:\n    push: {body: hull, point: [0, 0, 1.2], frame: body, series: [[0, 0, 1.23e4, 0, "
-                         "0, 0, 0], [100, 0, 1.23e4, 0, 0, 0, 0]]}\n"));
+  const auto scene = dir.write("push.yaml", barge("  loads:\n    push: {body: hull, point: [0, 0, "
+                                                  "1.2], frame: body, series: [[0, 0, 1.23e4, 0, "
+                                                  "0, 0, 0], [100, 0, 1.23e4, 0, 0, 0, 0]]}\n"));
   const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
   INFO(r.out);
   CHECK(r.status == 2);
   CHECK_THAT(r.out, Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN") &&
-                        Catch::Contains("set equilibrium: false") && Catch::Contains("nothing was simulated"));
+                        Catch::Contains("set equilibrium: false") &&
+                        Catch::Contains("nothing was simulated"));
   // (run.json) => written anyway: status failed, the reason naming the body and the direction
   const std::string json = slurp(dir.file("out/run.json"));
-  CHECK_THAT(json, Catch::Contains("\"status\":\"failed\"") &&
-                       Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
+  CHECK_THAT(json,
+             Catch::Contains("\"status\":\"failed\"") &&
+                 Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
+}
+
+TEST_CASE(
+    "a --checkpoint-every below 1 ms or above the checkpoint ceiling is refused before the run "
+    "(exit 1)") {
+  yardsim::testing::SceneDir dir;
+  const std::string scene =
+      std::string(YARDSIM_SOURCE_DIR) + "/tests/report/data/over_mbl.yaml";  // dt 1 ms
+  // (1e-300 s: found by tests/fuzz/mutate.py) => refused at once, not checkpoints without end
+  const auto tiny =
+      yardsim::testing::shell(std::string(YARDSIM_EXE) + " run " + scene + " -o " + dir.file("a") +
+                                  " --quiet --checkpoint-every 1e-300",
+                              20);
+  INFO(tiny.out);
+  CHECK(tiny.status == 1);
+  CHECK_THAT(tiny.out,
+             Catch::Contains("--checkpoint-every: expected a period of at least 0.001 s"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "a/checkpoints"));
+  // (1 ms over 2000 s) => 2e6 checkpoints, above the rows ceiling of 1e6
+  const auto many = runYardsim("run " + scene + " -o " + dir.file("b") +
+                               " --quiet --until 2000 --checkpoint-every 0.001");
+  INFO(many.out);
+  CHECK(many.status == 1);
+  CHECK_THAT(many.out, Catch::Contains("is 2e+06 checkpoints, above the ceiling of 1e+06"));
+  // (0.25 s over 0.5 s) => runs, with the one checkpoint before the end
+  const auto fine = runYardsim("run " + scene + " -o " + dir.file("c") +
+                               " --quiet --until 0.5 --checkpoint-every 0.25");
+  INFO(fine.out);
+  CHECK(fine.status == 0);
+  CHECK(std::filesystem::exists(dir.path() / "c/checkpoints/t000000.250.ckpt"));
 }

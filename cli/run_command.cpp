@@ -12,10 +12,10 @@
 #include "models/channels.hpp"
 #include "models/diagnostics.hpp"
 #include "output/timeseries_hdf5.hpp"
+#include "scene/assembler.hpp"
 #include "run/profile.hpp"
 #include "run/run_summary.hpp"
 #include "run/runner.hpp"
-#include "scene/assembler.hpp"
 #include "scene/resource_limits.hpp"
 
 namespace yardsim::cli {
@@ -61,10 +61,8 @@ int runCommand(const RunArgs& a) {
   opt.restartFrom = a.restart;
   opt.profile = a.profile;
   if (a.report && !(scene->record.interval > 0)) {
-    std::fprintf(stderr,
-                 "%s: --report needs a `record:` block (the report plots what is recorded; "
-                 "docs/report.md)\n",
-                 a.scene.c_str());
+    std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
+                         "docs/report.md)\n", a.scene.c_str());
     return kInvalidInput;
   }
   // (--report, no trace.jsonl asked) => the outputs-only trace: what the page reads (actor
@@ -81,8 +79,7 @@ int runCommand(const RunArgs& a) {
   ProgressPrinter printer;
   if (!a.quiet) opt.progress = [&](const run::Progress& p) { printer(p); };
   auto log = logger("cli");
-  // (an alarm's first occurrence) => one console line, also when quiet; notices are summed up at
-  // the end
+  // (an alarm's first occurrence) => one console line, also when quiet; notices are summed up at the end
   opt.onAlarm = [&](const run::Alarm& al) {
     if (al.severity != "alarm") return;
     printer.finish();
@@ -137,23 +134,21 @@ int runCommand(const RunArgs& a) {
     const run::RunResult r = run::runScene(*scene, *root, opt);
     printer.finish();
     if (!a.quiet)
-      log->info(
-          "{}: simulated {:.6g} s in {:.3g} s wall (real-time factor {:.3g}), {} samples, "
-          "{} transitions; output in {}",
-          scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
-          r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
+      log->info("{}: simulated {:.6g} s in {:.3g} s wall (real-time factor {:.3g}), {} samples, "
+                "{} transitions; output in {}",
+                scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
+                r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
     // (alarms) => first time, count and worst value of each; exit 4 when asked to fail on them
     for (const auto& al : r.alarms)
       if (al.severity == "alarm" || !a.quiet)
         std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g\n",
-                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(),
-                     al.first, al.count, al.worst);
+                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
+                     al.worst);
     const run::Stopwatch writing;
     if (a.format == "hdf5" && r.samples > 0)
       output::writeTimeseriesHdf5(std::filesystem::path(a.outdir) / "timeseries.csv",
                                   std::filesystem::path(a.outdir) / "timeseries.h5");
-    const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(),
-                                     [](const auto& al) { return al.severity == "alarm"; });
+    const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [](const auto& al) { return al.severity == "alarm"; });
     const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
     // (phase times) => one line on stderr, also when quiet
     if (a.profile) {

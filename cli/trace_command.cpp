@@ -60,8 +60,9 @@ int traceCommand(const TraceArgs& a) {
       e << r["value"];
       value = e.c_str();
     }
-    std::printf("%14.6f %8s  %-32s %-5s %-14s %s\n", t, r["seq"] ? r["seq"].Scalar().c_str() : "",
-                model.c_str(), r["kind"].Scalar().c_str(), port.c_str(), value.c_str());
+    std::printf("%14.6f %8s  %-32s %-5s %-14s %s\n", t,
+                r["seq"] ? r["seq"].Scalar().c_str() : "", model.c_str(),
+                r["kind"].Scalar().c_str(), port.c_str(), value.c_str());
     ++shown;
   }
   std::fprintf(stderr, "%zu of %zu records shown\n", shown, lineNo);

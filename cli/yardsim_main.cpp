@@ -29,8 +29,7 @@ CLI::Validator finiteNonNegative(const std::string& unit) {
         } catch (const std::exception&) {
           return "expected a number of " + unit + ", got '" + text + "'";
         }
-        if (!std::isfinite(v) || v < 0.0)
-          return "expected a finite number >= 0 " + unit + ", got " + text;
+        if (!std::isfinite(v) || v < 0.0) return "expected a finite number >= 0 " + unit + ", got " + text;
         return "";
       },
       "finite >= 0");
@@ -56,24 +55,17 @@ int yardsimMain(int argc, char** argv) {
   runCmd->add_flag("--report", run.report,
                    "also write OUTDIR/report.html (adds the events trace unless jsonl is asked)");
   runCmd->add_flag("--profile", run.profile,
-                   "print one line: wall time of reading, validation, stiffness guard, build, "
-                   "simulate and output");
-  runCmd
-      ->add_option("--max-transitions-per-instant", run.maxTransitionsPerInstant,
-                   "stop (exit 2) after this many transitions at one simulated time")
+                   "print one line: wall time of reading, validation, stiffness guard, build, simulate and output");
+  runCmd->add_option("--max-transitions-per-instant", run.maxTransitionsPerInstant,
+                     "stop (exit 2) after this many transitions at one simulated time")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  runCmd
-      ->add_option("--fail-on", run.failOn,
-                   "alarm: exit 4 when a rope passed its MBL or a watch crossed")
+  runCmd->add_option("--fail-on", run.failOn, "alarm: exit 4 when a rope passed its MBL or a watch crossed")
       ->check(CLI::IsMember({"alarm"}));
-  runCmd
-      ->add_option("--checkpoint-every", run.checkpointEvery,
-                   "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
+  runCmd->add_option("--checkpoint-every", run.checkpointEvery,
+                     "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
       ->check(finiteNonNegative("s"));
-  runCmd
-      ->add_option("--format", run.format,
-                   "csv, or hdf5: also OUTDIR/timeseries.h5 (the series under /series)")
+  runCmd->add_option("--format", run.format, "csv, or hdf5: also OUTDIR/timeseries.h5 (the series under /series)")
       ->capture_default_str()
       ->check(CLI::IsMember({"csv", "hdf5"}));
   runCmd->add_option("--restart", run.restart,
@@ -86,18 +78,13 @@ int yardsimMain(int argc, char** argv) {
   reportCmd->add_flag("--quiet", reportQuiet, "no summary");
 
   WpArgs wp;
-  auto* wpCmd = app.add_subcommand(
-      "wp", "error against run time: run the scene's `wp:` sweep of integrators");
+  auto* wpCmd = app.add_subcommand("wp", "error against run time: run the scene's `wp:` sweep of integrators");
   wpCmd->add_option("scene", wp.scene, "scene file (YAML) with a wp: block")->required();
-  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.html, summary.md)")
-      ->capture_default_str();
-  wpCmd
-      ->add_option("--repeats", wp.repeats,
-                   "timed runs per point after the warm-up (default: wp.repeats)")
+  wpCmd->add_option("-o,--outdir", wp.outdir, "output folder (wp.csv, wp.html, summary.md)")->capture_default_str();
+  wpCmd->add_option("--repeats", wp.repeats, "timed runs per point after the warm-up (default: wp.repeats)")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
-            return text.find_first_not_of("0123456789") == std::string::npos &&
-                           text.find_first_not_of('0') != std::string::npos
+            return text.find_first_not_of("0123456789") == std::string::npos && text.find_first_not_of('0') != std::string::npos
                        ? ""
                        : "expected a whole number >= 1, got " + text;
           },
@@ -105,21 +92,14 @@ int yardsimMain(int argc, char** argv) {
   wpCmd->add_flag("--quiet", wp.quiet, "no per-run log lines");
 
   SweepArgs sw;
-  auto* sweepCmd = app.add_subcommand(
-      "sweep", "run a parameter sweep (local cores, MPI ranks or a Slurm array)");
+  auto* sweepCmd = app.add_subcommand("sweep", "run a parameter sweep (local cores, MPI ranks or a Slurm array)");
   sweepCmd->add_option("sweep", sw.sweep, "sweep file (YAML, docs/sweeps.md)");
-  sweepCmd->add_option("-o,--outdir", sw.outdir, "output folder (cases.csv, sweep.h5, sweep.html)")
-      ->capture_default_str();
-  sweepCmd->add_option("-j,--jobs", sw.jobs, "cases run at once")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sweepCmd->add_flag("--slurm-array", sw.slurmArray,
-                     "write OUTDIR/sweep.sbatch, a Slurm job array, and run nothing");
-  sweepCmd->add_flag("--array-task", sw.arrayTask,
-                     "run the chunk of cases SLURM_ARRAY_TASK_ID picks (the batch script)");
+  sweepCmd->add_option("-o,--outdir", sw.outdir, "output folder (cases.csv, sweep.h5, sweep.html)")->capture_default_str();
+  sweepCmd->add_option("-j,--jobs", sw.jobs, "cases run at once")->capture_default_str()->check(CLI::PositiveNumber);
+  sweepCmd->add_flag("--slurm-array", sw.slurmArray, "write OUTDIR/sweep.sbatch, a Slurm job array, and run nothing");
+  sweepCmd->add_flag("--array-task", sw.arrayTask, "run the chunk of cases SLURM_ARRAY_TASK_ID picks (the batch script)");
   sweepCmd->add_option("--chunk", sw.chunk, "cases per array task")->check(CLI::PositiveNumber);
-  sweepCmd->add_option("--collect", sw.collect,
-                       "gather what the cases of OUTDIR recorded into its results");
+  sweepCmd->add_option("--collect", sw.collect, "gather what the cases of OUTDIR recorded into its results");
   sweepCmd->add_flag("--dry-run", sw.dryRun, "check the sweep and count its cases; run none");
   sweepCmd->add_flag("--quiet", sw.quiet, "no line per case");
 
@@ -148,15 +128,13 @@ int yardsimMain(int argc, char** argv) {
   // (a first word that is no command) => named, with the commands there are
   if (argc > 1 && argv[1][0] != '-') {
     std::vector<std::string> names;
-    for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; }))
-      names.push_back(c->get_name());
+    for (const auto* c : app.get_subcommands([](const CLI::App*) { return true; })) names.push_back(c->get_name());
     if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
       const std::string hint = models::didYouMean(argv[1], names);
       std::string all;
       for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-      std::fprintf(stderr,
-                   "yardsim: unknown command '%s'%s; the commands are %s (yardsim --help)\n",
-                   argv[1], hint.empty() ? "" : (" (" + hint + ")").c_str(), all.c_str());
+      std::fprintf(stderr, "yardsim: unknown command '%s'%s; the commands are %s (yardsim --help)\n", argv[1],
+                   hint.empty() ? "" : (" (" + hint + ")").c_str(), all.c_str());
       return kInvalidInput;
     }
   }

@@ -38,8 +38,7 @@ mechanics:
   hydrostatics:
     buoyancy: {body: hull, mesh: )" +
          std::string(YARDSIM_SOURCE_DIR) + R"(/examples/floating_barge/barge_hull.obj}
-)" + extra +
-         R"(record: {interval: 0.01, channels: ["hull.*"]}
+)" + extra + R"(record: {interval: 0.01, channels: ["hull.*"]}
 until: 0.01
 )";
 }
@@ -51,8 +50,7 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE(
-    "an unmoored box barge off its draft settles at the hand draft: surge sway and yaw unmoved") {
+TEST_CASE("an unmoored box barge off its draft settles at the hand draft: surge sway and yaw unmoved") {
   yardsim::testing::SceneDir dir;
   const auto scene = dir.write("barge.yaml", barge(""));
   const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
@@ -62,11 +60,8 @@ TEST_CASE(
   REQUIRE(csv.rows.size() >= 1);
   const auto& row = csv.rows.front();  // t = 0: the equilibrium the run starts from
   REQUIRE(row[0] == 0.0);
-  auto at = [&](const std::string& channel) {
-    return row[static_cast<std::size_t>(csv.column(channel))];
-  };
-  CHECK(std::abs(at("hull.z[m]") + 1.5e6 / (1025.0 * 60.0 * 20.0)) <
-        1e-9);  // keel at minus the draft
+  auto at = [&](const std::string& channel) { return row[static_cast<std::size_t>(csv.column(channel))]; };
+  CHECK(std::abs(at("hull.z[m]") + 1.5e6 / (1025.0 * 60.0 * 20.0)) < 1e-9);  // keel at minus the draft
   CHECK(std::abs(at("hull.x[m]") - 3.0) < 1e-9);
   CHECK(std::abs(at("hull.y[m]") - 2.0) < 1e-9);
   CHECK(std::abs(at("hull.yaw[rad]") - 20.0 * M_PI / 180.0) < 1e-9);
@@ -74,25 +69,21 @@ TEST_CASE(
   CHECK(std::abs(at("hull.pitch[rad]")) < 1e-9);
 }
 
-TEST_CASE(
-    "an unmoored barge in a steady side force has no equilibrium: body and direction named and "
-    "exit 2") {
+TEST_CASE("an unmoored barge in a steady side force has no equilibrium: body and direction named and exit 2") {
   yardsim::testing::SceneDir dir;
   // a steady 12.3 kN push along the hull's y axis (body frame), at the centre of the waterplane
-  const auto scene = dir.write("push.yaml", barge("  loads:\n    push: {body: hull, point: [0, 0, "
-                                                  "1.2], frame: body, series: [[0, 0, 1.23e4, 0, "
-                                                  "0, 0, 0], [100, 0, 1.23e4, 0, 0, 0, 0]]}\n"));
+  const auto scene = dir.write(
+      "push.yaml", barge("  loads:\n    push: {body: hull, point: [0, 0, 1.2], frame: body, series: [[0, 0, 1.23e4, 0, "
+                         "0, 0, 0], [100, 0, 1.23e4, 0, 0, 0, 0]]}\n"));
   const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
   INFO(r.out);
   CHECK(r.status == 2);
   CHECK_THAT(r.out, Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN") &&
-                        Catch::Contains("set equilibrium: false") &&
-                        Catch::Contains("nothing was simulated"));
+                        Catch::Contains("set equilibrium: false") && Catch::Contains("nothing was simulated"));
   // (run.json) => written anyway: status failed, the reason naming the body and the direction
   const std::string json = slurp(dir.file("out/run.json"));
-  CHECK_THAT(json,
-             Catch::Contains("\"status\":\"failed\"") &&
-                 Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
+  CHECK_THAT(json, Catch::Contains("\"status\":\"failed\"") &&
+                       Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
 }
 
 TEST_CASE(

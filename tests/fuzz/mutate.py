@@ -196,7 +196,7 @@ class Harness:
             kind = "sweep" if root is not None and any(
                 getattr(k, "value", None) == "sweep" for k, _ in getattr(root, "value", [])) else "validate"
             kinds[rel] = kind
-            rc, _, _ = execute(self.command(kind, rel, self.master, os.path.join(self.tmp, "base_out")), 60)
+            rc, _, _ = execute(self.command(kind, rel, self.master, os.path.join(self.tmp, "base", rel)), 60)
             if rc == 0:
                 roots.append(rel)
         return files, kinds, roots
@@ -241,19 +241,33 @@ class Harness:
                 gens = [("mesh_numbers", mc.mesh_numbers(data.decode(errors="replace"), rng, self.args.mesh_numbers))]
             gens.append(("random", mc.random_bytes(data, rng, self.args.random)))
             for cls, gen in gens:
-                for desc, mutated, line in gen:
-                    raw = mutated if isinstance(mutated, bytes) else mutated.encode()
-                    mutants.append(Mutant(cls, rel, target, kind, raw, desc, line))
+                for desc, make, line in gen:
+                    mutants.append(Mutant(cls, rel, target, kind, make, desc, line))
+        self.generated = collections.Counter(m.cls for m in mutants)
         if self.args.sample:
             by = collections.defaultdict(list)
             for m in mutants:
                 by[m.cls].append(m)
             mutants = [m for ms in by.values() for m in rng.sample(ms, min(self.args.sample, len(ms)))]
+        for m in mutants:  # (make) => the mutant's bytes, built for those kept only
+            data = m.data()
+            m.data = data if isinstance(data, bytes) else data.encode()
         return mutants
 
+    # (function, items) => its results in order, on --jobs threads, a line every 500
     def pool(self, fn, items):
+        done = [0]
+
+        def counted(item):
+            r = fn(item)
+            with self.lock:
+                done[0] += 1
+                if done[0] % 500 == 0:
+                    print(f"mutate: {done[0]} of {len(items)}", flush=True)
+            return r
+
         with concurrent.futures.ThreadPoolExecutor(self.args.jobs) as ex:
-            return list(ex.map(fn, items))
+            return list(ex.map(counted, items))
 
 
 def main():
@@ -291,14 +305,15 @@ def main():
             with open(os.path.join(ROOT, "tests/report/data/over_mbl.yaml")) as f:
                 cases = mutate_cases.hand_cases(f.read())
             results += [("hand", c) + r for c, r in zip(cases, h.pool(h.try_case, cases))]
-        findings = write_report(args, results, time.monotonic() - start, skipped=sorted(set(files) - set(targets)))
+        findings = write_report(args, results, time.monotonic() - start, sorted(set(files) - set(targets)),
+                                h.generated)
     finally:
         shutil.rmtree(h.tmp, ignore_errors=True)
     return 1 if findings else 0
 
 
 # (results) => OUT/summary.md and OUT/findings/; the number of findings
-def write_report(args, results, seconds, skipped):
+def write_report(args, results, seconds, skipped, generated):
     shutil.rmtree(os.path.join(args.out, "findings"), ignore_errors=True)
     os.makedirs(os.path.join(args.out, "findings"), exist_ok=True)
     table = collections.defaultdict(collections.Counter)
@@ -325,9 +340,11 @@ def write_report(args, results, seconds, skipped):
         f.write(f"# yardsim mutation experiment\n\nseed {args.seed}, {args.random} random mutants per file, "
                 f"sample {args.sample or 'all'}, {args.runs} runs (--until {args.until}), binary {args.binary}; "
                 f"{sum(sum(c.values()) for c in table.values())} inputs in {seconds:.0f} s; {n} finding(s)\n\n")
-        f.write("| class | inputs | " + " | ".join(outcomes) + " |\n|---|---|" + "---|" * len(outcomes) + "\n")
+        f.write("| class | generated | inputs | " + " | ".join(outcomes) + " |\n|---|---|---|" + "---|" * len(outcomes) + "\n")
         for cls in sorted(table):
-            f.write(f"| {cls} | {sum(table[cls].values())} | " + " | ".join(str(table[cls][o]) for o in outcomes) + " |\n")
+            gen = generated.get(cls.split(": ")[-1], "") if cls.startswith("validate") else ""
+            f.write(f"| {cls} | {gen} | {sum(table[cls].values())} | "
+                    + " | ".join(str(table[cls][o]) for o in outcomes) + " |\n")
         f.write("\nFiles no root reaches (not mutated): " + (", ".join(skipped) or "none") + "\n")
         f.write("\n## Findings\n\n" + ("\n".join(lines) or "none") + "\n")
     with open(os.path.join(args.out, "summary.md")) as f:

@@ -1,12 +1,13 @@
 """The mutation classes of issue 14's experiment (docs/robustness.md, "The mutation harness").
 
-Each generator takes one file's text and yields (description, mutated text, line) where line is
-the 1-based line of the mutated value in the mutant (None when the mutant was re-serialised).
+Each generator takes one file's text and yields (description, make, line): make() returns the
+mutant (built only for the mutants a sample keeps), line is the 1-based line of the mutated value
+in the mutant (None when the mutant is re-serialised).
 (a) delete_key, (b) swap_type, (c) numbers: YAML scenes (PyYAML's node tree: scalars are spliced
 into the original text, so every other line stays where it was; deletions and list/map -> scalar
 re-serialise the tree); (c) mesh_numbers, (d) random: any file, bytes.
 """
-import random
+import functools
 import re
 
 import yaml
@@ -65,10 +66,35 @@ def is_number(node):
     return isinstance(node, yaml.ScalarNode) and node.style is None and NUMBER.match(node.value)
 
 
-# (text, node, replacement) => the text with the scalar replaced, and the replacement's line
+def replaced(text, start, end, new):
+    return text[:start] + new + text[end:]
+
+
+# (text, node, replacement) => make() of the text with the scalar replaced, and the replacement's
+# line
 def splice(text, node, new):
     start, end = scalar_span(text, node)
-    return text[:start] + new + text[end:], text.count("\n", 0, start) + 1
+    return functools.partial(replaced, text, start, end, new), text.count("\n", 0, start) + 1
+
+
+# (tree, mapping, index) => the tree's text without the mapping's index-th pair
+def without_pair(root, node, i):
+    pair = node.value.pop(i)
+    try:
+        return serialize(root)
+    finally:
+        node.value.insert(i, pair)
+
+
+# (tree, parent, index) => the tree's text with the parent's index-th value the scalar 7
+def as_scalar(root, parent, index):
+    old = parent.value[index]
+    scalar = yaml.ScalarNode("tag:yaml.org,2002:int", "7")
+    parent.value[index] = (old[0], scalar) if isinstance(parent, yaml.MappingNode) else scalar
+    try:
+        return serialize(root)
+    finally:
+        parent.value[index] = old
 
 
 # (a) (text) => the document with each mapping key deleted in turn
@@ -79,13 +105,9 @@ def delete_key(text):
     for path, _, _, node in walk(root):
         if not isinstance(node, yaml.MappingNode):
             continue
-        for i in range(len(node.value)):
-            pair = node.value.pop(i)
-            try:
-                key = pair[0].value if isinstance(pair[0], yaml.ScalarNode) else "?"
-                yield f"delete {path + '.' if path else ''}{key}", serialize(root), None
-            finally:
-                node.value.insert(i, pair)
+        for i, (k, _) in enumerate(node.value):
+            key = k.value if isinstance(k, yaml.ScalarNode) else "?"
+            yield f"delete {path + '.' if path else ''}{key}", functools.partial(without_pair, root, node, i), None
 
 
 # (b) (text) => each scalar as another type (number -> string, list, map; string -> list, map),
@@ -101,14 +123,8 @@ def swap_type(text):
                 mutated, line = splice(text, node, new)
                 yield f"{path}: {node.value!r} -> {new}", mutated, line
         elif parent is not None:
-            old = parent.value[index]
-            scalar = yaml.ScalarNode("tag:yaml.org,2002:int", "7")
-            parent.value[index] = (old[0], scalar) if isinstance(parent, yaml.MappingNode) else scalar
-            try:
-                kind = "map" if isinstance(node, yaml.MappingNode) else "list"
-                yield f"{path}: {kind} -> 7", serialize(root), None
-            finally:
-                parent.value[index] = old
+            kind = "map" if isinstance(node, yaml.MappingNode) else "list"
+            yield f"{path}: {kind} -> 7", functools.partial(as_scalar, root, parent, index), None
 
 
 # (c) (text) => every number replaced by -1, 0, .nan, .inf, -.inf, 1e300, 1e-300 (integers also
@@ -134,7 +150,7 @@ def mesh_numbers(text, rng, count):
         integer = not re.search(r"[.eE]", old)
         line = text.count("\n", 0, start) + 1
         for new in MESH_NUMBER_VALUES + (["2.5"] if integer else []):
-            yield f"line {line}: {old} -> {new}", text[:start] + new + text[end:], line
+            yield f"line {line}: {old} -> {new}", functools.partial(replaced, text, start, end, new), line
 
 
 # (d) (bytes, rng, count) => `count` mutants, each with 1 to 3 of: a bit flipped, a byte inserted,
@@ -158,4 +174,4 @@ def random_bytes(data, rng, count):
                 end = len(out) if end < 0 else end + 1
                 out[end:end] = out[start:end]
             ops.append(f"{op}@{at}")
-        yield " ".join(ops), bytes(out), None
+        yield " ".join(ops), functools.partial(bytes, out), None

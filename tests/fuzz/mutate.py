@@ -80,8 +80,9 @@ def classify(rc, err, expect=None, locate=None, at=None):
     if expect is not None:
         return "as expected" if rc in expect else f"unexpected exit {rc}"
     if rc == 1 and at is not None:
-        hits = [(os.path.basename(m.group(1)), int(m.group(2) or 0)) for m in LOC.finditer(err)]
-        return "exit 1 located" if at in hits else "exit 1 located elsewhere"
+        # (the mutated file and line) => named by an error (a mesh's line inside the scene's error)
+        named = re.search(r"(^|[\s/])" + re.escape(f"{at[0]}:{at[1]}:"), err, re.M)
+        return "exit 1 located" if named else "exit 1 located elsewhere"
     return "exit 1 located" if rc == 1 else f"exit {rc}"
 
 

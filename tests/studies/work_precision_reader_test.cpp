@@ -130,11 +130,16 @@ TEST_CASE("wp refuses a list or a map where a channel label or file name belongs
     - {method: rk4, dt0: 0.01, levels: 2, label: [x]}
   reference: {file: {a: 1}}
   check: {method: rk4, dt: 0.001, label: {b: 2}}
-)", d);
+)",
+        d);
   const std::string report = d.report();
   INFO(report);
-  CHECK_THAT(report, Catch::Contains("s.yaml:10:14") && Catch::Contains("wp.channels[0]: expected a name"));
-  CHECK_THAT(report, Catch::Contains("s.yaml:13:50") && Catch::Contains("wp.methods[0].label: expected a name"));
-  CHECK_THAT(report, Catch::Contains("s.yaml:14:21") && Catch::Contains("wp.reference.file: expected a name"));
-  CHECK_THAT(report, Catch::Contains("s.yaml:15:42") && Catch::Contains("wp.check.label: expected a name"));
+  CHECK_THAT(report,
+             Catch::Contains("s.yaml:10:14") && Catch::Contains("wp.channels[0]: expected a name"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:13:50") &&
+                         Catch::Contains("wp.methods[0].label: expected a name"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:14:21") &&
+                         Catch::Contains("wp.reference.file: expected a name"));
+  CHECK_THAT(report,
+             Catch::Contains("s.yaml:15:42") && Catch::Contains("wp.check.label: expected a name"));
 }

@@ -116,24 +116,27 @@ TEST_CASE(
   CHECK(std::filesystem::exists(dir.path() / "c/checkpoints/t000000.250.ckpt"));
 }
 
-TEST_CASE("a catenary line that fails at the start of an equilibrium is a numerical failure (exit 2) not exit 3") {
+TEST_CASE(
+    "a catenary line that fails at the start of an equilibrium is a numerical failure (exit 2) not "
+    "exit 3") {
   // (tests/fuzz/mutate.py: FC2's north-west fairlead moved from x = -56 m to -1 m in the
   // launching scene; the equilibrium's search then fails a catenary solve at t = 0, which was an
   // internal error)
   yardsim::testing::SceneDir dir;
   const std::filesystem::path examples = std::filesystem::path(YARDSIM_SOURCE_DIR) / "examples";
   for (const char* folder : {"launching_floating_cranes", "floating_crane"})
-    std::filesystem::copy(examples / folder, dir.path() / folder, std::filesystem::copy_options::recursive);
+    std::filesystem::copy(examples / folder, dir.path() / folder,
+                          std::filesystem::copy_options::recursive);
   std::string text = slurp((examples / "launching_floating_cranes/scene.yaml").string());
   const std::string from = "fairlead: {body: FC2.barge, point: [-56, 21, 1]}";
   REQUIRE(text.find(from) != std::string::npos);
   text.replace(text.find(from), from.size(), "fairlead: {body: FC2.barge, point: [-1, 21, 1]}");
   std::ofstream(dir.path() / "launching_floating_cranes/scene.yaml") << text;
-  const auto r = runYardsim("run " + dir.file("launching_floating_cranes/scene.yaml") + " -o " + dir.file("out") +
-                            " --quiet --until 1");
+  const auto r = runYardsim("run " + dir.file("launching_floating_cranes/scene.yaml") + " -o " +
+                            dir.file("out") + " --quiet --until 1");
   INFO(r.out);
   CHECK(r.status == 2);
-  CHECK_THAT(r.out, Catch::Contains("numerical failure before the run") && Catch::Contains("catenary line") &&
-                        !Catch::Contains("internal error"));
+  CHECK_THAT(r.out, Catch::Contains("numerical failure before the run") &&
+                        Catch::Contains("catenary line") && !Catch::Contains("internal error"));
   CHECK_THAT(slurp(dir.file("out/run.json")), Catch::Contains("\"status\":\"failed\""));
 }

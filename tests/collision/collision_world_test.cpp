@@ -75,13 +75,15 @@ TEST_CASE("collision: a non-finite pose is refused with the object's name, befor
   CHECK(w.aabb(a).max.x() == Approx(0.5));
 }
 
-TEST_CASE("collision: a box or a position beyond 1e12 m is refused with the object's name, before FCL") {
+TEST_CASE(
+    "collision: a box or a position beyond 1e12 m is refused with the object's name, before FCL") {
   // (tests/fuzz/mutate.py: a box of 1e300 m, or a centre of mass at 1e300 m, crashed FCL's tree
   // balancing with a segmentation fault)
   CollisionWorld huge;
   huge.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
   huge.add(Shape::box(Vector3(1, 1e300, 1)), Transform::identity(), {"loader", {}});
-  CHECK_THROWS_WITH(huge.candidatePairs(), Catch::Contains("'loader'") && Catch::Contains("beyond 1e12 m"));
+  CHECK_THROWS_WITH(huge.candidatePairs(),
+                    Catch::Contains("'loader'") && Catch::Contains("beyond 1e12 m"));
   CollisionWorld far;
   far.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
   far.add(Shape::sphere(1.0), Transform::translation(Vector3(0, 0, 1e300)), {"ball", {}});

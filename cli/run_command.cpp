@@ -34,6 +34,27 @@ int runCommand(const RunArgs& a) {
   run::RunOptions opt;
   opt.outdir = a.outdir;
   opt.until = a.until >= 0 ? a.until : scene->until;
+  // (--checkpoint-every, end time) => a period of at least 1 ms (the resolution of the
+  // checkpoints' names) and at most the rows ceiling of checkpoints over a finite end time (a
+  // period of 1e-300 s wrote checkpoints without end)
+  if (a.checkpointEvery > 0.0) {
+    if (a.checkpointEvery < 1e-3) {
+      std::fprintf(
+          stderr,
+          "--checkpoint-every: expected a period of at least 0.001 s (checkpoints are named "
+          "by the millisecond, tNNNNNN.NNN.ckpt), got %g s\n",
+          a.checkpointEvery);
+      return kInvalidInput;
+    }
+    if (const double count = opt.until / a.checkpointEvery;
+        std::isfinite(opt.until) && count > scene->limits.rows) {
+      std::fprintf(stderr,
+                   "--checkpoint-every: %g s over %g s is %.3g checkpoints, above the ceiling of "
+                   "%.3g (the scene's `limits: {rows}`); take a longer period\n",
+                   a.checkpointEvery, opt.until, count, scene->limits.rows);
+      return kInvalidInput;
+    }
+  }
   opt.trace = a.traceGiven ? a.trace : scene->trace;
   opt.maxTransitionsPerInstant = a.maxTransitionsPerInstant;
   opt.checkpointEvery = a.checkpointEvery;

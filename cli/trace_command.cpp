@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include <yaml-cpp/yaml.h>
@@ -11,6 +12,12 @@ namespace yardsim::cli {
 
 // (JSON Lines trace, globs, time window) => matching records, one aligned line each
 int traceCommand(const TraceArgs& a) {
+  // (path) => a regular file (a device such as /dev/zero has a line without end)
+  std::error_code ec;
+  if (std::filesystem::exists(a.file, ec) && !std::filesystem::is_regular_file(a.file, ec)) {
+    std::fprintf(stderr, "yardsim trace: '%s' is not a regular file\n", a.file.c_str());
+    return kInvalidInput;
+  }
   std::ifstream in(a.file);
   if (!in) {
     std::fprintf(stderr, "yardsim trace: cannot read '%s'\n", a.file.c_str());
@@ -29,14 +36,19 @@ int traceCommand(const TraceArgs& a) {
       std::fprintf(stderr, "%s:%zu: not a JSON object: %s\n", a.file.c_str(), lineNo, e.what());
       return kInvalidInput;
     }
-    if (!r.IsMap() || !r["t"] || !r["model"] || !r["kind"]) {
-      std::fprintf(stderr, "%s:%zu: not a yardsim trace record (needs t, model, kind)\n",
+    // (record) => t a number, model, kind and port (if any) text, else the line is named
+    double t = 0.0;
+    std::string model, port;
+    const bool scalars = r.IsMap() && r["t"] && r["model"] && r["kind"] && r["t"].IsScalar() &&
+                         r["model"].IsScalar() && r["kind"].IsScalar() &&
+                         (!r["port"] || r["port"].IsScalar());
+    if (!scalars || !YAML::convert<double>::decode(r["t"], t)) {
+      std::fprintf(stderr, "%s:%zu: not a yardsim trace record (needs t a number, model, kind)\n",
                    a.file.c_str(), lineNo);
       return kInvalidInput;
     }
-    const double t = r["t"].as<double>();
-    const auto model = r["model"].as<std::string>();
-    const auto port = r["port"] ? r["port"].as<std::string>() : std::string();
+    model = r["model"].Scalar();
+    if (r["port"]) port = r["port"].Scalar();
     if (t < a.from || t > a.to) continue;
     if (!models::globMatch(a.model, model)) continue;
     if (a.port != "*" && !models::globMatch(a.port, port)) continue;

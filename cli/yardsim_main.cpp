@@ -114,8 +114,8 @@ int yardsimMain(int argc, char** argv) {
   traceCmd->add_option("file", trace.file, "OUTDIR/trace.jsonl")->required();
   traceCmd->add_option("--model", trace.model, "glob over model paths")->capture_default_str();
   traceCmd->add_option("--port", trace.port, "glob over port names")->capture_default_str();
-  traceCmd->add_option("--from", trace.from, "start time, s");
-  traceCmd->add_option("--to", trace.to, "end time, s");
+  traceCmd->add_option("--from", trace.from, "start time, s")->check(finiteNonNegative("s"));
+  traceCmd->add_option("--to", trace.to, "end time, s")->check(finiteNonNegative("s"));
 
   app.add_subcommand("list-types", "list the registered model types and their parameters");
   std::string channelsScene;

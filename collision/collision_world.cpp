@@ -77,6 +77,13 @@ void CollisionWorld::Impl::refresh(Record& r) const {
     r.object->computeAABB();
     r.box = {r.object->getAABB().min_, r.object->getAABB().max_};
   }
+  // (world box) => finite and within 1e12 m of the origin: FCL's tree balancing crashed on a box
+  // of 1e300 m (a size or a centre of mass of 1e300 in a scene: tests/fuzz/mutate.py)
+  constexpr double kFar = 1e12;
+  if (!(r.box.min.array().abs() <= kFar).all() || !(r.box.max.array().abs() <= kFar).all())
+    throw CollisionError("collision: object '" + r.name +
+                         "': its bounding box reaches beyond 1e12 m of the origin (a size or a "
+                         "position of that order); FCL's broad phase cannot take it");
 }
 
 Record& CollisionWorld::Impl::at(ObjectId id) {

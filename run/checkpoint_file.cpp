@@ -61,6 +61,10 @@ std::string headerLine(std::istream& in, const std::filesystem::path& file,
 
 CheckpointFile readCheckpointFile(const std::filesystem::path& file,
                                   const std::string& fingerprint) {
+  // (path) => a regular file (a device such as /dev/zero has a header line without end)
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+    throw CheckpointError(file.string() + ": not a regular file, so not a checkpoint");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw CheckpointError(file.string() + ": cannot open the checkpoint");
   // (header) => format, version and scene checked before the payload is read

@@ -13,6 +13,7 @@ packages=(
   libhdf5-dev libopenmpi-dev openmpi-bin  # sweep results in HDF5, the MPI sweep engine
   chromium  # the report's browser test (tests/report)
   python3-h5py  # the sweep tests' independent HDF5 reader (tests/studies)
+  python3-yaml  # the mutation harness (tests/fuzz/mutate.py) reads the examples' YAML node trees
   libboost-filesystem1.74-dev libboost-system1.74-dev  # only to configure Pinocchio for bench/peers
   clang-14 libclang-rt-14-dev  # the CI fuzzer (YARDSIM_FUZZ, tests/fuzz): libFuzzer and the sanitizers' runtimes
 )

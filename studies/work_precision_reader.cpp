@@ -61,11 +61,19 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
     }
     return v;
   };
+  // (node, key) => its text when it is a scalar, or an error there (a list or a map where a
+  // channel, label or file name belongs was an internal error: tests/fuzz/mutate.py)
+  auto nameOf = [&](const YAML::Node& n, const std::string& key) {
+    if (n.IsScalar()) return n.Scalar();
+    d.error(markOf(n, f), key, "expected a name, got " + shown(n));
+    return std::string();
+  };
   const YAML::Node ch = wp["channels"];
   if (!ch || !ch.IsSequence() || ch.size() == 0)
     d.error(markOf(ch ? ch : wp, f), "wp.channels", "expected a list of channel names (see `yardsim list-channels`)");
   else
-    for (const auto& c : ch) spec.channels.push_back(c.as<std::string>());
+    for (std::size_t i = 0; i < ch.size(); ++i)
+      spec.channels.push_back(nameOf(ch[i], "wp.channels[" + std::to_string(i) + "]"));
   spec.interval = positive(wp["interval"], "wp.interval", scene.record.interval);
   spec.until = positive(wp["until"], "wp.until", scene.until);
   if (!(spec.interval > 0)) d.error(markOf(wp, f), "wp.interval", "missing: the output grid step, s");
@@ -105,7 +113,7 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
       return r;
     }
     r.method = r.label = method(n["method"], key + ".method");
-    if (n["label"]) r.label = n["label"].as<std::string>();
+    if (n["label"]) r.label = nameOf(n["label"], key + ".label");
     r.dt = positive(n["dt"], key + ".dt", 0.0);
     r.rtol = positive(n["rtol"], key + ".rtol", 0.0);
     if (!(r.dt > 0) && !(r.rtol > 0)) d.error(markOf(n, f), key, "give dt (fixed step) or rtol (adaptive)");
@@ -125,12 +133,12 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
   if (ref && ref.IsMap() && ref["file"]) {
     // (reference: {file}) => a published solution, relative to the scene file
     checkKeys(ref, {"file"}, f, "wp.reference", d);
-    const std::string name = ref["file"].as<std::string>();
-    const std::filesystem::path path = scene.file.parent_path() / name;
+    const std::string file = nameOf(ref["file"], "wp.reference.file");
+    const std::filesystem::path path = scene.file.parent_path() / file;
     if (!std::filesystem::is_regular_file(path))
       d.error(markOf(ref["file"], f), "wp.reference.file", "no such file: " + path.string());
     spec.referenceFile = path.string();
-    spec.reference.label = spec.reference.method = "file " + name;
+    spec.reference.label = spec.reference.method = "file " + file;
   } else {
     spec.reference = single(ref, "wp.reference");
   }
@@ -153,7 +161,7 @@ WpSpec parseWpSpec(const Scene& scene, Diagnostics& d) {
     }
     WpRun base;
     base.method = base.label = method(m["method"], key + ".method");
-    if (m["label"]) base.label = m["label"].as<std::string>();
+    if (m["label"]) base.label = nameOf(m["label"], key + ".label");
     base.extra = YAML::Clone(m);
     for (const char* k : {"method", "label", "dt", "rtol", "dt0", "levels"}) base.extra.remove(k);
     if (const YAML::Node rt = m["rtol"]) {

@@ -88,24 +88,33 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   ws_.integrator = dynamics::makeIntegrator(opt_.integrator, model);
   if (model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, ws_.data.kernel);
   mechanics::connectStage(system_, ws_.data);
-  if (opt_.equilibrium) settle();
-  // (initial state) => each rope's winch as it starts; the rope tensions are the first peaks
-  MultibodyState& x0 = mutableState().x;
-  for (std::size_t r = 0; r < system_.ropes().size(); ++r)
-    x0.setPoints.winches[r].pieces = system_.ropes()[r]->winch().history();
-  dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
-  const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
-  for (std::size_t r = 0; r < system_.ropes().size(); ++r)
-    x0.peakTension[r] = system_.ropes()[r]->tension(stage);
-  initialTension_ = x0.peakTension;
-  // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
-  limits_.balance0 = mechanics::energy(system_, ws_.data, ws_.data.scratch, x0.q, x0.v, 0.0);
-  limits_.energyBound =
-      opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
-  limits_.loopResidualLimit = opt_.loopResidualLimit;
-  limits_.projectLoops = opt_.projectLoops;
-  limits_.method = opt_.integrator.method;
-  limits_.dt = opt_.dt;
+  // (initial state) => a force provider that gives up on it (a catenary line whose solve does
+  // not converge at t = 0) is a numerical failure of the run (exit 2), not an internal error
+  try {
+    if (opt_.equilibrium) settle();
+    // (initial state) => each rope's winch as it starts; the rope tensions are the first peaks
+    MultibodyState& x0 = mutableState().x;
+    for (std::size_t r = 0; r < system_.ropes().size(); ++r)
+      x0.setPoints.winches[r].pieces = system_.ropes()[r]->winch().history();
+    dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
+    const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
+    for (std::size_t r = 0; r < system_.ropes().size(); ++r)
+      x0.peakTension[r] = system_.ropes()[r]->tension(stage);
+    initialTension_ = x0.peakTension;
+    // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
+    limits_.balance0 = mechanics::energy(system_, ws_.data, ws_.data.scratch, x0.q, x0.v, 0.0);
+    limits_.energyBound =
+        opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
+    limits_.loopResidualLimit = opt_.loopResidualLimit;
+    limits_.projectLoops = opt_.projectLoops;
+    limits_.method = opt_.integrator.method;
+    limits_.dt = opt_.dt;
+  } catch (const devs::SimulationError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw NumericalError("multibody '" + path() + "'", 0.0, e.what(),
+                         "check the initial positions of the bodies and of what holds them");
+  }
 }
 
 void MultibodyModel::settle() {

@@ -1,7 +1,8 @@
 // yardsim run, as a process, on scenes that start in static equilibrium (`equilibrium: true`):
 // a box barge released off its draft settles at the draft of the hand formula without moving in
 // surge, sway or yaw; an unmoored barge in a steady wind has no equilibrium, and the run says
-// which body and direction, exits 2 and still writes run.json.
+// which body and direction, exits 2 and still writes run.json. The options run_command checks
+// against the scene: --checkpoint-every held to 1 ms and the checkpoint ceiling.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -83,4 +84,59 @@ TEST_CASE("an unmoored barge in a steady side force has no equilibrium: body and
   const std::string json = slurp(dir.file("out/run.json"));
   CHECK_THAT(json, Catch::Contains("\"status\":\"failed\"") &&
                        Catch::Contains("hull: sway (y) has no stiffness and a net force of 12.3 kN"));
+}
+
+TEST_CASE(
+    "a --checkpoint-every below 1 ms or above the checkpoint ceiling is refused before the run "
+    "(exit 1)") {
+  yardsim::testing::SceneDir dir;
+  const std::string scene =
+      std::string(YARDSIM_SOURCE_DIR) + "/tests/report/data/over_mbl.yaml";  // dt 1 ms
+  // (1e-300 s: found by tests/fuzz/mutate.py) => refused at once, not checkpoints without end
+  const auto tiny =
+      yardsim::testing::shell(std::string(YARDSIM_EXE) + " run " + scene + " -o " + dir.file("a") +
+                                  " --quiet --checkpoint-every 1e-300",
+                              20);
+  INFO(tiny.out);
+  CHECK(tiny.status == 1);
+  CHECK_THAT(tiny.out,
+             Catch::Contains("--checkpoint-every: expected a period of at least 0.001 s"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "a/checkpoints"));
+  // (1 ms over 2000 s) => 2e6 checkpoints, above the rows ceiling of 1e6
+  const auto many = runYardsim("run " + scene + " -o " + dir.file("b") +
+                               " --quiet --until 2000 --checkpoint-every 0.001");
+  INFO(many.out);
+  CHECK(many.status == 1);
+  CHECK_THAT(many.out, Catch::Contains("is 2e+06 checkpoints, above the ceiling of 1e+06"));
+  // (0.25 s over 0.5 s) => runs, with the one checkpoint before the end
+  const auto fine = runYardsim("run " + scene + " -o " + dir.file("c") +
+                               " --quiet --until 0.5 --checkpoint-every 0.25");
+  INFO(fine.out);
+  CHECK(fine.status == 0);
+  CHECK(std::filesystem::exists(dir.path() / "c/checkpoints/t000000.250.ckpt"));
+}
+
+TEST_CASE(
+    "a catenary line that fails at the start of an equilibrium is a numerical failure (exit 2) not "
+    "exit 3") {
+  // (tests/fuzz/mutate.py: FC2's north-west fairlead moved from x = -56 m to -1 m in the
+  // launching scene; the equilibrium's search then fails a catenary solve at t = 0, which was an
+  // internal error)
+  yardsim::testing::SceneDir dir;
+  const std::filesystem::path examples = std::filesystem::path(YARDSIM_SOURCE_DIR) / "examples";
+  for (const char* folder : {"launching_floating_cranes", "floating_crane"})
+    std::filesystem::copy(examples / folder, dir.path() / folder,
+                          std::filesystem::copy_options::recursive);
+  std::string text = slurp((examples / "launching_floating_cranes/scene.yaml").string());
+  const std::string from = "fairlead: {body: FC2.barge, point: [-56, 21, 1]}";
+  REQUIRE(text.find(from) != std::string::npos);
+  text.replace(text.find(from), from.size(), "fairlead: {body: FC2.barge, point: [-1, 21, 1]}");
+  std::ofstream(dir.path() / "launching_floating_cranes/scene.yaml") << text;
+  const auto r = runYardsim("run " + dir.file("launching_floating_cranes/scene.yaml") + " -o " +
+                            dir.file("out") + " --quiet --until 1");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out, Catch::Contains("numerical failure before the run") &&
+                        Catch::Contains("catenary line") && !Catch::Contains("internal error"));
+  CHECK_THAT(slurp(dir.file("out/run.json")), Catch::Contains("\"status\":\"failed\""));
 }

@@ -76,6 +76,25 @@ TEST_CASE("collision: a non-finite pose is refused with the object's name, befor
 }
 
 TEST_CASE(
+    "collision: a box or a position beyond 1e12 m is refused with the object's name, before FCL") {
+  // (tests/fuzz/mutate.py: a box of 1e300 m, or a centre of mass at 1e300 m, crashed FCL's tree
+  // balancing with a segmentation fault)
+  CollisionWorld huge;
+  huge.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
+  huge.add(Shape::box(Vector3(1, 1e300, 1)), Transform::identity(), {"loader", {}});
+  CHECK_THROWS_WITH(huge.candidatePairs(),
+                    Catch::Contains("'loader'") && Catch::Contains("beyond 1e12 m"));
+  CollisionWorld far;
+  far.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
+  far.add(Shape::sphere(1.0), Transform::translation(Vector3(0, 0, 1e300)), {"ball", {}});
+  CHECK_THROWS_WITH(far.candidatePairs(), Catch::Contains("'ball'"));
+  CollisionWorld fine;  // (1e6 m: a large yard, still fine)
+  fine.add(Shape::box(Vector3(1, 1, 1)), Transform::identity(), {"block A", {}});
+  fine.add(Shape::sphere(1.0), Transform::translation(Vector3(1e6, 0, 0)), {"ball", {}});
+  CHECK(fine.candidatePairs().empty());
+}
+
+TEST_CASE(
     "collision: tight boxes give exactly the overlapping corner-box pairs, fewer than FCL "
     "default") {
   std::mt19937 rng(11);

@@ -101,6 +101,12 @@ TEST_CASE("a checkpoint is refused for another scene, another yardsim, or a dama
                     Catch::Contains("not a yardsim checkpoint"));
   CHECK_THROWS_WITH(run::readCheckpointFile(dir.path() / "none.ckpt", fingerprint),
                     Catch::Contains("cannot open"));
+  // (a device or a folder) => refused before reading (/dev/zero's header line has no end: the
+  // mutation experiment's `--restart /dev/zero` grew without bound)
+  CHECK_THROWS_WITH(run::readCheckpointFile("/dev/zero", fingerprint),
+                    Catch::Contains("/dev/zero: not a regular file"));
+  CHECK_THROWS_WITH(run::readCheckpointFile(dir.path(), fingerprint),
+                    Catch::Contains("not a regular file"));
 }
 
 TEST_CASE("a restart from another scene's checkpoint or at the end time simulates nothing") {

@@ -119,3 +119,27 @@ TEST_CASE("wp runs are held to the step and row ceilings of the scene") {
   CHECK_THAT(report, Catch::Contains("wp.methods[0].levels") && Catch::Contains("above the ceiling of 1e+08"));
   CHECK_THAT(report, Catch::Contains("wp.reference.dt") && Catch::Contains("limits: {steps"));
 }
+
+TEST_CASE("wp refuses a list or a map where a channel label or file name belongs at its place") {
+  // (found by tests/fuzz/mutate.py: `channels: [{a: 1}]` was an internal error, exit 3)
+  models::Diagnostics d;
+  parse(R"(wp:
+  channels: [{a: 1}, block.z]
+  interval: 0.1
+  methods:
+    - {method: rk4, dt0: 0.01, levels: 2, label: [x]}
+  reference: {file: {a: 1}}
+  check: {method: rk4, dt: 0.001, label: {b: 2}}
+)",
+        d);
+  const std::string report = d.report();
+  INFO(report);
+  CHECK_THAT(report,
+             Catch::Contains("s.yaml:10:14") && Catch::Contains("wp.channels[0]: expected a name"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:13:50") &&
+                         Catch::Contains("wp.methods[0].label: expected a name"));
+  CHECK_THAT(report, Catch::Contains("s.yaml:14:21") &&
+                         Catch::Contains("wp.reference.file: expected a name"));
+  CHECK_THAT(report,
+             Catch::Contains("s.yaml:15:42") && Catch::Contains("wp.check.label: expected a name"));
+}

@@ -2,6 +2,8 @@
 // the errors naming the file and line.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include "forces/geometry/mesh_io.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
 #include "support/scene_files.hpp"
@@ -73,4 +75,17 @@ TEST_CASE("reader errors name the file and the line or face") {
   CHECK_THROWS_WITH(readMesh(dir.file("junk.stl")), Contains("junk.stl:5: a facet with 1 vertices"));
   dir.write("text.stl", "hello world\n");
   CHECK_THROWS_WITH(readMesh(dir.file("text.stl")), Contains("text.stl:1: unexpected 'hello'"));
+}
+
+TEST_CASE("a mesh path that is a device or a folder or over the size limit is refused before reading") {
+  SceneDir dir;
+  // (a symlink to /dev/zero named .stl) => refused, not read for ever
+  std::filesystem::create_symlink("/dev/zero", dir.path() / "zero.stl");
+  CHECK_THROWS_WITH(readMesh(dir.file("zero.stl")), Contains("zero.stl: not a regular file"));
+  std::filesystem::create_directories(dir.path() / "folder.obj");
+  CHECK_THROWS_WITH(readMesh(dir.file("folder.obj")), Contains("folder.obj: not a regular file"));
+  // (a sparse file one byte over the limit) => refused with the sizes, before it is read
+  dir.write("huge.obj", "v 0 0 0\n");
+  std::filesystem::resize_file(dir.path() / "huge.obj", kMaxMeshFileBytes + 1);
+  CHECK_THROWS_WITH(readMesh(dir.file("huge.obj")), Contains("huge.obj: 268435457 bytes") && Contains("256 MiB"));
 }

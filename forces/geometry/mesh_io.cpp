@@ -94,7 +94,8 @@ TriangleMesh readMesh(const std::string& path) {
   // (path) => a regular file below the size limit, before any reader opens it
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
-    throw MeshError(path + (std::filesystem::exists(path, ec) ? ": not a regular file" : ": cannot open the mesh file"));
+    throw MeshError(path + (std::filesystem::exists(path, ec) ? ": not a regular file"
+                                                              : ": cannot open the mesh file"));
   if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxMeshFileBytes)
     throw MeshError(path + ": " + std::to_string(size) + " bytes; a mesh file has at most " +
                     std::to_string(kMaxMeshFileBytes) + " (256 MiB)");

@@ -77,7 +77,8 @@ TEST_CASE("reader errors name the file and the line or face") {
   CHECK_THROWS_WITH(readMesh(dir.file("text.stl")), Contains("text.stl:1: unexpected 'hello'"));
 }
 
-TEST_CASE("a mesh path that is a device or a folder or over the size limit is refused before reading") {
+TEST_CASE(
+    "a mesh path that is a device or a folder or over the size limit is refused before reading") {
   SceneDir dir;
   // (a symlink to /dev/zero named .stl) => refused, not read for ever
   std::filesystem::create_symlink("/dev/zero", dir.path() / "zero.stl");
@@ -87,5 +88,6 @@ TEST_CASE("a mesh path that is a device or a folder or over the size limit is re
   // (a sparse file one byte over the limit) => refused with the sizes, before it is read
   dir.write("huge.obj", "v 0 0 0\n");
   std::filesystem::resize_file(dir.path() / "huge.obj", kMaxMeshFileBytes + 1);
-  CHECK_THROWS_WITH(readMesh(dir.file("huge.obj")), Contains("huge.obj: 268435457 bytes") && Contains("256 MiB"));
+  CHECK_THROWS_WITH(readMesh(dir.file("huge.obj")),
+                    Contains("huge.obj: 268435457 bytes") && Contains("256 MiB"));
 }

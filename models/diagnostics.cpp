@@ -17,14 +17,15 @@ std::string format(const Diagnostic& d) {
 void Diagnostics::error(SourceMark where, std::string keyPath, std::string message,
                         std::string hint) {
   list_.push_back({Diagnostic::Severity::Error, std::move(where), std::move(keyPath),
-                   std::move(message), std::move(hint)});
+                   std::move(message), std::move(hint), {},
+                   std::numeric_limits<double>::quiet_NaN()});
   ++errors_;
 }
 
 void Diagnostics::warning(SourceMark where, std::string keyPath, std::string message,
-                          std::string hint) {
+                          std::string hint, std::string element, double value) {
   list_.push_back({Diagnostic::Severity::Warning, std::move(where), std::move(keyPath),
-                   std::move(message), std::move(hint)});
+                   std::move(message), std::move(hint), std::move(element), value});
 }
 
 std::string Diagnostics::report() const {

@@ -126,9 +126,10 @@ int runCommand(const RunArgs& a) {
         std::fprintf(stderr, "warning: '%s': %zu time(s) from t = %.6g s, value %.6g\n",
                      al.element.c_str(), al.count, al.first, al.worst);
       else if (al.severity == "alarm" || !a.quiet)
-        std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g at t = %.6g s\n",
-                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
-                     al.worst, al.worstAt);
+        std::fprintf(stderr,
+                     "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g at t = %.6g s\n",
+                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(),
+                     al.first, al.count, al.worst, al.worstAt);
     const run::Stopwatch writing;
     if (a.format == "hdf5" && r.samples > 0)
       output::writeTimeseriesHdf5(std::filesystem::path(a.outdir) / "timeseries.csv",

@@ -17,8 +17,7 @@ std::string format(const Diagnostic& d) {
 void Diagnostics::error(SourceMark where, std::string keyPath, std::string message,
                         std::string hint) {
   list_.push_back({Diagnostic::Severity::Error, std::move(where), std::move(keyPath),
-                   std::move(message), std::move(hint), {},
-                   std::numeric_limits<double>::quiet_NaN()});
+                   std::move(message), std::move(hint)});
   ++errors_;
 }
 

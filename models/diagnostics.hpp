@@ -36,8 +36,7 @@ class Diagnostics {
  public:
   void error(SourceMark where, std::string keyPath, std::string message, std::string hint = {});
   void warning(SourceMark where, std::string keyPath, std::string message, std::string hint = {},
-               std::string element = {},
-               double value = std::numeric_limits<double>::quiet_NaN());
+               std::string element = {}, double value = std::numeric_limits<double>::quiet_NaN());
   bool hasErrors() const { return errors_ > 0; }
   std::size_t errorCount() const { return errors_; }
   const std::vector<Diagnostic>& all() const { return list_; }

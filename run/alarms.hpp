@@ -26,10 +26,10 @@ struct Alarm {
                          // warning (warning)
   double first = 0.0;    // s: the first occurrence, as located
   std::size_t count = 0;
-  double worst = 0.0;  // SI: the largest value reported (for over_mbl the rope's peak tension
-                       // in N, raiseToRopePeaks; hook load in N for over_hook_load; for crossed
-                       // the watched quantity's extreme beyond its threshold, WatchExtremes;
-                       // for a warning its value, omega_max dt for the stiffness guard, or NaN)
+  double worst = 0.0;    // SI: the largest value reported (for over_mbl the rope's peak tension
+                         // in N, raiseToRopePeaks; hook load in N for over_hook_load; for crossed
+                         // the watched quantity's extreme beyond its threshold, WatchExtremes;
+                         // for a warning its value, omega_max dt for the stiffness guard, or NaN)
   double worstAt = 0.0;  // s: when the worst value was reached
   std::string message = {};  // a warning's text (file:line:col: key path: message); "" otherwise
 };

@@ -80,13 +80,15 @@ std::string unbalancedText(const mechanics::System& system, const Eigen::VectorX
       std::snprintf(text, sizeof text,
                     " (%s the body's own %c axis, world direction [%+.3f, %+.3f, %+.3f] where the "
                     "search stopped)",
-                    rotation ? "about" : "along", "xyz"[axis], shown(w[0]), shown(w[1]), shown(w[2]));
+                    rotation ? "about" : "along", "xyz"[axis], shown(w[0]), shown(w[1]),
+                    shown(w[2]));
       frame = text;
     }
     out += (out.empty() ? "" : "; ") + m.names[static_cast<std::size_t>(body)] + ": " +
            std::string(dynamics::jointDirectionName(type, k)) +
            (type == dynamics::JointType::Free || joint.empty() ? "" : " of joint '" + joint + "'") +
-           " has no stiffness and a net " + (rotation ? "moment" : "force") + " of " + force + frame;
+           " has no stiffness and a net " + (rotation ? "moment" : "force") + " of " + force +
+           frame;
   }
   return out;
 }
@@ -143,7 +145,8 @@ void MultibodyModel::settle() {
                            "start closer to equilibrium, hold the joints that have no stiffness, or "
                            "set equilibrium: false");
     throw NumericalError("multibody '" + path() + "'", 0.0,
-                         "no static equilibrium: " + unbalancedText(system_, x.q, r.unbalanced) + " (" + search + ")",
+                         "no static equilibrium: " + unbalancedText(system_, x.q, r.unbalanced) +
+                             " (" + search + ")",
                          "add a mooring, a rope or a held joint there, or set equilibrium: false");
   }
   x.v.setZero();

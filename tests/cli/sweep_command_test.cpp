@@ -179,7 +179,8 @@ namespace {
 // over VARY ("{dt: [...]}", "{speed_deg: [...]}")
 fs::path ceilingSweep(yardsim::testing::SceneDir& dir, const std::string& vary,
                       const std::string& interval = "0.05", const std::string& extra = "") {
-  std::ifstream in(std::string(YARDSIM_SOURCE_DIR) + "/tests/studies/data/pendulum_sweep/scene.yaml");
+  std::ifstream in(std::string(YARDSIM_SOURCE_DIR) +
+                   "/tests/studies/data/pendulum_sweep/scene.yaml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string record = "  interval: 0.05\n";
   REQUIRE(text.find(record) != std::string::npos);
@@ -201,26 +202,32 @@ TEST_CASE("A sweep whose case would step more than the ceiling is refused at the
                                     "until = 6 s is 6e+09 steps, above the ceiling of 1e+08") &&
                         Catch::Contains("`limits: {steps: 6e+09}`") &&
                         Catch::Contains("no case was run"));
-  CHECK_THAT(r.out, Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: components.pendulum(.|\n)*"));
+  CHECK_THAT(r.out,
+             Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: components.pendulum(.|\n)*"));
   CHECK_FALSE(fs::exists(dir.path() / "out/cases"));
 }
 
-TEST_CASE("A sweep whose case would record more rows than the ceiling is refused at the door unless the scene opts in") {
+TEST_CASE(
+    "A sweep whose case would record more rows than the ceiling is refused at the door unless the "
+    "scene opts in") {
   // (record.interval = 1e-6 s over 6 s) => 6e6 rows, above the 1e6 ceiling
   yardsim::testing::SceneDir dir;
   const fs::path sweep = ceilingSweep(dir, "{speed_deg: [4, 6]}", "1.0e-6");
   const Result r = shell(kExe + " sweep " + sweep.string() + " -o " + dir.file("out"));
   INFO(r.out);
   CHECK(r.status == 1);
-  CHECK_THAT(r.out, Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: record.interval: a record "
-                                   "interval of 1e-06 s over until = 6 s is 6e\\+06 recorded rows, above "
-                                   "the ceiling of 1e\\+06(.|\n)*"));
+  CHECK_THAT(r.out,
+             Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: record.interval: a record "
+                            "interval of 1e-06 s over until = 6 s is 6e\\+06 recorded rows, above "
+                            "the ceiling of 1e\\+06(.|\n)*"));
   CHECK_FALSE(fs::exists(dir.path() / "out/cases"));
   // (the scene's `limits: {rows: 1.0e7}`) => the door lets it through (a Slurm array is only
   // written, nothing is run)
   yardsim::testing::SceneDir opted;
-  const fs::path raised = ceilingSweep(opted, "{speed_deg: [4, 6]}", "1.0e-6", "limits: {rows: 1.0e7}\n");
-  const Result ok = shell(kExe + " sweep " + raised.string() + " -o " + opted.file("out") + " --slurm-array");
+  const fs::path raised =
+      ceilingSweep(opted, "{speed_deg: [4, 6]}", "1.0e-6", "limits: {rows: 1.0e7}\n");
+  const Result ok =
+      shell(kExe + " sweep " + raised.string() + " -o " + opted.file("out") + " --slurm-array");
   INFO(ok.out);
   CHECK(ok.status == 0);
   CHECK(fs::exists(opted.path() / "out/sweep.sbatch"));

@@ -45,8 +45,8 @@ TEST_CASE(
   auto r = shell(kSource + "/examples/yard/build_fixture.sh " + kYardsim + " " + db);
   INFO(r.out);
   REQUIRE(r.status == 0);
-  r = shell(kYardsim + " run " + kSource + "/examples/goliath_turnover/scene.yaml --trace jsonl -o " +
-            dir.file("typed"));
+  r = shell(kYardsim + " run " + kSource +
+            "/examples/goliath_turnover/scene.yaml --trace jsonl -o " + dir.file("typed"));
   INFO(r.out);
   REQUIRE(r.status == 0);
   r = shell("env YARDSIM_DB=" + db + " " + kYardsim + " run " + kSource +

@@ -140,8 +140,8 @@ TEST_CASE("a warning of the scene is one warning alarm per text and counts its r
   std::vector<run::Alarm> firsts;
   run::AlarmMonitor m([&](const run::Alarm& a) { firsts.push_back(a); });
   models::Diagnostics d;
-  d.warning({"s.yaml", 2, 13}, "integrator.dt", "mechanical system 'm': too long a step", {}, "hook",
-            3.5);
+  d.warning({"s.yaml", 2, 13}, "integrator.dt", "mechanical system 'm': too long a step", {},
+            "hook", 3.5);
   d.warning({"s.yaml", 9, 3}, "components.x", "input port 'in' of 'x' is not connected");
   m.warn(d.all()[0], 0.0);
   m.warn(d.all()[0], 0.0);
@@ -156,8 +156,7 @@ TEST_CASE("a warning of the scene is one warning alarm per text and counts its r
   CHECK(guard.element == "hook");
   CHECK(guard.count == 2);
   CHECK(guard.worst == 3.5);
-  CHECK(guard.message ==
-        "s.yaml:2:13: integrator.dt: mechanical system 'm': too long a step");
+  CHECK(guard.message == "s.yaml:2:13: integrator.dt: mechanical system 'm': too long a step");
   const run::Alarm& port = m.alarms()[1];
   CHECK(port.element == "components.x");  // no element: its key path
   CHECK(std::isnan(port.worst));
@@ -170,8 +169,8 @@ TEST_CASE("a warning of the scene is one warning alarm per text and counts its r
 TEST_CASE("worsen moves a known alarm's worst value in the direction that is worse") {
   run::AlarmMonitor m;
   m.raise("mb", "low", "crossed", true, 1.0, -2.0);
-  m.worsen("mb", "low", "crossed", false, 1.5, -2.5);  // a lower limit: smaller is worse
-  m.worsen("mb", "low", "crossed", false, 2.0, -2.2);  // not worse
+  m.worsen("mb", "low", "crossed", false, 1.5, -2.5);    // a lower limit: smaller is worse
+  m.worsen("mb", "low", "crossed", false, 2.0, -2.2);    // not worse
   m.worsen("mb", "other", "crossed", false, 2.0, -9.0);  // unknown: left alone
   REQUIRE(m.alarms().size() == 1);
   CHECK(m.alarms()[0].worst == -2.5);

@@ -36,7 +36,8 @@ mechanics:
 )";
 }  // namespace
 
-TEST_CASE("a crossed alarm's worst value is the swing's amplitude beyond the threshold with its time") {
+TEST_CASE(
+    "a crossed alarm's worst value is the swing's amplitude beyond the threshold with its time") {
   testing::SceneDir dir;
   auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", kPendulum));
   auto root = scene::assemble(*scene);

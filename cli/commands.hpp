@@ -13,7 +13,9 @@ struct RunArgs {
   bool traceGiven = false;
   bool quiet = false;
   bool report = false;  // also write OUTDIR/report.html (and record trace.jsonl for its timeline)
-  std::string failOn;   // "alarm": exit 4 when the run raised an alarm (over_mbl, a watch crossed)
+  // exit 4 when the run raised: "alarm" an alarm (over_mbl, a watch crossed, ...) or a warning
+  // (the stiffness guard's, any the run printed); "safety" an alarm only; "" never
+  std::string failOn;
   std::uint64_t maxTransitionsPerInstant = 1000000;  // then the run stops (a zero-time loop)
   double checkpointEvery = 0.0;  // s; > 0: OUTDIR/checkpoints/tXXXXXX.XXX.ckpt at its multiples
   std::string restart;           // a checkpoint of this scene to continue from

@@ -22,7 +22,8 @@ namespace yardsim::cli {
 
 int runCommand(const RunArgs& a) {
   run::PhaseTimes phases;
-  auto scene = loadAndReport(a.scene, &phases);
+  std::vector<models::Diagnostic> warnings;
+  auto scene = loadAndReport(a.scene, &phases, &warnings);
   if (!scene) return kInvalidInput;
   // (--until) => the run's ceilings checked again for the end time given on the command line
   if (a.until >= 0) {
@@ -60,6 +61,7 @@ int runCommand(const RunArgs& a) {
   opt.checkpointEvery = a.checkpointEvery;
   opt.restartFrom = a.restart;
   opt.profile = a.profile;
+  opt.warnings = warnings;
   if (a.report && !(scene->record.interval > 0)) {
     std::fprintf(stderr, "%s: --report needs a `record:` block (the report plots what is recorded; "
                          "docs/report.md)\n", a.scene.c_str());
@@ -138,17 +140,28 @@ int runCommand(const RunArgs& a) {
                 "{} transitions; output in {}",
                 scene->name, r.tEnd, r.wall, r.wall > 0 ? r.tEnd / r.wall : 0.0, r.samples,
                 r.stats.internal + r.stats.external + r.stats.confluent, a.outdir);
-    // (alarms) => first time, count and worst value of each; exit 4 when asked to fail on them
+    // (alarms) => first time, count and worst value of each; exit 4 when asked to fail on them;
+    // a warning (printed in full at the door) by its element, count and value
     for (const auto& al : r.alarms)
-      if (al.severity == "alarm" || !a.quiet)
-        std::fprintf(stderr, "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g\n",
-                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(), al.first, al.count,
-                     al.worst);
+      if (al.severity == "warning")
+        std::fprintf(stderr, "warning: '%s': %zu time(s) from t = %.6g s, value %.6g\n",
+                     al.element.c_str(), al.count, al.first, al.worst);
+      else if (al.severity == "alarm" || !a.quiet)
+        std::fprintf(stderr,
+                     "%s: %s '%s' %s: first at t = %.6g s, %zu time(s), worst %.6g at t = %.6g s\n",
+                     al.severity.c_str(), al.model.c_str(), al.element.c_str(), al.kind.c_str(),
+                     al.first, al.count, al.worst, al.worstAt);
     const run::Stopwatch writing;
     if (a.format == "hdf5" && r.samples > 0)
       output::writeTimeseriesHdf5(std::filesystem::path(a.outdir) / "timeseries.csv",
                                   std::filesystem::path(a.outdir) / "timeseries.h5");
-    const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [](const auto& al) { return al.severity == "alarm"; });
+    // (--fail-on) => which severities make the exit status 4
+    const bool alarmed = std::any_of(r.alarms.begin(), r.alarms.end(), [&](const auto& al) {
+      return (a.failOn == "alarm" || a.failOn == "safety") && al.severity == "alarm";
+    });
+    const bool warned = std::any_of(r.alarms.begin(), r.alarms.end(), [&](const auto& al) {
+      return a.failOn == "alarm" && al.severity == "warning";
+    });
     const int status = a.report ? reportCommand(a.outdir, a.quiet) : kOk;
     // (phase times) => one line on stderr, also when quiet
     if (a.profile) {
@@ -156,7 +169,7 @@ int runCommand(const RunArgs& a) {
       phases.output = r.outputSeconds + writing.seconds();
       std::fprintf(stderr, "%s\n", run::formatProfile(phases).c_str());
     }
-    if (status == kOk && alarmed && a.failOn == "alarm") return kAlarm;
+    if (status == kOk && (alarmed || warned)) return kAlarm;
     return status;
   } catch (const devs::CheckpointError& e) {
     printer.finish();

@@ -8,14 +8,18 @@
 
 namespace yardsim::cli {
 
-std::unique_ptr<scene::Scene> loadAndReport(const std::string& file, run::PhaseTimes* times) {
+std::unique_ptr<scene::Scene> loadAndReport(const std::string& file, run::PhaseTimes* times,
+                                            std::vector<models::Diagnostic>* warnings) {
   scene::LoadResult r = scene::loadScene(file);
   if (times) {
     times->read = r.readSeconds;
     times->validation = r.validationSeconds;
     times->stiffness = r.stiffnessSeconds;
   }
-  for (const auto& d : r.diagnostics.all()) std::fprintf(stderr, "%s\n", models::format(d).c_str());
+  for (const auto& d : r.diagnostics.all()) {
+    std::fprintf(stderr, "%s\n", models::format(d).c_str());
+    if (warnings && d.severity == models::Diagnostic::Severity::Warning) warnings->push_back(d);
+  }
   if (!r.scene)
     std::fprintf(stderr, "%s: %zu error(s); nothing was simulated\n", file.c_str(),
                  r.diagnostics.errorCount());

@@ -60,8 +60,11 @@ int yardsimMain(int argc, char** argv) {
                      "stop (exit 2) after this many transitions at one simulated time")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  runCmd->add_option("--fail-on", run.failOn, "alarm: exit 4 when a rope passed its MBL or a watch crossed")
-      ->check(CLI::IsMember({"alarm"}));
+  runCmd
+      ->add_option("--fail-on", run.failOn,
+                   "exit 4 when the run raised: alarm (a rope over its MBL, a watch crossed, ... "
+                   "or a warning such as the stiffness guard's), safety (the alarms only)")
+      ->check(CLI::IsMember({"alarm", "safety"}));
   runCmd->add_option("--checkpoint-every", run.checkpointEvery,
                      "write OUTDIR/checkpoints/tXXXXXX.XXX.ckpt every this many simulated s")
       ->check(finiteNonNegative("s"));

@@ -22,9 +22,9 @@ void Diagnostics::error(SourceMark where, std::string keyPath, std::string messa
 }
 
 void Diagnostics::warning(SourceMark where, std::string keyPath, std::string message,
-                          std::string hint) {
+                          std::string hint, std::string element, double value) {
   list_.push_back({Diagnostic::Severity::Warning, std::move(where), std::move(keyPath),
-                   std::move(message), std::move(hint)});
+                   std::move(message), std::move(hint), std::move(element), value});
 }
 
 std::string Diagnostics::report() const {

@@ -1,6 +1,7 @@
 #pragma once
 // Errors and warnings about a scene, each pinned to file:line:column and a key path, collected
 // so that every mistake of a file is reported at once, before anything runs.
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -22,6 +23,10 @@ struct Diagnostic {
   std::string keyPath;  // e.g. components.crane1.params.speed
   std::string message;  // what is wrong and what was expected
   std::string hint;     // e.g. "did you mean 'speed'?"
+  // a warning that names a mechanical element (the stiffness guard: the stiffest body) and a
+  // value (its omega_max dt): run.json's alarms show them (run/alarms.hpp); "" and NaN otherwise
+  std::string element = {};
+  double value = std::numeric_limits<double>::quiet_NaN();
 };
 
 // (diagnostic) => "file:line:col: error: components.x.type: message (did you mean 'y'?)"
@@ -30,7 +35,8 @@ std::string format(const Diagnostic& d);
 class Diagnostics {
  public:
   void error(SourceMark where, std::string keyPath, std::string message, std::string hint = {});
-  void warning(SourceMark where, std::string keyPath, std::string message, std::string hint = {});
+  void warning(SourceMark where, std::string keyPath, std::string message, std::string hint = {},
+               std::string element = {}, double value = std::numeric_limits<double>::quiet_NaN());
   bool hasErrors() const { return errors_ > 0; }
   std::size_t errorCount() const { return errors_; }
   const std::vector<Diagnostic>& all() const { return list_; }

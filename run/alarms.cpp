@@ -24,20 +24,53 @@ void AlarmMonitor::onOutput(devs::Time t, const devs::AtomicBase& m, const devs:
   }
 }
 
+Alarm* AlarmMonitor::find(const std::string& model, const std::string& element,
+                          const std::string& kind, const std::string& message) {
+  auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
+    return a.model == model && a.element == element && a.kind == kind && a.message == message;
+  });
+  return it == alarms_.end() ? nullptr : &*it;
+}
+
 void AlarmMonitor::raise(const std::string& model, const std::string& element,
                          const std::string& kind, bool alarm, double t, double value,
                          bool occurrence) {
-  auto it = std::find_if(alarms_.begin(), alarms_.end(), [&](const Alarm& a) {
-    return a.model == model && a.element == element && a.kind == kind;
-  });
-  if (it == alarms_.end()) {
-    alarms_.push_back({model, element, kind, alarm ? "alarm" : "notice", t, 1, value});
+  Alarm* a = find(model, element, kind);
+  if (a == nullptr) {
+    alarms_.push_back({model, element, kind, alarm ? "alarm" : "notice", t, 1, value, t, ""});
     if (onFirst_) onFirst_(alarms_.back());
     return;
   }
-  if (occurrence) ++it->count;
+  if (occurrence) ++a->count;
   const bool closest = kind == "clearance_below" || kind == "touched";  // worst: nearest
-  if (closest ? value < it->worst : std::abs(value) > std::abs(it->worst)) it->worst = value;
+  if (closest ? value < a->worst : std::abs(value) > std::abs(a->worst)) {
+    a->worst = value;
+    a->worstAt = t;
+  }
+}
+
+void AlarmMonitor::warn(const models::Diagnostic& d, double t, bool occurrence) {
+  // (diagnostic) => its text without the severity, its element or else its key path
+  models::Diagnostic plain = d;
+  plain.severity = models::Diagnostic::Severity::Warning;
+  std::string message = models::format(plain);
+  if (const auto at = message.find(": warning: "); at != std::string::npos)
+    message.replace(at, 11, ": ");
+  const std::string element = d.element.empty() ? d.keyPath : d.element;
+  if (Alarm* a = find("", element, "warning", message)) {
+    if (occurrence) ++a->count;
+    return;
+  }
+  alarms_.push_back({"", element, "warning", "warning", t, 1, d.value, t, message});
+  if (onFirst_) onFirst_(alarms_.back());
+}
+
+void AlarmMonitor::worsen(const std::string& model, const std::string& element,
+                          const std::string& kind, bool larger, double t, double value) {
+  Alarm* a = find(model, element, kind);
+  if (a == nullptr || !(larger ? value > a->worst : value < a->worst)) return;
+  a->worst = value;
+  a->worstAt = t;
 }
 
 void raiseToRopePeaks(std::vector<Alarm>& alarms, const devs::Model& root) {
@@ -52,12 +85,20 @@ void raiseToRopePeaks(std::vector<Alarm>& alarms, const devs::Model& root) {
   for (std::size_t r = 0; r < mb->system().ropes().size(); ++r)
     for (Alarm& a : alarms)
       if (a.kind == "over_mbl" && a.model == mb->path() && a.element == mb->rope(r).name())
-        a.worst = std::max(a.worst, mb->state().x.peakTension[r]);
+        if (mb->state().x.peakTension[r] > a.worst) {
+          a.worst = mb->state().x.peakTension[r];
+          a.worstAt = mb->state().x.peakTime[r];
+        }
 }
 
 std::size_t AlarmMonitor::alarmCount() const {
   return static_cast<std::size_t>(std::count_if(
       alarms_.begin(), alarms_.end(), [](const Alarm& a) { return a.severity == "alarm"; }));
+}
+
+std::size_t AlarmMonitor::warningCount() const {
+  return static_cast<std::size_t>(std::count_if(
+      alarms_.begin(), alarms_.end(), [](const Alarm& a) { return a.severity == "warning"; }));
 }
 
 }  // namespace yardsim::run

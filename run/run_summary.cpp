@@ -180,7 +180,9 @@ std::string runSummaryJson(const Scene& scene, const devs::Model& root, const Ru
     number("first", a.first);
     number("count", static_cast<double>(a.count));
     number("worst", a.worst);
+    number("worst_at", a.worstAt);
     text("unit", alarmUnit(a, root, channels));
+    text("message", a.message);
     o += "}";
   }
   o += "]";

@@ -19,6 +19,7 @@
 #include "run/profile.hpp"
 #include "run/run_summary.hpp"
 #include "run/timeseries_writer.hpp"
+#include "run/watch_extremes.hpp"
 
 namespace yardsim::run {
 
@@ -48,10 +49,11 @@ void savePosition(devs::CheckpointWriter& w, const RunPosition& p) {
   w.f64(p.reached);
   w.list(p.alarms.size());
   for (const Alarm& a : p.alarms) {
-    for (const auto* s : {&a.model, &a.element, &a.kind, &a.severity}) w.str(*s);
+    for (const auto* s : {&a.model, &a.element, &a.kind, &a.severity, &a.message}) w.str(*s);
     w.f64(a.first);
     w.i64(static_cast<std::int64_t>(a.count));
     w.f64(a.worst);
+    w.f64(a.worstAt);
   }
   devs::save(w, p.sequences);
 }
@@ -66,10 +68,11 @@ RunPosition loadPosition(devs::CheckpointReader& r) {
   p.reached = r.f64();
   p.alarms.resize(r.list());
   for (Alarm& a : p.alarms) {
-    for (auto* s : {&a.model, &a.element, &a.kind, &a.severity}) *s = r.str();
+    for (auto* s : {&a.model, &a.element, &a.kind, &a.severity, &a.message}) *s = r.str();
     a.first = r.f64();
     a.count = static_cast<std::size_t>(r.i64());
     a.worst = r.f64();
+    a.worstAt = r.f64();
   }
   devs::load(r, p.sequences);
   return p;
@@ -127,6 +130,8 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
   const bool replaying = recorder && !replay.empty();
   AlarmMonitor alarms(opt.onAlarm);
   alarms.restore(position.alarms);
+  // (the scene's warnings) => one `warning` each from the start (a restarted run has them)
+  for (const auto& d : opt.warnings) alarms.warn(d, restored ? restart.t : 0.0, !restored);
   RunFacts facts;
   facts.until = opt.until;
   facts.replayInterval = replaying ? interval * static_cast<double>(stride) : 0.0;
@@ -179,6 +184,9 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       sim.addListener(*listener);
     }
     sim.addListener(alarms);
+    // (watches) => the worst value of each crossing, read after every step
+    WatchExtremes extremes(root, alarms);
+    if (!extremes.empty()) sim.addListener(extremes);
     // (cranes of the yard database with a hook-load curve) => checked after every step
     std::optional<HookLoadMonitor> hookLoads;
     if (!scene.hookLoads.empty())

@@ -9,6 +9,7 @@
 
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
+#include "models/diagnostics.hpp"
 #include "run/alarms.hpp"
 #include "scene/scene.hpp"
 
@@ -32,6 +33,9 @@ struct RunOptions {
   double progressPeriod = 0.1;      // s of wall time
   std::size_t maxReplayFrames = 2000;  // replay.glb takes every k-th sample so as to stay below
   std::function<void(const Alarm&)> onAlarm = {};  // at the first occurrence of each alarm or notice
+  // the warnings of the scene's validation (the stiffness guard's and the others the run
+  // printed), each one `warning` of the run's alarms from its start time (run/alarms.hpp)
+  std::vector<models::Diagnostic> warnings = {};
   // more transitions than this at one simulated time stop the run (devs::Simulator::setInstantLimit)
   std::uint64_t maxTransitionsPerInstant = 1000000;
   // checkpoints (docs/scenes.md): every this many simulated seconds (0: none), written to

@@ -48,8 +48,10 @@ void checkStiffness(const Scene& scene, Diagnostics& diags) {
     if (scene.stiffnessCheck == "refuse")
       diags.error(scene.integratorWhere, "integrator.dt", msg + " (stiffness_check: refuse)");
     else
-      diags.warning(scene.integratorWhere, "integrator.dt",
-                    msg + " (stiffness_check: warn; `refuse` makes this an error, `off` silences it)");
+      diags.warning(
+          scene.integratorWhere, "integrator.dt",
+          msg + " (stiffness_check: warn; `refuse` makes this an error, `off` silences it)", {},
+          e.body.empty() ? system->name : e.body, v.omegaDt);
   }
 }
 

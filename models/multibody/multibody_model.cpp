@@ -50,10 +50,16 @@ MultibodyOptions resolved(MultibodyOptions o) {
   return o;
 }
 
-std::string unbalancedText(const mechanics::System& system, const std::vector<dynamics::UnbalancedDirection>& u) {
-  // (directions without stiffness, their forces) => "hull: surge (x) has no stiffness and a net
-  // force of 12.3 kN; ..." (body; joint name beside a joint that is not free)
+std::string unbalancedText(const mechanics::System& system, const Eigen::VectorXd& q,
+                           const std::vector<dynamics::UnbalancedDirection>& u) {
+  // (directions without stiffness, their forces, q where the search stopped) => "hull: sway (y)
+  // has no stiffness and a net force of 12.3 kN (along the body's own y axis, world direction
+  // [+1, +0, +0] where the search stopped); ..." (body; joint name beside a joint that is not
+  // free). A free or spherical joint's directions are its body's own axes (they turn with it);
+  // the others' are the joint's axes.
   const auto& m = system.model();
+  dynamics::Data kin(m);
+  dynamics::forwardKinematics(m, kin, q);
   std::string out;
   for (const auto& d : u) {
     const int body = m.dofBody[static_cast<std::size_t>(d.dof)];
@@ -63,10 +69,26 @@ std::string unbalancedText(const mechanics::System& system, const std::vector<dy
     const std::string& joint = system.description().jointNames[static_cast<std::size_t>(body)];
     char force[64];
     std::snprintf(force, sizeof force, "%.3g %s", std::abs(d.force) / 1e3, rotation ? "kN m" : "kN");
+    std::string frame;
+    if (type == dynamics::JointType::Free || type == dynamics::JointType::Spherical) {
+      // (the body's axis of that direction, the force's sign) => its world direction now
+      const int axis = k % 3;
+      const dynamics::Vector3 w =
+          (d.force < 0 ? -1.0 : 1.0) * kin.X_WB[static_cast<std::size_t>(body)].R.col(axis);
+      auto shown = [](double c) { return std::round(c * 1e3) / 1e3 + 0.0; };  // no -0.000
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    " (%s the body's own %c axis, world direction [%+.3f, %+.3f, %+.3f] where the "
+                    "search stopped)",
+                    rotation ? "about" : "along", "xyz"[axis], shown(w[0]), shown(w[1]),
+                    shown(w[2]));
+      frame = text;
+    }
     out += (out.empty() ? "" : "; ") + m.names[static_cast<std::size_t>(body)] + ": " +
            std::string(dynamics::jointDirectionName(type, k)) +
            (type == dynamics::JointType::Free || joint.empty() ? "" : " of joint '" + joint + "'") +
-           " has no stiffness and a net " + (rotation ? "moment" : "force") + " of " + force;
+           " has no stiffness and a net " + (rotation ? "moment" : "force") + " of " + force +
+           frame;
   }
   return out;
 }
@@ -132,7 +154,8 @@ void MultibodyModel::settle() {
                            "start closer to equilibrium, hold the joints that have no stiffness, or "
                            "set equilibrium: false");
     throw NumericalError("multibody '" + path() + "'", 0.0,
-                         "no static equilibrium: " + unbalancedText(system_, r.unbalanced) + " (" + search + ")",
+                         "no static equilibrium: " + unbalancedText(system_, x.q, r.unbalanced) +
+                             " (" + search + ")",
                          "add a mooring, a rope or a held joint there, or set equilibrium: false");
   }
   x.v.setZero();

@@ -1,6 +1,7 @@
 // The run's safety events on the page (run.json "alarms", the trace's events): a red banner in
 // the header with one line per alarm (kind, element, first time, count, worst value in the
-// page's units; a click seeks the replay there), the notices in a quiet line below, the times of
+// page's units and when; a click seeks the replay there) and per warning the run printed (the
+// stiffness guard's: its text, count and omega_max dt), the notices in a quiet line below, the times of
 // every occurrence as markers for the plots and the timeline, and the table of the closest
 // approaches of the clearance watches.
 import { el } from './data.js';
@@ -14,6 +15,9 @@ const what = {
   touched: 'touched',
   slack: 'slack', taut: 'taut', contact: 'contact', release: 'release',
 };
+
+// (alarm) => whether it goes into the banner: an alarm or a warning (not a notice)
+const banned = a => a.severity === 'alarm' || a.severity === 'warning';
 
 // (alarm, the force unit of the page) => its worst value with a unit: forces in the page's force
 // unit (the tension plot's), the rest in the display unit of run.json's SI unit for it
@@ -44,28 +48,35 @@ export function alarmMarkers(alarms, events) {
   const out = [];
   alarms.forEach((a, i) => {
     for (const t of times[i])
-      out.push({ t, severity: a.severity, color: a.severity === 'alarm' ? '#cf222e' : '#8c959f', label: `${a.element} ${a.kind}` });
+      out.push({ t, severity: a.severity, color: { alarm: '#cf222e', warning: '#9a6700' }[a.severity] || '#8c959f', label: `${a.element} ${a.kind}` });
   });
-  return out.filter(m => m.severity === 'alarm');
+  return out.filter(banned);
 }
 
 // (alarms, force display unit, root, onTime) => the banner (only when there is an alarm) and the
 // notices line
 export function alarmBanner(alarms, force, root, onTime) {
+  const times = a => `${a.count} time${a.count === 1 ? '' : 's'}`;
+  const when = a => (a.worst_at !== undefined && a.worst_at !== null ? ` at t = ${num(a.worst_at, 6)} s` : '');
   const line = a => {
-    const item = el('li', { class: 'alarm-item', 'data-kind': a.kind },
-      el('b', {}, a.kind), ` ${a.element} ${what[a.kind] || ''}: first at t = ${num(a.first, 6)} s, ${a.count} time${a.count === 1 ? '' : 's'}, worst ${worst(a, force)}`);
+    const text = a.severity === 'warning' ?
+        ` ${a.element}: ${a.message}: from t = ${num(a.first, 6)} s, ${times(a)}${a.worst === null ? '' : `, value ${num(a.worst)}`}` :
+        ` ${a.element} ${what[a.kind] || ''}: first at t = ${num(a.first, 6)} s, ${times(a)}, worst ${worst(a, force)}${when(a)}`;
+    const item = el('li', { class: 'alarm-item', 'data-kind': a.kind }, el('b', {}, a.kind), text);
     item.title = 'click: show this time';
     item.addEventListener('click', () => onTime(a.first, 'alarm'));
     return item;
   };
-  const bad = alarms.filter(a => a.severity === 'alarm');
+  const bad = alarms.filter(banned);
   if (bad.length) {
+    const count = (n, w) => `${n} ${w}${n === 1 ? '' : 's'}`;
+    const nA = bad.filter(a => a.severity === 'alarm').length, nW = bad.length - nA;
+    const title = [nA ? count(nA, 'alarm') : '', nW ? count(nW, 'warning') : ''].filter(Boolean).join(' and ');
     root.append(el('div', { class: 'alarm-banner', id: 'alarm-banner' },
-      el('div', { class: 'alarm-title' }, `${bad.length} alarm${bad.length === 1 ? '' : 's'} in this run`),
+      el('div', { class: 'alarm-title' }, `${title} in this run`),
       el('ul', {}, ...bad.map(line))));
   }
-  const notices = alarms.filter(a => a.severity !== 'alarm');
+  const notices = alarms.filter(a => !banned(a));
   if (notices.length) {
     const list = el('ul', {}, ...notices.map(line));
     root.append(el('details', { class: 'notices-list', id: 'notices' }, el('summary', {}, `${notices.length} notice${notices.length === 1 ? '' : 's'} (slack/taut ropes, contacts)`), list));

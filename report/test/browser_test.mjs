@@ -183,14 +183,15 @@ async function checkReport(page) {
   const tickNoise = groups.flatMap(g => g.ticks).filter(v => /e-(1\d|[2-9]\d)/.test(String(v)));
   check('no round-off noise (e-10 and below) in the text or the tick labels', !noise && !tickNoise.length, `${noise} ${tickNoise}`);
 
-  // (run.json's alarms) => a red banner with a line per alarm, and markers, exactly when there are alarms
-  const alarms = ((data.run && data.run.alarms) || []).filter(a => a.severity === 'alarm');
+  // (run.json's alarms and warnings) => a red banner with a line per alarm and per warning, and
+  // markers, exactly when there are any
+  const alarms = ((data.run && data.run.alarms) || []).filter(a => a.severity === 'alarm' || a.severity === 'warning');
   const banner = await page.evaluate(() => {
     const b = document.getElementById('alarm-banner');
     return b && { items: [...b.querySelectorAll('li')].map(li => li.textContent), color: getComputedStyle(b).borderColor };
   });
   if (alarms.length) {
-    check('a red banner lists every alarm', banner && banner.items.length === alarms.length && /207, 34, 46/.test(banner.color),
+    check('a red banner lists every alarm and warning', banner && banner.items.length === alarms.length && /207, 34, 46/.test(banner.color),
       JSON.stringify(banner));
     const force = tensions ? tensions.unit : 'kN';
     const factor = { N: 1, kN: 1e-3, MN: 1e-6 }[force];
@@ -204,8 +205,12 @@ async function checkReport(page) {
     const withUnit = alarms.filter(a => a.unit);
     check('every alarm\'s worst value with its unit', withUnit.every(a => {
       const shown = banner.items.find(t => t.startsWith(a.kind) && t.includes(` ${a.element} `));
-      return shown && /worst -?[0-9.]+(e-?[0-9]+)? (mm|m|N|kN|MN|deg|t|kg)$/.test(shown);
+      return shown && /worst -?[0-9.]+(e-?[0-9]+)? (mm|m|N|kN|MN|deg|t|kg)( at t = [0-9.]+ s)?$/.test(shown);
     }), banner.items.join(' | '));
+    const warnings = alarms.filter(a => a.severity === 'warning');
+    if (warnings.length)
+      check('every warning in the banner with its text and count', warnings.every(a =>
+        banner.items.some(t => t.startsWith('warning') && t.includes(a.message) && t.includes(`${a.count} time`))), banner.items.join(' | '));
     const markers = await page.evaluate(() => ({ n: window.yardsim.markers.length, tl: document.querySelectorAll('.tl-marker').length }));
     check('alarm markers on the plots and the timeline', markers.n >= alarms.length && markers.tl === markers.n, JSON.stringify(markers));
     // (markers) => one that is on top at its own centre (markers close in time overlap)

@@ -1,8 +1,10 @@
 // yardsim run, as a process, on scenes that start in static equilibrium (`equilibrium: true`):
 // a box barge released off its draft settles at the draft of the hand formula without moving in
 // surge, sway or yaw; an unmoored barge in a steady wind has no equilibrium, and the run says
-// which body and direction, exits 2 and still writes run.json. The options run_command checks
-// against the scene: --checkpoint-every held to 1 ms and the checkpoint ceiling.
+// which body and direction (in the body's own frame, with its world direction), exits 2 and still
+// writes run.json. The stiffness guard's warning is one alarm of kind warning (--fail-on). The
+// options run_command checks against the scene: --checkpoint-every held to 1 ms and the
+// checkpoint ceiling.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -139,4 +141,74 @@ TEST_CASE(
   CHECK_THAT(r.out, Catch::Contains("numerical failure before the run") &&
                         Catch::Contains("catenary line") && !Catch::Contains("internal error"));
   CHECK_THAT(slurp(dir.file("out/run.json")), Catch::Contains("\"status\":\"failed\""));
+}
+
+TEST_CASE(
+    "the stiffness guard's warning is an alarm of kind warning: once on the console and in "
+    "run.json and --fail-on alarm exits 4") {
+  yardsim::testing::SceneDir dir;
+  const std::string scene =
+      std::string(YARDSIM_SOURCE_DIR) + "/tests/report/data/guard_warning.yaml";
+  const auto r = runYardsim("run " + scene + " -o " + dir.file("a") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 0);  // a warning does not stop the run
+  // (console) => the guard's text once (at the door), then one summary line with its count and
+  // omega_max dt: sqrt(g (m l + m_b l) cos(q0) / I_O) dt for the arm and its bob (the scene's
+  // comment), linearised at the initial state
+  std::size_t texts = 0;
+  for (auto at = r.out.find("omega_max = "); at != std::string::npos;
+       at = r.out.find("omega_max = ", at + 1))
+    ++texts;
+  CHECK(texts == 1);
+  const double omegaDt = std::sqrt(9.81 * (1000.0 * 5.0 + 1.0 * 5.0) * std::cos(0.3) /
+                                   (100.0 + 1000.0 * 25.0 + 0.1 + 1.0 * 25.0)) *
+                         0.01;
+  CHECK_THAT(r.out, Catch::Contains("warning: 'arm': 1 time(s) from t = 0 s, value 0.0136"));
+  // (run.json) => one alarm of kind warning: the stiffest body, omega_max dt, the text
+  const std::string json = slurp(dir.file("a/run.json"));
+  const std::string head =
+      "{\"model\":\"\",\"element\":\"arm\",\"kind\":\"warning\",\"severity\":\"warning\","
+      "\"first\":0,"
+      "\"count\":1,\"worst\":";
+  const auto at = json.find(head);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(json.substr(at + head.size())) == Approx(omegaDt).epsilon(1e-4));
+  CHECK_THAT(json, Catch::Contains("\"message\":\"" + scene + ":11:") &&
+                       Catch::Contains("integrator.dt: mechanical system 'mechanics': "
+                                       "explicit_euler at dt = 0.01 s"));
+  // (--fail-on) => alarm counts warnings (exit 4, output kept); safety only the safety alarms
+  const auto strict =
+      runYardsim("run " + scene + " -o " + dir.file("b") + " --quiet --fail-on alarm");
+  CHECK(strict.status == 4);
+  CHECK(std::filesystem::exists(dir.path() / "b/timeseries.csv"));
+  const auto safety =
+      runYardsim("run " + scene + " -o " + dir.file("c") + " --quiet --fail-on safety");
+  CHECK(safety.status == 0);
+  // (the report's rope over its MBL) => a safety alarm: exit 4 under --fail-on safety too
+  const auto mbl =
+      runYardsim("run " + std::string(YARDSIM_SOURCE_DIR) + "/tests/report/data/over_mbl.yaml -o " +
+                 dir.file("d") + " --quiet --fail-on safety");
+  CHECK(mbl.status == 4);
+}
+
+TEST_CASE(
+    "a barge turned 90 degrees in yaw pushed along world x names its sway in its own frame and the "
+    "world direction") {
+  yardsim::testing::SceneDir dir;
+  // (yaw 90 degrees) => the hull's y axis is world -x: a push along world +x (frame: world) is a
+  // sway force of -12.3 kN in the body's own frame
+  std::string text = barge(
+      "  loads:\n    push: {body: hull, point: [0, 0, 1.2], frame: world, series: [[0, 1.23e4, 0, "
+      "0, "
+      "0, 0, 0], [100, 1.23e4, 0, 0, 0, 0, 0]]}\n");
+  text.replace(text.find("rpy_deg: [0, 0, 20]"), 19, "rpy_deg: [0, 0, 90]");
+  const auto scene = dir.write("push.yaml", text);
+  const auto r = runYardsim("run " + scene.string() + " -o " + dir.file("out") + " --quiet");
+  INFO(r.out);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.out,
+             Catch::Contains(
+                 "hull: sway (y) has no stiffness and a net force of 12.3 kN (along the body's "
+                 "own y axis, world direction [+1.000, +0.000, +0.000] where the search stopped)"));
+  CHECK_THAT(r.out, !Catch::Contains("surge"));  // not the world x axis's name
 }

@@ -1,7 +1,9 @@
 // `yardsim sweep` as a user runs it: the same 3 x 3 sweep of the pendulum on local cores
 // (-j 2), on two MPI ranks (mpirun -n 2) and as a Slurm job array (its batch script run once
 // per task with SLURM_ARRAY_TASK_ID set, then --collect) gives the same HDF5 case table, read
-// back by h5py; a sweep killed part-way and resumed gives that table too, running no case twice.
+// back by h5py; a sweep killed part-way and resumed gives that table too, running no case twice;
+// a case above a resource ceiling (steps, recorded rows) is refused at the door unless the scene
+// raises it with `limits:`.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -11,6 +13,7 @@
 #include <csignal>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -168,4 +171,64 @@ TEST_CASE("A bad sweep file is refused at the door with exit 1 and file:line:col
   const Result collect = shell(kExe + " sweep --collect " + dir.file("nowhere"));
   CHECK(collect.status == 1);
   CHECK_THAT(collect.out, Catch::Contains("no plan.yaml"));
+}
+
+namespace {
+// (record interval, extra root keys) => the sweep tests' pendulum scene in DIR with that record
+// interval (`record:` takes no parameter: every case records at the scene's), and a sweep file
+// over VARY ("{dt: [...]}", "{speed_deg: [...]}")
+fs::path ceilingSweep(yardsim::testing::SceneDir& dir, const std::string& vary,
+                      const std::string& interval = "0.05", const std::string& extra = "") {
+  std::ifstream in(std::string(YARDSIM_SOURCE_DIR) +
+                   "/tests/studies/data/pendulum_sweep/scene.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string record = "  interval: 0.05\n";
+  REQUIRE(text.find(record) != std::string::npos);
+  text.replace(text.find(record), record.size(), "  interval: " + interval + "\n");
+  dir.write("scene.yaml", text + extra);
+  return dir.write("sweep.yaml", "sweep:\n  scene: scene.yaml\n  vary: " + vary +
+                                     "\n  collect: [max(pendulum.joint0.q)]\n");
+}
+}  // namespace
+
+TEST_CASE("A sweep whose case would step more than the ceiling is refused at the door") {
+  // (dt = 1e-9 s over until = 6 s) => 6e9 steps, above the 1e8 ceiling: exit 1 before any case
+  yardsim::testing::SceneDir dir;
+  const fs::path sweep = ceilingSweep(dir, "{dt: [1.0e-9, 0.002]}");
+  const Result r = shell(kExe + " sweep " + sweep.string() + " -o " + dir.file("out"));
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out, Catch::Contains("error: components.pendulum.params.dt: a step of 1e-09 s over "
+                                    "until = 6 s is 6e+09 steps, above the ceiling of 1e+08") &&
+                        Catch::Contains("`limits: {steps: 6e+09}`") &&
+                        Catch::Contains("no case was run"));
+  CHECK_THAT(r.out,
+             Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: components.pendulum(.|\n)*"));
+  CHECK_FALSE(fs::exists(dir.path() / "out/cases"));
+}
+
+TEST_CASE(
+    "A sweep whose case would record more rows than the ceiling is refused at the door unless the "
+    "scene opts in") {
+  // (record.interval = 1e-6 s over 6 s) => 6e6 rows, above the 1e6 ceiling
+  yardsim::testing::SceneDir dir;
+  const fs::path sweep = ceilingSweep(dir, "{speed_deg: [4, 6]}", "1.0e-6");
+  const Result r = shell(kExe + " sweep " + sweep.string() + " -o " + dir.file("out"));
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.out,
+             Catch::Matches("(.|\n)*scene.yaml:[0-9]+:[0-9]+: error: record.interval: a record "
+                            "interval of 1e-06 s over until = 6 s is 6e\\+06 recorded rows, above "
+                            "the ceiling of 1e\\+06(.|\n)*"));
+  CHECK_FALSE(fs::exists(dir.path() / "out/cases"));
+  // (the scene's `limits: {rows: 1.0e7}`) => the door lets it through (a Slurm array is only
+  // written, nothing is run)
+  yardsim::testing::SceneDir opted;
+  const fs::path raised =
+      ceilingSweep(opted, "{speed_deg: [4, 6]}", "1.0e-6", "limits: {rows: 1.0e7}\n");
+  const Result ok =
+      shell(kExe + " sweep " + raised.string() + " -o " + opted.file("out") + " --slurm-array");
+  INFO(ok.out);
+  CHECK(ok.status == 0);
+  CHECK(fs::exists(opted.path() / "out/sweep.sbatch"));
 }

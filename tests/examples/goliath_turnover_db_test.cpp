@@ -45,12 +45,12 @@ TEST_CASE(
   auto r = shell(kSource + "/examples/yard/build_fixture.sh " + kYardsim + " " + db);
   INFO(r.out);
   REQUIRE(r.status == 0);
-  r = shell(kYardsim + " run " + kSource + "/examples/goliath_turnover/scene.yaml -o " +
-            dir.file("typed"));
+  r = shell(kYardsim + " run " + kSource +
+            "/examples/goliath_turnover/scene.yaml --trace jsonl -o " + dir.file("typed"));
   INFO(r.out);
   REQUIRE(r.status == 0);
   r = shell("env YARDSIM_DB=" + db + " " + kYardsim + " run " + kSource +
-            "/examples/yard/goliath_turnover.yaml -o " + dir.file("db"));
+            "/examples/yard/goliath_turnover.yaml --trace jsonl -o " + dir.file("db"));
   INFO(r.out);
   REQUIRE(r.status == 0);
   const std::string typedTrace = slurp(dir.path() / "typed/trace.jsonl");

@@ -133,3 +133,52 @@ TEST_CASE("over_mbl's worst value is the rope's peak tension not the MBL it cros
   CHECK(json["alarms"][0]["worst"].as<double>() == mbl.worst);
   CHECK(json["ropes"][0]["peak"].as<double>() == mbl.worst);
 }
+
+TEST_CASE("a warning of the scene is one warning alarm per text and counts its repeats") {
+  // (the stiffness guard's warning, twice; another one) => two warnings, the first counted twice,
+  // each reported once at its first occurrence, with its element, value and located text
+  std::vector<run::Alarm> firsts;
+  run::AlarmMonitor m([&](const run::Alarm& a) { firsts.push_back(a); });
+  models::Diagnostics d;
+  d.warning({"s.yaml", 2, 13}, "integrator.dt", "mechanical system 'm': too long a step", {},
+            "hook", 3.5);
+  d.warning({"s.yaml", 9, 3}, "components.x", "input port 'in' of 'x' is not connected");
+  m.warn(d.all()[0], 0.0);
+  m.warn(d.all()[0], 0.0);
+  m.warn(d.all()[1], 0.0);
+  REQUIRE(m.alarms().size() == 2);
+  CHECK(firsts.size() == 2);
+  CHECK(m.warningCount() == 2);
+  CHECK(m.alarmCount() == 0);  // warnings are not safety alarms
+  const run::Alarm& guard = m.alarms()[0];
+  CHECK(guard.kind == "warning");
+  CHECK(guard.severity == "warning");
+  CHECK(guard.element == "hook");
+  CHECK(guard.count == 2);
+  CHECK(guard.worst == 3.5);
+  CHECK(guard.message == "s.yaml:2:13: integrator.dt: mechanical system 'm': too long a step");
+  const run::Alarm& port = m.alarms()[1];
+  CHECK(port.element == "components.x");  // no element: its key path
+  CHECK(std::isnan(port.worst));
+  // (a restart that finds them in its checkpoint) => not counted again
+  m.warn(d.all()[0], 5.0, false);
+  CHECK(m.alarms()[0].count == 2);
+  CHECK(m.alarms()[0].first == 0.0);
+}
+
+TEST_CASE("worsen moves a known alarm's worst value in the direction that is worse") {
+  run::AlarmMonitor m;
+  m.raise("mb", "low", "crossed", true, 1.0, -2.0);
+  m.worsen("mb", "low", "crossed", false, 1.5, -2.5);    // a lower limit: smaller is worse
+  m.worsen("mb", "low", "crossed", false, 2.0, -2.2);    // not worse
+  m.worsen("mb", "other", "crossed", false, 2.0, -9.0);  // unknown: left alone
+  REQUIRE(m.alarms().size() == 1);
+  CHECK(m.alarms()[0].worst == -2.5);
+  CHECK(m.alarms()[0].worstAt == 1.5);
+  CHECK(m.alarms()[0].count == 1);
+  m.raise("mb", "high", "crossed", true, 1.0, 0.4);  // an upper limit on a positive quantity
+  m.worsen("mb", "high", "crossed", true, 1.2, 0.7);
+  m.worsen("mb", "high", "crossed", true, 1.3, 0.5);
+  CHECK(m.alarms()[1].worst == 0.7);
+  CHECK(m.alarms()[1].worstAt == 1.2);
+}

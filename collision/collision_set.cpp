@@ -108,8 +108,9 @@ double CollisionSet::penetration(const forces::Stage& s) const {
   const auto& got = collected(s, t);
   double deepest = -std::numeric_limits<double>::infinity();
   for (const auto& p : got.points) deepest = std::max(deepest, p.depth);
-  if (got.points.empty()) return std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0;
-  return std::max(deepest, ground);
+  const double out = got.points.empty() ? (std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0)
+                                        : std::max(deepest, ground);
+  return out;
 }
 
 forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) const {

@@ -78,8 +78,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
         const auto k = static_cast<std::size_t>(r);
         if (!clearanceRopeIds_[k].empty()) continue;
         const RopeShape& rope = spec_.ropes[k];
-        clearanceRopeIds_[k] =
-            clearance_.addRope(ropePath(rope, kin.X_WB), rope.diameter, {rope.name, {ropeOwner(k)}});
+        clearanceRopeIds_[k] = clearance_.addRope(ropePath(rope, kin.X_WB), rope.diameter,
+                                                  {rope.name, {ropeOwner(k)}});
         clearanceOwnerName_.resize(static_cast<std::size_t>(clearance_.size()), -1 - r);
         ignoreAttached(k, clearance_);
       }

@@ -129,8 +129,8 @@ class BodyCollision {
     double penetration = 0.0;
   };
   ReadSlot slots_[2];
-  int slot_ = -1;      // the slot at X_WB_, or -1 (none yet)
-  int lastRead_ = 0;   // the slot read last (the other one is replaced first)
+  int slot_ = -1;     // the slot at X_WB_, or -1 (none yet)
+  int lastRead_ = 0;  // the slot read last (the other one is replaced first)
   // () => the slot at X_WB_, made (replacing the one read least recently) when there is none
   ReadSlot& readSlot();
   std::vector<char> touchesGround_;  // per shape: not ignored with the world

@@ -1,8 +1,11 @@
-#include "scene/stop_on_check.hpp"
+#include "scene/event_checks.hpp"
 
 #include <algorithm>
 #include <set>
+#include <sstream>
 
+#include "dynamics/data.hpp"
+#include "dynamics/kinematics.hpp"
 #include "mechanics/system.hpp"
 #include "scene/coupling_graph.hpp"
 #include "scene/mechanical_systems.hpp"
@@ -54,6 +57,34 @@ void checkStopOn(const Scene& scene, models::Diagnostics& diags) {
                   "no event '" + name + "' in the scene's mechanical systems (the valid names: " +
                       (valid.empty() ? std::string("none") : valid) + ")",
                   hint);
+    }
+  }
+}
+
+void checkEventsAtStart(const Scene& scene, models::Diagnostics& diags) {
+  for (const auto& system : scene.systems) {
+    // (systems with a provider built from the whole system: collision sets) => checked
+    if (!system->built ||
+        std::none_of(system->built->providers.begin(), system->built->providers.end(),
+                     [](const auto& p) { return bool(p.buildFromSystem); }))
+      continue;
+    const mechanics::BuiltMechanics& b = *system->built;
+    const mechanics::System sys(b, {}, system->name);
+    if (sys.providerEvents().empty()) continue;
+    // (initial state as given) => its kinematics, the stage the event functions read
+    dynamics::Data data(b.model);
+    dynamics::forwardKinematics(b.model, data, b.q0, b.v0);
+    const forces::Stage stage{0.0, b.model, data, b.q0, b.v0};
+    for (const forces::ProviderEvent* e : sys.providerEvents()) {
+      if (!e->falling.empty() || !(e->g(stage) > 0.0)) continue;
+      std::ostringstream s;
+      s << "mechanical system '" << system->name << "': '" << e->element << "' is past its '"
+        << e->rising << "' event at the start (value " << (e->value ? e->value(stage) : 0.0)
+        << (e->detail ? "; " + e->detail(stage) : std::string()) << "): events are located on "
+        << "crossings only, so none is raised until it comes back and crosses again";
+      const bool top = e->element.find('.') == std::string::npos;
+      diags.warning(scene.root.where,
+                    top ? "clearance." + e->element : "mechanics.collision." + e->element, s.str());
     }
   }
 }

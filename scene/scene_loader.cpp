@@ -16,7 +16,7 @@
 #include "scene/run_settings_reader.hpp"
 #include "scene/sha256.hpp"
 #include "scene/stiffness_guard.hpp"
-#include "scene/stop_on_check.hpp"
+#include "scene/event_checks.hpp"
 #include "scene/yaml_source.hpp"
 #include "scene/yard_reader.hpp"
 
@@ -533,6 +533,7 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkStopOn(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkEventsAtStart(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors())
     checkResourceLimits(*scene, scene->until, "", r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkInitialLoops(*scene, r.diagnostics);

@@ -1,6 +1,7 @@
-// The door check of actors' stop_on lists: an unknown element or kind is refused at the list
-// (file:line:col) with its key path and the valid names; full names, trailing parts and every
-// kind of event a system raises (a watch's, a rope's, a drive's) are accepted.
+// The door checks of a system's events: an unknown element or kind in an actor's stop_on list is
+// refused at the list (file:line:col) with its key path and the valid names; full names, trailing
+// parts and every kind of event a system raises (a watch's, a rope's, a drive's) are accepted; a
+// clearance watch already touching at the start is warned about (its events count crossings only).
 #include <catch2/catch.hpp>
 
 #include "scene/scene_loader.hpp"
@@ -11,8 +12,9 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-// (stop_on list) => a scene whose actor `haul` stops on it: a rope beside a cart, watched
-std::string withStopOn(const std::string& stopOn) {
+// (stop_on list, the cart's q0) => a scene whose actor `haul` stops on it: a rope (diameter
+// 0.04 m, on x = 0) beside a cart whose face is at x = q0 - 1, watched
+std::string withStopOn(const std::string& stopOn, const std::string& q0 = "3") {
   return R"(schema_version: 1
 integrator: {method: rk4, dt: 0.01}
 components:
@@ -29,7 +31,8 @@ mechanics:
       inertia: [1, 1, 1]
     cart:
       parent: hook
-      joint: {name: cart_x, type: prismatic, axis: [1, 0, 0], q0: 3}
+      joint: {name: cart_x, type: prismatic, axis: [1, 0, 0], q0: )" +
+         q0 + R"(}
       mass: 1000
       inertia: [100, 100, 100]
       geometry: {box: [2, 2, 2]}
@@ -70,4 +73,22 @@ TEST_CASE("stop_on: full names and trailing parts of the system's events are acc
     CHECK_FALSE(r.diagnostics.hasErrors());
     if (r.diagnostics.hasErrors()) WARN(r.diagnostics.report());
   }
+}
+
+TEST_CASE("events at start: a watch that touches from the start is warned about") {
+  testing::SceneDir dir;
+  // the cart's face at x = 0.01: the rope's capsule (radius 0.02) 0.01 m into it
+  const auto touching = scene::loadScene(dir.write("t.yaml", withStopOn("[touched]", "1.01")));
+  REQUIRE_FALSE(touching.diagnostics.hasErrors());
+  const std::string w = touching.diagnostics.report();
+  CHECK_THAT(w, Contains("warning: clearance.rope_cart:") &&
+                    Contains("'rope_cart' is past its 'touched' event at the start (value -0.01") &&
+                    Contains("'clearance_below'") && Contains("hoist at (0.020,"));
+  // 0.5 m away: below the 1 m threshold, not touching
+  const auto near = scene::loadScene(dir.write("n.yaml", withStopOn("[touched]", "1.5")));
+  CHECK_THAT(near.diagnostics.report(), Contains("'clearance_below'"));
+  CHECK_THAT(near.diagnostics.report(), !Contains("'touched'"));
+  // 2 m away: nothing
+  const auto apart = scene::loadScene(dir.write("a.yaml", withStopOn("[touched]")));
+  CHECK_THAT(apart.diagnostics.report(), !Contains("at the start"));
 }

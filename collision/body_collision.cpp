@@ -145,21 +145,9 @@ BodyCollision::ReadSlot& BodyCollision::readSlot() {
     s.X_WB = X_WB_;
     s.valid.assign(spec_.watches.size(), 0);
     s.readings.resize(spec_.watches.size());
-    s.penetrationValid = false;
   }
   lastRead_ = slot_;
   return slots_[slot_];
-}
-
-const double* BodyCollision::knownPenetration() const {
-  if (slot_ < 0 || !slots_[slot_].penetrationValid) return nullptr;
-  return &slots_[slot_].penetration;
-}
-
-void BodyCollision::rememberPenetration(double value) {
-  ReadSlot& s = readSlot();
-  s.penetration = value;
-  s.penetrationValid = true;
 }
 
 void BodyCollision::groundContacts(const BodyShape& s, const Transform& X_WS,

@@ -89,10 +89,6 @@ class BodyCollision {
   double groundPenetration() const;
   // (after update, watch) => its closest approach
   WatchReading clearance(std::size_t watch);
-  // (after update) => the value remembered at these poses by rememberPenetration, if any
-  const double* knownPenetration() const;
-  // (value at the current poses) => remembered with them (the readings of clearance())
-  void rememberPenetration(double value);
 
   const BodyCollisionSpec& spec() const { return spec_; }
   const CollisionWorld& contactWorld() const { return contact_; }
@@ -120,13 +116,11 @@ class BodyCollision {
   bool clearancePosed_ = false;  // the clearance world is at X_WB_
   // What was read at the poses of the last two states that were read (the locator asks for the
   // event functions at the start of a step, the end of the previous one, again): the readings of
-  // each watch and the penetration, per pose set; a slot is matched by exact equality of poses.
+  // each watch per pose set; a slot is matched by exact equality of poses.
   struct ReadSlot {
     std::vector<Transform> X_WB;
     std::vector<char> valid;  // per watch
     std::vector<WatchReading> readings;
-    bool penetrationValid = false;
-    double penetration = 0.0;
   };
   ReadSlot slots_[2];
   int slot_ = -1;     // the slot at X_WB_, or -1 (none yet)

@@ -8,6 +8,7 @@
 
 #include "models/port_types.hpp"
 #include "scene/coupling_graph.hpp"
+#include "scene/event_checks.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/loop_gap_check.hpp"
 #include "scene/mechanical_systems.hpp"
@@ -16,7 +17,6 @@
 #include "scene/run_settings_reader.hpp"
 #include "scene/sha256.hpp"
 #include "scene/stiffness_guard.hpp"
-#include "scene/event_checks.hpp"
 #include "scene/yaml_source.hpp"
 #include "scene/yard_reader.hpp"
 

@@ -78,8 +78,8 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
         const auto k = static_cast<std::size_t>(r);
         if (!clearanceRopeIds_[k].empty()) continue;
         const RopeShape& rope = spec_.ropes[k];
-        clearanceRopeIds_[k] =
-            clearance_.addRope(ropePath(rope, kin), rope.diameter, {rope.name, {ropeOwner(k)}});
+        clearanceRopeIds_[k] = clearance_.addRope(ropePath(rope, kin.X_WB), rope.diameter,
+                                                  {rope.name, {ropeOwner(k)}});
         clearanceOwnerName_.resize(static_cast<std::size_t>(clearance_.size()), -1 - r);
         ignoreAttached(k, clearance_);
       }
@@ -100,41 +100,54 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
     watchIds_.push_back(
         clearance_.addWatch(std::move(a), std::move(b), std::max(w.below, w.margin)));
   }
-  readingValid_.assign(spec_.watches.size(), 0);
-  readings_.resize(spec_.watches.size());
 }
 
-const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r, const dynamics::Data& kin) {
+const std::vector<Vector3>& BodyCollision::ropePath(const RopeShape& r,
+                                                    const std::vector<Transform>& X_WB) {
   scratch_.clear();
   for (const auto& [body, p_B] : r.path)
-    scratch_.push_back(body == 0 ? p_B : kin.X_WB[static_cast<std::size_t>(body)].actPoint(p_B));
+    scratch_.push_back(body == 0 ? p_B : X_WB[static_cast<std::size_t>(body)].actPoint(p_B));
   return scratch_;
 }
 
+namespace {
+
+// (pose lists) => equal, exactly (the world's entry 0 is not compared)
+bool samePoses(const std::vector<Transform>& a, const std::vector<Transform>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 1; i < a.size(); ++i)
+    if (a[i].p != b[i].p || a[i].R != b[i].R) return false;
+  return true;
+}
+
+}  // namespace
+
 void BodyCollision::update(const dynamics::Data& kin) {
   // (poses) => nothing to do when no body moved since the last update
-  bool moved = !posed_;
-  lastX_WB_.resize(kin.X_WB.size());
-  for (std::size_t b = 1; b < kin.X_WB.size(); ++b) {
-    const Transform& X = kin.X_WB[b];
-    if (moved || X.p != lastX_WB_[b].p || X.R != lastX_WB_[b].R) {
-      moved = true;
-      lastX_WB_[b] = X;
-    }
-  }
+  if (posed_ && samePoses(kin.X_WB, X_WB_)) return;
+  X_WB_.assign(kin.X_WB.begin(), kin.X_WB.end());
   posed_ = true;
-  if (!moved) return;
-  std::fill(readingValid_.begin(), readingValid_.end(), 0);
+  clearancePosed_ = false;
+  slot_ = -1;
+  for (int k = 0; k < 2; ++k)
+    if (samePoses(slots_[k].X_WB, X_WB_)) slot_ = k;
   for (std::size_t i = 0; i < spec_.shapes.size(); ++i) {
     const BodyShape& s = spec_.shapes[i];
-    if (s.body == 0) continue;  // the world's shapes never move
-    const Transform X_WS = poseOf(s, kin);
-    if (contactIds_[i] >= 0) contact_.setPose(contactIds_[i], X_WS);
-    if (clearanceShapeIds_[i] >= 0) clearance_.setPose(clearanceShapeIds_[i], X_WS);
+    if (s.body == 0 || contactIds_[i] < 0) continue;  // the world's shapes never move
+    contact_.setPose(contactIds_[i], poseOf(s, kin));
   }
-  for (std::size_t r = 0; r < spec_.ropes.size(); ++r)
-    if (!clearanceRopeIds_[r].empty())
-      clearance_.setRopePath(clearanceRopeIds_[r], ropePath(spec_.ropes[r], kin));
+}
+
+BodyCollision::ReadSlot& BodyCollision::readSlot() {
+  if (slot_ < 0) {
+    slot_ = 1 - lastRead_;
+    ReadSlot& s = slots_[slot_];
+    s.X_WB = X_WB_;
+    s.valid.assign(spec_.watches.size(), 0);
+    s.readings.resize(spec_.watches.size());
+  }
+  lastRead_ = slot_;
+  return slots_[slot_];
 }
 
 void BodyCollision::groundContacts(const BodyShape& s, const Transform& X_WS,
@@ -198,10 +211,22 @@ void BodyCollision::contacts(std::vector<forces::ContactPoint>& out) {
 }
 
 WatchReading BodyCollision::clearance(std::size_t watch) {
-  if (readingValid_[watch]) return readings_[watch];
+  ReadSlot& slot = readSlot();
+  if (slot.valid[watch]) return slot.readings[watch];
+  if (!clearancePosed_) {  // (poses of the last update) => the watched shapes and ropes there
+    for (std::size_t i = 0; i < spec_.shapes.size(); ++i) {
+      const BodyShape& s = spec_.shapes[i];
+      if (s.body != 0 && clearanceShapeIds_[i] >= 0)
+        clearance_.setPose(clearanceShapeIds_[i], X_WB_[static_cast<std::size_t>(s.body)] * s.X_BS);
+    }
+    for (std::size_t r = 0; r < spec_.ropes.size(); ++r)
+      if (!clearanceRopeIds_[r].empty())
+        clearance_.setRopePath(clearanceRopeIds_[r], ropePath(spec_.ropes[r], X_WB_));
+    clearancePosed_ = true;
+  }
   const Clearance& c = clearance_.clearance(watchIds_[watch]);
-  readingValid_[watch] = 1;
-  WatchReading& out = readings_[watch];
+  slot.valid[watch] = 1;
+  WatchReading& out = slot.readings[watch];
   out = {};
   out.distance = c.closest.distance;
   if (!c.withinMargin) return out;

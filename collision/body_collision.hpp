@@ -97,8 +97,8 @@ class BodyCollision {
   // (shape, its world pose) => its contact points with the ground, appended to out
   void groundContacts(const BodyShape& s, const Transform& X_WS,
                       std::vector<forces::ContactPoint>& out) const;
-  // (rope, kinematics) => its path points in the world, in scratch_
-  const std::vector<Vector3>& ropePath(const RopeShape& r, const dynamics::Data& kin);
+  // (rope, body poses X_WB) => its path points in the world, in scratch_
+  const std::vector<Vector3>& ropePath(const RopeShape& r, const std::vector<Transform>& X_WB);
 
   BodyCollisionSpec spec_;
   CollisionWorld contact_, clearance_;
@@ -108,12 +108,25 @@ class BodyCollision {
   std::vector<int> clearanceOwnerName_;  // per clearance object: shape index, or -1 - rope index
   std::vector<int> watchIds_;
   std::vector<Vector3> scratch_;
-  // the last poses given (per body index) and the readings at them: an update with the same
-  // poses moves nothing, and a watch asked again at them is not queried again
-  std::vector<Transform> lastX_WB_;
+  // The poses of the last update (per body index). The contact world is moved at every update
+  // (forces need it at every stage); the clearance world only when a watch is read at poses it
+  // is not at (event functions and channels read the committed states, not the stages).
+  std::vector<Transform> X_WB_;
   bool posed_ = false;
-  std::vector<char> readingValid_;
-  std::vector<WatchReading> readings_;
+  bool clearancePosed_ = false;  // the clearance world is at X_WB_
+  // What was read at the poses of the last two states that were read (the locator asks for the
+  // event functions at the start of a step, the end of the previous one, again): the readings of
+  // each watch per pose set; a slot is matched by exact equality of poses.
+  struct ReadSlot {
+    std::vector<Transform> X_WB;
+    std::vector<char> valid;  // per watch
+    std::vector<WatchReading> readings;
+  };
+  ReadSlot slots_[2];
+  int slot_ = -1;     // the slot at X_WB_, or -1 (none yet)
+  int lastRead_ = 0;  // the slot read last (the other one is replaced first)
+  // () => the slot at X_WB_, made (replacing the one read least recently) when there is none
+  ReadSlot& readSlot();
   std::vector<char> touchesGround_;  // per shape: not ignored with the world
   std::vector<std::vector<Vector3>>
       groundPoints_;  // per shape: the points tested against the ground, B

@@ -17,6 +17,22 @@ std::string point(const Vector3& p) {
   return s.str();
 }
 
+// (contact points and the law's responses, body) => where the normal forces on the body act:
+// their point of application, the force-weighted mean of its points (world, m); NaN without any
+Vector3 applicationPoint(const forces::ContactForce::Scratch& got, int body) {
+  Vector3 sum = Vector3::Zero();
+  double weight = 0.0;
+  for (std::size_t k = 0; k < got.points.size(); ++k) {
+    const auto& p = got.points[k];
+    if (p.bodyA != body && p.bodyB != body) continue;
+    const double w = std::max(0.0, got.responses[k].normalForce);
+    sum += w * p.p_W;
+    weight += w;
+  }
+  if (!(weight > 0.0)) return Vector3::Constant(std::numeric_limits<double>::quiet_NaN());
+  return sum / weight;
+}
+
 }  // namespace
 
 CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> world,
@@ -83,6 +99,13 @@ void CollisionSet::addContactOutputs(
                           }
                           return fz;
                         }});
+    // (stage) => where the body's contact forces act, x, y, z (NaN without contact)
+    for (int axis = 0; axis < 3; ++axis)
+      outputs_.push_back(
+          {bodyName + ".p" + "xyz"[axis], "m", [this, b = body, axis](const forces::Stage& s) {
+             std::unique_ptr<forces::ProviderScratch> t;
+             return applicationPoint(collected(s, t), b)[axis];
+           }});
   }
   events_.push_back({this->name(), "contact", "release",
                      [this](const forces::Stage& s) { return penetration(s); },
@@ -108,8 +131,9 @@ double CollisionSet::penetration(const forces::Stage& s) const {
   const auto& got = collected(s, t);
   double deepest = -std::numeric_limits<double>::infinity();
   for (const auto& p : got.points) deepest = std::max(deepest, p.depth);
-  if (got.points.empty()) return std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0;
-  return std::max(deepest, ground);
+  const double out = got.points.empty() ? (std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0)
+                                        : std::max(deepest, ground);
+  return out;
 }
 
 forces::StiffnessHint CollisionSet::stiffnessHint(const dynamics::Model& model) const {

@@ -5,6 +5,8 @@
 //   points [-]            contact points at the state
 //   normal_force [N]      the sum of their normal forces
 //   <body>.fz [N]         the vertical (world z) component of the contact forces on each body
+//   <body>.px|py|pz [m]   where the normal forces on each body act (their force-weighted mean
+//                         point, world), NaN without contact
 //   <watch>.distance [m]  each clearance watch's minimum distance (its range when farther)
 // Events (forces/provider_events.hpp):
 //   <set>: contact / release   the first contact point appears / the last one goes (g: the

@@ -8,6 +8,7 @@
 
 #include "models/port_types.hpp"
 #include "scene/coupling_graph.hpp"
+#include "scene/event_checks.hpp"
 #include "scene/integrator_reader.hpp"
 #include "scene/loop_gap_check.hpp"
 #include "scene/mechanical_systems.hpp"
@@ -531,6 +532,8 @@ LoadResult loadScene(const fs::path& file, const ParamOverrides& overrides) {
   if (scene && !r.diagnostics.hasErrors()) checkCouplingGraph(scene->root, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkElementReferences(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) bindStartRules(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkStopOn(*scene, r.diagnostics);
+  if (scene && !r.diagnostics.hasErrors()) checkEventsAtStart(*scene, r.diagnostics);
   if (scene && !r.diagnostics.hasErrors())
     checkResourceLimits(*scene, scene->until, "", r.diagnostics);
   if (scene && !r.diagnostics.hasErrors()) checkInitialLoops(*scene, r.diagnostics);

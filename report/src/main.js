@@ -128,7 +128,12 @@ async function main() {
   const levels = ((data.run && data.run.systems) || []).map(x => x.water_level).filter(x => x !== undefined);
   // (collision sets: a `<set>.normal_force` channel) => their `<set>.<body>.fz` channels
   const sets = recorded.filter(s => /\.normal_force$/.test(s.name)).map(s => s.name.replace(/normal_force$/, ''));
-  const contacts = recorded.filter(s => s.unit === 'N' && /\.fz$/.test(s.name) && sets.some(p => s.name.startsWith(p)));
+  // (each body's fz) => with its point of application `<set>.<body>.px|py|pz` when recorded
+  const contacts = recorded.filter(s => s.unit === 'N' && /\.fz$/.test(s.name) && sets.some(p => s.name.startsWith(p)))
+    .map(s => {
+      const point = ['px', 'py', 'pz'].map(k => recorded.find(r => r.name === s.name.replace(/fz$/, k)));
+      return { name: s.name, values: s.values, point: point.every(Boolean) ? point.map(r => r.values) : null };
+    });
   if (data.glb) replay = await makeReplay(bytes(data.glb), replayBox, { water: levels.length ? levels[0] : null, contacts, time });
   else {
     replayBox.className = '';

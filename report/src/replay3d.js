@@ -10,7 +10,7 @@ import { contactArrows, waterSurface } from './overlays.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
-// (glb bytes, container, overlays {water: level in m or null, contacts: [{name, values}], time})
+// (glb bytes, container, overlays {water: level in m or null, contacts: [{name, values, point}], time})
 // => Promise of {bodies, setTime(t), render(), scene, duration, water, arrows}
 export function makeReplay(glb, container, overlays = {}) {
   return new Promise((resolve, reject) => {
@@ -101,7 +101,7 @@ function build(gltf, container, overlays) {
   grid.position.set(centre.x, Math.min(0, bounds.min.y), centre.z);
   scene.add(grid);
   const water = overlays.water !== null && overlays.water !== undefined ? waterSurface(scene, world, overlays.water, centre, gridSize) : null;
-  const arrows = contactArrows(scene, bodies, overlays.contacts || [], overlays.time, radius);
+  const arrows = contactArrows(scene, world, bodies, overlays.contacts || [], overlays.time, radius);
   const camera = new PerspectiveCamera(40, 1, radius / 100, radius * 100);
   camera.position.copy(centre).add(new Vector3(0.8, 0.45, 1.6).normalize().multiplyScalar(radius * 2.6));
   const renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });

@@ -265,6 +265,26 @@ async function checkReport(page) {
     });
     check('contact forces drawn as arrows at the end of the run', arrows.length > 0 && arrows.every(a => a.visible === Math.abs(a.force) > 1e-3 * a.max) && arrows.some(a => a.visible),
       JSON.stringify(arrows));
+    // (point of application channels <set>.<body>.px|py|pz) => a dot at the last recorded point,
+    // z-up world (x, y, z) drawn at three.js's y-up (x, z, -y)
+    const last = name => {  // (channel) => its last sample (float32, as the page has it)
+      const x = data.series.find(s => s.name === name);
+      if (!x) return undefined;
+      const v = new Float32Array(Uint8Array.from(Buffer.from(x.data, 'base64')).buffer);
+      return v[v.length - 1];
+    };
+    const expected = contacts.map(c => ({ channel: c.name, p: ['px', 'py', 'pz'].map(k => last(c.name.replace(/fz$/, k))) }))
+      .filter(e => e.p.every(v => v !== undefined));
+    if (expected.length) {
+      const dots = await page.evaluate(() => window.yardsim.replay.arrows.list.map(a => ({ channel: a.channel, visible: a.dot.visible, p: [a.dot.position.x, a.dot.position.y, a.dot.position.z] })));
+      const ok = expected.every(e => {
+        const d = dots.find(x => x.channel === e.channel);
+        if (!e.p.every(Number.isFinite)) return d ? !d.visible : true;
+        const want = [e.p[0], e.p[2], -e.p[1]];
+        return d && d.visible && want.every((w, i) => Math.abs(d.p[i] - w) < 1e-6 * (1 + Math.abs(w)));
+      });
+      check('contact points drawn where the forces act at the end of the run', ok && expected.some(e => e.p.every(Number.isFinite)), JSON.stringify({ expected, dots }));
+    }
     await page.evaluate(() => window.yardsim.setTime(0, 'test'));
   }
 

@@ -16,7 +16,8 @@
 
 using namespace yardsim;
 
-TEST_CASE("goliath set-down: the supports carry the weight and the rope clearances are reported", "[long]") {
+TEST_CASE("goliath set-down: the supports carry the weight and the rope clearances are reported",
+          "[long]") {
   testing::SceneDir dir;
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                        "/examples/goliath_turnover/scene_setdown.yaml");
@@ -42,6 +43,23 @@ TEST_CASE("goliath set-down: the supports carry the weight and the rope clearanc
   CHECK(end[col("collision.block.fz[N]")] == Approx(supports).epsilon(1e-9));
   CHECK(supports > 0.9 * weight);  // the supports carry the block
   CHECK(supports + ropes == Approx(weight).epsilon(2e-3));
+  // (where the forces act) => the block's point of application is the supports' points weighted
+  // by their reactions (the same contact points, seen from both sides), between the supports'
+  // centres (x = 22 and 38 m), on their tops; none before contact (NaN)
+  const double fore = -end[col("collision.support_fore.fz[N]")],
+               aft = -end[col("collision.support_aft.fz[N]")];
+  for (const char* axis : {"px", "py", "pz"}) {
+    const std::string a(axis);
+    const double mean = (fore * end[col("collision.support_fore." + a + "[m]")] +
+                         aft * end[col("collision.support_aft." + a + "[m]")]) /
+                        (fore + aft);
+    CHECK(end[col("collision.block." + a + "[m]")] == Approx(mean).margin(0.05));
+    CHECK(std::isnan(csv.rows[0][col("collision.block." + a + "[m]")]));
+  }
+  CHECK(end[col("collision.block.px[m]")] > 22.0);
+  CHECK(end[col("collision.block.px[m]")] < 38.0);
+  CHECK(end[col("collision.support_fore.px[m]")] == Approx(22.0).margin(2.0));  // on its 4 m top
+  CHECK(end[col("collision.support_aft.px[m]")] == Approx(38.0).margin(2.0));
   // (the whole operation) => the minimum clearances, all positive, the block's inside its range
   double minBlock = 1e9, minBeam = 1e9;
   for (const auto& row : csv.rows) {

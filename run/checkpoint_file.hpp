@@ -16,7 +16,7 @@
 
 namespace yardsim::run {
 
-inline constexpr int kCheckpointFormat = 1;
+inline constexpr int kCheckpointFormat = 2;  // 2: alarms carry their message and worst time
 
 // (scene) => SHA-256 over its root file's SHA-256 and its resolved listing (what would run)
 std::string sceneFingerprint(const scene::Scene& scene);

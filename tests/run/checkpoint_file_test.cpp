@@ -50,7 +50,7 @@ TEST_CASE("a checkpoint file reads back its time and payload exactly") {
   CHECK(back.t == 0.1 + 0.2);
   CHECK(back.payload == payload);
   CHECK_FALSE(std::filesystem::exists(file.string() + ".tmp"));
-  CHECK(slurp(file).rfind("YARDSIM-CHECKPOINT 1\nyardsim " + std::string(run::kVersion) + "\n",
+  CHECK(slurp(file).rfind("YARDSIM-CHECKPOINT " + std::to_string(run::kCheckpointFormat) + "\nyardsim " + std::string(run::kVersion) + "\n",
                           0) == 0);
 }
 

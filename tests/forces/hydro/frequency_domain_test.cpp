@@ -1,0 +1,93 @@
+// The frequency-domain solve of the time-domain solver's discrete system (frequency_domain.hpp):
+// (1) its A(w), B(w) equal those of forced oscillation in the time domain on the same panels (the
+// two differ by the time stepping alone), and its excitation satisfies the Haskind relation with
+// its own damping; (2) a box barge's heave and roll RAOs in regular beam seas and heave and pitch
+// RAOs in head seas, measured from time-domain runs of the `rankine_td` provider (regular_wave_run
+// .hpp), agree with RAO = X / (-w^2 (M + A) + i w B + C) from the same panels.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "forces/hydro/forced_oscillation.hpp"
+#include "forces/hydro/frequency_domain.hpp"
+#include "forces/hydro/regular_wave_run.hpp"
+#include "td_fixtures.hpp"
+
+using namespace yardsim;
+using namespace yardsim::forces::hydro;
+using namespace yardsim::forces::hydro::test;
+
+TEST_CASE("frequency-domain added mass and damping equal forced oscillation on the same panels") {
+  const RankineTdModel model(cubeSphere(1.0, 6), dynamics::Transform{}, hemisphereSettings(1.0));
+  const double omega = std::sqrt(kG * 1.0);
+  const FrequencyDomainSolver solver(model);
+  const FrequencyResponse r = solver.solve(omega, {0.0});
+  ForcedOscillationSettings f;
+  f.omega = omega;
+  f.dt = 2.0 * std::numbers::pi / omega / 80.0;
+  for (int per : {40, 80, 160}) for (int np : {10, 20}) {
+    ForcedOscillationSettings f2 = f; f2.dt = 2.0 * std::numbers::pi / omega / per; f2.periods = np;
+    const RadiationCoefficients t2 = forcedOscillation(model, 2, f2);
+    std::cout << per << " " << np << " A33 " << t2.addedMass[2] << " B33 " << t2.damping[2] << "\n";
+  }
+  for (const int mode : {0, 2}) {
+    const RadiationCoefficients td = forcedOscillation(model, mode, f);
+    INFO("mode " << mode << ": A " << r.addedMass(mode, mode) << " (time domain "
+                 << td.addedMass[mode] << "), B " << r.damping(mode, mode) << " (time domain "
+                 << td.damping[mode] << ")");
+    CHECK(r.addedMass(mode, mode) == Approx(td.addedMass[mode]).epsilon(0.01));
+    CHECK(r.damping(mode, mode) == Approx(td.damping[mode]).epsilon(0.01));
+  }
+  // (Haskind, deep water, axisymmetric hull) => B33 = w^3 |X3|^2 / (2 rho g^3), B11 = w^3 |X1|^2 /
+  // (4 rho g^3)
+  const double w3 = std::pow(omega, 3), g3 = std::pow(kG, 3);
+  const double b33 = w3 * std::norm(r.excitation[0][2]) / (2.0 * kRho * g3);
+  const double b11 = w3 * std::norm(r.excitation[0][0]) / (4.0 * kRho * g3);
+  INFO("Haskind: B33 " << b33 << " vs " << r.damping(2, 2) << ", B11 " << b11 << " vs "
+                       << r.damping(0, 0));
+  CHECK(b33 == Approx(r.damping(2, 2)).epsilon(0.02));
+  CHECK(b11 == Approx(r.damping(0, 0)).epsilon(0.02));
+  // (symmetry) => no heave-surge coupling, no sway excitation of a wave along x
+  CHECK(std::abs(r.addedMass(0, 2)) < 1e-3 * r.addedMass(2, 2));
+  CHECK(std::abs(r.excitation[0][1]) < 1e-6 * std::abs(r.excitation[0][0]));
+}
+
+namespace {
+// (w, heading, free modes) => RAOs measured in the time domain and from the frequency domain
+struct RaoPair {
+  Eigen::Matrix<std::complex<double>, 6, 1> measured, reference;
+};
+RaoPair raos(double omega, double heading, const std::vector<int>& modes) {
+  const BoxBarge barge;
+  const auto model = std::make_shared<const RankineTdModel>(barge.hull(), dynamics::Transform{},
+                                                            BoxBarge::settings(omega));
+  const FrequencyDomainSolver solver(*model);
+  const FrequencyResponse r = solver.solve(omega, {heading});
+  RaoPair out;
+  out.reference = responseAmplitude(rigidBodyMass(BoxBarge::body()), BoxBarge::restoring(), r, 0, modes);
+  RegularWaveRun run;
+  run.omega = omega;
+  run.heading = heading;
+  run.amplitude = 0.05;
+  run.freeModes = modes;
+  out.measured = measuredResponse(model, BoxBarge::body(), BoxBarge::restoring(), run);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("box barge RAOs in regular beam and head seas agree with the frequency domain", "[long]") {
+  for (const double omega : {1.5, 2.5}) {
+    const RaoPair beam = raos(omega, 0.5 * std::numbers::pi, {1, 2, 3});
+    const RaoPair head = raos(omega, std::numbers::pi, {0, 2, 4});
+    for (int m = 0; m < 6; ++m)
+      std::cout << omega << " mode " << m << " beam " << std::abs(beam.measured[m]) << " "
+                << std::abs(beam.reference[m]) << " head " << std::abs(head.measured[m]) << " "
+                << std::abs(head.reference[m]) << "\n";
+    CHECK(std::abs(beam.measured[2]) == Approx(std::abs(beam.reference[2])).epsilon(0.05));
+    CHECK(std::abs(beam.measured[3]) == Approx(std::abs(beam.reference[3])).epsilon(0.05));
+    CHECK(std::abs(head.measured[2]) == Approx(std::abs(head.reference[2])).epsilon(0.05));
+    CHECK(std::abs(head.measured[4]) == Approx(std::abs(head.reference[4])).epsilon(0.05));
+  }
+}

@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
   std::vector<double> omegas;
   for (int i = 4; i < argc; ++i) omegas.push_back(std::atof(argv[i]));
   if (omegas.empty()) omegas = {1.0, 1.25, 1.5, 1.75, 2.0, 2.25, 2.5, 2.75, 3.0};
-  std::printf("sea,mode,omega,measured,reference,measured_phase,reference_phase,N_body,N_surface\n");
+  std::printf(
+      "sea,mode,omega,measured,reference,measured_phase,reference_phase,N_body,N_surface\n");
   const char* names[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
   for (const double omega : omegas) {
     const BoxBarge barge;
@@ -34,9 +35,11 @@ int main(int argc, char** argv) {
     const double beam = 0.5 * std::numbers::pi, head = std::numbers::pi;
     const FrequencyResponse r = solver.solve(omega, {beam, head});
     for (const int sea : {0, 1}) {
-      const std::vector<int> modes = sea == 0 ? std::vector<int>{1, 2, 3} : std::vector<int>{0, 2, 4};
-      const auto reference = responseAmplitude(rigidBodyMass(BoxBarge::body()),
-                                               BoxBarge::restoring(), r, static_cast<std::size_t>(sea), modes);
+      const std::vector<int> modes =
+          sea == 0 ? std::vector<int>{1, 2, 3} : std::vector<int>{0, 2, 4};
+      const auto reference =
+          responseAmplitude(rigidBodyMass(BoxBarge::body()), BoxBarge::restoring(),
+                            BoxBarge::viscousDamping(), r, static_cast<std::size_t>(sea), modes);
       RegularWaveRun run;
       run.omega = omega;
       run.heading = sea == 0 ? beam : head;
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
       run.analysisPeriods = analysis;
       run.step = 2.0 * std::numbers::pi / omega / perPeriod;
       run.freeModes = modes;
+      run.damping = BoxBarge::viscousDamping();
       const auto measured = measuredResponse(model, BoxBarge::body(), BoxBarge::restoring(), run);
       for (const int m : modes)
         std::printf("%s,%s,%.3f,%.5f,%.5f,%.4f,%.4f,%d,%d\n", sea == 0 ? "beam" : "head", names[m],

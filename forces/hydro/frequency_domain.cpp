@@ -82,6 +82,7 @@ FrequencyResponse FrequencyDomainSolver::solve(double omega,
 
 Eigen::Matrix<Complex, 6, 1> responseAmplitude(const Eigen::Matrix<double, 6, 6>& mass,
                                                const Eigen::Matrix<double, 6, 6>& restoring,
+                                               const Eigen::Matrix<double, 6, 6>& extraDamping,
                                                const FrequencyResponse& r, std::size_t heading,
                                                const std::vector<int>& freeModes) {
   if (heading >= r.excitation.size())
@@ -97,7 +98,7 @@ Eigen::Matrix<Complex, 6, 1> responseAmplitude(const Eigen::Matrix<double, 6, 6>
     for (int b = 0; b < n; ++b) {
       const int j = freeModes[static_cast<std::size_t>(b)];
       z(a, b) = Complex(-w * w * (mass(i, j) + r.addedMass(i, j)) + restoring(i, j),
-                        w * r.damping(i, j));
+                        w * (r.damping(i, j) + extraDamping(i, j)));
     }
   }
   const Eigen::VectorXcd xi = z.partialPivLu().solve(x);

@@ -28,10 +28,10 @@
 namespace yardsim::forces::hydro {
 
 struct FrequencyResponse {
-  double omega = 0.0;                                 ///< rad/s
-  Eigen::Matrix<double, 6, 6> addedMass;              ///< A(w), kg ...
-  Eigen::Matrix<double, 6, 6> damping;                ///< B(w), kg/s ...
-  std::vector<Eigen::Matrix<std::complex<double>, 6, 1>> excitation;  ///< X per heading, N/m
+  double omega = 0.0;                                                   ///< rad/s
+  Eigen::Matrix<double, 6, 6> addedMass;                                ///< A(w), kg ...
+  Eigen::Matrix<double, 6, 6> damping;                                  ///< B(w), kg/s ...
+  std::vector<Eigen::Matrix<std::complex<double>, 6, 1>> excitation;    ///< X per heading, N/m
   std::vector<Eigen::Matrix<std::complex<double>, 6, 1>> froudeKrylov;  ///< its F-K part, N/m
 };
 
@@ -50,12 +50,13 @@ class FrequencyDomainSolver {
   Eigen::MatrixXd fromBody_;     ///< M^-1 R_b, N x Nb (for the diffraction conditions)
 };
 
-/// (rigid-body mass 6x6 M about the body origin, C the 6x6 restoring matrix, response, the
-/// heading's index, the modes kept free: the others held) => the complex motion per m of wave
-/// amplitude in the free modes (the held ones 0): m/m, rad/m.
-Eigen::Matrix<std::complex<double>, 6, 1> responseAmplitude(const Eigen::Matrix<double, 6, 6>& mass,
-                                                            const Eigen::Matrix<double, 6, 6>& restoring,
-                                                            const FrequencyResponse& r, std::size_t heading,
-                                                            const std::vector<int>& freeModes);
+/// (rigid-body mass 6x6 M about the body origin, C the 6x6 restoring matrix, an added linear
+/// damping D (viscous, N s/m ...; added to B), response, the heading's index, the modes kept free:
+/// the others held) => the complex motion per m of wave amplitude in the free modes (the held
+/// ones 0): m/m, rad/m.
+Eigen::Matrix<std::complex<double>, 6, 1> responseAmplitude(
+    const Eigen::Matrix<double, 6, 6>& mass, const Eigen::Matrix<double, 6, 6>& restoring,
+    const Eigen::Matrix<double, 6, 6>& extraDamping, const FrequencyResponse& r,
+    std::size_t heading, const std::vector<int>& freeModes);
 
 }  // namespace yardsim::forces::hydro

@@ -33,9 +33,11 @@ Eigen::Matrix<std::complex<double>, 6, 1> measuredResponse(
   for (std::size_t i = 0; i < modes.size(); ++i)
     if (modes[i] < 0 || modes[i] > 5 || (i > 0 && modes[i] <= modes[i - 1]))
       throw std::invalid_argument("measuredResponse: free modes must be increasing in 0..5");
-  if (modes.empty() || !(run.omega > 0.0) || !(run.amplitude > 0.0) || run.periods <= run.rampPeriods ||
-      run.analysisPeriods < 1 || run.analysisPeriods > run.periods - run.rampPeriods)
-    throw std::invalid_argument("measuredResponse: modes, omega, amplitude or periods out of range");
+  if (modes.empty() || !(run.omega > 0.0) || !(run.amplitude > 0.0) ||
+      run.periods <= run.rampPeriods || run.analysisPeriods < 1 ||
+      run.analysisPeriods > run.periods - run.rampPeriods)
+    throw std::invalid_argument(
+        "measuredResponse: modes, omega, amplitude or periods out of range");
   const double period = 2.0 * std::numbers::pi / run.omega;
   const double limit = 0.45 * empLimit(*panels, 60).dtMax;
   const double wanted = run.step > 0.0 ? run.step : std::min(period / 40.0, limit);
@@ -51,7 +53,8 @@ Eigen::Matrix<std::complex<double>, 6, 1> measuredResponse(
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const int m = modes[i];
     const Vector3 axis = Vector3::Unit(m % 3);
-    const dynamics::Joint j = m < 3 ? dynamics::Joint::prismatic(axis) : dynamics::Joint::revolute(axis);
+    const dynamics::Joint j =
+        m < 3 ? dynamics::Joint::prismatic(axis) : dynamics::Joint::revolute(axis);
     const bool last = i + 1 == modes.size();
     const std::string name = last ? "hull" : "link" + std::to_string(i);
     b.addBody(name, parent, j, dynamics::Transform::identity(),
@@ -59,7 +62,8 @@ Eigen::Matrix<std::complex<double>, 6, 1> measuredResponse(
     parent = name;
   }
   const RankineTdModel::Matrix6 aInf = panels->aInf();
-  b.setAddedMass("hull", dynamics::addedMassAboutOrigin(0.5 * (aInf + aInf.transpose()), Vector3::Zero()));
+  b.setAddedMass("hull",
+                 dynamics::addedMassAboutOrigin(0.5 * (aInf + aInf.transpose()), Vector3::Zero()));
   const dynamics::Model model = b.build();
   const int hull = model.nbodies - 1, n = static_cast<int>(modes.size());
   // (one regular wave with its crest at the origin at t = 0, ramped) => the provider
@@ -76,16 +80,19 @@ Eigen::Matrix<std::complex<double>, 6, 1> measuredResponse(
   double stepStart = 0.0;
   system.setForces([&](double ts, const Eigen::VectorXd& qs, const Eigen::VectorXd& vs,
                        const dynamics::Data& d, dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
-    // (joint coordinates = the free modes' displacements) => -C xi
+    // (joint coordinates = the free modes' displacements and rates) => -C xi - D xi_dot
     for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c)
-        tau[r] -= restoring(modes[static_cast<std::size_t>(r)], modes[static_cast<std::size_t>(c)]) * qs[c];
+      for (int c = 0; c < n; ++c) {
+        const auto i = modes[static_cast<std::size_t>(r)], j = modes[static_cast<std::size_t>(c)];
+        tau[r] -= restoring(i, j) * qs[c] + run.damping(i, j) * vs[c];
+      }
     provider.evaluate(forces::Stage{ts, model, d, qs, vs, scratch.get(), stepStart}, f, tau);
   });
   dynamics::Rk4 rk4(model);
   double t = 0.0;
   Eigen::VectorXd q = Eigen::VectorXd::Zero(n), v = Eigen::VectorXd::Zero(n);
-  const int steps = run.periods * perPeriod, first = (run.periods - run.analysisPeriods) * perPeriod;
+  const int steps = run.periods * perPeriod,
+            first = (run.periods - run.analysisPeriods) * perPeriod;
   // (samples after `first`) => normal equations of the fit [1, t, cos, sin] per mode
   Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(4, n);
@@ -102,7 +109,8 @@ Eigen::Matrix<std::complex<double>, 6, 1> measuredResponse(
   // (xi = C cos + S sin) => Re((C - i S) e^{i w t}), per unit wave amplitude
   Eigen::Matrix<std::complex<double>, 6, 1> out = Eigen::Matrix<std::complex<double>, 6, 1>::Zero();
   for (int r = 0; r < n; ++r)
-    out[modes[static_cast<std::size_t>(r)]] = std::complex<double>(coef(2, r), -coef(3, r)) / run.amplitude;
+    out[modes[static_cast<std::size_t>(r)]] =
+        std::complex<double>(coef(2, r), -coef(3, r)) / run.amplitude;
   return out;
 }
 

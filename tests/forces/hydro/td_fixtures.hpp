@@ -9,8 +9,8 @@
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydro/hull_shapes.hpp"
 #include "forces/hydro/panel_mesh.hpp"
-#include "forces/hydro/regular_wave_run.hpp"
 #include "forces/hydro/rankine_td_model.hpp"
+#include "forces/hydro/regular_wave_run.hpp"
 
 namespace yardsim::forces::hydro::test {
 
@@ -68,6 +68,13 @@ struct BoxBarge {
     c(3, 3) = rg * (kLength * std::pow(kBeam, 3) / 12.0 + v * zb);
     c(4, 4) = rg * (kBeam * std::pow(kLength, 3) / 12.0 + v * zb);
     return c;
+  }
+  /// a viscous roll damping of 5 % of critical on the dry inertia (the roll transient dies in
+  /// a few tens of periods), on both sides of a comparison
+  static Eigen::Matrix<double, 6, 6> viscousDamping() {
+    Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+    d(3, 3) = 2.0 * 0.05 * std::sqrt(restoring()(3, 3) * body().inertiaCom(0, 0));
+    return d;
   }
   /// (w) => a free surface out to 2.5 wavelengths past the hull (at least 30 m), panels of a
   /// tenth of a wavelength far out, the first ring 0.5 m, a damping zone one wavelength wide

@@ -42,6 +42,7 @@ TEST_CASE("a barge in a long wave heaves with the surface", "[long]") {
   run.freeModes = {2};
   const auto rao = measuredResponse(model, BoxBarge::body(), BoxBarge::restoring(), run);
   INFO("heave RAO " << std::abs(rao[2]) << " at phase " << std::arg(rao[2]));
+  // (measured: 1.0005 at -0.037 rad)
   CHECK(std::abs(rao[2]) == Approx(1.0).epsilon(0.03));
   CHECK(std::abs(std::arg(rao[2])) < 0.1);
   CHECK(rao[0] == std::complex<double>(0.0));

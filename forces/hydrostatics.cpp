@@ -11,12 +11,14 @@ namespace yardsim::forces {
 using dynamics::Vector3;
 
 Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int body,
-                           TriangleMesh hull, std::shared_ptr<const AiryWaves> sea)
+                           TriangleMesh hull, std::shared_ptr<const AiryWaves> sea,
+                           bool incidentPressure)
     : ForceProvider(std::move(name)),
       body_(body),
       hull_(std::move(hull)),
       sea_(std::move(sea)),
-      calm_(sea_ ? sea_->water() : WaterProperties{}) {
+      calm_(sea_ ? sea_->water() : WaterProperties{}),
+      incident_(incidentPressure) {
   if (body_ < 1 || body_ >= model.nbodies)
     throw std::invalid_argument("hydrostatics '" + this->name() + "': body " +
                                 std::to_string(body_) + " is the world or outside the model's " +
@@ -50,7 +52,7 @@ void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
   // (X_WB, sea, t) => clipped hull, pressure force and moment about the world origin
   std::unique_ptr<ProviderScratch> temporary;
   SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
-  const SubmergedProperties p = integrateSubmerged(hull_, s.data.X_WB[body_], *sea_, s.t, ws);
+  const SubmergedProperties p = integrateSubmerged(hull_, s.data.X_WB[body_], surface(), s.t, ws);
   dynamics::Force F_W;
   F_W << p.moment, p.force;
   f.addWorldFrame(body_, F_W);
@@ -65,7 +67,7 @@ double Hydrostatics::doPotentialEnergy(const Stage& s) const {
 }
 
 double Hydrostatics::doPower(const Stage& s) const {
-  if (sea_->calm()) return 0.0;
+  if (sea_->calm() || !incident_) return 0.0;
   const dynamics::Transform& X = s.data.X_WB[body_];
   std::unique_ptr<ProviderScratch> temporary;
   SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
@@ -79,7 +81,7 @@ HydrostaticReport Hydrostatics::report(const Stage& s) const {
   const dynamics::Transform& X = s.data.X_WB[body_];
   HydrostaticReport r;
   std::unique_ptr<ProviderScratch> temporary;
-  r.submerged = integrateSubmerged(hull_, X, *sea_, s.t, scratchOf<Scratch>(s, temporary).ws);
+  r.submerged = integrateSubmerged(hull_, X, surface(), s.t, scratchOf<Scratch>(s, temporary).ws);
   const WaterProperties& w = sea_->water();
   r.displacement = w.density * r.submerged.volume;
   r.draft = w.level - X.actPoint(keel_B_).z();

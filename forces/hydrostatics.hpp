@@ -8,6 +8,11 @@
 // the same calm-water one, and power() is the power of the difference between the wave and the
 // calm-water forces, so the energy balance closes in waves too. Allocation-free given its
 // scratch (the clipping workspace, makeScratch()).
+// Linear form (incidentPressure false): the hull is clipped at the still-water level at every
+// stage whatever the sea, and no incident pressure is integrated: the restoring force alone
+// (conservative, power 0). The waves' force (Froude-Krylov + diffraction) must then come from the
+// body's hydrodynamics (the impulse-response excitation with Froude-Krylov): the form
+// impulse-response codes use, and about a hundred times cheaper in a 200-component sea.
 #include <memory>
 #include <string>
 
@@ -31,11 +36,13 @@ struct HydrostaticReport {
 
 class Hydrostatics final : public ForceProvider {
  public:
-  // (name, model, body >= 1, hull in the body frame, the sea) => the provider. The hull is
-  // checked (checkClosedMesh); throws std::invalid_argument naming the provider and the
+  // (name, model, body >= 1, hull in the body frame, the sea, clip at the incident surface and
+  // integrate its pressure (true) or clip at the still-water level (false)) => the provider. The
+  // hull is checked (checkClosedMesh); throws std::invalid_argument naming the provider and the
   // mesh's own complaint, or a body outside the model.
   Hydrostatics(std::string name, const dynamics::Model& model, int body, TriangleMesh hull,
-               std::shared_ptr<const AiryWaves> sea);
+               std::shared_ptr<const AiryWaves> sea, bool incidentPressure = true);
+  bool incidentPressure() const { return incident_; }
 
   int body() const { return body_; }
   const TriangleMesh& hull() const { return hull_; }
@@ -67,6 +74,9 @@ class Hydrostatics final : public ForceProvider {
   std::shared_ptr<const AiryWaves> sea_;
   AiryWaves calm_;            // the same water without waves
   std::vector<int> subtree_;  // body and its descendants: G for GM
+  bool incident_ = true;      // clipped at the incident surface with its pressure
+  // (the surface the hull is clipped at) => the sea, or the calm water in the linear form
+  const AiryWaves& surface() const { return incident_ ? *sea_ : calm_; }
 };
 
 }  // namespace yardsim::forces

@@ -107,6 +107,7 @@ struct MechanicsSpec {
   struct Hull {
     std::string name, body;
     std::shared_ptr<const forces::TriangleMesh> mesh;
+    bool incidentPressure = true;  // froude_krylov: nonlinear (true) or none (false: calm clipping)
   };
   // a wind or current load on a body (OCIMF style)
   struct Flow {

@@ -50,8 +50,8 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   const auto sea = std::make_shared<const forces::AiryWaves>(water, env.waves);
   auto bodyOf = [&](const std::string& n) { return model.bodyIndex(n); };
   for (const auto& h : env.hulls)
-    hydros_.push_back(
-        std::make_unique<forces::Hydrostatics>(h.name, model, bodyOf(h.body), *h.mesh, sea));
+    hydros_.push_back(std::make_unique<forces::Hydrostatics>(h.name, model, bodyOf(h.body), *h.mesh,
+                                                             sea, h.incidentPressure));
   if (env.wind) {
     const auto wind = std::make_shared<const forces::WindField>(*env.wind);
     for (const auto& w : env.windLoads)

@@ -202,7 +202,17 @@ void hulls(const Reader& r, const YAML::Node& n, const std::string& file, const 
     MechanicsSpec::Hull h;
     h.name = it->first.as<std::string>();
     const YAML::Node m = it->second;
-    if (!r.keys(m, {"body", "mesh", "placement", "scale"}, h.name)) continue;
+    if (!r.keys(m, {"body", "mesh", "placement", "scale", "froude_krylov"}, h.name)) continue;
+    if (const YAML::Node fk = m["froude_krylov"]) {
+      const std::string v = fk.IsScalar() ? fk.Scalar() : "";
+      if (v == "none")
+        h.incidentPressure = false;
+      else if (v != "nonlinear")
+        r.fail(
+            fk, h.name + ".froude_krylov",
+            "expected nonlinear (clipped at the incident surface, its pressure integrated) or none "
+            "(clipped at the still-water level; the waves' force from the body's hydrodynamics)");
+    }
     body(r, m, h.name, bodies, h.body);
     const dynamics::Transform X = r.pose(m["placement"], h.name + ".placement");
     const double scale = r.number(m["scale"], h.name + ".scale", 1.0);
@@ -462,6 +472,19 @@ void parseFloating(const Params& p, const MechanicsReport& report, const std::se
   named("damping", [&](const Reader& r, const YAML::Node& n) { dampers(r, n, bodies, spec); });
   named("hydrodynamics",
         [&](const Reader& r, const YAML::Node& n) { hydrodynamics(r, n, p.mark("hydrodynamics").file, bodies, spec); });
+  // (a hull without the incident pressure) => the body's hydrodynamics must bring the waves' force
+  if (!defined("hydrostatics")) return;
+  const Reader r{report, "hydrostatics"};
+  for (const auto& h : spec.hulls) {
+    if (h.incidentPressure) continue;
+    bool driven = false;
+    for (const auto& d : spec.hydrodynamics) driven = driven || d.body == h.body;
+    if (!driven)
+      r.fail(
+          p.node("hydrostatics")[h.name]["froude_krylov"], h.name + ".froude_krylov",
+          "none leaves the waves' force to the body's hydrodynamics, and body '" + h.body +
+              "' has no hydrodynamics block here (with an excitation that includes Froude-Krylov)");
+  }
 }
 
 

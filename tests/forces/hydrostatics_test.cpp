@@ -187,3 +187,35 @@ TEST_CASE("a hull that is not closed is refused with the provider's and the mesh
   CHECK_THROWS_AS(Hydrostatics("hull", model, 0, boxMesh(Vector3(L, B, D)), calm()), std::invalid_argument);
   CHECK_THROWS_AS(Hydrostatics("hull", model, 1, boxMesh(Vector3(L, B, D)), nullptr), std::invalid_argument);
 }
+
+TEST_CASE("without the incident pressure the hull is clipped at the still-water level in waves") {
+  // (the same heeled, heaving box in a 1.5 m sea: the linear form) => the calm-water force,
+  // moment, potential and report exactly, zero power; the nonlinear form differs
+  const double m = kRho * L * B * 1.8;
+  const dynamics::Model model = freeBox(m, 2.5, 3.0);
+  const auto sea = std::make_shared<const AiryWaves>(
+      WaterProperties{kRho, kG, 0.0, 40.0, 0.0}, std::vector<WaveComponent>{{1.5, 7.0, 1.2, 0.3}});
+  Hydrostatics linear("hull", model, 1, boxMesh(Vector3(L, B, D), 4, 2, 2), sea, false);
+  Hydrostatics still("hull", model, 1, boxMesh(Vector3(L, B, D), 4, 2, 2), calm());
+  Hydrostatics waves("hull", model, 1, boxMesh(Vector3(L, B, D), 4, 2, 2), sea);
+  CHECK_FALSE(linear.incidentPressure());
+  Rig r(model, {});
+  pose(r.q, 1.2, 0.3);
+  r.v << 0.05, -0.02, 0.01, 0.3, -0.2, 0.4;
+  for (const double t : {0.0, 1.3, 2.9}) {
+    r.t = t;
+    const Stage s = r.stage();
+    // (provider) => its generalized force at the stage
+    auto force = [&](const Hydrostatics& h) {
+      dynamics::ExternalForces f(model);
+      Eigen::VectorXd tau = Eigen::VectorXd::Zero(model.nv);
+      h.evaluate(s, f, tau);
+      return dynamics::Force(f.worldFrame(1));
+    };
+    CHECK(force(linear) == force(still));
+    CHECK((force(waves) - force(still)).norm() > 1e-2 * m * kG);
+    CHECK(linear.potentialEnergy(s) == still.potentialEnergy(s));
+    CHECK(linear.power(s) == 0.0);
+    CHECK(linear.report(s).submerged.volume == still.report(s).submerged.volume);
+  }
+}

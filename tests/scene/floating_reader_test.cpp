@@ -151,6 +151,29 @@ TEST_CASE("bad floating input is refused at its line with the key path") {
     CHECK(d->where.column > 1);
     CHECK_THAT(d->message, Contains("meshes/hull.stl: cannot open"));
   }
+  SECTION("froude_krylov: an unknown value; none without hydrodynamics on the body") {
+    std::string s = sceneYaml();
+    s.replace(s.find("mesh: meshes/barge.stl}"), 23,
+              "mesh: meshes/barge.stl, froude_krylov: linear}");
+    auto r = scene::loadScene(dir.write("s.yaml", s));
+    const auto* d = find(r, "mechanics.hydrostatics.hull.froude_krylov");
+    REQUIRE(d);
+    CHECK(d->where.line == 16);
+    CHECK_THAT(d->message, Contains("expected nonlinear") && Contains("or none"));
+    s = sceneYaml();
+    s.replace(s.find("mesh: meshes/barge.stl}"), 23,
+              "mesh: meshes/barge.stl, froude_krylov: none}");
+    r = scene::loadScene(dir.write("s.yaml", s));
+    d = find(r, "mechanics.hydrostatics.hull.froude_krylov");
+    REQUIRE(d);
+    CHECK(d->where.line == 16);
+    CHECK_THAT(d->message, Contains("body 'barge' has no hydrodynamics block"));
+    s = sceneYaml();
+    s.replace(s.find("mesh: meshes/barge.stl}"), 23,
+              "mesh: meshes/barge.stl, froude_krylov: nonlinear}");
+    r = scene::loadScene(dir.write("s.yaml", s));
+    CHECK_FALSE(find(r, "mechanics.hydrostatics.hull.froude_krylov"));
+  }
   SECTION("an open mesh: the mesh file and its first offending face") {
     dir.write("meshes/barge.stl", "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
                                   "   vertex 0 1 0\n  endloop\n endfacet\nendsolid\n");

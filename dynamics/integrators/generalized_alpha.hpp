@@ -10,9 +10,9 @@
 // velocity is in the body frame; zero for the other joints), which keeps second order on the
 // configuration manifold. The unknowns (ddq_{n+1}, lambda) are
 // solved by Newton with an iteration matrix [I - beta' h^2 F_q - gamma' h F_v, -M^-1 J^T; J, 0]
-// (F = f + M^-1 J^T lambda, its derivatives by finite differences) that is factorised once and reused over steps until Newton
-// (dense, or sparse with one evaluation per column colour when the system reports the structure
-// of its Jacobian: sparse_newton_matrix.hpp, lumped-mass lines)
+// (F = f + M^-1 J^T lambda, its derivatives by finite differences; dense, or sparse with one
+// evaluation per column colour when the system reports the structure of its Jacobian, as with
+// lumped-mass lines: sparse_newton_matrix.hpp) that is factorised once and reused over steps until Newton
 // slows down; a failed solve is retried with a fresh matrix at the predictor, then with one at
 // the last iterate (a rope going taut inside the step), then as two half steps, down to h/16; a
 // sixteenth that still has no solution (a force that jumps: a damped rope going taut) is crossed

@@ -103,7 +103,8 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
     if (sparseFor_ != pattern) sparse_ = std::make_unique<SparseNewtonMatrix>(model_, *pattern);
     sparseFor_ = pattern;
     stats_.f_evals += sparse_->form(
-        [&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool qMoved, Eigen::VectorXd& out) {
+        [&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool qMoved,
+            Eigen::VectorXd& out) {
           system.unconstrainedAcceleration(t + h, qs, vs, out);
           if (nc_ > 0 && qMoved) system.constraintTerms(qs, g_, J_, MinvJt_);
           if (nc_ > 0) out.noalias() += (qMoved ? MinvJt_ : MinvJtf_) * lambda_;

@@ -153,14 +153,15 @@ void denseJacobian(MultibodySystem& sys, const Eigen::VectorXd& q, const Eigen::
 }
 
 // (pattern) => the sparse F_q, F_v at the setup's state (delta = 0: the chart at q itself)
-std::unique_ptr<SparseNewtonMatrix> sparseAt(const Setup& s, MultibodySystem& sys, const JacobianPattern& p) {
+std::unique_ptr<SparseNewtonMatrix> sparseAt(const Setup& s, MultibodySystem& sys,
+                                             const JacobianPattern& p) {
   auto sparse = std::make_unique<SparseNewtonMatrix>(s.model, p);
   Eigen::VectorXd f(s.model.nv), zero = Eigen::VectorXd::Zero(s.model.nv);
   sys.unconstrainedAcceleration(0.0, s.q, s.v, f);
   const int evals =
       sparse->form([&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool,
-                      Eigen::VectorXd& out) { sys.unconstrainedAcceleration(0.0, qs, vs, out); },
-                  s.q, zero, s.q, s.v, f);
+                       Eigen::VectorXd& out) { sys.unconstrainedAcceleration(0.0, qs, vs, out); },
+                   s.q, zero, s.q, s.v, f);
   CHECK(evals == 2 * sparse->colouring().count());
   return sparse;
 }

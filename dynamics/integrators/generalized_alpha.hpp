@@ -15,8 +15,8 @@
 // lumped-mass lines: sparse_newton_matrix.hpp) that is factorised once and reused over steps
 // until Newton slows down; a failed solve is retried with a fresh matrix at the predictor, then
 // with one at the last iterate (a rope going taut inside the step), then as two half steps, down
-// to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut) is crossed
-// by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
+// to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
+// is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
 // ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
 // Bruls 2007); dddq_0 comes from one extra evaluation (a forward difference along (v, ddq)).
 

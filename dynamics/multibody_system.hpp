@@ -4,6 +4,7 @@
 // forward dynamics when the model has loops, with optional Baumgarte terms and post-step projection.
 
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 #include "dynamics/constrained_dynamics.hpp"
@@ -42,6 +43,11 @@ class MultibodySystem final : public AccelerationSource {
   void constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd& g, Eigen::MatrixXd& J,
                        Eigen::MatrixXd& MinvJt) override;
 
+  /// The structure of the accelerations' Jacobian that the force callback promises (nullptr:
+  /// dense, the default); the implicit integrators use it for a sparse Newton matrix.
+  void setJacobianPattern(std::shared_ptr<const JacobianPattern> p) { pattern_ = std::move(p); }
+  const JacobianPattern* jacobianPattern() const override { return pattern_.get(); }
+
   /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
   /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
   /// this at every stage. The joint forces that enforce them: prescribedEffort().
@@ -61,6 +67,7 @@ class MultibodySystem final : public AccelerationSource {
   HybridDynamics hybrid_;
   Eigen::VectorXd aPrescribed_, effort_;
   ForceCallback callback_;
+  std::shared_ptr<const JacobianPattern> pattern_;
   // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
   const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;

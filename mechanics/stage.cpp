@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dynamics/rnea.hpp"
+#include "mechanics/jacobian_pattern.hpp"
 
 namespace yardsim::mechanics {
 
@@ -64,6 +65,7 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
 }
 
 void connectStage(const System& s, Data& d) {
+  d.kernel.setJacobianPattern(jacobianPattern(s));
   d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                               const dynamics::Data& kin, dynamics::ExternalForces& f,
                               Eigen::VectorXd& tau) { stageForces(s, d, t, q, v, kin, f, tau); });

@@ -96,7 +96,22 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
     f_.noalias() += MinvJtf_ * lambda_;
   }
   const double eps = std::sqrt(std::numeric_limits<double>::epsilon());
-  for (int i = 0; i < model_.nv; ++i) {
+  const JacobianPattern* pattern = system.jacobianPattern();
+  sparseActive_ = pattern != nullptr;
+  if (sparseActive_) {
+    // (a structured system) => F_q, F_v by column colours (sparse_newton_matrix.hpp)
+    if (sparseFor_ != pattern) sparse_ = std::make_unique<SparseNewtonMatrix>(model_, *pattern);
+    sparseFor_ = pattern;
+    stats_.f_evals += sparse_->form(
+        [&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool qMoved,
+            Eigen::VectorXd& out) {
+          system.unconstrainedAcceleration(t + h, qs, vs, out);
+          if (nc_ > 0 && qMoved) system.constraintTerms(qs, g_, J_, MinvJt_);
+          if (nc_ > 0) out.noalias() += (qMoved ? MinvJt_ : MinvJtf_) * lambda_;
+        },
+        q, delta_, qNew_, vNew_, f_);
+  }
+  for (int i = 0; i < model_.nv && !sparseActive_; ++i) {
     const double dqi = eps * std::max(1.0, std::abs(delta_[i]));
     deltaP_ = delta_;
     deltaP_[i] += dqi;
@@ -124,15 +139,29 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
 void GeneralizedAlpha::factorise(double h) {
   // (f_q, f_v, h) => LU of A = I - beta' h^2 f_q - gamma' h f_v; Schur complement J A^-1 M^-1 J^T
   const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
-  A_ = -(p_.beta * s * h * h) * Fq_ - (p_.gamma * s * h) * Fv_;
-  A_.diagonal().array() += 1.0;
-  luA_.compute(A_);
+  if (sparseActive_) {
+    sparse_->factorise(p_.beta * s * h * h, p_.gamma * s * h);
+  } else {
+    A_ = -(p_.beta * s * h * h) * Fq_ - (p_.gamma * s * h) * Fv_;
+    A_.diagonal().array() += 1.0;
+    luA_.compute(A_);
+  }
   if (nc_ > 0) {
-    AinvMinvJt_ = luA_.solve(MinvJtf_);
+    if (sparseActive_)
+      sparse_->solve(MinvJtf_, AinvMinvJt_);
+    else
+      AinvMinvJt_ = luA_.solve(MinvJtf_);
     S_.noalias() = Jf_ * AinvMinvJt_;
     luS_.compute(S_);
   }
   hFactor_ = h;
+}
+
+void GeneralizedAlpha::solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (sparseActive_)
+    sparse_->solve(b, x);
+  else
+    x = luA_.solve(b);
 }
 
 bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
@@ -154,7 +183,7 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
       rc_ = g_ / (p_.beta * s * h * h);
     }
     // (r, r_c) => corrections: S dlambda = -r_c + J A^-1 r, dx = A^-1 (-r + M^-1 J^T dlambda)
-    dx_ = luA_.solve(r_);
+    solveA(r_, dx_);
     if (nc_ > 0) {
       rc_.noalias() -= Jf_ * dx_;
       dlambda_ = luS_.solve(rc_);

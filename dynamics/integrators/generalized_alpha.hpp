@@ -10,18 +10,22 @@
 // velocity is in the body frame; zero for the other joints), which keeps second order on the
 // configuration manifold. The unknowns (ddq_{n+1}, lambda) are
 // solved by Newton with an iteration matrix [I - beta' h^2 F_q - gamma' h F_v, -M^-1 J^T; J, 0]
-// (F = f + M^-1 J^T lambda, its derivatives by finite differences) that is factorised once and reused over steps until Newton
-// slows down; a failed solve is retried with a fresh matrix at the predictor, then with one at
-// the last iterate (a rope going taut inside the step), then as two half steps, down to h/16; a
-// sixteenth that still has no solution (a force that jumps: a damped rope going taut) is crossed
-// by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
+// (F = f + M^-1 J^T lambda, its derivatives by finite differences; dense, or sparse with one
+// evaluation per column colour when the system reports the structure of its Jacobian, as with
+// lumped-mass lines: sparse_newton_matrix.hpp) that is factorised once and reused over steps
+// until Newton slows down; a failed solve is retried with a fresh matrix at the predictor, then
+// with one at the last iterate (a rope going taut inside the step), then as two half steps, down
+// to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
+// is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
 // ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
 // Bruls 2007); dddq_0 comes from one extra evaluation (a forward difference along (v, ddq)).
 
 #include <Eigen/LU>
+#include <memory>
 
 #include "dynamics/integrators/integrator.hpp"
 #include "dynamics/integrators/rk4.hpp"
+#include "dynamics/integrators/sparse_newton_matrix.hpp"
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
@@ -56,6 +60,8 @@ class GeneralizedAlpha final : public Integrator {
   // (state at the end of the step) => f_q, f_v by finite differences; factorised for h
   void jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h);
   void factorise(double h);
+  // (x) => A^-1 x by the dense or the sparse LU, whichever the last jacobian() formed
+  void solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   // (step of h) => Newton with the current matrix, then with a fresh one; false if both fail
   bool attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
   // (step of h) => state advanced, in halves (down to h/16) where Newton fails
@@ -77,6 +83,10 @@ class GeneralizedAlpha final : public Integrator {
   Eigen::VectorXd qp_, vp_, deltaP_;
   Eigen::MatrixXd Fq_, Fv_, A_;
   Eigen::PartialPivLU<Eigen::MatrixXd> luA_;
+  // the sparse path: made at the first jacobian() of a system with a pattern
+  std::unique_ptr<SparseNewtonMatrix> sparse_;
+  const JacobianPattern* sparseFor_ = nullptr;  // the pattern sparse_ was made for
+  bool sparseActive_ = false;
   // loops
   Eigen::VectorXd g_, lambda_, lambdaStart_, dlambda_, rc_;
   Eigen::MatrixXd J_, MinvJt_, Jf_, MinvJtf_, AinvMinvJt_, S_;

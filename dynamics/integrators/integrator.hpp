@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "dynamics/integrators/column_colouring.hpp"
+
 namespace yardsim::dynamics {
 
 /// Thrown when the state or the accelerations stop being finite (the message names the body), or
@@ -37,6 +39,10 @@ class AccelerationSource {
   /// (q) => g(q) (rows), J = dg/dq (rows x nv) and M^-1 J^T (nv x rows); only when rows > 0.
   virtual void constraintTerms(const Eigen::VectorXd& /*q*/, Eigen::VectorXd& /*g*/, Eigen::MatrixXd& /*J*/,
                                Eigen::MatrixXd& /*MinvJt*/) {}
+
+  /// The structure of d a / d(q, v) when the source knows it (lumped-mass lines), or nullptr
+  /// (the default: dense). Implicit methods then form and factorise a sparse Newton matrix.
+  virtual const JacobianPattern* jacobianPattern() const { return nullptr; }
 
   /// Number of state-event functions located by integrators that find roots (0: none).
   virtual int eventCount() const { return 0; }

@@ -1,0 +1,34 @@
+#pragma once
+// The structure of the acceleration's Jacobian d(dv/dt)/d(q, v) and a colouring of its columns
+// (Curtis, Powell & Reid 1974): two columns (dofs) may share a colour when no acceleration depends
+// on both, so one perturbation of every column of a colour gives all their entries at once. A
+// chain of point masses coupled to its neighbours (a lumped-mass line) needs 3 node colours per
+// line, whatever its length; lines that share no body share colours. Sizes are dofs (nv); the
+// pattern is structural (an entry that may be non-zero somewhere), the same for q and v.
+#include <vector>
+
+namespace yardsim::dynamics {
+
+// Per column j (a dof): the rows i (dofs) whose acceleration may depend on q_j or v_j, sorted,
+// j itself included. A row left out is a promise that the entry is zero at every state.
+struct JacobianPattern {
+  int n = 0;
+  std::vector<std::vector<int>> rows;
+};
+
+// Per column its colour in [0, count), and per colour its columns (increasing).
+struct ColumnColouring {
+  std::vector<int> colour;
+  std::vector<std::vector<int>> columns;
+  int count() const { return static_cast<int>(columns.size()); }
+};
+
+// (pattern) => a colouring by the greedy rule, columns in order: each takes the smallest colour
+// that none of the columns sharing a row with it holds
+ColumnColouring colourColumns(const JacobianPattern& pattern);
+
+// (pattern, colouring) => the first row that two columns of one colour touch, or -1 when the
+// colouring is valid (also -1 only if every column has a colour in range)
+int colouringConflict(const JacobianPattern& pattern, const ColumnColouring& colouring);
+
+}  // namespace yardsim::dynamics

@@ -1,0 +1,85 @@
+#pragma once
+// The Newton (iteration) matrix A = I - c_q F_q - c_v F_v of an implicit integrator, sparse, for a
+// system whose Jacobian has structure (column_colouring.hpp; a lumped-mass line couples each node
+// to its neighbours only): F_q (through the chart at q_n) and F_v by finite differences with one
+// evaluation per colour for q and one for v instead of one per dof, stored on the pattern
+// (compressed columns), and factorised by Eigen's SparseLU with the COLAMD ordering analysed once
+// at construction. The factorisation then costs about what the fill of the pattern does: linear
+// in the nodes of banded lines, where a dense LU is cubic (docs/performance.md).
+// F is the accelerations (1/s^2 per m or rad, 1/s per m/s or rad/s); A is dimensionless.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "dynamics/configuration.hpp"
+#include "dynamics/integrators/column_colouring.hpp"
+#include "dynamics/model.hpp"
+
+namespace yardsim::dynamics {
+
+class SparseNewtonMatrix {
+ public:
+  // (model, pattern of F_q and F_v) => the colouring, A's structure (the pattern and the
+  // diagonal) and its ordering; throws std::invalid_argument when the pattern is not nv x nv
+  SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern);
+
+  const ColumnColouring& colouring() const { return colouring_; }
+  int nonZeros() const { return static_cast<int>(A_.nonZeros()); }
+
+  // (accel(q', v', qMoved, F'): the accelerations at a perturbed state; q_n, the chart step
+  // delta, q_{n+1} = q_n (+) delta, v_{n+1}, F at (q_{n+1}, v_{n+1})) => F_q and F_v on the
+  // pattern, by forward differences with the dense path's step sizes; returns the evaluations
+  template <class Accel>
+  int form(Accel&& accel, const Eigen::VectorXd& q, const Eigen::VectorXd& delta,
+           const Eigen::VectorXd& qNew, const Eigen::VectorXd& vNew, const Eigen::VectorXd& f) {
+    const double eps = 1.4901161193847656e-08;  // sqrt(machine epsilon), as the dense path
+    for (const std::vector<int>& cols : colouring_.columns) {
+      // (one colour) => its columns of F_q: every dof of the colour moved at once
+      deltaP_ = delta;
+      for (int j : cols) {
+        step_[j] = eps * std::max(1.0, std::abs(delta[j]));
+        deltaP_[j] += step_[j];
+      }
+      integrate(model_, q, deltaP_, 1.0, qp_);
+      accel(qp_, vNew, true, fp_);
+      scatter(cols, f, fq_);
+      // (one colour) => its columns of F_v
+      vp_ = vNew;
+      for (int j : cols) {
+        step_[j] = eps * std::max(1.0, std::abs(vNew[j]));
+        vp_[j] += step_[j];
+      }
+      accel(qNew, vp_, false, fp_);
+      scatter(cols, f, fv_);
+    }
+    return 2 * colouring_.count();
+  }
+
+  // (c_q, c_v) => LU of A = I - c_q F_q - c_v F_v; false when SparseLU finds it singular
+  bool factorise(double cq, double cv);
+  // (b) => x = A^-1 b (NaN when the last factorisation failed: Newton then gives up)
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  void solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
+
+  // F_q and F_v as dense matrices (tests)
+  Eigen::MatrixXd denseFq() const;
+  Eigen::MatrixXd denseFv() const;
+
+ private:
+  // (columns of one colour, F, fp_) => their entries (fp - F) / step on the pattern
+  void scatter(const std::vector<int>& cols, const Eigen::VectorXd& f, Eigen::VectorXd& values);
+
+  const Model& model_;
+  ColumnColouring colouring_;
+  Eigen::SparseMatrix<double> A_;  // structure fixed at construction; values per factorise
+  std::vector<int> diagonal_;      // per column: the index of its diagonal entry in A_'s values
+  Eigen::VectorXd fq_, fv_;        // F_q, F_v on A_'s structure
+  Eigen::VectorXd step_, deltaP_, qp_, vp_, fp_;
+  bool ok_ = false;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
+};
+
+}  // namespace yardsim::dynamics

@@ -66,7 +66,7 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
   // (matrix, about) => the given added mass
   if (const YAML::Node m = n["matrix"]) {
     if (n["rho"]) r.fail(n["rho"], key + ".rho", "'rho' goes with 'hull' (the computed added mass), not with 'matrix'");
-    b.addedMassAbout = r.vec3(n["about"], key + ".about", dynamics::Vector3::Zero());
+    b.addedMassAbout = r.length3(n["about"], key + ".about", dynamics::Vector3::Zero());
     b.addedMass = matrix6(r, m, key + ".matrix");
     return;
   }

@@ -394,7 +394,7 @@ void flows(const Reader& r, const YAML::Node& n, const std::set<std::string>& bo
     const std::string& k = f.name;
     if (!r.keys(m, {"body", "point", "frontal_area", "lateral_area", "length", "coefficients"}, k)) continue;
     body(r, m, k, bodies, f.body);
-    f.point = r.vec3(m["point"], k + ".point", Vector3::Zero());
+    f.point = r.length3(m["point"], k + ".point", Vector3::Zero());
     f.areas.frontal = r.number(m["frontal_area"], k + ".frontal_area", 0.0, true);
     f.areas.lateral = r.number(m["lateral_area"], k + ".lateral_area", 0.0, true);
     f.areas.length = r.number(m["length"], k + ".length", 0.0);
@@ -428,7 +428,7 @@ void dampers(const Reader& r, const YAML::Node& n, const std::set<std::string>& 
     const std::string& k = d.name;
     if (!r.keys(m, {"body", "point", "linear", "quadratic"}, k)) continue;
     body(r, m, k, bodies, d.body);
-    d.point = r.vec3(m["point"], k + ".point", Vector3::Zero());
+    d.point = r.length3(m["point"], k + ".point", Vector3::Zero());
     // ([surge, sway, heave, roll, pitch, yaw]) => coefficients >= 0
     auto six = [&](const char* key, std::array<double, 6>& c) {
       if (!m[key]) return;

@@ -121,7 +121,7 @@ MechanicsSpec::Visual visual(const Reader& r, const YAML::Node& n, const std::st
   };
   if (const YAML::Node b = n["box"]) {
     v.shape = Shape::Box;
-    v.size = r.vec3(b, key + ".box", Vector3::Zero());
+    v.size = r.length3(b, key + ".box", Vector3::Zero());
     if (b.IsSequence() && b.size() == 3 && !(v.size.minCoeff() > 0)) positive(b, key + ".box", 0.0);
   } else if (YAML::Node c = n["cylinder"]) {  // not const: a missing key must stay a valid node
     v.shape = Shape::Cylinder;
@@ -210,7 +210,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
     b.X_PJ = r.pose(n["placement"], b.name + ".placement");
     if (r.required(n, "mass", b.name, "kg")) b.mass = r.number(n["mass"], b.name + ".mass", 0.0);
     if (n["mass"] && !(b.mass > 0)) r.fail(n["mass"], b.name + ".mass", "mass must be > 0 kg");
-    b.com = r.vec3(n["com"], b.name + ".com", Vector3::Zero());
+    b.com = r.length3(n["com"], b.name + ".com", Vector3::Zero());
     if (const YAML::Node in = n["inertia"]) {
       const auto v = in.IsSequence() && in.size() == 6 ? r.numbers(in, b.name + ".inertia", 6)
                                                         : r.numbers(in, b.name + ".inertia", 3);
@@ -292,7 +292,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       const std::string hint = didYouMean(out.first, known);
       rd.fail(n["body"], k + ".body", "unknown body '" + out.first + "'" + (hint.empty() ? "" : " (" + hint + ")"));
     }
-    out.second = rd.vec3(n["point"], k + ".point", Vector3::Zero());
+    out.second = rd.length3(n["point"], k + ".point", Vector3::Zero());
     return out;
   };
   // (a list of points) => the points, at least `least` of them
@@ -392,7 +392,7 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
         l.body = ldr.text(n["body"], l.name + ".body", "");
       if (!l.body.empty() && (!names.count(l.body) || l.body == "world"))
         ldr.fail(n["body"], l.name + ".body", "unknown body '" + l.body + "'");
-      l.point = ldr.vec3(n["point"], l.name + ".point", Vector3::Zero());
+      l.point = ldr.length3(n["point"], l.name + ".point", Vector3::Zero());
       const std::string frame = n["frame"] && n["frame"].IsScalar() ? n["frame"].Scalar() : "world";
       if (frame != "world" && frame != "body")
         ldr.fail(n["frame"], l.name + ".frame", "expected world or body, got '" + frame + "'");

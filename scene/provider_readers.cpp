@@ -52,7 +52,7 @@ mechanics::MechanicsSpec::Point readPoint(const spec::Reader& r, const YAML::Nod
     else
       r.fail(b, key + ".body", "expected a body name");
   }
-  out.second = r.vec3(n["point"], key + ".point", dynamics::Vector3::Zero());
+  out.second = r.length3(n["point"], key + ".point", dynamics::Vector3::Zero());
   return out;
 }
 

@@ -5,6 +5,7 @@
 // joints, ropes) and floating_spec.cpp (water, wind, hydrostatics, flow loads, damping).
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ using dynamics::Vector3;
 using models::didYouMean;
 
 constexpr double kDeg = M_PI / 180.0;
+// The largest coordinate or size a scene accepts, m (docs/robustness.md)
+constexpr double kMaxSceneLength = 1.0e6;
 
 struct Reader {
   const MechanicsReport& report;
@@ -105,12 +108,25 @@ struct Reader {
     const auto v = numbers(n, key, 3);
     return {v[0], v[1], v[2]};
   }
+  // (node, key path, fallback) => a position or size in m, each component at most
+  // kMaxSceneLength in magnitude (a coordinate of 1e300 m would reach the collision tree and
+  // the guard as an overflow far from its key)
+  Vector3 length3(const YAML::Node& n, const std::string& key, const Vector3& fallback) const {
+    const Vector3 v = vec3(n, key, fallback);
+    if (n && v.cwiseAbs().maxCoeff() > kMaxSceneLength) {
+      std::ostringstream got;
+      got << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+      fail(n, key,
+           "expected lengths in m within ±1e6 (a yard or an offshore site), got " + got.str());
+    }
+    return v;  // as read: one error, no follow-on errors from a fallback
+  }
   // ({xyz, rpy_deg}) => transform
   dynamics::Transform pose(const YAML::Node& n, const std::string& key) const {
     if (!n) return dynamics::Transform::identity();
     if (!keys(n, {"xyz", "rpy_deg"}, key)) return dynamics::Transform::identity();
     const Vector3 rpy = vec3(n["rpy_deg"], key + ".rpy_deg", Vector3::Zero()) * kDeg;
-    return {dynamics::eulerToMatrix(rpy), vec3(n["xyz"], key + ".xyz", Vector3::Zero())};
+    return {dynamics::eulerToMatrix(rpy), length3(n["xyz"], key + ".xyz", Vector3::Zero())};
   }
 };
 

@@ -111,7 +111,7 @@ collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std
     return v > 0 ? v : 1.0;
   };
   if (const YAML::Node b = n["box"]) {
-    const dynamics::Vector3 size = r.vec3(b, key + ".box", dynamics::Vector3::Ones());
+    const dynamics::Vector3 size = r.length3(b, key + ".box", dynamics::Vector3::Ones());
     if (!(size.minCoeff() > 0)) r.fail(b, key + ".box", "every edge must be > 0 m");
     return collision::Shape::box(size.cwiseMax(1e-9));
   }

@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <vector>
+
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
 
@@ -201,4 +204,36 @@ TEST_CASE("a load without series and an equalizer without branches are located e
     CHECK(r.diagnostics.all().front().keyPath == key);
     CHECK(r.diagnostics.all().front().where.line == 14);
   }
+}
+
+TEST_CASE("a coordinate or size beyond 1e6 m is refused at its value: placement and com and box") {
+  testing::SceneDir dir;
+  const auto r = load(dir, R"(        a:
+          parent: world
+          joint: {type: revolute}
+          placement: {xyz: [0, 0, 1.0e7]}
+          mass: 1
+          com: [1.0e300, 0, 0]
+          inertia: [1, 1, 1]
+          geometry: {box: [1, 1, 2.0e6]}
+        b:
+          parent: a
+          joint: {type: revolute}
+          placement: {xyz: [0, 0, -1.0e6]}
+          mass: 1
+          inertia: [1, 1, 1]
+)");
+  INFO(r.diagnostics.report());
+  REQUIRE(r.diagnostics.errorCount() == 3);  // b's -1e6 m is inside the range
+  const auto& d = r.diagnostics.all();
+  std::vector<std::pair<std::string, int>> got;
+  for (const auto& e : d) {
+    CHECK_THAT(e.message, Catch::Contains("within ±1e6"));
+    got.emplace_back(e.keyPath, e.where.line);
+  }
+  std::sort(got.begin(), got.end());
+  CHECK(got == std::vector<std::pair<std::string, int>>{
+                   {"components.m.params.bodies.a.com", 13},
+                   {"components.m.params.bodies.a.geometry.box", 15},
+                   {"components.m.params.bodies.a.placement.xyz", 11}});
 }

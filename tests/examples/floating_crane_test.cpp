@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <utility>
+#include <vector>
 
 #include "devs/simulator.hpp"
 #include "dynamics/model.hpp"
@@ -86,4 +88,46 @@ TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and h
   CHECK(finished.at("lift") == Approx(10.0 + 2.0 / 0.05).margin(1e-6));
   CHECK(read("load.z") - z0 == Approx(2.0).margin(0.03));
   CHECK(std::abs(read("FC.hull.trim") - trim) < 0.02 * trim);
+}
+
+// examples/floating_crane/long_wave.yaml: the crane (linear hydrostatics, the committed
+// response's radiation and excitation) in a 0.5 m, 60 s head sea in 20 m of water (k = 0.00749
+// 1/m, 839 m long). A wave this long lifts the barge quasi-statically: the heave at the keel
+// point follows the mean elevation over the 114 m waterplane, sin(kL/2) / (kL/2) = 0.970 of the
+// wave there, in phase, up to the dynamic terms of order (omega / omega_heave)^2 = 3 %. The
+// heave and the elevation are fitted at the wave's frequency over two periods after the ramp.
+TEST_CASE(
+    "floating crane: heave in a long head sea follows the surface through the excitation "
+    "response") {
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
+                                       "/examples/floating_crane/long_wave.yaml");
+  auto root = scene::assemble(*scene);
+  devs::Simulator sim(*root);
+  const auto& mb = static_cast<const models::MultibodyModel&>(*root->findComponent("mechanics"));
+  const Reader read(mb);
+  const double omega = 2 * M_PI / 60.0;
+  // (channel samples over [180, 300) s) => amplitude and phase at omega about their mean
+  std::vector<double> t, z, eta;
+  for (double s = 180.0; s < 300.0 - 1e-9; s += 0.1) {
+    sim.runUntil(s);
+    t.push_back(s);
+    z.push_back(read("FC.barge.z"));
+    eta.push_back(read("FC.hull.wave_elevation"));
+  }
+  auto fit = [&](const std::vector<double>& v) {
+    const double n = static_cast<double>(v.size());
+    double mean = 0, c = 0, sn = 0;
+    for (double x : v) mean += x / n;
+    for (size_t i = 0; i < v.size(); ++i) {
+      c += (v[i] - mean) * std::cos(omega * t[i]);
+      sn += (v[i] - mean) * std::sin(omega * t[i]);
+    }
+    return std::pair{2 * std::hypot(c, sn) / n, std::atan2(sn, c)};
+  };
+  const auto [za, zp] = fit(z);
+  const auto [ea, ep] = fit(eta);
+  INFO("heave " << za << " m at " << zp << " rad, elevation " << ea << " m at " << ep << " rad");
+  CHECK(ea == Approx(0.25).epsilon(0.01));  // the wave at the keel point
+  CHECK(za / ea == Approx(0.970).epsilon(0.06));
+  CHECK(std::abs(zp - ep) < 0.05);
 }

@@ -98,7 +98,8 @@ TEST_CASE("floating crane: rated lift statics and the hand-calculated trim and h
 // heave and the elevation are fitted at the wave's frequency over two periods after the ramp.
 TEST_CASE(
     "floating crane: heave in a long head sea follows the surface through the excitation "
-    "response") {
+    "response",
+    "[long]") {  // 2 s in Release, about 220 s under the sanitizers
   auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
                                        "/examples/floating_crane/long_wave.yaml");
   auto root = scene::assemble(*scene);

@@ -34,12 +34,11 @@ void actors(const Instance& in, std::string& out) {
   for (const auto& c : in.children) actors(*c, out);
 }
 
-// (model tree, whether to estimate) => "{model, method, dt, water_level, omega_max, damping_ratio,
-// stiffest_body}" of every multibody model (water_level: where it has a sea)
-void systems(const devs::Model& m, bool estimate, std::string& out) {
+// (model tree) => "{model, method, dt, water_level}" of every multibody model (water_level:
+// where it has a sea)
+void systems(const devs::Model& m, std::string& out) {
   if (!m.isAtomic()) {
-    for (const auto& c : static_cast<const devs::Coupled&>(m).components())
-      systems(*c, estimate, out);
+    for (const auto& c : static_cast<const devs::Coupled&>(m).components()) systems(*c, out);
     return;
   }
   if (const auto* mb = dynamic_cast<const MultibodyModel*>(&m)) {
@@ -56,21 +55,16 @@ void systems(const devs::Model& m, bool estimate, std::string& out) {
       out += ",\"water_level\":";
       appendJsonNumber(out, sea.water.level);
     }
-    // (the system at its start) => its stiffest mode: what the stiffness guard judged (not with
-    // stiffness_check: off, where the user silenced it: a dense eigenproblem of 2 nv, O(nv^3),
-    // most of a short run with hundreds of lumped-line nodes)
-    if (estimate) {
-      try {
-        const mechanics::StiffnessEstimate e =
-            mechanics::estimateStiffness(mb->builtMechanics(), mb->system().servo());
-        out += ",\"omega_max\":";
-        appendJsonNumber(out, e.omegaMax);
-        out += ",\"damping_ratio\":";
-        appendJsonNumber(out, e.dampingRatio);
-        out += ",\"stiffest_body\":";
-        appendJsonString(out, e.body);
-      } catch (const std::exception&) {  // accelerations not finite at the start: the run says so
-      }
+    // (the system at its start) => its stiffest mode: what the stiffness guard judged
+    try {
+      const mechanics::StiffnessEstimate e = mechanics::estimateStiffness(mb->builtMechanics(), mb->system().servo());
+      out += ",\"omega_max\":";
+      appendJsonNumber(out, e.omegaMax);
+      out += ",\"damping_ratio\":";
+      appendJsonNumber(out, e.dampingRatio);
+      out += ",\"stiffest_body\":";
+      appendJsonString(out, e.body);
+    } catch (const std::exception&) {  // accelerations not finite at the start: the run says so
     }
     out += "}";
   }
@@ -166,7 +160,7 @@ std::string runSummaryJson(const Scene& scene, const devs::Model& root, const Ru
   number("replay_interval", f.replayInterval);
   key("systems");
   o += "[";
-  systems(root, scene.stiffnessCheck != "off", o);
+  systems(root, o);
   o += "]";
   key("ropes");
   o += "[";

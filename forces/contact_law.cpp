@@ -21,12 +21,14 @@ double elasticForce(const NormalLaw& law, double depth) {
   return law.stiffness * powDepth(law, depth);
 }
 
-// (law, delta, delta_dot) => max(0, k delta^n + c delta^n delta_dot) (linear: c delta_dot)
+// (law, delta, delta_dot) => max(0, k delta^n + c delta^n delta_dot) (linear:
+// c min(1, delta / delta_0) delta_dot)
 double normalForce(const NormalLaw& law, double depth, double depthRate) {
   if (depth <= 0.0) return 0.0;
   const double dn = powDepth(law, depth);
-  const double damping =
-      law.kind == NormalLawKind::kLinear ? law.damping * depthRate : law.damping * dn * depthRate;
+  const double ramp = depth < law.dampingDepth ? depth / law.dampingDepth : 1.0;
+  const double damping = law.kind == NormalLawKind::kLinear ? law.damping * ramp * depthRate
+                                                            : law.damping * dn * depthRate;
   return std::max(0.0, law.stiffness * dn + damping);
 }
 
@@ -110,6 +112,63 @@ double linearRestitution(double mass, double stiffness, double damping) {
   const double wd = wn * std::sqrt(1.0 - zeta * zeta);
   const double th = std::atan2(2.0 * sigma * wd, sigma * sigma - wd * wd);
   return std::exp(-sigma * th / wd) * (sigma * std::sin(th) - wd * std::cos(th)) / wd;
+}
+
+namespace {
+
+// (root bracket [lo, hi] with f(lo), f(hi) of opposite signs) => the root, by bisection
+template <class F>
+double bisect(F f, double lo, double hi) {
+  const bool rising = f(lo) < 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    ((f(mid) < 0.0) == rising ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+// (m, law, v0) => e: ramp (Hunt-Crossley n = 1), oscillator, ramp; see the header
+double rampedLinearRestitution(double mass, const NormalLaw& law, double impactSpeed) {
+  const double m = mass, k = law.stiffness, c = law.damping, d0 = law.dampingDepth;
+  const double v0 = impactSpeed;
+  if (law.kind != NormalLawKind::kLinear || !(v0 > 0.0) || !(d0 >= 0.0)) {
+    throw std::invalid_argument(
+        "rampedLinearRestitution: needs a linear law, v0 > 0, delta_0 >= 0");
+  }
+  if (d0 == 0.0 || c == 0.0) return linearRestitution(m, k, c);
+  // on the ramp: G(v) = m (alpha v - ln(1 + alpha v)) / alpha^2, G(v) + k delta^2 / 2 constant
+  const double alpha = c / (k * d0);
+  auto G = [&](double v) { return m * (alpha * v - std::log1p(alpha * v)) / (alpha * alpha); };
+  const double rampEnergy = 0.5 * k * d0 * d0;
+  if (G(v0) <= rampEnergy) return huntCrossleyRestitution(alpha * v0);  // never leaves the ramp
+  const double v1 = bisect([&](double v) { return G(v) - (G(v0) - rampEnergy); }, 0.0, v0);
+  // beyond: x = e^(-sigma t) (d0 cos(w_d t) + B sin(w_d t)), from (d0, v1)
+  const double wn = std::sqrt(k / m);
+  const double zeta = c / (2.0 * std::sqrt(k * m));
+  if (zeta >= 1.0) throw std::invalid_argument("rampedLinearRestitution: needs zeta < 1");
+  const double sigma = zeta * wn, wd = wn * std::sqrt(1.0 - zeta * zeta);
+  const double B = (v1 + sigma * d0) / wd;
+  auto x = [&](double t) {
+    return std::exp(-sigma * t) * (d0 * std::cos(wd * t) + B * std::sin(wd * t));
+  };
+  auto v = [&](double t) {
+    return std::exp(-sigma * t) *
+           ((B * wd - sigma * d0) * std::cos(wd * t) - (d0 * wd + sigma * B) * std::sin(wd * t));
+  };
+  auto force = [&](double t) { return k * x(t) + c * v(t); };
+  // the first of x = d0 (after the turn) and F = 0, scanning half a period in fine steps
+  const double dt = M_PI / wd / 4000.0;
+  double t = dt;
+  while (x(t) > d0 && force(t) > 0.0) t += dt;
+  if (force(t) <= 0.0) return -v(bisect(force, t - dt, t)) / v0;  // the clamp lets go
+  const double v2 = v(bisect([&](double s) { return x(s) - d0; }, t - dt, t));
+  // back on the ramp to delta = 0: G(v3) = G(v2) + k d0^2 / 2, v3 in (-1/alpha, v2)
+  const double target = G(v2) + rampEnergy;
+  const double v3 = bisect([&](double s) { return G(s) - target; }, -(1.0 - 1e-15) / alpha, v2);
+  return -v3 / v0;
 }
 
 }  // namespace yardsim::forces

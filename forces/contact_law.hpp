@@ -11,7 +11,11 @@
 // damping c [N s/m^(n+1)] (linear law: N s/m), forces [N], energy [J], power [W].
 //
 // Normal laws (both never pull: F_n = max(0, ...), and F_n = 0 for delta <= 0):
-//   linear spring-damper   F_n = k delta + c delta_dot
+//   linear spring-damper   F_n = k delta + c min(1, delta / delta_0) delta_dot: the damping is
+//                          ramped in over the first delta_0 of penetration (MSC Adams' IMPACT
+//                          does the same with a cubic step), so the force is continuous where
+//                          the contact closes (delta_0 = 0: the plain law, whose force jumps
+//                          from 0 to c delta_dot there and which an implicit step cannot cross)
 //   Hunt-Crossley          F_n = k delta^n + c delta^n delta_dot = k delta^n (1 + alpha delta_dot),
 //                          alpha = c / k [s/m]; n = 1.5 is Hertz's exponent for curved bodies,
 //                          n = 1 for flat faces.
@@ -33,9 +37,10 @@ enum class NormalLawKind { kLinear, kHuntCrossley };
 // Parameters of the normal law; units above. For kLinear the exponent is ignored (n = 1).
 struct NormalLaw {
   NormalLawKind kind = NormalLawKind::kHuntCrossley;
-  double stiffness = 1e9;  // k, N/m^n
-  double damping = 0.0;    // c, N s/m^(n+1) (Hunt-Crossley: c = alpha k), linear: N s/m
-  double exponent = 1.5;   // n, Hunt-Crossley only
+  double stiffness = 1e9;     // k, N/m^n
+  double damping = 0.0;       // c, N s/m^(n+1) (Hunt-Crossley: c = alpha k), linear: N s/m
+  double exponent = 1.5;      // n, Hunt-Crossley only
+  double dampingDepth = 0.0;  // delta_0, m, linear only: the damping's ramp (0: no ramp)
 };
 
 enum class FrictionForm { kSqrt, kTanh };
@@ -81,5 +86,12 @@ double huntCrossleyRestitution(double alphaV0);
 // damped oscillator's velocity when its acceleration first vanishes); needs zeta < 1. The
 // unclamped textbook value exp(-zeta pi / sqrt(1 - zeta^2)) (contact until delta = 0) is smaller
 double linearRestitution(double mass, double stiffness, double damping);
+// (m kg, linear law with its ramp delta_0 >= 0, v0 m/s > 0) => e of a 1-dof impact at v0 (no
+// other force), piecewise exact: on the ramp the law is Hunt-Crossley with n = 1 and
+// alpha = c / (k delta_0), whose m v dv / (1 + alpha v) = -k delta d delta integrates in closed
+// form; beyond it the damped oscillator (zeta < 1), its end at delta = delta_0 or at F_n = 0 found
+// by bisection on the closed-form motion. delta_0 = 0: linearRestitution; a contact that stays on
+// the ramp: huntCrossleyRestitution(alpha v0)
+double rampedLinearRestitution(double mass, const NormalLaw& law, double impactSpeed);
 
 }  // namespace yardsim::forces

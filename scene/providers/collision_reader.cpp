@@ -27,6 +27,9 @@ namespace {
 using mechanics::BuiltMechanics;
 using mechanics::MechanicsSpec;
 
+// m: the linear law's default damping ramp (docs/collision.md "The contact law")
+constexpr double kDefaultDampingDepth = 1e-4;
+
 // A clearance watch as written: patterns of body or rope names (`*` matches any run of
 // characters), the threshold, how far distances are computed, and where it was written.
 struct WatchSpec {
@@ -127,13 +130,14 @@ collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std
              : collision::Shape::capsule(radius, length);
 }
 
-// ({law: hunt_crossley | linear, k, n, c | restitution + impact_speed, mu, slip_speed,
-// friction: sqrt | tanh}) => the pair's contact material
+// ({law: hunt_crossley | linear, k, n, c | restitution + impact_speed, damping_depth, mu,
+// slip_speed, friction: sqrt | tanh}) => the pair's contact material
 forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n,
                                 const std::string& key) {
   forces::ContactMaterial m;
   if (!r.keys(n,
-              {"law", "k", "n", "c", "restitution", "impact_speed", "mu", "slip_speed", "friction"},
+              {"law", "k", "n", "c", "restitution", "impact_speed", "damping_depth", "mu",
+               "slip_speed", "friction"},
               key))
     return m;
   const std::string law = n["law"] && n["law"].IsScalar() ? n["law"].Scalar() : "hunt_crossley";
@@ -160,6 +164,13 @@ forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n,
       m.law.damping = forces::lankaraniNikraveshDamping(m.law.stiffness, rest, v0);
     if (n["impact_speed"] && !(v0 > 0))
       r.fail(n["impact_speed"], key + ".impact_speed", "must be > 0 m/s");
+  }
+  if (law == "linear") {  // the damping's ramp, m (docs/collision.md "The contact law")
+    m.law.dampingDepth =
+        nonNegative(r, n["damping_depth"], key + ".damping_depth", kDefaultDampingDepth);
+  } else if (n["damping_depth"]) {
+    r.fail(n["damping_depth"], key + ".damping_depth",
+           "the linear law's damping ramp (Hunt-Crossley's damping is continuous already)");
   }
   m.friction.mu = nonNegative(r, n["mu"], key + ".mu", 0.0);
   m.friction.slipSpeed = r.number(n["slip_speed"], key + ".slip_speed", 1e-3);

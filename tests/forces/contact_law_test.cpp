@@ -108,6 +108,51 @@ TEST_CASE(
         Approx(std::exp(-zeta * M_PI / std::sqrt(1.0 - zeta * zeta))).margin(1e-3));
 }
 
+TEST_CASE("contact_law: the ramped linear law is continuous where the contact closes") {
+  const double k = 1e9, c = 1e5, v = 0.44;
+  const NormalLaw plain{NormalLawKind::kLinear, k, c, 1.0};
+  const NormalLaw ramped{NormalLawKind::kLinear, k, c, 1.0, 1e-4};
+  for (const double d : {1e-9, 1e-7, 1e-6}) {
+    INFO("delta = " << d);
+    CHECK(normalForce(plain, d, v) >= c * v);  // the jump: c v however small delta is
+    CHECK(normalForce(ramped, d, v) == Approx(k * d + c * v * d / 1e-4).epsilon(1e-12));
+  }
+  // 1.4 N at 1 nm against the plain law's 44 kN: it starts from 0, as the spring's k delta does
+  CHECK(normalForce(ramped, 1e-9, v) < 1e-4 * normalForce(plain, 1e-9, v));
+  // beyond the ramp the plain law; at delta_0 both pieces agree
+  CHECK(normalForce(ramped, 2e-4, v) == normalForce(plain, 2e-4, v));
+  CHECK(normalForce(ramped, 1e-4, -0.2) == Approx(normalForce(plain, 1e-4, -0.2)));
+  // the power is the damping's, never positive
+  CHECK(normalPower(ramped, 5e-5, 0.3) == Approx(-c * 0.5 * 0.3 * 0.3));
+  CHECK(normalPower(ramped, 5e-5, -0.3) < 0.0);
+}
+
+TEST_CASE("contact_law: restitution of the ramped linear law against its piecewise closed form") {
+  // m = 1 kg, k = 1e4 N/m, v0 = 1 m/s: the deepest point is about v0 / omega_n = 0.01 m
+  const double m = 1.0, k = 1e4, v0 = 1.0;
+  for (const double zeta : {0.05, 0.3, 0.8}) {
+    // a short ramp, a long one, the whole contact: zeta = 0.3 and 0.8 with delta_0 = 1 mm end at
+    // the clamp beyond the ramp, the others back on the ramp at delta = 0 (checked with an
+    // independent RK2 run), and 0.2 m is Hunt-Crossley all through
+    for (const double d0 : {1e-3, 4e-3, 0.2}) {
+      const double c = 2.0 * zeta * std::sqrt(k * m);
+      const NormalLaw law{NormalLawKind::kLinear, k, c, 1.0, d0};
+      const double e = bounce(law, m, v0, 1e-6);
+      INFO("zeta = " << zeta << ", delta_0 = " << d0 << ", e = " << e);
+      CHECK(e == Approx(rampedLinearRestitution(m, law, v0)).margin(2e-5));
+    }
+  }
+  // a contact that never leaves the ramp is Hunt-Crossley with n = 1, alpha = c / (k delta_0)
+  const NormalLaw onRamp{NormalLawKind::kLinear, k, 60.0, 1.0, 0.2};
+  CHECK(rampedLinearRestitution(m, onRamp, v0) ==
+        Approx(huntCrossleyRestitution(60.0 / (k * 0.2) * v0)).epsilon(1e-12));
+  // delta_0 -> 0: the plain clamped law
+  const NormalLaw tiny{NormalLawKind::kLinear, k, 60.0, 1.0, 1e-9};
+  CHECK(rampedLinearRestitution(m, tiny, v0) == Approx(linearRestitution(m, k, 60.0)).margin(1e-5));
+  CHECK(rampedLinearRestitution(m, {NormalLawKind::kLinear, k, 60.0, 1.0, 0.0}, v0) ==
+        linearRestitution(m, k, 60.0));
+}
+
 TEST_CASE("contact_law: a body resting on the law carries its weight with no drift over 100 s") {
   const double m = 920e3, g = 9.81;
   for (const NormalLaw& law :

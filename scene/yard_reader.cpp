@@ -239,18 +239,25 @@ void SceneYard::expandRope(YAML::Node rope, const std::string& name, const std::
     const yard::Rope r = yard::getRope(*db_, ropeName);
     const std::string full = instPath.empty() ? name : instPath + "." + name;
     const std::string src = source("ropes", ropeName, rowOf("ropes", ropeName));
-    for (const auto& [key, value] : {std::pair<const char*, double>{"EA", r.ea}, {"mbl", r.mbl}}) {
+    // (the grade's EA and MBL, N, and diameter, m: the collision capsules and clearance watches)
+    struct Figure {
+      const char* key;
+      double value;
+      const char* unit;
+    };
+    for (const auto& [key, value, unit] :
+         {Figure{"EA", r.ea, " N"}, {"mbl", r.mbl, " N"}, {"diameter", r.diameter, " m"}}) {
       if (rope[key]) {
         provenance_.push_back({full + "." + key, shownList(rope[key]),
                                "the scene (the catalogue has " + exact(value) + ")"});
         continue;
       }
       rope[key] = scalar(value);
-      provenance_.push_back({full + "." + key, exact(value) + " N", src});
+      provenance_.push_back({full + "." + key, exact(value) + unit, src});
     }
     provenance_.push_back({full + ".rope",
-                           r.construction + ", diameter " + exact(r.diameter) + " m, " +
-                               exact(r.massPerMetre) + " kg/m (not modelled: the rope is massless)",
+                           r.construction + ", " + exact(r.massPerMetre) +
+                               " kg/m (not modelled: the rope is massless)",
                            src});
   } catch (const yard::DatabaseError& e) {
     std::vector<std::string> names;

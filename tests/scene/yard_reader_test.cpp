@@ -9,8 +9,11 @@
 #include <fstream>
 
 #include "forces/geometry/primitive_meshes.hpp"
+#include "run/runner.hpp"
+#include "scene/assembler.hpp"
 #include "scene/mechanical_systems.hpp"
 #include "scene/resolved_listing.hpp"
+#include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 #include "yard/block_store.hpp"
 #include "yard/catalogue.hpp"
@@ -114,6 +117,7 @@ TEST_CASE("a block from the database brings its figures and lugs and the scene o
   const auto& rope = spec.ropes[0];
   CHECK(rope.material.ea == 3.1e7);   // the catalogue's
   CHECK(rope.material.mbl == 3.0e5);  // the scene's
+  CHECK(rope.material.diameter == 0.02);  // the catalogue's: the capsule of clearance watches
   CHECK(rope.path[1].first == "b");
   CHECK(rope.path[1].second == dynamics::Vector3(1, 0, 1));  // lug L1
   CHECK_THAT(r.scene->database, Contains("yard.sqlite") && Contains("schema 1"));
@@ -121,11 +125,55 @@ TEST_CASE("a block from the database brings its figures and lugs and the scene o
   CHECK_THAT(provenance(r, "b.com").source, Contains("blocks row 1 'B'"));
   CHECK_THAT(provenance(r, "sling.EA").source, Contains("ropes row 1 'R 20 mm'"));
   CHECK_THAT(provenance(r, "sling.mbl").source, Contains("the scene"));
+  CHECK_THAT(provenance(r, "sling.diameter").source, Contains("ropes row 1 'R 20 mm'"));
+  CHECK(provenance(r, "sling.diameter").value == "0.02 m");
   CHECK_THAT(provenance(r, "ropes.sling.path[1].point").value, Contains("lug L1"));
   const std::string listing = scene::resolvedListing(*r.scene);
   CHECK_THAT(listing, Contains("database ") &&
                           Contains("b.inertia = [3000, 3200, 3400, -10, 5, 7]") &&
                           Contains("<- blocks row 1 'B'"));
+}
+
+TEST_CASE("a catalogue rope's diameter reaches the clearance watches of a database scene") {
+  // the sling hangs from (1, 0, 10) to lug L1 of b at (1, 0, 6), a vertical axis at x = 1; the
+  // post's face is at x = 1.5: the clearance is 0.5 m less the rope's radius (no gravity: at rest)
+  auto clearance = [](const std::string& ropeKeys) {
+    SceneDir dir;
+    makeDatabase(dir);
+    auto r = load(dir, R"(schema_version: 1
+database: yard.sqlite
+mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    b: {parent: world, joint: {type: free, q0: {xyz: [0, 0, 5]}}, from_db: B}
+    post:
+      parent: world
+      joint: {name: post_fix, type: fixed}
+      placement: {xyz: [2, 0, 8]}
+      mass: 1000
+      inertia: [100, 100, 100]
+      geometry: {box: [1, 1, 1]}
+  ropes:
+    sling: {path: [{body: world, point: [1, 0, 10]}, {body: b, point: L1}], L0: 4.0, )" +
+                           ropeKeys + R"(}
+clearance:
+  rope_post: {between: [sling, post], below: 1.0}
+record: {interval: 0.01, channels: ["rope_post.distance"]}
+integrator: {method: rk4, dt: 0.001}
+)");
+    INFO(r.diagnostics.report());
+    REQUIRE(r.scene);
+    auto root = scene::assemble(*r.scene);
+    run::runScene(*r.scene, *root, {dir.path() / "out", 0.02, {}, {}});
+    const testing::CsvFile csv((dir.path() / "out" / "timeseries.csv").string());
+    const int k = csv.column("rope_post.distance[m]");
+    REQUIRE(k >= 0);
+    return csv.rows.back()[static_cast<std::size_t>(k)];
+  };
+  CHECK(clearance("catalogue: R 20 mm") == Approx(0.5 - 0.01).margin(1e-9));
+  CHECK(clearance("catalogue: R 20 mm, diameter: 0.03") ==
+        Approx(0.5 - 0.015).margin(1e-9));                            // the scene's own wins
+  CHECK(clearance("EA: 3.1e7") == Approx(0.5 - 0.02).margin(1e-9));  // rope_diameter 0.04
 }
 
 TEST_CASE("a facility includes its model file with its particulars as parameters") {

@@ -27,8 +27,9 @@ namespace {
 using mechanics::BuiltMechanics;
 using mechanics::MechanicsSpec;
 
-// m: the linear law's default damping ramp (docs/collision.md "The contact law")
-constexpr double kDefaultDampingDepth = 1e-4;
+// m: the linear law's damping ramp unless given: none, the plain law (docs/collision.md "Stiff
+// contact")
+constexpr double kDefaultDampingDepth = 0.0;
 
 // A clearance watch as written: patterns of body or rope names (`*` matches any run of
 // characters), the threshold, how far distances are computed, and where it was written.

@@ -115,8 +115,8 @@ TEST_CASE("a block from the database brings its figures and lugs and the scene o
   CHECK(b.visual.mesh->triangles.size() == 12);
   REQUIRE(spec.ropes.size() == 1);
   const auto& rope = spec.ropes[0];
-  CHECK(rope.material.ea == 3.1e7);   // the catalogue's
-  CHECK(rope.material.mbl == 3.0e5);  // the scene's
+  CHECK(rope.material.ea == 3.1e7);       // the catalogue's
+  CHECK(rope.material.mbl == 3.0e5);      // the scene's
   CHECK(rope.material.diameter == 0.02);  // the catalogue's: the capsule of clearance watches
   CHECK(rope.path[1].first == "b");
   CHECK(rope.path[1].second == dynamics::Vector3(1, 0, 1));  // lug L1
@@ -172,7 +172,7 @@ integrator: {method: rk4, dt: 0.001}
   };
   CHECK(clearance("catalogue: R 20 mm") == Approx(0.5 - 0.01).margin(1e-9));
   CHECK(clearance("catalogue: R 20 mm, diameter: 0.03") ==
-        Approx(0.5 - 0.015).margin(1e-9));                            // the scene's own wins
+        Approx(0.5 - 0.015).margin(1e-9));                           // the scene's own wins
   CHECK(clearance("EA: 3.1e7") == Approx(0.5 - 0.02).margin(1e-9));  // rope_diameter 0.04
 }
 

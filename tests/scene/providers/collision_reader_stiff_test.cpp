@@ -2,7 +2,7 @@
 // a 1000 kg box (1 m cube) or ball (r = 0.5 m) set down from 1 mm on the ground:
 // - a Hertzian Hunt-Crossley law settles at its weight with HHT and generalized-alpha at their
 //   default damping, and sinks the law's static depth (m g / (4 k))^(1/n);
-// - the linear law, its damping ramped in over the first delta_0 = 0.1 mm (the default), with the
+// - the linear law, its damping ramped in over the first delta_0 = 0.1 mm (damping_depth), with the
 //   methods' high-frequency damping (HHT alpha = -0.3, generalized-alpha rho_inf = 0.5): no
 //   blow-up, the mechanical energy never above its start, the weight carried; without the ramp
 //   (damping_depth: 0) the same run fails: its damping force jumps from 0 to c ddelta/dt where
@@ -102,7 +102,8 @@ TEST_CASE(
       for (const std::string& shape : {kBox, kBall}) {
         INFO(integrator << " k = " << k << " " << shape);
         std::ostringstream law;
-        law << "{law: linear, k: " << k << ", c: 1.0e5, mu: 0.3, slip_speed: 0.01}";
+        law << "{law: linear, k: " << k
+            << ", c: 1.0e5, damping_depth: 1.0e-4, mu: 0.3, slip_speed: 0.01}";
         const auto csv = drop(integrator, law.str(), shape, 0.501, kG, 0.0, 5.0, 0.01);
         const std::size_t last = csv.rows.size() - 1;
         REQUIRE(at(csv, last, "time[s]") == Approx(5.0));

@@ -305,6 +305,18 @@ record: {interval: 1, channels: ["floor.*"]}
   const auto noLaw = load("nolaw.yaml", "      bodies: [box]");
   CHECK_THAT(noLaw.diagnostics.report(), Contains("nolaw.yaml:13:") && Contains("with a default"));
   CHECK(!load("good.yaml", "      bodies: [box]\n" + law).diagnostics.hasErrors());
+  // the damping ramp: the linear law's only, never negative
+  const auto rampHc = load("ramphc.yaml",
+                           "      bodies: [box]\n      contact: {default: {law: hunt_crossley, k: "
+                           "1.0e8, damping_depth: 1.0e-4}}");
+  CHECK_THAT(rampHc.diagnostics.report(), Contains("ramphc.yaml:14:") &&
+                                              Contains("contact.default.damping_depth") &&
+                                              Contains("the linear law's damping ramp"));
+  const auto rampNeg = load("rampneg.yaml",
+                            "      bodies: [box]\n      contact: {default: {law: linear, k: "
+                            "1.0e8, damping_depth: -1.0e-4}}");
+  CHECK_THAT(rampNeg.diagnostics.report(),
+             Contains("rampneg.yaml:14:") && Contains("contact.default.damping_depth"));
 }
 
 namespace {

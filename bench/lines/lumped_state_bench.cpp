@@ -4,8 +4,10 @@
 // lines of n segments in still water and released at 0.5 m/s in surge, run as a scene (scene
 // loader, assembler, runner; one channel recorded every 10 s) for 20 s of simulated time.
 // Counters: real-time factor and wall time per step and per inner node (wall time: on a shared
-// machine compare the CPU column too). A run includes the run summary's stiffness estimate, a
-// dense eigen-decomposition of the 2 nv system: O(nv^3), the largest part at 40 segments.
+// machine compare the CPU column too); and the integrator's work per step (stage evaluations,
+// Jacobians, Newton iterations) with its failed Newton solves, the factors of the cost besides
+// the nodes. A run includes the run summary's stiffness estimate (Arnoldi on the coloured
+// Jacobian for a system with lumped lines: mechanics/largest_mode.hpp).
 #include <benchmark/benchmark.h>
 
 #include <chrono>

@@ -11,6 +11,7 @@
 #include "dynamics/multibody_system.hpp"
 #include "forces/provider_stiffness.hpp"
 #include "mechanics/data.hpp"
+#include "mechanics/largest_mode.hpp"
 #include "mechanics/providers.hpp"
 #include "mechanics/stage.hpp"
 #include "mechanics/system.hpp"
@@ -39,6 +40,40 @@ BuiltMechanics tautened(const BuiltMechanics& mech) {
   return m;
 }
 
+// (kernel, q0, v0) => J = [0 I; A_q A_v] by central differences of the accelerations, dense,
+// and its eigenvalue of largest modulus with its mode's q part
+void denseLargestMode(dynamics::MultibodySystem& kernel, const dynamics::Model& model,
+                      const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
+                      std::complex<double>& lambda, Eigen::VectorXcd& shape) {
+  const int nv = model.nv;
+  // (q0 (+) theta, v0 + dv) => central differences of the accelerations: J = [0 I; A_q A_v]
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * nv, 2 * nv);
+  J.topRightCorner(nv, nv).setIdentity();
+  Eigen::VectorXd q(model.nq), v(nv), ap(nv), am(nv), d(nv);
+  for (int j = 0; j < nv; ++j) {
+    for (int side = 0; side < 2; ++side) {
+      const double sign = side == 0 ? 1.0 : -1.0;
+      d.setZero();
+      d[j] = sign * kStep;
+      dynamics::integrate(model, q0, d, 1.0, q);
+      kernel.acceleration(0.0, q, v0, side == 0 ? ap : am);
+    }
+    J.block(nv, j, nv, 1) = (ap - am) / (2.0 * kStep);
+    for (int side = 0; side < 2; ++side) {
+      v = v0;
+      v[j] += (side == 0 ? 1.0 : -1.0) * kStep;
+      kernel.acceleration(0.0, q0, v, side == 0 ? ap : am);
+    }
+    J.block(nv, nv + j, nv, 1) = (ap - am) / (2.0 * kStep);
+  }
+  // (J) => the eigenvalue of largest modulus and its mode shape
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(J, true);
+  Eigen::Index top = 0;
+  eig.eigenvalues().cwiseAbs().maxCoeff(&top);
+  lambda = eig.eigenvalues()[top];
+  shape = eig.eigenvectors().col(top).head(nv);
+}
+
 }  // namespace
 
 StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoSettings& servo) {
@@ -63,34 +98,19 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
   data.setPoints = &held;
   connectStage(system, data);
   dynamics::MultibodySystem& kernel = data.kernel;
-  // (q0 (+) theta, v0 + dv) => central differences of the accelerations: J = [0 I; A_q A_v]
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * nv, 2 * nv);
-  J.topRightCorner(nv, nv).setIdentity();
-  Eigen::VectorXd q(model.nq), v(nv), ap(nv), am(nv), d(nv);
-  for (int j = 0; j < nv; ++j) {
-    for (int side = 0; side < 2; ++side) {
-      const double sign = side == 0 ? 1.0 : -1.0;
-      d.setZero();
-      d[j] = sign * kStep;
-      dynamics::integrate(model, mech.q0, d, 1.0, q);
-      kernel.acceleration(0.0, q, mech.v0, side == 0 ? ap : am);
-    }
-    J.block(nv, j, nv, 1) = (ap - am) / (2.0 * kStep);
-    for (int side = 0; side < 2; ++side) {
-      v = mech.v0;
-      v[j] += (side == 0 ? 1.0 : -1.0) * kStep;
-      kernel.acceleration(0.0, mech.q0, v, side == 0 ? ap : am);
-    }
-    J.block(nv, nv + j, nv, 1) = (ap - am) / (2.0 * kStep);
+  // (a structured system: lumped-line nodes) => J on its pattern and Arnoldi (largest_mode.hpp);
+  // (any other) => J dense by central differences and every eigenvalue
+  std::complex<double> lambda;
+  Eigen::VectorXcd shape;
+  if (const dynamics::JacobianPattern* pattern = kernel.jacobianPattern()) {
+    const LargestMode mode = largestMode(kernel, model, mech.q0, mech.v0, *pattern, kStep);
+    lambda = mode.lambda;
+    shape = mode.shape;
+  } else {
+    denseLargestMode(kernel, model, mech.q0, mech.v0, lambda, shape);
   }
-  // (J) => the eigenvalue of largest modulus and its mode shape
-  const Eigen::EigenSolver<Eigen::MatrixXd> eig(J, true);
-  Eigen::Index top = 0;
-  eig.eigenvalues().cwiseAbs().maxCoeff(&top);
-  const std::complex<double> lambda = eig.eigenvalues()[top];
   out.omegaMax = std::abs(lambda);
   out.dampingRatio = out.omegaMax > 0 ? -lambda.real() / out.omegaMax : 0.0;
-  const Eigen::VectorXcd shape = eig.eigenvectors().col(top).head(nv);
   Eigen::Index dof = 0;
   shape.cwiseAbs().maxCoeff(&dof);
   out.body = model.names[static_cast<std::size_t>(model.dofBody[static_cast<std::size_t>(dof)])];

@@ -4,8 +4,10 @@
 // lines of n segments in still water and released at 0.5 m/s in surge, run as a scene (scene
 // loader, assembler, runner; one channel recorded every 10 s) for 20 s of simulated time.
 // Counters: real-time factor and wall time per step and per inner node (wall time: on a shared
-// machine compare the CPU column too). A run includes the run summary's stiffness estimate, a
-// dense eigen-decomposition of the 2 nv system: O(nv^3), the largest part at 40 segments.
+// machine compare the CPU column too); and the integrator's work per step (stage evaluations,
+// Jacobians, Newton iterations) with its failed Newton solves, the factors of the cost besides
+// the nodes. A run includes the run summary's stiffness estimate (Arnoldi on the coloured
+// Jacobian for a system with lumped lines: mechanics/largest_mode.hpp).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -14,6 +16,7 @@
 #include <fstream>
 #include <string>
 
+#include "models/multibody/multibody_model.hpp"
 #include "run/runner.hpp"
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
@@ -49,6 +52,16 @@ std::string scene(int segments, const std::string& method) {
          std::to_string(kUntil) + "\n";
 }
 
+// (model tree) => the integrator's work of its (first) multibody model, or nullptr
+const dynamics::IntegratorStats* integratorStats(const devs::Model& m) {
+  if (const auto* mb = dynamic_cast<const models::MultibodyModel*>(&m))
+    return &mb->integratorStats();
+  if (m.isAtomic()) return nullptr;
+  for (const auto& c : static_cast<const devs::Coupled&>(m).components())
+    if (const auto* s = integratorStats(*c)) return s;
+  return nullptr;
+}
+
 // (state.range(0): segments; method) => one whole run per iteration
 void runLines(benchmark::State& state, const std::string& method) {
   const int segments = static_cast<int>(state.range(0));
@@ -58,17 +71,25 @@ void runLines(benchmark::State& state, const std::string& method) {
   std::ofstream(dir / "s.yaml") << scene(segments, method);
   auto loaded = scene::loadSceneOrThrow(dir / "s.yaml");
   double wall = 0.0;
+  dynamics::IntegratorStats work;
   for (auto _ : state) {
     auto root = scene::assemble(*loaded);
     const auto t0 = std::chrono::steady_clock::now();
     run::runScene(*loaded, *root, {dir / "out", kUntil, {}, {}, 0.1});
     wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (const auto* s = integratorStats(*root)) work = *s;
   }
   const double runs = static_cast<double>(state.iterations()), steps = kUntil / kStep;
   const double nodes = 8.0 * (segments - 1);
   state.counters["realtime_factor"] = kUntil * runs / wall;
   state.counters["us_per_step"] = 1e6 * wall / runs / steps;
   state.counters["ns_per_step_node"] = 1e9 * wall / runs / steps / nodes;
+  // (the last run's integrator work) => per step of the grid: stage evaluations, Jacobians,
+  // Newton iterations and failed solves (the cost's factors besides the nodes)
+  state.counters["f_evals_per_step"] = static_cast<double>(work.f_evals) / steps;
+  state.counters["jacobians_per_step"] = static_cast<double>(work.jac_evals) / steps;
+  state.counters["newton_per_step"] = static_cast<double>(work.newton_its) / steps;
+  state.counters["failed_solves"] = static_cast<double>(work.err_fails);
   fs::remove_all(dir);
 }
 

@@ -259,10 +259,12 @@ void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::Vec
                                double h, int depth) {
   if (!attempt(system, t, q, v, h)) {
     // (Newton failed, e.g. a rope going taut inside the step) => two half steps, down to h / 16
+    // (sparse path: a Jacobian costs O(colours) stages) => the halves keep the last matrix,
+    // refactorised for h/2, and attempt() forms a fresh one only where it fails again
     if (depth < 4) {
-      stale_ = true;
+      stale_ = !sparseActive_;
       advance(system, t, q, v, 0.5 * h, depth + 1);
-      stale_ = true;
+      stale_ = stale_ || !sparseActive_;
       advance(system, t, q, v, 0.5 * h, depth + 1);
       return;
     }

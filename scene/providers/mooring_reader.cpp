@@ -7,8 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "dynamics/kinematics.hpp"
+#include "forces/airy_waves.hpp"
+#include "forces/current_profile.hpp"
 #include "forces/lines/catenary_line.hpp"
 #include "forces/lines/lumped_line_provider.hpp"
 #include "forces/provider_outputs.hpp"
@@ -149,11 +153,27 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
     }
     return bodies;
   };
-  out.build = [p](const std::string& name, const dynamics::Model& model,
-                  const std::vector<forces::Attachment>& at) {
-    auto line = std::make_shared<const forces::LumpedLine>(p, name);
+  // (full name, the system with its sea, ends) => the provider; the line sees the scene's waves
+  // (regular or irregular components) and current, owned with it; none in still water
+  out.buildFromSystem = [p](const std::string& name, const mechanics::BuiltMechanics& mech,
+                            const std::vector<forces::Attachment>& at) {
+    struct Owner {
+      std::unique_ptr<const forces::AiryWaves> waves;
+      std::unique_ptr<const forces::CurrentField> current;
+      std::optional<forces::LumpedLine> line;
+    };
+    auto owner = std::make_shared<Owner>();
+    const MechanicsSpec& env = mech.environment;
+    if (!env.waves.empty()) {
+      forces::WaterProperties water = env.water;  // (as the system's sea: mechanics/system.cpp)
+      if (-mech.model.gravity.z() > 0 && !env.hasWater) water.gravity = -mech.model.gravity.z();
+      owner->waves = std::make_unique<const forces::AiryWaves>(water, env.waves);
+    }
+    if (env.current) owner->current = std::make_unique<const forces::CurrentField>(*env.current);
+    owner->line.emplace(p, name, owner->waves.get(), owner->current.get());
+    const std::shared_ptr<const forces::LumpedLine> line(owner, &*owner->line);
     return forces::withOutputs<forces::LumpedLineProvider>(
-        std::make_unique<forces::LumpedLineProvider>(name, model, at.at(0), at.at(1), line),
+        std::make_unique<forces::LumpedLineProvider>(name, mech.model, at.at(0), at.at(1), line),
         lumpedOutputs);
   };
 }

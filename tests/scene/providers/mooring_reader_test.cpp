@@ -2,13 +2,21 @@
 // an independent solve of the same catenary (forces/lines/catenary.hpp), a moored body's static
 // offset under a steady force against the balance of the two lines' horizontal tensions and
 // against F / K with K the lines' analytic horizontal stiffness, the energy balance of a free
-// surge oscillation, and problems reported at their YAML nodes.
+// surge oscillation, and problems reported at their YAML nodes; lumped lines in the scene's current
+// and waves against Morison's drag and inertia per node.
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "forces/airy_waves.hpp"
 #include "forces/lines/catenary.hpp"
+#include "mechanics/build.hpp"
+#include "mechanics/data.hpp"
+#include "mechanics/set_points.hpp"
+#include "mechanics/stage.hpp"
+#include "mechanics/system.hpp"
 #include "run/runner.hpp"
 #include "scene/assembler.hpp"
+#include "scene/mechanical_systems.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
@@ -225,4 +233,109 @@ TEST_CASE("mooring: a lumped line's nodes are bodies of the system with their ch
   CHECK(csv.column("north.node8.x[m]") < 0);  // the fairlead end is the buoy's point
   CHECK(csv.column("north.fairlead_tension[N]") > 0);
   CHECK(csv.column("north.anchor_tension[N]") > 0);
+}
+
+namespace {
+
+// (line along `axis` (x or y) from [0, 0, -20] to a fixed post 100 m away, water keys) => the
+// system built from the scene, and each inner node's acceleration at q0 (at rest) and time t
+struct LumpedInSea {
+  std::unique_ptr<mechanics::BuiltMechanics> mech;
+  Eigen::VectorXd a;
+  int nodeV(const std::string& node) const {
+    const int b = mech->model.bodyIndex(node);
+    REQUIRE(b > 0);
+    return mech->model.idxV[b];
+  }
+};
+LumpedInSea lumpedInSea(const testing::SceneDir& dir, char axis, const std::string& water,
+                        const std::string& keys, double t) {
+  const std::string post = axis == 'x' ? "[100, 0, -20]" : "[0, 100, -20]";
+  const std::string text = R"(schema_version: 1
+integrator: {method: hht, dt: 0.05}
+mechanics:
+  gravity: [0, 0, 0]
+  water: {density: 1025.0, level: 0.0, depth: 40.0)" +
+                           water + R"(}
+  bodies:
+    post: {parent: world, joint: {type: fixed}, placement: {xyz: )" +
+                           post + R"(}, mass: 1.0e3, inertia: [1, 1, 1]}
+  mooring:
+    line: {model: lumped, anchor: [0, 0, -20], fairlead: {body: post}, length: 99.9, EA: 1.0e8,
+           mass: 80, diameter: 0.1, segments: 4, seabed: false)" +
+                           keys + R"(}
+until: 1
+)";
+  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", text));
+  REQUIRE(scene->systems.size() == 1);
+  LumpedInSea out;
+  out.mech = std::make_unique<mechanics::BuiltMechanics>(
+      mechanics::buildMechanics(scene->systems[0]->spec));
+  const mechanics::System system(*out.mech, {}, "sea");
+  mechanics::Data data(system);
+  const auto& model = out.mech->model;
+  mechanics::SetPoints held{
+      std::vector<mechanics::JointDrive>(static_cast<std::size_t>(model.nbodies)),
+      std::vector<mechanics::ActorLoad>(static_cast<std::size_t>(model.nbodies)),
+      std::vector<mechanics::WinchJob>(system.ropes().size())};
+  data.setPoints = &held;
+  mechanics::connectStage(system, data);
+  out.a.setZero(model.nv);
+  data.kernel.acceleration(t, out.mech->q0, out.mech->v0, out.a);
+  return out;
+}
+
+constexpr double kRhoW = 1025.0, kD = 0.1, kMu = 80.0, kL = 99.9 / 4;
+
+}  // namespace
+
+TEST_CASE("mooring: a lumped line in the scene's current feels Morison drag per node") {
+  // (line along x, uniform current towards +y across it) => per inner node 1/2 rho Cdn d l_s U^2
+  // across, l_s its stretched length, over its mass mu l + rho V Can; none in still water
+  testing::SceneDir dir;
+  const double U = 1.5, cdn = 1.1;
+  const auto sea = lumpedInSea(dir, 'x', ", current: {speed: 1.5, direction_deg: 90}",
+                               ", cdn: 1.1, can: 0.8", 0.0);
+  const auto calm = lumpedInSea(dir, 'x', "", ", cdn: 1.1, can: 0.8", 0.0);
+  const Eigen::VectorXd& q = sea.mech->q0;
+  auto at = [&](int i) -> Eigen::Vector3d {
+    if (i == 0) return {0, 0, -20};
+    if (i == 4) return {100, 0, -20};
+    return q.segment<3>(
+        sea.mech->model.idxQ[sea.mech->model.bodyIndex("line.node" + std::to_string(i))]);
+  };
+  const double m = (kMu + kRhoW * 0.25 * M_PI * kD * kD * 0.8) * kL;
+  for (int i = 1; i < 4; ++i) {
+    const double ls = 0.5 * ((at(i) - at(i - 1)).norm() + (at(i + 1) - at(i)).norm());
+    const int k = sea.nodeV("line.node" + std::to_string(i));
+    INFO("node " << i);
+    CHECK(sea.a[k + 1] == Approx(0.5 * kRhoW * cdn * kD * ls * U * U / m).epsilon(1e-9));
+    CHECK(std::abs(calm.a[k + 1]) < 1e-12);
+  }
+}
+
+TEST_CASE("mooring: a lumped line in the scene's waves feels the Morison inertia per node") {
+  // (line along y, waves towards +x, no drag) => per inner node rho V (1 + Can) a_w across it, a_w
+  // the water's acceleration there (forces::AiryWaves, checked against Airy's closed form in
+  // tests/forces/airy_waves_test.cpp), over its mass mu l + rho V Can
+  testing::SceneDir dir;
+  const double t = 1.3, can = 0.8;
+  const auto sea = lumpedInSea(dir, 'y', ", waves: [{height: 2.0, period: 8.0, direction_deg: 0}]",
+                               ", cdn: 0, cdt: 0, can: 0.8", t);
+  forces::WaterProperties water;
+  water.depth = 40.0;
+  const forces::AiryWaves waves(water, {forces::WaveComponent{2.0, 8.0, 0.0, 0.0}});
+  const double V = 0.25 * M_PI * kD * kD * kL, m = kMu * kL + kRhoW * V * can;
+  int checked = 0;
+  for (int i = 1; i < 4; ++i) {
+    const std::string node = "line.node" + std::to_string(i);
+    const Eigen::Vector3d p =
+        sea.mech->q0.segment<3>(sea.mech->model.idxQ[sea.mech->model.bodyIndex(node)]);
+    const double aw = waves.acceleration(p, t).x();
+    INFO(node << ": water acceleration " << aw << " m/s^2");
+    CHECK(std::abs(aw) > 0.05);
+    CHECK(sea.a[sea.nodeV(node)] == Approx(kRhoW * V * (1.0 + can) * aw / m).epsilon(1e-9));
+    ++checked;
+  }
+  CHECK(checked == 3);
 }

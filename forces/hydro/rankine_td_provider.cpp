@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/hydro/incident_kinematics.hpp"
 #include "forces/hydro/td_checks.hpp"
 
 namespace yardsim::forces::hydro {
@@ -43,15 +44,6 @@ class Scratch final : public ProviderScratch {
     }
   }
 };
-
-// (k, z <= 0 below the level, depth h) => cosh k(z+h) / cosh kh and sinh k(z+h) / cosh kh, in
-// forms that neither overflow nor lose the deep-water limit e^{kz}
-std::pair<double, double> depthFactors(double k, double z, double h) {
-  const double e = std::exp(k * z);
-  if (!std::isfinite(h)) return {e, e};
-  const double a = std::exp(-2.0 * k * (z + h)), b = std::exp(-2.0 * k * h);
-  return {e * (1.0 + a) / (1.0 + b), e * (1.0 - a) / (1.0 + b)};
-}
 
 }  // namespace
 

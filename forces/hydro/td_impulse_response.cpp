@@ -208,6 +208,7 @@ ImpulseResponse computeImpulseResponse(const RankineTdModel& model,
   out.excitationStart = -leadSteps * s.dt;
   out.headings = s.headings;
   out.excitationWindow = s.headings.empty() ? 0.0 : s.cutoff;
+  out.froudeKrylov = s.froudeKrylov;
   for (const double beta : s.headings) {
     // (beta in B) => e_beta in W, horizontal
     Vector3 e = model.rotation() * Vector3(std::cos(beta), std::sin(beta), 0.0);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 
 #include "scene/mechanics_reader.hpp"
 #include "forces/geometry/mesh_io.hpp"
@@ -236,9 +237,9 @@ void hulls(const Reader& r, const YAML::Node& n, const std::string& file, const 
 
 // (a method, its hull, response or solver, headings, dt, memory, settings, cache, excitation)
 // => the provider's build on the scene's sea; for impulse_response the response's A_inf on the
-// body's left-hand side (docs/hydrodynamics.md, "Scene keys")
+// body's left-hand side (docs/hydrodynamics.md, "Scene keys"); per body why its wave force lacks Froude-Krylov
 void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file, const std::set<std::string>& bodies,
-                   MechanicsSpec& spec) {
+                   MechanicsSpec& spec, std::map<std::string, std::string>& noFroudeKrylov) {
   namespace hydro = forces::hydro;
   const std::filesystem::path dir = std::filesystem::path(file).parent_path();
   // (path relative to the YAML file) => the path
@@ -313,6 +314,8 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
         if (m[key]) r.fail(m[key], k + "." + key, std::string("'") + key + "' goes with method: impulse_response");
       if (!q.hull) r.fail(m, k, "missing required key 'hull' (the hull mesh in the body frame, .obj or .stl)");
       if (!q.hull || !check(td->check)) continue;
+      const auto fk = q.settings.find("froude_krylov");
+      noFroudeKrylov[h.body] = fk != q.settings.end() && fk->second != 0 ? "" : "'" + k + "' has settings.froude_krylov 0";
       if (td->addedMass) {  // (A_inf) => the body's added mass, unless the body has its own
         try {
           const auto aInf = td->addedMass(q);
@@ -368,6 +371,8 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
                    "headings_deg or set excitation: false");
       continue;
     }
+    noFroudeKrylov[h.body] = !excitation ? (spec.waves.empty() ? "" : "'" + k + "' has excitation: false in waves")
+                             : response->froudeKrylov ? "" : "the response of '" + k + "' is diffraction only";
     // (A_inf) => the body's added mass, unless the body has its own
     for (auto& b : spec.bodies)
       if (b.name == h.body) {
@@ -470,8 +475,9 @@ void parseFloating(const Params& p, const MechanicsReport& report, const std::se
   named("wind_loads", [&](const Reader& r, const YAML::Node& n) { flows(r, n, bodies, spec.windLoads); });
   named("current_loads", [&](const Reader& r, const YAML::Node& n) { flows(r, n, bodies, spec.currentLoads); });
   named("damping", [&](const Reader& r, const YAML::Node& n) { dampers(r, n, bodies, spec); });
+  std::map<std::string, std::string> noFroudeKrylov;
   named("hydrodynamics",
-        [&](const Reader& r, const YAML::Node& n) { hydrodynamics(r, n, p.mark("hydrodynamics").file, bodies, spec); });
+        [&](const Reader& r, const YAML::Node& n) { hydrodynamics(r, n, p.mark("hydrodynamics").file, bodies, spec, noFroudeKrylov); });
   // (a hull without the incident pressure) => the body's hydrodynamics must bring the waves' force
   if (!defined("hydrostatics")) return;
   const Reader r{report, "hydrostatics"};
@@ -479,13 +485,15 @@ void parseFloating(const Params& p, const MechanicsReport& report, const std::se
     if (h.incidentPressure) continue;
     bool driven = false;
     for (const auto& d : spec.hydrodynamics) driven = driven || d.body == h.body;
+    const YAML::Node at = p.node("hydrostatics")[h.name]["froude_krylov"];
+    const std::string none = "none leaves the waves' force to the body's hydrodynamics, ";
     if (!driven)
-      r.fail(
-          p.node("hydrostatics")[h.name]["froude_krylov"], h.name + ".froude_krylov",
-          "none leaves the waves' force to the body's hydrodynamics, and body '" + h.body +
-              "' has no hydrodynamics block here (with an excitation that includes Froude-Krylov)");
+      r.fail(at, h.name + ".froude_krylov", none + "and body '" + h.body +
+                 "' has no hydrodynamics block here (with an excitation that includes Froude-Krylov)");
+    else if (const std::string& why = noFroudeKrylov[h.body]; !why.empty())
+      r.fail(at, h.name + ".froude_krylov", none + "but " + why + ": expected an excitation that includes "
+                 "Froude-Krylov (a response computed with settings: {froude_krylov: 1}), or froude_krylov: nonlinear");
   }
 }
-
 
 }  // namespace yardsim::scene

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A synthetic impulse-response file (.ysir, docs/hydrodynamics.md "The cache", format 2) for the
+"""A synthetic impulse-response file (.ysir, docs/hydrodynamics.md "The cache", format 3) for the
 speed measurement of examples/floating_barge in an irregular sea (docs/performance.md): the sizes of
 a real response (6 modes, 60 s of memory at 0.05 s, 8 headings, excitation windowed at w_c = 2
 rad/s), numbers of the barge's order (60 x 20 m, 2,000 t), not a solved hull: A_inf diagonal,
@@ -29,7 +29,7 @@ def fnv1a(data):
 
 out = bytearray(b"YSIMIR1\n")
 key = b"synthetic-floating-barge"
-out += struct.pack("<II", 2, len(key)) + key + struct.pack("<d", DT)
+out += struct.pack("<II", 3, len(key)) + key + struct.pack("<d", DT)
 out += struct.pack("<36d", *[A_INF[i] if i == j else 0.0 for i in range(6) for j in range(6)])
 n = int(round(MEMORY / DT))
 out += struct.pack("<Q", n)
@@ -38,7 +38,7 @@ for k in range(n):
     out += struct.pack("<36d", *[KAPPA[i] * math.exp(-0.5 * t) * math.cos(1.2 * t) if i == j else 0.0
                                  for i in range(6) for j in range(6)])
 out += struct.pack("<Q", len(HEADINGS)) + struct.pack(f"<{len(HEADINGS)}d", *HEADINGS)
-out += struct.pack("<dd", T0, WC)
+out += struct.pack("<ddI", T0, WC, 1)  # the excitation holds Froude-Krylov
 m = int(round(-2 * T0 / DT)) + 1
 for b in HEADINGS:
     x0 = [0.0, 0.0, RHO_G_AWP, -RHO_G_AWP * 20 ** 2 / 12 * math.sin(b) * 0.05,

@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "forces/airy_waves.hpp"
+#include "forces/hydro/incident_kinematics.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -48,13 +49,7 @@ FrequencyResponse FrequencyDomainSolver::solve(double omega,
       // (incident wave of unit amplitude at the panel) => -dphi_I/dn and phi_I
       const Panel& q = pb.body()[static_cast<std::size_t>(p)];
       const double zc = q.centroid.z();
-      const double ez = std::exp(k * zc);
-      double cc = ez, sc = ez;
-      if (std::isfinite(h)) {
-        const double aa = std::exp(-2.0 * k * (zc + h)), b = std::exp(-2.0 * k * h);
-        cc = ez * (1.0 + aa) / (1.0 + b);
-        sc = ez * (1.0 - aa) / (1.0 + b);
-      }
+      const auto [cc, sc] = depthFactors(k, zc, h);
       const Complex phase = std::exp(-i * k * q.centroid.dot(e));
       a(p, c) = -(g * k / omega) * phase * (cc * q.normal.dot(e) + i * sc * q.normal.z());
       fk(p, c) = i * (g / omega) * cc * phase;

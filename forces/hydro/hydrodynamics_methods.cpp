@@ -47,7 +47,7 @@ const TimeDomainMethod* timeDomainMethod(const std::string& name) {
 
 std::string requestKey(const HydrodynamicsRequest& r, const std::string& solver) {
   std::uint64_t h = fnv1a(solver.data(), solver.size());
-  const std::uint32_t format = 2;  // the cache file's version: another version is another key
+  const std::uint32_t format = kImpulseResponseFormat;  // another version is another key
   h = fnv1a(&format, sizeof format, h);
   auto doubles = [&](const double* x, std::size_t n) { h = fnv1a(x, n * sizeof(double), h); };
   if (r.hull) {

@@ -14,7 +14,7 @@ static_assert(std::endian::native == std::endian::little, "the cache format is l
 
 namespace {
 constexpr char kMagic[8] = {'Y', 'S', 'I', 'M', 'I', 'R', '1', '\n'};
-constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kVersion = kImpulseResponseFormat;
 constexpr std::uint64_t kMaxCount = 1ull << 26;  // no response has more samples: a damaged count
 
 // (values) => appended as their bytes
@@ -104,6 +104,7 @@ void writeImpulseResponse(const ImpulseResponse& ir, const std::filesystem::path
   for (double b : ir.headings) w.put(b);
   w.put(ir.excitationStart);
   w.put(ir.excitationWindow);
+  w.put(static_cast<std::uint32_t>(ir.froudeKrylov ? 1 : 0));
   if (ir.excitation.size() != ir.headings.size())
     throw CacheError(file.string() + ": not written: " + std::to_string(ir.headings.size()) +
                      " headings but " + std::to_string(ir.excitation.size()) +
@@ -158,6 +159,9 @@ ImpulseResponse readImpulseResponse(const std::filesystem::path& file) {
   for (double& b : ir.headings) b = r.get<double>();
   ir.excitationStart = r.get<double>();
   ir.excitationWindow = r.get<double>();
+  const auto fk = r.get<std::uint32_t>();
+  if (fk > 1) throw CacheError(f + ": damaged (Froude-Krylov flag " + std::to_string(fk) + ")");
+  ir.froudeKrylov = fk == 1;
   ir.excitation.resize(ir.headings.size());
   for (auto& h : ir.excitation) {
     h.resize(r.count("excitation"));

@@ -1,12 +1,13 @@
 #pragma once
 // The disk cache of impulse responses (docs/hydrodynamics.md, "The cache"): one file per key
 // (ImpulseResponse::key, a hash of the hull mesh and the settings that made it), named
-// `<key>.ysir` in the cache folder. Format, version 2, every number little-endian:
+// `<key>.ysir` in the cache folder. Format, version 3, every number little-endian:
 //   "YSIMIR1\n" (8 bytes), u32 version, u32 key length, the key (UTF-8), f64 dt, 36 f64 aInf
 //   (row-major), u64 L then L x 36 f64 radiation (row-major), u64 H then H f64 headings, f64
-//   excitationStart, f64 excitationWindow (version 2), per heading u64 N then N x 6 f64 excitation, then u64 FNV-1a 64 of every
-//   byte before it.
+//   excitationStart, f64 excitationWindow (version 2), u32 froudeKrylov 0 or 1 (version 3), per
+//   heading u64 N then N x 6 f64 excitation, then u64 FNV-1a 64 of every byte before it.
 // Doubles are stored as their bit patterns: a read gives back every value to the last bit.
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -15,6 +16,10 @@
 #include "forces/hydro/impulse_response.hpp"
 
 namespace yardsim::forces::hydro {
+
+/// The format version this build writes and reads (part of every cache key: a file of another
+/// version is never looked up, only refused when given by name)
+inline constexpr std::uint32_t kImpulseResponseFormat = 3;
 
 // A cache file that is not one, is damaged, is of another version or holds another key.
 class CacheError : public std::runtime_error {

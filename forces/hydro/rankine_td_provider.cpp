@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/hydro/incident_kinematics.hpp"
 #include "forces/hydro/td_checks.hpp"
 
 namespace yardsim::forces::hydro {
@@ -43,15 +44,6 @@ class Scratch final : public ProviderScratch {
     }
   }
 };
-
-// (k, z <= 0 below the level, depth h) => cosh k(z+h) / cosh kh and sinh k(z+h) / cosh kh, in
-// forms that neither overflow nor lose the deep-water limit e^{kz}
-std::pair<double, double> depthFactors(double k, double z, double h) {
-  const double e = std::exp(k * z);
-  if (!std::isfinite(h)) return {e, e};
-  const double a = std::exp(-2.0 * k * (z + h)), b = std::exp(-2.0 * k * h);
-  return {e * (1.0 + a) / (1.0 + b), e * (1.0 - a) / (1.0 + b)};
-}
 
 }  // namespace
 
@@ -119,11 +111,15 @@ std::unique_ptr<ProviderScratch> RankineTdProvider::makeScratch() const {
 }
 
 Vector6 RankineTdProvider::velocity_W(const Stage& s) const {
-  // (V body frame [omega; v_O]) => [v_O; omega] in the mean pose's world axes
+  // (V body frame [omega; v_O], the body's rotation now R_WB) => [v_O; omega] in world axes, the
+  // panels' axes (not the mean rotation times the body-frame velocity: a body that drifts and
+  // rolls would see its drift velocity turned into a heave and roll velocity,
+  // docs/hydrodynamics.md)
   const dynamics::Motion& V = s.data.V_B[static_cast<std::size_t>(body_)];
+  const Eigen::Matrix3d& R_WB = s.data.X_WB[static_cast<std::size_t>(body_)].R;
   Vector6 u;
-  u.head<3>() = panels_->rotation() * V.tail<3>();
-  u.tail<3>() = panels_->rotation() * V.head<3>();
+  u.head<3>() = R_WB * V.tail<3>();
+  u.tail<3>() = R_WB * V.head<3>();
   return u;
 }
 
@@ -159,10 +155,12 @@ void RankineTdProvider::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
                                    Eigen::VectorXd& /*tau*/) const {
   std::unique_ptr<ProviderScratch> temporary;
   const Vector6& F_W = memoryForce(s, scratchOf<ProviderScratch>(s, temporary));
-  // (F^M in W about the origin, [force; moment]) => body frame [moment; force]
+  // (F^M in world axes about the body origin, [force; moment], R_WB now) => body frame [moment;
+  // force]: the force keeps its world direction while the body rolls (turned with the body, a
+  // heave force rolled by the roll angle gave a spurious mean sway force that drifted a free body)
+  const Eigen::Matrix3d& R_WB = s.data.X_WB[static_cast<std::size_t>(body_)].R;
   dynamics::Force F_B;
-  F_B << panels_->rotation().transpose() * F_W.tail<3>(),
-      panels_->rotation().transpose() * F_W.head<3>();
+  F_B << R_WB.transpose() * F_W.tail<3>(), R_WB.transpose() * F_W.head<3>();
   f.addBodyFrame(body_, F_B);
 }
 

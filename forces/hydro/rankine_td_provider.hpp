@@ -22,9 +22,13 @@
 // emp step (emp_scheme.hpp) and holds the F^M it returns until the next panel time (zero-order
 // hold). A step retried from the same start does not advance it again.
 //
-// Frames: the body's velocity (body frame [omega; v_O]) is taken to the mean pose's world axes
-// with the mean rotation R_WB (linear theory), the force is returned in the body frame about the
-// body origin. Units: s, m, N, N m.
+// Frames: the body's velocity (body frame [omega; v_O]) is taken to world axes (the panels' axes)
+// with the body's rotation R_WB at the stage, and the force, computed in world axes on the mean
+// wetted surface, is returned in the body frame about the body origin through the same R_WB: the
+// force keeps its world direction while the body turns (linear theory; until 2026-11-25 both used
+// the mean rotation, which turned a rolling body's heave force into a mean sway force, and a
+// drifting body's sway velocity into heave and roll: the growing roll of docs/hydrodynamics.md).
+// Units: s, m, N, N m.
 //
 // State (checkpointed through ProviderScratch::carried): the free-surface elevation and
 // potential per panel, the time of the last panel step and the held force.
@@ -64,7 +68,7 @@ class RankineTdProvider final : public ForceProvider {
  private:
   // (stage, scratch) => the held memory force in W axes after advancing when a panel time is due
   const Vector6& memoryForce(const Stage& s, ProviderScratch& scratch) const;
-  // (stage) => [v_O; omega] of the body in the mean pose's world axes
+  // (stage) => [v_O; omega] of the body in world axes
   Vector6 velocity_W(const Stage& s) const;
 
   int body_;

@@ -7,7 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/airy_waves.hpp"
 #include "forces/hydro/emp_scheme.hpp"
+#include "forces/hydro/incident_kinematics.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -102,32 +104,34 @@ struct IncidentWave {
 IncidentWave incidentWave(const RankineTdModel& model, const Vector3& e_beta,
                           const ImpulseResponseSettings& s) {
   const int nb = model.problem().bodyCount(), nw = s.frequencies;
-  const double g = model.settings().g, top = 3.0 * s.cutoff, dw = top / (nw - 1);
+  const double g = model.settings().g, h = model.settings().depth, top = 3.0 * s.cutoff,
+               dw = top / (nw - 1);
   IncidentWave w;
   w.omega.resize(nw);
   for (Eigen::MatrixXd* m : {&w.cN, &w.sN, &w.cNt, &w.sNt, &w.cPt, &w.sPt}) m->setZero(nb, nw);
   for (int i = 0; i < nw; ++i) {
-    // (w_i) => trapezoid weight times W(w_i) / pi
-    const double om = i * dw, k = om * om / g;
+    // (w_i) => trapezoid weight times W(w_i) / pi; k on the solver's depth (w^2 = g k tanh kh)
+    const double om = i * dw, k = om > 0.0 ? waveNumber(om, h, g) : 0.0,
+                 v = velocityPerElevation(om, k, h, g);
     const double weight = (i == 0 || i == nw - 1 ? 0.5 : 1.0) * dw *
                           std::exp(-(om / s.cutoff) * (om / s.cutoff)) / std::numbers::pi;
     w.omega[i] = om;
     for (int p = 0; p < nb; ++p) {
       const Panel& q = model.problem().body()[static_cast<std::size_t>(p)];
-      const double xi = (q.centroid - model.origin()).dot(e_beta),
-                   decay = std::exp(k * q.centroid.z());
+      const double xi = (q.centroid - model.origin()).dot(e_beta);
+      const auto [cc, sc] = depthFactors(k, q.centroid.z(), h);
       const double ck = std::cos(k * xi), sk = std::sin(k * xi), nh = q.normal.dot(e_beta),
                    nz = q.normal.z();
       // cos(k xi - w t) = ck cos(w t) + sk sin(w t);  sin(k xi - w t) = sk cos(w t) - ck sin(w t)
-      // dphi/dn = W w e^kz (nh cos + nz sin); d2phi/dndt = W w^2 e^kz (nh sin - nz cos); dphi/dt =
-      // -g W e^kz cos
-      const double a = weight * om * decay, b = weight * om * om * decay, c = -g * weight * decay;
-      w.cN(p, i) = a * (nh * ck + nz * sk);
-      w.sN(p, i) = a * (nh * sk - nz * ck);
-      w.cNt(p, i) = b * (nh * sk - nz * ck);
-      w.sNt(p, i) = b * (-nh * ck - nz * sk);
-      w.cPt(p, i) = c * ck;
-      w.sPt(p, i) = c * sk;
+      // (incident_kinematics.hpp, v = g k / w) dphi/dn = W v (C nh cos + S nz sin);
+      // d2phi/dndt = W v w (C nh sin - S nz cos); dphi/dt = -g W C cos
+      const double a = weight * v, b = weight * v * om, c = -g * weight;
+      w.cN(p, i) = a * (cc * nh * ck + sc * nz * sk);
+      w.sN(p, i) = a * (cc * nh * sk - sc * nz * ck);
+      w.cNt(p, i) = b * (cc * nh * sk - sc * nz * ck);
+      w.sNt(p, i) = b * (-cc * nh * ck - sc * nz * sk);
+      w.cPt(p, i) = c * cc * ck;
+      w.sPt(p, i) = c * cc * sk;
     }
   }
   return w;
@@ -204,6 +208,7 @@ ImpulseResponse computeImpulseResponse(const RankineTdModel& model,
   out.excitationStart = -leadSteps * s.dt;
   out.headings = s.headings;
   out.excitationWindow = s.headings.empty() ? 0.0 : s.cutoff;
+  out.froudeKrylov = s.froudeKrylov;
   for (const double beta : s.headings) {
     // (beta in B) => e_beta in W, horizontal
     Vector3 e = model.rotation() * Vector3(std::cos(beta), std::sin(beta), 0.0);
@@ -253,6 +258,9 @@ std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transfor
     f.number(x);
   f.integer(s.frequencies);
   if (!s.froudeKrylov) f.integer(-1);  // (diffraction only) => another key; the default's unchanged
+  // (a finite depth) => another key than before the impulsive wave followed the depth (2026-11-25):
+  // a cached response of the old deep-water wave on a finite depth is not found any more
+  if (std::isfinite(s.solver.depth)) f.integer(-2);
   f.integer(static_cast<std::int64_t>(s.headings.size()));
   for (const double b : s.headings) f.number(b);
   static const char* hex = "0123456789abcdef";

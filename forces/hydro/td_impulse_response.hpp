@@ -17,11 +17,13 @@
 // transforms -(1/w) int K sin(w t) dt of the raw and the band-limited K, and the pair (aInf,
 // K_band) gives the solver's A(w) and B(w) below w1 (tested against forced oscillation). Without
 // a band limit aInf is A_inf from psi_j. resolvedFrequency() gives the w the mesh resolves.
-// Excitation: for each heading beta a long-crested deep-water incident wave whose elevation at
-// the body origin is a band-limited impulse,
-//   eta(x, t) = (1/pi) int_0^inf W(w) cos(k xi - w t) dw,  xi = (x - x_O).e_beta, k = w^2 / g,
-//   W(w) = exp(-(w / w_c)^2)  (so eta(x_O, t) = w_c / (2 sqrt(pi)) exp(-(w_c t / 2)^2), unit area),
-//   phi_I = (1/pi) int W (g / w) e^(k z) sin(k xi - w t) dw,
+// Excitation: for each heading beta a long-crested incident wave on the solver's depth h whose
+// elevation at the body origin is a band-limited impulse,
+//   eta(x, t) = (1/pi) int_0^inf W(w) cos(k xi - w t) dw,  xi = (x - x_O).e_beta, w^2 = g k tanh
+//   kh, W(w) = exp(-(w / w_c)^2)  (so eta(x_O, t) = w_c / (2 sqrt(pi)) exp(-(w_c t / 2)^2), unit
+//   area), phi_I = (1/pi) int W (g / w) cosh k(z + h) / cosh kh sin(k xi - w t) dw
+// (incident_kinematics.hpp; until 2026-11-25 it was the deep-water wave on every depth, which in
+// 20 m of water made a 60 s wave's slope 6.7 times too small: docs/hydrodynamics.md),
 // the diffraction potential marched with the hull condition dphi_D/dn = -dphi_I/dn and
 // F_exc = rho int (dphi_I/dt + dphi_D/dt) N dS (Froude-Krylov + diffraction). The response is
 // that of the window: its transfer function is X(w) W(w), so w_c must lie above the sea's

@@ -227,6 +227,42 @@ TEST_CASE("a response given as a file") {
   CHECK((*r.scene->systems.at(0)->spec.bodies.at(0).addedMass)(2, 2) == 5e4);
 }
 
+TEST_CASE("froude_krylov none is refused with a response of diffraction only") {
+  // (a hull clipped at still water) => its waves' force must come whole from the response: one
+  // that records diffraction only is refused at the hull's froude_krylov key, one with
+  // Froude-Krylov is taken; excitation: false in waves is refused too
+  testing::SceneDir dir;
+  meshes(dir);
+  HydrodynamicsRequest q;
+  q.settings["scale"] = 1;
+  q.headings = {0.0};
+  ImpulseResponse ir = testSolve(q);
+  ir.key = "given";
+  ir.froudeKrylov = false;
+  writeImpulseResponse(ir, dir.path() / "diffraction.ysir");
+  ir.froudeKrylov = true;
+  writeImpulseResponse(ir, dir.path() / "both.ysir");
+  auto load = [&](const std::string& file, const std::string& more) {
+    std::string s = sceneYaml("    hd: {body: barge, method: impulse_response, response: " + file + more + "}\n");
+    s.replace(s.find("mesh: meshes/barge.stl}"), 23, "mesh: meshes/barge.stl, froude_krylov: none}");
+    return scene::loadScene(dir.write("s.yaml", s));
+  };
+  auto r = load("diffraction.ysir", "");
+  const auto* d = find(r, "mechanics.hydrostatics.hull.froude_krylov");
+  REQUIRE(d);
+  CHECK(d->where.line == 14);
+  CHECK(d->where.column > 1);
+  CHECK_THAT(d->message, Contains("the response of 'hd' is diffraction only") &&
+                             Contains("expected an excitation that includes Froude-Krylov"));
+  r = load("both.ysir", "");
+  INFO(r.diagnostics.report());
+  CHECK(r.scene);
+  r = load("both.ysir", ", excitation: false");
+  d = find(r, "mechanics.hydrostatics.hull.froude_krylov");
+  REQUIRE(d);
+  CHECK_THAT(d->message, Contains("'hd' has excitation: false in waves"));
+}
+
 TEST_CASE("bad hydrodynamics input is refused at its key") {
   registerImpulseResponseSolver({"test_solver", testSolve, {}});
   testing::SceneDir dir;

@@ -40,6 +40,7 @@ ImpulseResponse randomResponse(unsigned seed) {
     for (int i = 0; i < 36; ++i) K(i / 6, i % 6) = number();
   ir.headings = {0.0, 1.5707963267948966, number()};
   ir.excitationStart = -3.25;
+  ir.froudeKrylov = seed % 2 == 0;  // (seed 3: false, not the default) => the flag is stored
   ir.excitation.resize(3);
   for (std::size_t b = 0; b < 3; ++b) {
     ir.excitation[b].resize(10 + b);
@@ -74,6 +75,11 @@ TEST_CASE("a cached response reads back to the last bit") {
   CHECK(std::memcmp(&back->dt, &ir.dt, 8) == 0);
   CHECK(std::memcmp(&back->excitationStart, &ir.excitationStart, 8) == 0);
   CHECK(sameBits(back->aInf, ir.aInf));
+  CHECK_FALSE(back->froudeKrylov);
+  ImpulseResponse withFk = ir;
+  withFk.froudeKrylov = true;
+  writeImpulseResponse(withFk, dir.path() / "fk.ysir");
+  CHECK(readImpulseResponse(dir.path() / "fk.ysir").froudeKrylov);
   CHECK(std::signbit(back->aInf(0, 1)));
   REQUIRE(back->radiation.size() == ir.radiation.size());
   bool same = true;
@@ -122,6 +128,21 @@ TEST_CASE("a damaged cache file is refused with what is wrong") {
     std::memcpy(b.data() + b.size() - 8, &sum, 8);
     writeBytes(file, b);
     CHECK_THROWS_WITH(readImpulseResponse(file), Catch::Contains("format version 9"));
+  }
+  SECTION("a Froude-Krylov flag neither 0 nor 1, checksum right") {
+    // (magic, version, key, dt, aInf, K, headings, t0, w_c) => the flag's offset
+    const std::size_t at = 8 + 4 + 4 + ir.key.size() + 8 + 36 * 8 + 8 +
+                           ir.radiation.size() * 36 * 8 + 8 + ir.headings.size() * 8 + 8 + 8;
+    auto b = good;
+    std::uint32_t flag;
+    std::memcpy(&flag, b.data() + at, 4);
+    REQUIRE(flag == 0);
+    flag = 7;
+    std::memcpy(b.data() + at, &flag, 4);
+    const std::uint64_t sum = fnv1a(b.data(), b.size() - 8);
+    std::memcpy(b.data() + b.size() - 8, &sum, 8);
+    writeBytes(file, b);
+    CHECK_THROWS_WITH(readImpulseResponse(file), Catch::Contains("Froude-Krylov flag 7"));
   }
   SECTION("another key under this key's name") {
     std::filesystem::copy_file(file, cacheFile(dir.path(), "other"));

@@ -74,9 +74,12 @@ double AiryWaves::stretched(double z, double eta) const {
 }
 
 double AiryWaves::elevation(double x, double y, double t) const {
+  // (before the waves start) => the level, as level + 0 * eta gives, without the cosines
+  const double r = ramp(t);
+  if (r == 0.0) return water_.level;
   double eta = 0.0;
   for (const Wave& w : waves_) eta += w.a * std::cos(w.k * (x * w.cosb + y * w.sinb) - w.omega * t + w.c.phase);
-  return water_.level + ramp(t) * eta;
+  return water_.level + r * eta;
 }
 
 Vector3 AiryWaves::velocity(const Vector3& p, double t) const {
@@ -127,7 +130,9 @@ double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) c
 
 double AiryWaves::pressure(const Vector3& p, double t) const {
   const double rg = water_.density * water_.gravity;
-  if (waves_.empty()) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
+  // (calm water, or the waves not started: eta = level and r p_dyn = 0 exactly) => hydrostatic
+  const double r = ramp(t);
+  if (waves_.empty() || r == 0.0) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
   // (up to kCached components, an irregular sea's usual 200 included) => each cos(theta) once,
   // for the surface and for the pressure, in a buffer on the stack (2 KB)
   constexpr std::size_t kCached = 256;
@@ -142,7 +147,7 @@ double AiryWaves::pressure(const Vector3& p, double t) const {
     c[i] = w.a * std::cos(w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase);
     sum += c[i];
   }
-  const double r = ramp(t), eta = water_.level + r * sum;
+  const double eta = water_.level + r * sum;
   if (p.z() > eta) return 0.0;
   const double zs = stretched(p.z(), eta), h = water_.depth;
   double pd = 0.0;

@@ -130,7 +130,10 @@ def multibody_ir(a):
             print(f"| {algo} | {model} | {n} | {per['yardsim']:.0f} | " + " | ".join(cells) + " |", flush=True)
 
 
-SCENES = [("goliath_turnover", 460.0), ("floating_barge", 150.0), ("double_pendulum", 30.0)]
+# (example, simulated s, extra `yardsim run` arguments): the goliath turnover as the scene has it
+# (CSV and replay) and with the full JSONL trace the target names (`--trace jsonl`)
+SCENES = [("goliath_turnover", 460.0, []), ("goliath_turnover", 460.0, ["--trace", "jsonl"]),
+          ("floating_barge", 150.0, []), ("double_pendulum", 30.0, [])]
 
 
 def scenes(a):
@@ -143,12 +146,12 @@ def scenes(a):
     print("| scene (simulated s) | wall s | CPU s | real time x (wall) | real time x (CPU) | output share (min-max) | "
           "profile line of the median run |")
     print("|---|---|---|---|---|---|---|")
-    for name, simulated in SCENES:
+    for name, simulated, extra in SCENES:
         walls, cpus, shares, lines = [], [], [], []
         with tempfile.TemporaryDirectory() as out:
             for _ in range(a.n):
                 cmd = ["nice", "-n", str(a.nice), "taskset", "-c", str(a.pin), exe, "run",
-                       f"{here}/examples/{name}/scene.yaml", "-o", out, "--quiet", "--profile"]
+                       f"{here}/examples/{name}/scene.yaml", "-o", out, "--quiet", "--profile"] + extra
                 before = resource.getrusage(resource.RUSAGE_CHILDREN)
                 r = subprocess.run(cmd, check=True, capture_output=True, text=True)
                 after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -159,7 +162,7 @@ def scenes(a):
                 lines.append(line)
         w, c = statistics.median(walls), statistics.median(cpus)
         mid = lines[sorted(range(len(walls)), key=lambda i: walls[i])[len(walls) // 2]]
-        print(f"| {name} ({simulated:g}) | {w:.3f} | {c:.3f} | {simulated / w:.0f} | {simulated / c:.0f} | "
+        print(f"| {' '.join([name] + extra)} ({simulated:g}) | {w:.3f} | {c:.3f} | {simulated / w:.0f} | {simulated / c:.0f} | "
               f"{statistics.median(shares):.1f} % ({min(shares):.1f}-{max(shares):.1f}) | {mid} |", flush=True)
 
 

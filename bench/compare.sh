@@ -9,7 +9,8 @@
 # RK4Step/32 against ODEWorldStep/32 and ODEQuickStep/32 (ODE from Debian). `multibody-ir`
 # counts instructions per kernel call with callgrind instead (one run: the count does not
 # depend on the machine's load; valgrind from Debian). `scenes` runs `yardsim run --profile` on the
-# goliath turnover, the floating barge and the double pendulum (real-time factor, output's share).
+# goliath turnover (as the scene has it: CSV and replay; and with `--trace jsonl`), the floating
+# barge and the double pendulum (real-time factor, output's share).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=build

@@ -59,24 +59,39 @@ AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> co
   }
 }
 
-double AiryWaves::ramp(double t) const {
-  const double tau = t - water_.start;
+namespace {
+// The ramp and the stretching as functions local to this file, so that the hot paths below
+// inline them (an exported member of a shared library is called through its PLT entry)
+// (water, t) => the factor in [0, 1] of every amplitude
+double rampOf(const WaterProperties& w, double t) {
+  const double tau = t - w.start;
   if (tau < 0.0) return 0.0;
-  if (water_.ramp <= 0.0 || tau >= water_.ramp) return 1.0;
-  return 0.5 * (1.0 - std::cos(M_PI * tau / water_.ramp));
+  if (w.ramp <= 0.0 || tau >= w.ramp) return 1.0;
+  return 0.5 * (1.0 - std::cos(M_PI * tau / w.ramp));
 }
-
-double AiryWaves::stretched(double z, double eta) const {
-  // (z, surface eta) => Wheeler: z' = h (z - eta) / (h + eta) below the level (deep: z - eta)
-  const double zr = z - water_.level, er = eta - water_.level, h = water_.depth;
+// (water, z, surface eta) => Wheeler: z' = h (z - eta) / (h + eta) below the level (deep: z - eta)
+double stretchedOf(const WaterProperties& w, double z, double eta) {
+  const double zr = z - w.level, er = eta - w.level, h = w.depth;
   if (!std::isfinite(h)) return zr - er;
   return h * (zr - er) / (h + er);
 }
+}  // namespace
+
+double AiryWaves::ramp(double t) const {
+  return rampOf(water_, t);
+}
+
+double AiryWaves::stretched(double z, double eta) const {
+  return stretchedOf(water_, z, eta);
+}
 
 double AiryWaves::elevation(double x, double y, double t) const {
+  // (before the waves start) => the level, as level + 0 * eta gives, without the cosines
+  const double r = rampOf(water_, t);
+  if (r == 0.0) return water_.level;
   double eta = 0.0;
   for (const Wave& w : waves_) eta += w.a * std::cos(w.k * (x * w.cosb + y * w.sinb) - w.omega * t + w.c.phase);
-  return water_.level + ramp(t) * eta;
+  return water_.level + r * eta;
 }
 
 Vector3 AiryWaves::velocity(const Vector3& p, double t) const {
@@ -127,7 +142,9 @@ double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) c
 
 double AiryWaves::pressure(const Vector3& p, double t) const {
   const double rg = water_.density * water_.gravity;
-  if (waves_.empty()) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
+  // (calm water, or the waves not started: eta = level and r p_dyn = 0 exactly) => hydrostatic
+  const double r = rampOf(water_, t);
+  if (waves_.empty() || r == 0.0) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
   // (up to kCached components, an irregular sea's usual 200 included) => each cos(theta) once,
   // for the surface and for the pressure, in a buffer on the stack (2 KB)
   constexpr std::size_t kCached = 256;
@@ -142,9 +159,9 @@ double AiryWaves::pressure(const Vector3& p, double t) const {
     c[i] = w.a * std::cos(w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase);
     sum += c[i];
   }
-  const double r = ramp(t), eta = water_.level + r * sum;
+  const double eta = water_.level + r * sum;
   if (p.z() > eta) return 0.0;
-  const double zs = stretched(p.z(), eta), h = water_.depth;
+  const double zs = stretchedOf(water_, p.z(), eta), h = water_.depth;
   double pd = 0.0;
   for (std::size_t i = 0; i < waves_.size(); ++i) {
     const Wave& w = waves_[i];

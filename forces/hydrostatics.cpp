@@ -1,6 +1,7 @@
 #include "forces/hydrostatics.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #include "dynamics/kinematics.hpp"
@@ -47,32 +48,42 @@ std::unique_ptr<ProviderScratch> Hydrostatics::makeScratch() const {
   return std::make_unique<Scratch>(hull_);
 }
 
+SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& surface) const {
+  static_assert(sizeof(dynamics::Transform) == 12 * sizeof(double), "a pose is 12 doubles");
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& scratch = scratchOf<Scratch>(s, temporary);
+  const dynamics::Transform& X = s.data.X_WB[body_];
+  Scratch::Last& last = scratch.last[&surface == &calm_ ? 1 : 0];
+  // (the same surface, time and pose, bit for bit) => the same clipping
+  if (last.sea == &surface && std::memcmp(&last.t, &s.t, sizeof(double)) == 0 &&
+      std::memcmp(&last.X_WB, &X, sizeof X) == 0)
+    return last.p;
+  last.sea = &surface;
+  last.t = s.t;
+  last.X_WB = X;
+  last.p = integrateSubmerged(hull_, X, surface, s.t, scratch.ws);
+  return last.p;
+}
+
 void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
                               Eigen::VectorXd& /*tau*/) const {
   // (X_WB, sea, t) => clipped hull, pressure force and moment about the world origin
-  std::unique_ptr<ProviderScratch> temporary;
-  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
-  const SubmergedProperties p = integrateSubmerged(hull_, s.data.X_WB[body_], surface(), s.t, ws);
+  const SubmergedProperties p = submerged(s, surface());
   dynamics::Force F_W;
   F_W << p.moment, p.force;
   f.addWorldFrame(body_, F_W);
 }
 
 double Hydrostatics::doPotentialEnergy(const Stage& s) const {
-  std::unique_ptr<ProviderScratch> temporary;
-  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
-  const SubmergedProperties c = integrateSubmerged(hull_, s.data.X_WB[body_], calm_, s.t, ws);
+  const SubmergedProperties c = submerged(s, calm_);
   const WaterProperties& w = calm_.water();
   return w.density * w.gravity * c.volume * (w.level - c.centreOfBuoyancy.z());
 }
 
 double Hydrostatics::doPower(const Stage& s) const {
   if (sea_->calm() || !incident_) return 0.0;
-  const dynamics::Transform& X = s.data.X_WB[body_];
-  std::unique_ptr<ProviderScratch> temporary;
-  SubmergedWorkspace& ws = scratchOf<Scratch>(s, temporary).ws;
-  const SubmergedProperties c = integrateSubmerged(hull_, X, calm_, s.t, ws);
-  const SubmergedProperties w = integrateSubmerged(hull_, X, *sea_, s.t, ws);
+  const SubmergedProperties c = submerged(s, calm_);
+  const SubmergedProperties w = submerged(s, *sea_);
   const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
   return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());
 }
@@ -80,8 +91,7 @@ double Hydrostatics::doPower(const Stage& s) const {
 HydrostaticReport Hydrostatics::report(const Stage& s) const {
   const dynamics::Transform& X = s.data.X_WB[body_];
   HydrostaticReport r;
-  std::unique_ptr<ProviderScratch> temporary;
-  r.submerged = integrateSubmerged(hull_, X, surface(), s.t, scratchOf<Scratch>(s, temporary).ws);
+  r.submerged = submerged(s, surface());
   const WaterProperties& w = sea_->water();
   r.displacement = w.density * r.submerged.volume;
   r.draft = w.level - X.actPoint(keel_B_).z();

@@ -52,10 +52,19 @@ class Hydrostatics final : public ForceProvider {
   // (stage) => the report there
   HydrostaticReport report(const Stage& s) const;
 
-  // the scratch: the workspace the hull is clipped in
+  // the scratch: the workspace the hull is clipped in, and the last clipping at each surface (the
+  // sea, calm water) with the time and pose it was for, given again when asked for the same ones
+  // (the power at a step's end is asked again at the next step's start and first stage)
   struct Scratch final : ProviderScratch {
     explicit Scratch(const TriangleMesh& hull) : ws(hull) {}
     SubmergedWorkspace ws;
+    struct Last {
+      const AiryWaves* sea = nullptr;  // nullptr: nothing yet
+      double t = 0.0;
+      dynamics::Transform X_WB;
+      SubmergedProperties p;
+    };
+    Last last[2];  // [0] the sea, [1] calm water
   };
   std::unique_ptr<ProviderScratch> makeScratch() const override;
 
@@ -77,6 +86,9 @@ class Hydrostatics final : public ForceProvider {
   bool incident_ = true;      // clipped at the incident surface with its pressure
   // (the surface the hull is clipped at) => the sea, or the calm water in the linear form
   const AiryWaves& surface() const { return incident_ ? *sea_ : calm_; }
+  // (stage, surface: *sea_ or calm_) => integrateSubmerged at the stage's pose and time, or the
+  // scratch's copy when it was for the same time and pose (bit for bit)
+  SubmergedProperties submerged(const Stage& s, const AiryWaves& surface) const;
 };
 
 }  // namespace yardsim::forces

@@ -12,7 +12,9 @@ Winch::Winch(double l0, double minLength) : minLength_(minLength) {
 }
 
 const Winch::SetPoint& Winch::active(double t) const {
-  // (t) => last set-point with t_k <= t; binary search, no allocation
+  // (t) => last set-point with t_k <= t; the last one at once (where a run's time usually is),
+  // else a binary search; no allocation
+  if (t >= setPoints_.back().t) return setPoints_.back();
   auto it = std::upper_bound(setPoints_.begin(), setPoints_.end(), t,
                              [](double x, const SetPoint& s) { return x < s.t; });
   return it == setPoints_.begin() ? *it : *(it - 1);

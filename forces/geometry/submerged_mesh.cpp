@@ -1,8 +1,35 @@
 #include "forces/geometry/submerged_mesh.hpp"
 
+#include <algorithm>
+#include <utility>
+
 namespace yardsim::forces {
 
 using dynamics::Vector3;
+
+SubmergedWorkspace::SubmergedWorkspace(const TriangleMesh& mesh)
+    : vertices(mesh.vertices.size()),
+      depth(mesh.vertices.size()),
+      wet(2 * mesh.triangles.size()),
+      edge(3 * mesh.triangles.size()) {
+  // (triangles) => one number per unordered pair of corners: sort the 3 T (pair, slot) and number
+  // the runs of equal pairs
+  std::vector<std::pair<std::pair<int, int>, std::size_t>> ends;
+  ends.reserve(edge.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t e = 0; e < 3; ++e) {
+      const int i = mesh.triangles[t][e], j = mesh.triangles[t][(e + 1) % 3];
+      ends.push_back({{std::min(i, j), std::max(i, j)}, 3 * t + e});
+    }
+  std::sort(ends.begin(), ends.end());
+  int n = -1;
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    if (k == 0 || ends[k].first != ends[k - 1].first) ++n;
+    edge[ends[k].second] = n;
+  }
+  edgePressure.assign(static_cast<std::size_t>(n + 1), 0.0);
+  edgeStamp.assign(static_cast<std::size_t>(n + 1), 0U);
+}
 
 SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
                                        const AiryWaves& sea, double t, SubmergedWorkspace& ws,
@@ -18,20 +45,47 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
   // where the waterplane's own tetrahedra vanish)
   const Vector3 o(X_WB.p.x(), X_WB.p.y(),
                   sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
+  // (a new call) => every cached edge pressure stale
+  if (++ws.call == 0) {
+    std::fill(ws.edgeStamp.begin(), ws.edgeStamp.end(), 0U);
+    ws.call = 1;
+  }
   SubmergedProperties r;
   double vol6 = 0.0, wpA = 0.0, wpX = 0.0, wpY = 0.0, wpXX = 0.0, wpYY = 0.0, wpXY = 0.0;
   Vector3 first = Vector3::Zero(), F = Vector3::Zero(), M = Vector3::Zero();
-  for (const auto& tri : mesh.triangles) {
-    // (corner depths) => the wetted polygon (Sutherland-Hodgman against depth > 0), <= 4 corners
+  for (std::size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
+    const auto& tri = mesh.triangles[ti];
+    // (corner depths) => the wetted polygon (Sutherland-Hodgman against depth > 0), <= 4 corners,
+    // and for each the triangle's corner it is (-1: a point on a clipped edge)
     Vector3 poly[4];
+    int corner[4];
     int n = 0;
     for (int e = 0; e < 3; ++e) {
       const auto i = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
       const auto j = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
       const double di = ws.depth[i], dj = ws.depth[j];
-      if (di > 0.0) poly[n++] = ws.vertices[i];
-      if ((di > 0.0) != (dj > 0.0)) poly[n++] = ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]);
+      if (di > 0.0) {
+        corner[n] = e;
+        poly[n++] = ws.vertices[i];
+      }
+      if ((di > 0.0) != (dj > 0.0)) {
+        corner[n] = -1;
+        poly[n++] = ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]);
+      }
     }
+    // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure;
+    // a side between two of the triangle's own corners is a mesh edge: its midpoint 0.5 (a + b)
+    // is the same double vector in every triangle sharing it, so its pressure is computed once
+    const auto pressureAt = [&](const Vector3& q, int u, int w) {
+      if (corner[u] < 0 || corner[w] < 0) return sea.pressure(q, t);
+      const int e = (corner[u] + 1) % 3 == corner[w] ? corner[u] : corner[w];
+      const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
+      if (ws.edgeStamp[k] != ws.call) {
+        ws.edgePressure[k] = sea.pressure(q, t);
+        ws.edgeStamp[k] = ws.call;
+      }
+      return ws.edgePressure[k];
+    };
     for (int k = 1; k + 1 < n; ++k) {
       // (wetted piece a, b, c) => its share of every integral
       const Vector3& a = poly[0];
@@ -39,12 +93,14 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
       const Vector3& c = poly[k + 1];
       const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
       const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+      const int from[3] = {0, k, k + 1}, to[3] = {k, k + 1, 0};
       const Vector3 ao = a - o, bo = b - o, co = c - o;
       const double d6 = ao.dot(bo.cross(co));
       vol6 += d6;
       first += d6 * (ao + bo + co);  // / 24 later
       // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
-      for (const Vector3& q : m) {
+      for (int side = 0; side < 3; ++side) {
+        const Vector3& q = m[side];
         const double w = -S.z() / 3.0;
         wpA += w;
         wpX += w * q.x();
@@ -52,7 +108,7 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
         wpXX += w * q.x() * q.x();
         wpYY += w * q.y() * q.y();
         wpXY += w * q.x() * q.y();
-        const double p = sea.pressure(q, t);
+        const double p = pressureAt(q, from[side], to[side]);
         F -= p / 3.0 * S;
         M -= p / 3.0 * q.cross(S);
       }

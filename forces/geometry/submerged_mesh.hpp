@@ -30,13 +30,22 @@ struct SubmergedProperties {
   int wetTriangles = 0;  // pieces stored in the workspace (when asked for)
 };
 
-// Buffers sized for one mesh: its vertices in the world, their depths, the wetted pieces.
+// Buffers sized for one mesh: its vertices in the world, their depths, the wetted pieces, and the
+// mesh's edges with the pressure at their midpoints (built once, here).
 struct SubmergedWorkspace {
-  explicit SubmergedWorkspace(const TriangleMesh& mesh)
-      : vertices(mesh.vertices.size()), depth(mesh.vertices.size()), wet(2 * mesh.triangles.size()) {}
+  // (mesh) => buffers and the edge numbering of its triangles
+  explicit SubmergedWorkspace(const TriangleMesh& mesh);
   std::vector<dynamics::Vector3> vertices;  // world, m
   std::vector<double> depth;                // eta(x, y, t) - z, m (> 0: wet)
   std::vector<std::array<dynamics::Vector3, 3>> wet;  // wetted pieces, world, outward (first wetTriangles)
+  // edge[3 t + e]: the number of triangle t's edge from its corner e to corner e + 1, the same for
+  // every triangle with those two corners; edgePressure[k] is the incident pressure (Pa) at edge
+  // k's midpoint, valid in the call whose number is edgeStamp[k] (one evaluation per wet edge,
+  // not one per triangle that shares it)
+  std::vector<int> edge;
+  std::vector<double> edgePressure;
+  std::vector<unsigned> edgeStamp;
+  unsigned call = 0;
 };
 
 // (mesh in the body frame, X_WB, sea, t, workspace built for this mesh, keep the wetted pieces)

@@ -1,6 +1,7 @@
 #include "models/multibody/multibody_model.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -15,10 +16,22 @@
 
 namespace yardsim::models {
 
+void appendStateText(std::string& out, const MultibodyState& s) {
+  out += "q=[";
+  for (Eigen::Index i = 0; i < s.q.size(); ++i) {
+    if (i) out += ',';
+    char buf[32];  // "%g" of a double: at most 13 characters ("-1.23457e-308")
+    const auto [end, ec] =
+        std::to_chars(buf, buf + sizeof buf, s.q[i], std::chars_format::general, 6);
+    out.append(buf, ec == std::errc() ? end : buf);
+  }
+  out += ']';
+}
+
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
-  os << "q=[";
-  for (Eigen::Index i = 0; i < s.q.size(); ++i) os << (i ? "," : "") << s.q[i];
-  return os << "]";
+  std::string text;
+  appendStateText(text, s);
+  return os << text;
 }
 
 namespace {
@@ -439,3 +452,14 @@ void MultibodyModel::afterCheckpoint() {
 }
 
 }  // namespace yardsim::models
+
+namespace yardsim::devs {
+
+void TraceFormat<models::MultibodyState>::write(std::string& out, const models::MultibodyState& s) {
+  // (state) => its text as a JSON string: digits, signs, 'e', "q=[", ',' and ']' need no escapes
+  out += '"';
+  models::appendStateText(out, s);
+  out += '"';
+}
+
+}  // namespace yardsim::devs

@@ -3,12 +3,14 @@
 // (devs/checkpoint_archive.hpp): Eigen vectors as lists of their exact doubles, the set-points
 // field by field. The codec is declared with the state, before any model derives from it.
 #include <ostream>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "devs/checkpoint_archive.hpp"
+#include "devs/trace_format.hpp"
 #include "mechanics/set_points.hpp"
 
 namespace yardsim::models {
@@ -23,11 +25,21 @@ struct MultibodyState {
   std::vector<double> peakTension;  // N per rope part: the largest tension at any step so far
   std::vector<double> peakTime;     // s: when each rope's peak was reached
 };
+// (state) => "q=[q0,q1,...]" appended to out, each coordinate (rad or m) as printf's "%g" prints
+// it (six significant digits); operator<< prints the same text whatever the stream's precision
+void appendStateText(std::string& out, const MultibodyState& s);
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
 }  // namespace yardsim::models
 
 namespace yardsim::devs {
+
+// The multibody state in a trace: the JSON string of its text (appendStateText), written straight
+// into the record without a string stream (the trace writes one at every step)
+template <>
+struct TraceFormat<models::MultibodyState> {
+  static void write(std::string& out, const models::MultibodyState& s);
+};
 
 // A dense column vector (dynamic or fixed size): its length, then its coefficients.
 template <class Scalar, int Rows>

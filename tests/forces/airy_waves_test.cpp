@@ -103,3 +103,20 @@ TEST_CASE("the pressure of many components equals the surface and dynamic pressu
     }
   }
 }
+
+TEST_CASE("before the waves start the sea is calm water exactly") {
+  // (a finite-depth sea starting at 60 s with a ramp, points below, at and above the level) =>
+  // before the start the elevation is the level and the pressure that of calm water, bit for bit;
+  // once the ramp is under way neither is
+  const WaterProperties water{1025.0, 9.81, 0.5, 30.0, 20.0, 60.0};
+  const AiryWaves sea(water, {{1.5, 7.0, -M_PI / 2, 0.4}, {0.8, 5.0, 0.3, 1.1}});
+  const AiryWaves calm(water);
+  for (const double t : {0.0, 30.0, 59.999}) {
+    CHECK(sea.elevation(3.0, -7.0, t) == water.level);
+    for (const double z : {-12.0, -0.25, 0.5, 0.75})
+      CHECK(sea.pressure(Vector3(3.0, -7.0, z), t) == calm.pressure(Vector3(3.0, -7.0, z), t));
+  }
+  CHECK(sea.elevation(3.0, -7.0, 61.0) != water.level);
+  CHECK(sea.pressure(Vector3(3.0, -7.0, -0.25), 61.0) !=
+        calm.pressure(Vector3(3.0, -7.0, -0.25), 61.0));
+}

@@ -219,3 +219,42 @@ TEST_CASE("without the incident pressure the hull is clipped at the still-water 
     CHECK(linear.report(s).submerged.volume == still.report(s).submerged.volume);
   }
 }
+
+TEST_CASE("the scratch's last clipping is given again only for the same time and pose") {
+  // (a heeled box in waves, asked at poses A, B, A, A at t1, then A at t2, with one scratch) =>
+  // force, moment, potential and power bit for bit those of a fresh clipping (no scratch), and a
+  // different force at a different time or pose
+  const double m = kRho * L * B * 1.8;
+  const dynamics::Model model = freeBox(m, 2.5, 3.0);
+  const auto sea = std::make_shared<const AiryWaves>(
+      WaterProperties{kRho, kG, 0.0, 40.0, 0.0}, std::vector<WaveComponent>{{1.5, 7.0, 1.2, 0.3}});
+  Hydrostatics hydro("hull", model, 1, boxMesh(Vector3(L, B, D), 4, 2, 2), sea);
+  const std::unique_ptr<ProviderScratch> scratch = hydro.makeScratch();
+  Rig r(model, {});
+  r.v << 0.05, -0.02, 0.01, 0.3, -0.2, 0.4;
+  std::vector<dynamics::Force> seen;
+  for (const auto& [t, heel] : std::vector<std::pair<double, double>>{
+           {1.3, 0.3}, {1.3, 0.1}, {1.3, 0.3}, {1.3, 0.3}, {2.9, 0.3}}) {
+    r.t = t;
+    pose(r.q, 1.2, heel);
+    const Stage fresh = r.stage();
+    Stage cached = fresh;
+    cached.scratch = scratch.get();
+    // (stage) => the world-frame force the provider adds there
+    auto force = [&](const Stage& s) {
+      dynamics::ExternalForces f(model);
+      Eigen::VectorXd tau = Eigen::VectorXd::Zero(model.nv);
+      hydro.evaluate(s, f, tau);
+      return dynamics::Force(f.worldFrame(1));
+    };
+    const dynamics::Force F = force(cached);
+    CHECK(F == force(fresh));
+    CHECK(hydro.power(cached) == hydro.power(fresh));
+    CHECK(hydro.potentialEnergy(cached) == hydro.potentialEnergy(fresh));
+    CHECK(force(cached) == F);  // asked twice at once
+    seen.push_back(F);
+  }
+  CHECK(seen[0] != seen[1]);  // another pose
+  CHECK(seen[0] == seen[2]);
+  CHECK(seen[3] != seen[4]);  // another time, the same pose
+}

@@ -430,3 +430,33 @@ ropes:
     CHECK(events[1].t - events[0].t == Approx((M_PI + 2 * std::atan(d * w / v0)) / w).epsilon(1.5e-2));
   }
 }
+
+TEST_CASE(
+    "the state's trace text is what printf %g and a default ostream print for each coordinate") {
+  // (coordinates across signs, magnitudes, rounding ties and non-finite values) => the trace's
+  // JSON string, checked against snprintf "%g" and against the old ostream form
+  models::MultibodyState x;
+  x.q.resize(12);
+  x.q << 0.0, -0.0, 1.0 / 3.0, -2.5e-7, 1234567.0, 999999.5, 1e-310, -1.7976931348623157e308,
+      0.785398163397, std::nan(""), INFINITY, -INFINITY;
+  std::string expected = "\"q=[";
+  std::ostringstream old;
+  old << "q=[";
+  for (Eigen::Index i = 0; i < x.q.size(); ++i) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", x.q[i]);
+    expected += (i ? "," : "") + std::string(buf);
+    old << (i ? "," : "") << x.q[i];
+  }
+  expected += "]\"";
+  old << "]";
+  std::string out;
+  devs::TraceFormat<models::MultibodyState>::write(out, x);
+  CHECK(out == expected);
+  CHECK(out == "\"" + old.str() + "\"");
+  std::ostringstream streamed;
+  streamed.precision(17);  // the stream's precision does not change the text
+  streamed << x;
+  CHECK("\"" + streamed.str() + "\"" == expected);
+  CHECK(out.find("1e+06") != std::string::npos);  // 999999.5 rounds up to the next decade
+}

@@ -7,8 +7,14 @@
 namespace yardsim::dynamics {
 
 HybridDynamics::HybridDynamics(const Model& model)
-    : model_(model), Mff_(model.nv, model.nv), Mfp_(model.nv, model.nv), Lff_(Eigen::MatrixXd::Zero(model.nv, model.nv)),
-      rhs_(model.nv), af_(model.nv), ap_(model.nv), work_(model.nv) {
+    : model_(model),
+      Mff_(model.nv, model.nv),
+      Mfp_(model.nv, model.nv),
+      Lff_(Eigen::MatrixXd::Zero(model.nv, model.nv)),
+      rhs_(model.nv),
+      af_(model.nv),
+      ap_(model.nv),
+      work_(model.nv) {
   const auto nv = static_cast<std::size_t>(model.nv);
   free_.reserve(nv);
   fixed_.reserve(nv);
@@ -25,13 +31,15 @@ void HybridDynamics::setPrescribed(const std::vector<char>& prescribed) {
   // (free dofs) => the induced tree: a free dof's parent is its nearest free ancestor, its subtree
   // the free dofs of its subtree (contiguous, since the order is kept)
   position_.assign(static_cast<std::size_t>(model_.nv), -1);
-  for (std::size_t f = 0; f < free_.size(); ++f) position_[static_cast<std::size_t>(free_[f])] = static_cast<int>(f);
+  for (std::size_t f = 0; f < free_.size(); ++f)
+    position_[static_cast<std::size_t>(free_[f])] = static_cast<int>(f);
   freeParent_.clear();
   freeSubtree_.clear();
   for (std::size_t f = 0; f < free_.size(); ++f) {
     const int k = free_[f];
     int p = model_.dofParent[static_cast<std::size_t>(k)];
-    while (p >= 0 && position_[static_cast<std::size_t>(p)] < 0) p = model_.dofParent[static_cast<std::size_t>(p)];
+    while (p >= 0 && position_[static_cast<std::size_t>(p)] < 0)
+      p = model_.dofParent[static_cast<std::size_t>(p)];
     freeParent_.push_back(p >= 0 ? position_[static_cast<std::size_t>(p)] : -1);
     const int end = k + model_.dofSubtree[static_cast<std::size_t>(k)];
     int count = 0;

@@ -42,7 +42,7 @@ class HybridDynamics {
   const Model& model_;
   std::vector<int> free_, fixed_;  // dof indices: free, prescribed
   std::vector<int> freeParent_, freeSubtree_;  // the dof tree induced on the free dofs
-  std::vector<int> position_;  // per dof: its index among the free dofs, or -1
+  std::vector<int> position_;                  // per dof: its index among the free dofs, or -1
   Eigen::Index np_ = 0;
   Eigen::MatrixXd Mff_, Mfp_;
   Eigen::MatrixXd Lff_;  // M_ff = L^T L

@@ -76,7 +76,8 @@ struct Model {
   /// last dof of the nearest ancestor body that has one (-1 at a root); the mass matrix's entry
   /// (k, j) can be non-zero only when j is k, an ancestor or a descendant of k.
   std::vector<int> dofParent;
-  std::vector<int> dofSubtree;        ///< dofs in the subtree of dof k, itself included (contiguous from k)
+  /// The dofs in the subtree of dof k, itself included (contiguous from k).
+  std::vector<int> dofSubtree;
   std::vector<bool> placementRotated; ///< false when X_PJ[i] is a pure translation
   bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;

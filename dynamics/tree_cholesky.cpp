@@ -31,7 +31,8 @@ bool denseChainFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, Eigen::Ref<Eig
   for (int J = 0; J < n; J += kTile) {
     for (int I = J; I < n; I += kTile) {
       for (int j = J; j < std::min(J + kTile, n); ++j) {
-        for (int i = std::max(I, j); i < std::min(I + kTile, n - 1 - j); ++i) std::swap(L(i, j), L(n - 1 - j, n - 1 - i));
+        for (int i = std::max(I, j); i < std::min(I + kTile, n - 1 - j); ++i)
+          std::swap(L(i, j), L(n - 1 - j, n - 1 - i));
       }
     }
   }
@@ -48,9 +49,11 @@ bool singleChain(std::span<const int> parent) {
 }  // namespace
 
 bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<const int> parent,
-                        std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L, Eigen::VectorXd& work) {
+                        std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L,
+                        Eigen::VectorXd& work) {
   const int n = static_cast<int>(A.rows());
-  if (n >= kDenseChain && singleChain(parent.first(static_cast<std::size_t>(n)))) return denseChainFactor(A, L);
+  if (n >= kDenseChain && singleChain(parent.first(static_cast<std::size_t>(n))))
+    return denseChainFactor(A, L);
   const double* a = A.data();
   const Eigen::Index lda = A.outerStride();
   double* l = L.data();
@@ -91,8 +94,8 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
   return ok;
 }
 
-void treeCholeskySolveInPlace(const Eigen::Ref<const Eigen::MatrixXd>& L, std::span<const int> subtree,
-                              Eigen::Ref<Eigen::VectorXd> x) {
+void treeCholeskySolveInPlace(const Eigen::Ref<const Eigen::MatrixXd>& L,
+                              std::span<const int> subtree, Eigen::Ref<Eigen::VectorXd> x) {
   const int n = static_cast<int>(L.rows());
   const double* l = L.data();
   const Eigen::Index ld = L.outerStride();

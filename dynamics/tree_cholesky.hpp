@@ -23,11 +23,12 @@ namespace yardsim::dynamics {
 /// entries off the ancestor pattern are neither read nor written); work (size >= A's) is scratch.
 /// Returns false when A is not positive definite (L then holds a NaN or a non-positive pivot).
 bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<const int> parent,
-                        std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L, Eigen::VectorXd& work);
+                        std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L,
+                        Eigen::VectorXd& work);
 
 /// (L of treeCholeskyFactor, subtree, b) => x = A^-1 b in place (x = L^-1 L^-T b).
-void treeCholeskySolveInPlace(const Eigen::Ref<const Eigen::MatrixXd>& L, std::span<const int> subtree,
-                              Eigen::Ref<Eigen::VectorXd> x);
+void treeCholeskySolveInPlace(const Eigen::Ref<const Eigen::MatrixXd>& L,
+                              std::span<const int> subtree, Eigen::Ref<Eigen::VectorXd> x);
 
 /// (data.M of crba) => data.L, M = L^T L along the model's dof tree; false if M is not positive
 /// definite.

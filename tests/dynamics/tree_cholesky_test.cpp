@@ -34,15 +34,20 @@ Eigen::MatrixXi ancestorPattern(const Model& m) {
 // alternating, axes cycling x, y, z (the shape of bench/peers' tree)
 Model floatingTree(int perBranch) {
   ModelBuilder b;
-  b.addBody("block", "world", Joint::free(), {}, makeInertia(1000.0, Vector3::Zero(), Vector3(1e3, 2e3, 2.5e3).asDiagonal()));
+  b.addBody("block", "world", Joint::free(), {},
+            makeInertia(1000.0, Vector3::Zero(), Vector3(1e3, 2e3, 2.5e3).asDiagonal()));
   const double corner[4][2] = {{5, 3}, {-5, 3}, {-5, -3}, {5, -3}};
   for (int br = 0; br < 4; ++br) {
     for (int j = 0; j < perBranch; ++j) {
-      const std::string name = indexed("b", br * 100 + j), parent = j == 0 ? "block" : indexed("b", br * 100 + j - 1);
+      const std::string name = indexed("b", br * 100 + j),
+                        parent = j == 0 ? "block" : indexed("b", br * 100 + j - 1);
       const Vector3 axis = Vector3::Unit(j % 3);
-      const Vector3 off = j == 0 ? Vector3(corner[br][0], corner[br][1], 1.0) : Vector3(0.1, 0.2, 2.0);
-      b.addBody(name, parent, j % 2 == 0 ? Joint::revolute(axis) : Joint::prismatic(axis), Transform::translation(off),
-                makeInertia(50.0, Vector3(0.05, -0.02, 1.0), Vector3(20.0, 21.0, 2.0).asDiagonal()));
+      const Vector3 off =
+          j == 0 ? Vector3(corner[br][0], corner[br][1], 1.0) : Vector3(0.1, 0.2, 2.0);
+      b.addBody(
+          name, parent, j % 2 == 0 ? Joint::revolute(axis) : Joint::prismatic(axis),
+          Transform::translation(off),
+          makeInertia(50.0, Vector3(0.05, -0.02, 1.0), Vector3(20.0, 21.0, 2.0).asDiagonal()));
     }
   }
   return b.build();
@@ -101,7 +106,8 @@ TEST_CASE("tree Cholesky: random trees with every joint type and added mass matc
 
 TEST_CASE("tree Cholesky: planar chains and the floating-base tree with prismatic branches") {
   std::mt19937 rng(2106);
-  for (int n : {1, 8, 33, 64, 97}) checkFactorisation(planarChain(n), rng);  // 64 on: the dense path
+  for (int n : {1, 8, 33, 64, 97})
+    checkFactorisation(planarChain(n), rng);  // 64 on: the dense path
   for (int k : {1, 2, 8}) checkFactorisation(floatingTree(k), rng);
 }
 

@@ -4,6 +4,7 @@
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rnea.hpp"
 #include "dynamics/semidefinite_solve.hpp"
+#include "dynamics/tree_cholesky.hpp"
 
 namespace yardsim::dynamics {
 
@@ -15,14 +16,14 @@ const Eigen::VectorXd& constrainedForwardDynamics(const Model& m, Data& d, const
   choleskyFactor(m, d);
   biasForces(m, d, q, v, fext);
   d.ddq = tau - d.nle;
-  d.llt.solveInPlace(d.ddq);
+  choleskySolveInPlace(m, d, d.ddq);
   if (m.nc == 0) return d.ddq;
   // (q, v) => J, J v, kappa, residual
   if (stab.beta != 0.0) loopResidual(m, d, q);
   loopJacobianAndBias(m, d, q, v);
   // (J, L) => M^-1 J^T, Schur complement J M^-1 J^T
   d.MinvJt = d.J.transpose();
-  d.llt.solveInPlace(d.MinvJt);
+  choleskySolveInPlace(m, d, d.MinvJt);
   d.schur.noalias() = d.J * d.MinvJt;
   // (Schur, rhs) => lambda; ddq += M^-1 J^T lambda
   d.rhs = -d.kappa - 2.0 * stab.alpha * d.cv;

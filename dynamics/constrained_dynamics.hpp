@@ -17,7 +17,7 @@ struct Baumgarte {
   double beta = 0.0;   ///< position feedback [1/s]
 };
 
-/// (q, v, tau, external forces) => data.ddq and data.lambda (and data.M, data.llt, data.J,
+/// (q, v, tau, external forces) => data.ddq and data.lambda (and data.M, data.L, data.J,
 /// data.residual when beta != 0). Without loops this is CRBA + Cholesky forward dynamics.
 const Eigen::VectorXd& constrainedForwardDynamics(const Model& model, Data& data, const Eigen::VectorXd& q,
                                                   const Eigen::VectorXd& v, const Eigen::VectorXd& tau,

@@ -40,6 +40,4 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   return d.M;
 }
 
-void choleskyFactor(const Model&, Data& d) { d.llt.compute(d.M); }
-
 }  // namespace yardsim::dynamics

@@ -13,7 +13,4 @@ namespace yardsim::dynamics {
 /// (q) => data.M (both triangles), and data.X_WB, data.S_W, data.IC_W.
 const Eigen::MatrixXd& crba(const Model& model, Data& data, const Eigen::VectorXd& q);
 
-/// (data.M) => data.llt, the Cholesky factor of M (needs crba first).
-void choleskyFactor(const Model& model, Data& data);
-
 }  // namespace yardsim::dynamics

@@ -2,7 +2,6 @@
 // The mutable workspace of the algorithms, made once from a Model: every buffer they need is
 // allocated here, so the algorithms themselves never allocate.
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
 
@@ -39,7 +38,8 @@ struct Data {
   Eigen::Matrix<double, 6, Eigen::Dynamic> Fcrb;  ///< CRBA: IC_W S_W column by column (6 x nv)
   Eigen::MatrixXd M;   ///< joint-space mass matrix (upper and lower triangle)
   Eigen::VectorXd nle; ///< bias forces h(q, v) (Coriolis, centrifugal, gravity)
-  Eigen::LLT<Eigen::MatrixXd> llt;
+  Eigen::MatrixXd L;         ///< choleskyFactor: M = L^T L along the dof tree (lower triangle)
+  Eigen::VectorXd cholWork;  ///< choleskyFactor scratch (nv)
 
   // loop constraints
   Eigen::MatrixXd J;        ///< nc x nv constraint Jacobian

@@ -2,14 +2,25 @@
 
 #include "dynamics/crba.hpp"
 #include "dynamics/rnea.hpp"
+#include "dynamics/tree_cholesky.hpp"
 
 namespace yardsim::dynamics {
 
 HybridDynamics::HybridDynamics(const Model& model)
-    : model_(model), Mff_(model.nv, model.nv), Mfp_(model.nv, model.nv), rhs_(model.nv), af_(model.nv),
-      ap_(model.nv), llt_(model.nv) {
-  free_.reserve(static_cast<std::size_t>(model.nv));
-  fixed_.reserve(static_cast<std::size_t>(model.nv));
+    : model_(model),
+      Mff_(model.nv, model.nv),
+      Mfp_(model.nv, model.nv),
+      Lff_(Eigen::MatrixXd::Zero(model.nv, model.nv)),
+      rhs_(model.nv),
+      af_(model.nv),
+      ap_(model.nv),
+      work_(model.nv) {
+  const auto nv = static_cast<std::size_t>(model.nv);
+  free_.reserve(nv);
+  fixed_.reserve(nv);
+  freeParent_.reserve(nv);
+  freeSubtree_.reserve(nv);
+  position_.reserve(nv);
 }
 
 void HybridDynamics::setPrescribed(const std::vector<char>& prescribed) {
@@ -17,6 +28,24 @@ void HybridDynamics::setPrescribed(const std::vector<char>& prescribed) {
   fixed_.clear();
   for (int k = 0; k < model_.nv; ++k) (prescribed[static_cast<std::size_t>(k)] ? fixed_ : free_).push_back(k);
   np_ = static_cast<Eigen::Index>(fixed_.size());
+  // (free dofs) => the induced tree: a free dof's parent is its nearest free ancestor, its subtree
+  // the free dofs of its subtree (contiguous, since the order is kept)
+  position_.assign(static_cast<std::size_t>(model_.nv), -1);
+  for (std::size_t f = 0; f < free_.size(); ++f)
+    position_[static_cast<std::size_t>(free_[f])] = static_cast<int>(f);
+  freeParent_.clear();
+  freeSubtree_.clear();
+  for (std::size_t f = 0; f < free_.size(); ++f) {
+    const int k = free_[f];
+    int p = model_.dofParent[static_cast<std::size_t>(k)];
+    while (p >= 0 && position_[static_cast<std::size_t>(p)] < 0)
+      p = model_.dofParent[static_cast<std::size_t>(p)];
+    freeParent_.push_back(p >= 0 ? position_[static_cast<std::size_t>(p)] : -1);
+    const int end = k + model_.dofSubtree[static_cast<std::size_t>(k)];
+    int count = 0;
+    for (std::size_t g = f; g < free_.size() && free_[g] < end; ++g) ++count;
+    freeSubtree_.push_back(count);
+  }
 }
 
 void HybridDynamics::factorFree(Data& data, const Eigen::VectorXd& q) {
@@ -29,7 +58,7 @@ void HybridDynamics::factorFree(Data& data, const Eigen::VectorXd& q) {
     for (Eigen::Index j = 0; j < nf; ++j) Mff_(i, j) = M(free_[i], free_[j]);
     for (Eigen::Index j = 0; j < np_; ++j) Mfp_(i, j) = M(free_[i], fixed_[j]);
   }
-  llt_.compute(Mff_);
+  treeCholeskyFactor(Mff_, freeParent_, freeSubtree_, Lff_.topLeftCorner(nf, nf), work_);
 }
 
 void HybridDynamics::compute(Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
@@ -47,7 +76,8 @@ void HybridDynamics::compute(Data& data, const Eigen::VectorXd& q, const Eigen::
   for (Eigen::Index i = 0; i < nf; ++i) rhs_[i] = tau[free_[i]] - h[free_[i]];
   rhs_.noalias() -= Mfp_ * ap_;
   af_.resize(nf);
-  af_ = llt_.solve(rhs_);
+  af_ = rhs_;
+  treeCholeskySolveInPlace(Lff_.topLeftCorner(nf, nf), freeSubtree_, af_);
   for (Eigen::Index i = 0; i < nf; ++i) a[free_[i]] = af_[i];
   // (a) => the effort on the prescribed dofs
   effort.setZero();
@@ -66,7 +96,8 @@ void HybridDynamics::velocityStep(Data& data, const Eigen::VectorXd& q, Eigen::V
   rhs_.resize(nf);
   rhs_.noalias() = -Mfp_ * ap_;
   af_.resize(nf);
-  af_ = llt_.solve(rhs_);
+  af_ = rhs_;
+  treeCholeskySolveInPlace(Lff_.topLeftCorner(nf, nf), freeSubtree_, af_);
   for (Eigen::Index i = 0; i < nf; ++i) v[free_[i]] += af_[i];
   for (Eigen::Index j = 0; j < np_; ++j) v[fixed_[j]] += ap_[j];
 }

@@ -6,9 +6,10 @@
 //   M_ff a_f = tau_f - h_f - M_fp a_p          (the free accelerations)
 //   e_p      = M_pf a_f + M_pp a_p + h_p - tau_p (the effort that enforces the prescribed motion)
 // A velocity step imposed on the prescribed dofs moves the free ones by the impulse response
-// dv_f = -M_ff^-1 M_fp dv_p. Trees only (no loop closures). Allocation-free after construction.
+// dv_f = -M_ff^-1 M_fp dv_p. M_ff keeps the tree's sparsity (a free dof's parent is its nearest
+// free ancestor), so it is factorised along that induced tree (tree_cholesky.hpp). Trees only (no
+// loop closures). Allocation-free after construction.
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
 
@@ -40,10 +41,12 @@ class HybridDynamics {
 
   const Model& model_;
   std::vector<int> free_, fixed_;  // dof indices: free, prescribed
+  std::vector<int> freeParent_, freeSubtree_;  // the dof tree induced on the free dofs
+  std::vector<int> position_;                  // per dof: its index among the free dofs, or -1
   Eigen::Index np_ = 0;
   Eigen::MatrixXd Mff_, Mfp_;
-  Eigen::VectorXd rhs_, af_, ap_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::MatrixXd Lff_;  // M_ff = L^T L
+  Eigen::VectorXd rhs_, af_, ap_, work_;
 };
 
 }  // namespace yardsim::dynamics

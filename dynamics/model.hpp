@@ -72,6 +72,12 @@ struct Model {
   std::vector<int> jointNv;
   std::vector<int> dofBody;           ///< body owning each velocity index
   std::vector<int> nvSubtree;         ///< velocity count of the subtree rooted at body i (contiguous from idxV[i])
+  /// The dof tree, per velocity index k: lambda(k), the previous dof of the same joint or else the
+  /// last dof of the nearest ancestor body that has one (-1 at a root); the mass matrix's entry
+  /// (k, j) can be non-zero only when j is k, an ancestor or a descendant of k.
+  std::vector<int> dofParent;
+  /// The dofs in the subtree of dof k, itself included (contiguous from k).
+  std::vector<int> dofSubtree;
   std::vector<bool> placementRotated; ///< false when X_PJ[i] is a pure translation
   bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;

@@ -215,6 +215,18 @@ Model ModelBuilder::build() const {
     if (m.parent[i] > 0) m.nvSubtree[m.parent[i]] += m.nvSubtree[i];
   }
   m.nvSubtree[0] = m.nv;
+  // (tree) => the dof tree: lambda(k) and the dofs below k (tree_cholesky.hpp)
+  m.dofParent.assign(static_cast<std::size_t>(m.nv), -1);
+  m.dofSubtree.assign(static_cast<std::size_t>(m.nv), 0);
+  for (int i = 1; i < m.nbodies; ++i) {
+    int p = m.parent[i];
+    while (p > 0 && m.jointNv[p] == 0) p = m.parent[p];
+    const int last = p > 0 ? m.idxV[p] + m.jointNv[p] - 1 : -1;
+    for (int k = 0; k < m.jointNv[i]; ++k) {
+      m.dofParent[m.idxV[i] + k] = k == 0 ? last : m.idxV[i] + k - 1;
+      m.dofSubtree[m.idxV[i] + k] = m.nvSubtree[i] - k;
+    }
+  }
   for (int i = 0; i < m.nbodies; ++i) {
     m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
     if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;

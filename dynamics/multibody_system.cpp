@@ -8,6 +8,7 @@
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/projection.hpp"
+#include "dynamics/tree_cholesky.hpp"
 
 namespace yardsim::dynamics {
 
@@ -97,7 +98,7 @@ void MultibodySystem::constraintTerms(const Eigen::VectorXd& q, Eigen::VectorXd&
   crba(model_, data_, q);
   choleskyFactor(model_, data_);
   MinvJt = J.transpose();
-  data_.llt.solveInPlace(MinvJt);
+  choleskySolveInPlace(model_, data_, MinvJt);
 }
 
 void MultibodySystem::afterStep(double, Eigen::VectorXd& q, Eigen::VectorXd& v) {

@@ -4,6 +4,7 @@
 #include "dynamics/crba.hpp"
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/semidefinite_solve.hpp"
+#include "dynamics/tree_cholesky.hpp"
 
 namespace yardsim::dynamics {
 
@@ -13,7 +14,7 @@ void schurComplement(const Model& m, Data& d, const Eigen::VectorXd& q) {
   crba(m, d, q);
   choleskyFactor(m, d);
   d.MinvJt = d.J.transpose();
-  d.llt.solveInPlace(d.MinvJt);
+  choleskySolveInPlace(m, d, d.MinvJt);
   d.schur.noalias() = d.J * d.MinvJt;
 }
 }  // namespace

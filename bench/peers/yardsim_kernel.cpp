@@ -1,10 +1,11 @@
-// yardsim's kernels (dynamics/aba, rnea, crba + choleskyFactor) on a peer_models.hpp model.
+// yardsim's kernels (dynamics/aba, rnea, crba + the tree-sparse choleskyFactor) on a peer_models.hpp model.
 #include <numeric>
 #include <random>
 #include <stdexcept>
 
 #include "dynamics/aba.hpp"
 #include "dynamics/crba.hpp"
+#include "dynamics/tree_cholesky.hpp"
 #include "dynamics/model_builder.hpp"
 #include "dynamics/rnea.hpp"
 #include "kernel.hpp"

@@ -14,6 +14,7 @@
 #include "dynamics/multibody_system.hpp"
 #include "dynamics/projection.hpp"
 #include "dynamics/rnea.hpp"
+#include "dynamics/tree_cholesky.hpp"
 #include "test_mechanisms.hpp"
 #include "test_models.hpp"
 
@@ -46,6 +47,7 @@ TEST_CASE("RNEA, ABA, CRBA + Cholesky, energy and RK4 steps do not allocate") {
     aba(m, d, q, v, tau, &f);
     crba(m, d, q);
     choleskyFactor(m, d);
+    choleskySolveInPlace(m, d, d.dv);
     constrainedForwardDynamics(m, d, q, v, tau, &f);
     kineticEnergy(m, d, q, v);
     momentum(m, d, q, v);

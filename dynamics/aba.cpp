@@ -28,7 +28,7 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
     const int iv = m.idxV[i];
     Motion vJ;
     if (nv == 1) {
-      const Motion s = X.actMotion(d.S[i].col(0));
+      const Motion s = worldSubspaceColumn(m, d, i);
       d.S_W.col(iv) = s;
       vJ = s * v[iv];
       d.C_W[i] = Motion::Zero();

@@ -3,9 +3,11 @@
 // position, velocity and acceleration of any point on a body.
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "dynamics/data.hpp"
 #include "dynamics/model.hpp"
+#include "dynamics/rotation.hpp"
 
 namespace yardsim::dynamics {
 
@@ -33,10 +35,26 @@ Vector3 pointAcceleration(const Data& data, int body, const Vector3& p_B);
 /// (roll, pitch, yaw) of the body in the world, R_WB = Rz(yaw) Ry(pitch) Rx(roll); needs FK(q).
 Vector3 bodyEulerAngles(const Data& data, int body);
 
+/// (body i placed in the world, a 1-dof joint) => X_WB S, its motion subspace column in the world
+/// frame; for a coordinate-axis joint (Model::jointAxis) read off R_WB's column k.
+inline Motion worldSubspaceColumn(const Model& model, const Data& data, int i);
+
 inline void updateJointPlacement(const Model& model, Data& data, int i, const Eigen::VectorXd& q) {
   const Joint& j = model.joints[i];
   const double* qi = q.data() + model.idxQ[i];
-  if (model.placementRotated[i]) {
+  const int k = model.jointAxis[i];
+  if (k >= 0 && !model.placementRotated[i]) {
+    // (coordinate-axis revolute or prismatic joint, translated joint frame) => the same X_PB as
+    // the general path below, without its call and its axis-angle formula
+    Transform& X = data.X_PB[i];
+    if (j.type == JointType::Revolute) {
+      coordinateAxisRotation(k, std::sin(qi[0]), std::cos(qi[0]), X.R);
+      X.p = model.X_PJ[i].p + Vector3::Zero();
+    } else {
+      X.R.setIdentity();
+      X.p = model.X_PJ[i].p + j.axis * qi[0];
+    }
+  } else if (model.placementRotated[i]) {
     data.X_PB[i] = model.X_PJ[i] * jointTransform(j, qi);
   } else {
     const Transform X_JC = jointTransform(j, qi);
@@ -44,6 +62,23 @@ inline void updateJointPlacement(const Model& model, Data& data, int i, const Ei
     data.X_PB[i].p = model.X_PJ[i].p + X_JC.p;
   }
   if (!j.constantSubspace()) jointMotionSubspace(j, qi, data.S[i]);
+}
+
+inline Motion worldSubspaceColumn(const Model& model, const Data& data, int i) {
+  const Transform& X = data.X_WB[i];
+  const int k = model.jointAxis[i];
+  if (k < 0) return X.actMotion(data.S[i].col(0));
+  // (S = (e_k, 0) or (0, e_k)) => X_WB S without the products by exact zeros and ones; equal to
+  // the general product but for the sign of entries that are exactly zero
+  Motion s;
+  if (model.joints[i].type == JointType::Revolute) {
+    s.head<3>() = X.R.col(k);
+    s.tail<3>() = X.p.cross(s.head<3>());
+  } else {
+    s.head<3>().setZero();
+    s.tail<3>() = X.R.col(k);
+  }
+  return s;
 }
 
 }  // namespace yardsim::dynamics

@@ -73,6 +73,9 @@ struct Model {
   std::vector<int> dofBody;           ///< body owning each velocity index
   std::vector<int> nvSubtree;         ///< velocity count of the subtree rooted at body i (contiguous from idxV[i])
   std::vector<bool> placementRotated; ///< false when X_PJ[i] is a pure translation
+  /// 0, 1, 2 when body i's joint is revolute or prismatic about the joint frame's x, y or z axis
+  /// (components exactly +0 and 1), else -1: the kernels special-case these joints
+  std::vector<signed char> jointAxis;
   bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;
 

@@ -40,7 +40,7 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     if (nv == 1) {
-      const Motion s = X.actMotion(d.S[i].col(0));
+      const Motion s = worldSubspaceColumn(m, d, i);
       d.S_W.col(iv) = s;
       const Motion vJ = s * v[iv];
       d.V_W[i] = d.V_W[p] + vJ;

@@ -35,6 +35,12 @@ Vector3 pointAcceleration(const Data& data, int body, const Vector3& p_B);
 /// (roll, pitch, yaw) of the body in the world, R_WB = Rz(yaw) Ry(pitch) Rx(roll); needs FK(q).
 Vector3 bodyEulerAngles(const Data& data, int body);
 
+/// (q, body i; X_WB of its parent) => X_PB[i], X_WB[i] = X_WB[parent] X_PB[i] (and S[i] where it
+/// depends on q); for a coordinate-axis joint in a translated frame (Model::jointAxis) the
+/// rotation product mixes two columns (revolute) or is a copy (prismatic): equal in value to the
+/// general product, whose other terms are products by exact zeros.
+inline void placeBody(const Model& model, Data& data, int i, const Eigen::VectorXd& q);
+
 /// (body i placed in the world, a 1-dof joint) => X_WB S, its motion subspace column in the world
 /// frame; for a coordinate-axis joint (Model::jointAxis) read off R_WB's column k.
 inline Motion worldSubspaceColumn(const Model& model, const Data& data, int i);
@@ -62,6 +68,30 @@ inline void updateJointPlacement(const Model& model, Data& data, int i, const Ei
     data.X_PB[i].p = model.X_PJ[i].p + X_JC.p;
   }
   if (!j.constantSubspace()) jointMotionSubspace(j, qi, data.S[i]);
+}
+
+inline void placeBody(const Model& model, Data& data, int i, const Eigen::VectorXd& q) {
+  updateJointPlacement(model, data, i, q);
+  const Transform& X_WP = data.X_WB[model.parent[i]];
+  const Transform& X_PB = data.X_PB[i];
+  Transform& X = data.X_WB[i];
+  const int k = model.jointAxis[i];
+  if (k < 0 || model.placementRotated[i]) {
+    X = X_WP * X_PB;
+    return;
+  }
+  X.p = X_WP.p + X_WP.R * X_PB.p;
+  if (model.joints[i].type == JointType::Prismatic) {
+    X.R = X_WP.R;
+    return;
+  }
+  // (R_PB from coordinateAxisRotation) => columns a, b mixed by (c, s), column k scaled
+  const int a = (k + 1) % 3;
+  const int b = (k + 2) % 3;
+  const double c = X_PB.R(a, a), s = X_PB.R(b, a), sNeg = X_PB.R(a, b);
+  X.R.col(k) = X_WP.R.col(k) * X_PB.R(k, k);
+  X.R.col(a) = X_WP.R.col(a) * c + X_WP.R.col(b) * s;
+  X.R.col(b) = X_WP.R.col(a) * sNeg + X_WP.R.col(b) * c;
 }
 
 inline Motion worldSubspaceColumn(const Model& model, const Data& data, int i) {

@@ -76,6 +76,8 @@ struct Model {
   /// 0, 1, 2 when body i's joint is revolute or prismatic about the joint frame's x, y or z axis
   /// (components exactly +0 and 1), else -1: the kernels special-case these joints
   std::vector<signed char> jointAxis;
+  /// inertias[i].inertiaCom is diagonal (the kernels then scale instead of multiplying by it)
+  std::vector<bool> inertiaDiagonal;
   bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;
 

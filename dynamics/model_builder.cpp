@@ -231,6 +231,8 @@ Model ModelBuilder::build() const {
   for (int i = 0; i < m.nbodies; ++i) {
     m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
     m.jointAxis.push_back(coordinateAxis(m.joints[i]));
+    const Matrix3& Ic = m.inertias[i].inertiaCom;
+    m.inertiaDiagonal.push_back(Ic.isDiagonal(0.0));
     if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;
   }
   // (added-mass specs) => checked symmetric 6x6 per body (a second one for a body replaces the first)

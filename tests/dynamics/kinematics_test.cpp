@@ -74,8 +74,8 @@ TEST_CASE("a planar chain stretched along x puts link k at x = k — Euler angle
 }
 
 TEST_CASE("the coordinate-axis placement and subspace equal the general joint formulas") {
-  // (special-cased joints) => X_PB bit for bit as X_PJ * jointTransform, X_WB S equal to the
-  // general product but for the sign of exact zeros
+  // (special-cased joints) => X_PB bit for bit as X_PJ * jointTransform; R_WB and X_WB S equal to
+  // the general products but for the sign of exact zeros
   std::mt19937 rng(22);
   const Model m = randomAxisTree(rng, 30);
   Data d(m);
@@ -91,6 +91,9 @@ TEST_CASE("the coordinate-axis placement and subspace equal the general joint fo
       const Transform ref{X_JC.R, m.X_PJ[i].p + X_JC.p};
       CHECK(std::memcmp(d.X_PB[i].R.data(), ref.R.data(), sizeof(double) * 9) == 0);
       CHECK(std::memcmp(d.X_PB[i].p.data(), ref.p.data(), sizeof(double) * 3) == 0);
+      const Transform refW = d.X_WB[m.parent[i]] * d.X_PB[i];
+      CHECK((d.X_WB[i].R.array() == refW.R.array()).all());
+      CHECK(std::memcmp(d.X_WB[i].p.data(), refW.p.data(), sizeof(double) * 3) == 0);
       if (m.jointNv[i] != 1) continue;
       special += m.jointAxis[i] >= 0;
       const Motion s = worldSubspaceColumn(m, d, i);

@@ -154,3 +154,14 @@ TEST_CASE("joints about a coordinate axis are marked for the kernels' special ca
   CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("cyl"))] == -1);
   CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("z"))] == -1);  // -0: not the same doubles
 }
+
+TEST_CASE("diagonal body inertias are marked for the kernels' scaling shortcut") {
+  ModelBuilder b;
+  b.addBody("rod", "world", Joint::revolute(Vector3::UnitX()), {}, rodInertia(1.0, 1.0));
+  Matrix3 J = Vector3(1.0, 2.0, 2.5).asDiagonal();
+  J(0, 1) = J(1, 0) = 0.1;
+  b.addBody("full", "rod", Joint::revolute(Vector3::UnitX()), {}, makeInertia(1.0, Vector3::Zero(), J));
+  const Model m = b.build();
+  CHECK(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("rod"))]);
+  CHECK_FALSE(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("full"))]);
+}

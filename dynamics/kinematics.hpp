@@ -70,28 +70,51 @@ inline void updateJointPlacement(const Model& model, Data& data, int i, const Ei
   if (!j.constantSubspace()) jointMotionSubspace(j, qi, data.S[i]);
 }
 
-inline void placeBody(const Model& model, Data& data, int i, const Eigen::VectorXd& q) {
-  updateJointPlacement(model, data, i, q);
+namespace detail {
+// (angle q of body i's revolute joint about axis K of a translated joint frame; X_WB of its
+// parent) => X_PB[i] as updateJointPlacement, X_WB[i]: R_WB's columns a, b mixed by (c, s), column
+// K scaled by R_PB(K, K); the axis a compile-time constant
+template <int K>
+inline void placeRevolute(const Model& model, Data& data, int i, double q) {
+  constexpr int a = (K + 1) % 3;
+  constexpr int b = (K + 2) % 3;
+  const double s = std::sin(q), c = std::cos(q);
+  Transform& X_PB = data.X_PB[i];
+  coordinateAxisRotation(K, s, c, X_PB.R);
+  X_PB.p = model.X_PJ[i].p + Vector3::Zero();
   const Transform& X_WP = data.X_WB[model.parent[i]];
-  const Transform& X_PB = data.X_PB[i];
   Transform& X = data.X_WB[i];
-  const int k = model.jointAxis[i];
-  if (k < 0 || model.placementRotated[i]) {
-    X = X_WP * X_PB;
-    return;
-  }
   X.p = X_WP.p + X_WP.R * X_PB.p;
-  if (model.joints[i].type == JointType::Prismatic) {
-    X.R = X_WP.R;
+  const double sPos = X_PB.R(b, a), sNeg = X_PB.R(a, b);
+  X.R.col(K) = X_WP.R.col(K) * X_PB.R(K, K);
+  X.R.col(a) = X_WP.R.col(a) * c + X_WP.R.col(b) * sPos;
+  X.R.col(b) = X_WP.R.col(a) * sNeg + X_WP.R.col(b) * c;
+}
+}  // namespace detail
+
+inline void placeBody(const Model& model, Data& data, int i, const Eigen::VectorXd& q) {
+  const int k = model.jointAxis[i];
+  if (k >= 0 && !model.placementRotated[i]) {
+    if (model.joints[i].type == JointType::Revolute) {
+      const double qi = q[model.idxQ[i]];
+      if (k == 0) {
+        detail::placeRevolute<0>(model, data, i, qi);
+      } else if (k == 1) {
+        detail::placeRevolute<1>(model, data, i, qi);
+      } else {
+        detail::placeRevolute<2>(model, data, i, qi);
+      }
+      return;
+    }
+    // (prismatic) => R_WB = R_WP R_PB with R_PB = 1
+    updateJointPlacement(model, data, i, q);
+    const Transform& X_WP = data.X_WB[model.parent[i]];
+    data.X_WB[i].p = X_WP.p + X_WP.R * data.X_PB[i].p;
+    data.X_WB[i].R = X_WP.R;
     return;
   }
-  // (R_PB from coordinateAxisRotation) => columns a, b mixed by (c, s), column k scaled
-  const int a = (k + 1) % 3;
-  const int b = (k + 2) % 3;
-  const double c = X_PB.R(a, a), s = X_PB.R(b, a), sNeg = X_PB.R(a, b);
-  X.R.col(k) = X_WP.R.col(k) * X_PB.R(k, k);
-  X.R.col(a) = X_WP.R.col(a) * c + X_WP.R.col(b) * s;
-  X.R.col(b) = X_WP.R.col(a) * sNeg + X_WP.R.col(b) * c;
+  updateJointPlacement(model, data, i, q);
+  data.X_WB[i] = data.X_WB[model.parent[i]] * data.X_PB[i];
 }
 
 inline Motion worldSubspaceColumn(const Model& model, const Data& data, int i) {

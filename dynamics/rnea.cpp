@@ -13,7 +13,8 @@ namespace {
 // h = m (u + w x c) and n = R Ic R^T w + c x h, c being the centre of mass in the world;
 // kDiagonal: Ic is diagonal, Ic x scales x (the same values)
 template <bool kDiagonal>
-inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, const Motion& a, const Motion& v) {
+inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, const Motion& a,
+                               const Motion& v) {
   const Vector3 c = X.R * I.com + X.p;
   const Vector3 wa = a.head<3>(), wv = v.head<3>();
   const Vector3 ha = I.mass * (a.tail<3>() + wa.cross(c));
@@ -76,8 +77,9 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
       const Matrix6 I = m.inertias[i].matrixIn(X) + A_W;
       d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {
-      d.F_W[i] = m.inertiaDiagonal[i] ? inertiaForceWorld<true>(m.inertias[i], X, d.A_W[i], d.V_W[i])
-                                      : inertiaForceWorld<false>(m.inertias[i], X, d.A_W[i], d.V_W[i]);
+      d.F_W[i] = m.inertiaDiagonal[i]
+                     ? inertiaForceWorld<true>(m.inertias[i], X, d.A_W[i], d.V_W[i])
+                     : inertiaForceWorld<false>(m.inertias[i], X, d.A_W[i], d.V_W[i]);
     }
     if (fext != nullptr) d.F_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }

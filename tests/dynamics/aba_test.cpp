@@ -22,7 +22,8 @@ TEST_CASE("ABA = M^-1 (tau - h) and RNEA(ABA(tau)) = tau on random trees") {
     // two dozen: coordinate-axis joints in translated frames (the kernels' special case)
     const bool added = trial % 24 >= 12;
     const bool axes = trial >= 24;
-    const Model m = axes ? randomAxisTree(rng, n, added) : randomTree(rng, n, {0.0, 0.0, -9.81}, added);
+    const Model m =
+        axes ? randomAxisTree(rng, n, added) : randomTree(rng, n, {0.0, 0.0, -9.81}, added);
     INFO("bodies " << n << (added ? " with added mass" : "") << (axes ? ", coordinate axes" : ""));
     Data d(m);
     const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), tau = randomVectorX(rng, m.nv);

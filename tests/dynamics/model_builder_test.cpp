@@ -140,7 +140,8 @@ TEST_CASE("loops get consecutive rows") {
 TEST_CASE("joints about a coordinate axis are marked for the kernels' special case") {
   ModelBuilder b;
   b.addBody("x", "world", Joint::revolute(Vector3::UnitX()), {}, rodInertia(1.0, 1.0));
-  b.addBody("y", "x", Joint::prismatic(Vector3(0.0, 2.0, 0.0)), {}, rodInertia(1.0, 1.0));  // normalised
+  b.addBody("y", "x", Joint::prismatic(Vector3(0.0, 2.0, 0.0)), {},
+            rodInertia(1.0, 1.0));  // normalised
   b.addBody("negz", "y", Joint::revolute(-Vector3::UnitZ()), {}, rodInertia(1.0, 1.0));
   b.addBody("oblique", "negz", Joint::revolute(Vector3(1.0, 1.0, 0.0)), {}, rodInertia(1.0, 1.0));
   b.addBody("cyl", "oblique", Joint::cylindrical(Vector3::UnitZ()), {}, rodInertia(1.0, 1.0));
@@ -160,7 +161,8 @@ TEST_CASE("diagonal body inertias are marked for the kernels' scaling shortcut")
   b.addBody("rod", "world", Joint::revolute(Vector3::UnitX()), {}, rodInertia(1.0, 1.0));
   Matrix3 J = Vector3(1.0, 2.0, 2.5).asDiagonal();
   J(0, 1) = J(1, 0) = 0.1;
-  b.addBody("full", "rod", Joint::revolute(Vector3::UnitX()), {}, makeInertia(1.0, Vector3::Zero(), J));
+  b.addBody("full", "rod", Joint::revolute(Vector3::UnitX()), {},
+            makeInertia(1.0, Vector3::Zero(), J));
   const Model m = b.build();
   CHECK(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("rod"))]);
   CHECK_FALSE(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("full"))]);

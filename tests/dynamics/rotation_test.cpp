@@ -75,7 +75,8 @@ TEST_CASE("a rotation about a coordinate axis equals the axis-angle formula bit 
   // scene's results would change
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> u(-10.0, 10.0);
-  std::vector<double> angles{0.0, -0.0, M_PI, -M_PI, 0.5 * M_PI, -0.5 * M_PI, 1e-300, -1e-17, 1e6, 2.0 * M_PI};
+  std::vector<double> angles{0.0,         -0.0,   M_PI,   -M_PI, 0.5 * M_PI,
+                             -0.5 * M_PI, 1e-300, -1e-17, 1e6,   2.0 * M_PI};
   for (int k = 0; k < 200; ++k) angles.push_back(u(rng));
   for (int axis = 0; axis < 3; ++axis) {
     for (const double angle : angles) {

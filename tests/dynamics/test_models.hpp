@@ -115,9 +115,12 @@ inline Model randomAxisTree(std::mt19937& rng, int n, bool addedMass = false) {
   for (int i = 0; i < n; ++i) {
     const std::string parent = i == 0 ? "world" : indexed("b", static_cast<int>(u(rng) * i));
     // every fourth axis negative ((-0, -1, -0): the general path, beside the special case)
-    const Vector3 axis = i % 4 == 3 ? Vector3(-Vector3::Unit(i % 3)) : Vector3(Vector3::Unit(i % 3));
-    const Joint j = i == 0 ? Joint::free() : (i % 2 ? Joint::revolute(axis) : Joint::prismatic(axis));
-    b.addBody(indexed("b", i), parent, j, Transform::translation(randomVector(rng)), randomInertia(rng));
+    const Vector3 axis =
+        i % 4 == 3 ? Vector3(-Vector3::Unit(i % 3)) : Vector3(Vector3::Unit(i % 3));
+    const Joint j =
+        i == 0 ? Joint::free() : (i % 2 ? Joint::revolute(axis) : Joint::prismatic(axis));
+    b.addBody(indexed("b", i), parent, j, Transform::translation(randomVector(rng)),
+              randomInertia(rng));
     if (addedMass && i % 2 == 0) b.setAddedMass(indexed("b", i), randomAddedMass(rng));
   }
   return b.build();

@@ -20,18 +20,16 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
   for (int i = 1; i < m.nbodies; ++i) {
     const int p = m.parent[i];
     if constexpr (!kPlaced) {
-      updateJointPlacement(m, d, i, q);
-      d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+      placeBody(m, d, i, q);
     }
     const Transform& X = d.X_WB[i];
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     Motion vJ;
     if (nv == 1) {
-      const Motion s = X.actMotion(d.S[i].col(0));
+      const Motion s = worldSubspaceColumn(m, d, i);
       d.S_W.col(iv) = s;
       vJ = s * v[iv];
-      d.C_W[i] = Motion::Zero();
     } else {
       for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
       vJ = d.S_W.middleCols(iv, nv) * v.segment(iv, nv);
@@ -40,8 +38,12 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
                      : X.actMotion(jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv));
     }
     d.V_W[i] = d.V_W[p] + vJ;
-    d.C_W[i] += crossMotion(d.V_W[i], vJ);
-    d.IA_W[i] = m.inertias[i].matrixIn(X);
+    if (nv == 1) {
+      d.C_W[i] = crossMotion(d.V_W[i], vJ);  // the 1-dof joints' S is constant: no c_J
+    } else {
+      d.C_W[i] += crossMotion(d.V_W[i], vJ);
+    }
+    d.IA_W[i] = m.inertiaDiagonal[i] ? m.inertias[i].matrixIn<true>(X) : m.inertias[i].matrixIn(X);
     if (m.hasAddedMass[i]) {
       // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
       // not act on it: its share A_W (0, -g) goes back as an external force

@@ -9,8 +9,7 @@ void forwardKinematics(const Model& m, Data& d, const Eigen::VectorXd& q) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "forwardKinematics");
   // (q) => X_PB, X_WB
   for (int i = 1; i < m.nbodies; ++i) {
-    updateJointPlacement(m, d, i, q);
-    d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
+    placeBody(m, d, i, q);
   }
 }
 
@@ -18,9 +17,8 @@ void forwardKinematics(const Model& m, Data& d, const Eigen::VectorXd& q, const 
   YARDSIM_DYNAMICS_CHECK(m, d, q, &v, nullptr, "forwardKinematics");
   // (q, v) => X_PB, X_WB, V = X^-1 V_parent + S v_i, C = c_J + V x S v_i
   for (int i = 1; i < m.nbodies; ++i) {
-    updateJointPlacement(m, d, i, q);
+    placeBody(m, d, i, q);
     const int p = m.parent[i];
-    d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
     const auto vi = v.segment(m.idxV[i], m.jointNv[i]);
     const Motion vJ = d.S[i] * vi;
     d.V_B[i] = d.X_PB[i].invActMotion(d.V_B[p]) + vJ;

@@ -64,7 +64,7 @@ struct Model {
   /// a body without one). It adds to the body inertia on the left-hand side (ABA, CRBA, RNEA,
   /// kinetic energy, momentum) but not to its weight: gravity acts on the rigid mass only.
   std::vector<Matrix6> addedMass;
-  std::vector<bool> hasAddedMass;  ///< addedMass[i] is not zero
+  std::vector<char> hasAddedMass;  ///< addedMass[i] is not zero (char: cheaper to read than bool)
   std::vector<std::string> geometry;  ///< optional geometry reference per body
   std::vector<int> idxQ;              ///< first configuration index of body i's joint
   std::vector<int> idxV;              ///< first velocity index of body i's joint
@@ -78,7 +78,12 @@ struct Model {
   std::vector<int> dofParent;
   /// The dofs in the subtree of dof k, itself included (contiguous from k).
   std::vector<int> dofSubtree;
-  std::vector<bool> placementRotated; ///< false when X_PJ[i] is a pure translation
+  std::vector<char> placementRotated;  ///< false when X_PJ[i] is a pure translation
+  /// 0, 1, 2 when body i's joint is revolute or prismatic about the joint frame's x, y or z axis
+  /// (components exactly +0 and 1), else -1: the kernels special-case these joints
+  std::vector<signed char> jointAxis;
+  /// inertias[i].inertiaCom is diagonal (the kernels then scale instead of multiplying by it)
+  std::vector<char> inertiaDiagonal;
   bool euclidean = true;              ///< no spherical or free joint: nq = nv and dq/dt = v
   std::vector<LoopConstraint> loops;
 

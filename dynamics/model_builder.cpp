@@ -79,6 +79,19 @@ void checkJoint(const std::string& body, Joint& j) {
   }
 }
 
+// (joint) => 0, 1, 2 for a revolute or prismatic joint about the unit x, y or z axis (components
+// exactly +0 and 1, as the kernels' special case needs), else -1
+signed char coordinateAxis(const Joint& j) {
+  if (j.type != JointType::Revolute && j.type != JointType::Prismatic) return -1;
+  for (int k = 0; k < 3; ++k) {
+    const Vector3 e = Vector3::Unit(k);
+    bool same = true;
+    for (int c = 0; c < 3; ++c) same = same && j.axis[c] == e[c] && !std::signbit(j.axis[c]);
+    if (same) return static_cast<signed char>(k);
+  }
+  return -1;
+}
+
 }  // namespace
 
 SpatialInertia makeInertia(double mass, const Vector3& com, const Matrix3& inertiaCom) { return {mass, com, inertiaCom}; }
@@ -229,6 +242,9 @@ Model ModelBuilder::build() const {
   }
   for (int i = 0; i < m.nbodies; ++i) {
     m.placementRotated.push_back(!m.X_PJ[i].R.isIdentity(0.0));
+    m.jointAxis.push_back(coordinateAxis(m.joints[i]));
+    const Matrix3& Ic = m.inertias[i].inertiaCom;
+    m.inertiaDiagonal.push_back(Ic.isDiagonal(0.0));
     if (m.joints[i].type == JointType::Spherical || m.joints[i].type == JointType::Free) m.euclidean = false;
   }
   // (added-mass specs) => checked symmetric 6x6 per body (a second one for a body replaces the first)

@@ -10,16 +10,27 @@ namespace {
 
 // (I_B: mass, centre of mass and inertia about it in the body frame; X_WB; motions a, v in the
 // world frame) => I_W a + v x* (I_W v) without forming the 6x6 I_W: for a motion (w, u),
-// h = m (u + w x c) and n = R Ic R^T w + c x h, c being the centre of mass in the world
-inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, const Motion& a, const Motion& v) {
+// h = m (u + w x c) and n = R Ic R^T w + c x h, c being the centre of mass in the world;
+// kDiagonal: Ic is diagonal, Ic x scales x (the same values)
+template <bool kDiagonal>
+inline Force inertiaForceWorld(const SpatialInertia& I, const Transform& X, const Motion& a,
+                               const Motion& v) {
   const Vector3 c = X.R * I.com + X.p;
   const Vector3 wa = a.head<3>(), wv = v.head<3>();
   const Vector3 ha = I.mass * (a.tail<3>() + wa.cross(c));
   const Vector3 hv = I.mass * (v.tail<3>() + wv.cross(c));
   Force Ia, Iv;
-  Ia.head<3>() = X.R * (I.inertiaCom * (X.R.transpose() * wa)) + c.cross(ha);
+  Vector3 Ja, Jv;  // Ic R^T w
+  if constexpr (kDiagonal) {
+    Ja = I.inertiaCom.diagonal().cwiseProduct(X.R.transpose() * wa);
+    Jv = I.inertiaCom.diagonal().cwiseProduct(X.R.transpose() * wv);
+  } else {
+    Ja = I.inertiaCom * (X.R.transpose() * wa);
+    Jv = I.inertiaCom * (X.R.transpose() * wv);
+  }
+  Ia.head<3>() = X.R * Ja + c.cross(ha);
   Ia.tail<3>() = ha;
-  Iv.head<3>() = X.R * (I.inertiaCom * (X.R.transpose() * wv)) + c.cross(hv);
+  Iv.head<3>() = X.R * Jv + c.cross(hv);
   Iv.tail<3>() = hv;
   return Ia + crossForce(v, Iv);
 }
@@ -34,13 +45,13 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
   d.A_W[0].tail<3>() = -m.gravity;
   // (q, v, ddq) => X_WB, S_W, V_W, A_W, F_W = I_W A_W + V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
-    updateJointPlacement(m, d, i, q);
+    placeBody(m, d, i, q);
     const int p = m.parent[i];
-    const Transform& X = d.X_WB[i] = d.X_WB[p] * d.X_PB[i];
+    const Transform& X = d.X_WB[i];
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     if (nv == 1) {
-      const Motion s = X.actMotion(d.S[i].col(0));
+      const Motion s = worldSubspaceColumn(m, d, i);
       d.S_W.col(iv) = s;
       const Motion vJ = s * v[iv];
       d.V_W[i] = d.V_W[p] + vJ;
@@ -66,7 +77,9 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
       const Matrix6 I = m.inertias[i].matrixIn(X) + A_W;
       d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {
-      d.F_W[i] = inertiaForceWorld(m.inertias[i], X, d.A_W[i], d.V_W[i]);
+      d.F_W[i] = m.inertiaDiagonal[i]
+                     ? inertiaForceWorld<true>(m.inertias[i], X, d.A_W[i], d.V_W[i])
+                     : inertiaForceWorld<false>(m.inertias[i], X, d.A_W[i], d.V_W[i]);
     }
     if (fext != nullptr) d.F_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
   }

@@ -14,6 +14,23 @@ Vector3 logSO3(const Matrix3& R);
 Matrix3 rightJacobianInverse(const Vector3& w);
 /// The rotation by angle about a unit axis.
 Matrix3 axisRotation(const Vector3& axis, double angle);
+/// (k = 0, 1, 2; s = sin angle, c = cos angle) => R = axisRotation(unit vector k, angle), entry
+/// for entry the same doubles (the general formula's terms in exact zeros and ones left out, its
+/// signed zeros and its diagonal c + (1 - c) on the axis kept), without the general formula's
+/// products. The axis's components must be exactly +0 and 1 (Model::jointAxis).
+inline void coordinateAxisRotation(int k, double s, double c, Matrix3& R) {
+  const int a = (k + 1) % 3;
+  const int b = (k + 2) % 3;
+  R(k, k) = c + (1.0 - c);
+  R(a, a) = c;
+  R(b, b) = c;
+  R(a, b) = 0.0 - s;
+  R(b, a) = 0.0 + s;
+  R(k, a) = 0.0;
+  R(a, k) = 0.0;
+  R(k, b) = 0.0;
+  R(b, k) = 0.0;
+}
 
 /// The rotation matrix of a unit quaternion stored (w, x, y, z) at q[0..3].
 Matrix3 quaternionToMatrix(const double* q);

@@ -134,10 +134,18 @@ struct SpatialInertia {
     return I;
   }
   /// The 6x6 matrix of this inertia (given in frame B) expressed in frame A, X_AB being the pose of
-  /// B in A; cheaper than actInertia(X_AB, matrix()).
+  /// B in A; cheaper than actInertia(X_AB, matrix()). kDiagonal: inertiaCom is diagonal (the
+  /// same values, R Ic formed by scaling R's columns).
+  template <bool kDiagonal = false>
   Matrix6 matrixIn(const Transform& X_AB) const {
     const Vector3 c = X_AB.R * com + X_AB.p;
-    const Matrix3 Ic = X_AB.R * inertiaCom * X_AB.R.transpose();
+    Matrix3 RIc;
+    if constexpr (kDiagonal) {
+      RIc = X_AB.R * inertiaCom.diagonal().asDiagonal();
+    } else {
+      RIc = X_AB.R * inertiaCom;
+    }
+    const Matrix3 Ic = RIc * X_AB.R.transpose();
     const Matrix3 cx = skew(c);
     Matrix6 I;
     I.topLeftCorner<3, 3>() = Ic + mass * (c.squaredNorm() * Matrix3::Identity() - c * c.transpose());

@@ -16,12 +16,15 @@ using namespace yardsim::dynamics::testing;
 
 TEST_CASE("ABA = M^-1 (tau - h) and RNEA(ABA(tau)) = tau on random trees") {
   std::mt19937 rng(17);
-  for (int trial = 0; trial < 24; ++trial) {
+  for (int trial = 0; trial < 48; ++trial) {
     const int n = 1 + (trial % 12) * 3;
-    // the second dozen: every other body carries a full 6x6 added mass
-    const bool added = trial >= 12;
-    const Model m = randomTree(rng, n, {0.0, 0.0, -9.81}, added);
-    INFO("bodies " << n << (added ? " with added mass" : ""));
+    // the second dozen of each kind: every other body carries a full 6x6 added mass; the last
+    // two dozen: coordinate-axis joints in translated frames (the kernels' special case)
+    const bool added = trial % 24 >= 12;
+    const bool axes = trial >= 24;
+    const Model m =
+        axes ? randomAxisTree(rng, n, added) : randomTree(rng, n, {0.0, 0.0, -9.81}, added);
+    INFO("bodies " << n << (added ? " with added mass" : "") << (axes ? ", coordinate axes" : ""));
     Data d(m);
     const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), tau = randomVectorX(rng, m.nv);
     ExternalForces f(m);

@@ -2,6 +2,8 @@
 // spatial acceleration = d/dt world spatial velocity, and the same for points on bodies.
 #include <catch2/catch.hpp>
 
+#include <cstring>
+
 #include "dynamics/configuration.hpp"
 #include "dynamics/data.hpp"
 #include "dynamics/integrators/rk4.hpp"
@@ -69,4 +71,35 @@ TEST_CASE("a planar chain stretched along x puts link k at x = k — Euler angle
   CHECK(e.x() == Approx(0.0).margin(1e-14));
   CHECK(e.y() == Approx(0.5));
   CHECK(e.z() == Approx(0.0).margin(1e-14));
+}
+
+TEST_CASE("the coordinate-axis placement and subspace equal the general joint formulas") {
+  // (special-cased joints) => X_PB bit for bit as X_PJ * jointTransform; R_WB and X_WB S equal to
+  // the general products but for the sign of exact zeros
+  std::mt19937 rng(22);
+  const Model m = randomAxisTree(rng, 30);
+  Data d(m);
+  int special = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd q = randomConfiguration(m, rng);
+    if (trial == 0) q.tail(m.nq - 7).setZero();
+    if (trial == 1) q.tail(m.nq - 7).setConstant(-0.0);
+    forwardKinematics(m, d, q);
+    for (int i = 1; i < m.nbodies; ++i) {
+      const Joint& j = m.joints[i];
+      const Transform X_JC = jointTransform(j, q.data() + m.idxQ[i]);
+      const Transform ref{X_JC.R, m.X_PJ[i].p + X_JC.p};
+      CHECK(std::memcmp(d.X_PB[i].R.data(), ref.R.data(), sizeof(double) * 9) == 0);
+      CHECK(std::memcmp(d.X_PB[i].p.data(), ref.p.data(), sizeof(double) * 3) == 0);
+      const Transform refW = d.X_WB[m.parent[i]] * d.X_PB[i];
+      CHECK((d.X_WB[i].R.array() == refW.R.array()).all());
+      CHECK(std::memcmp(d.X_WB[i].p.data(), refW.p.data(), sizeof(double) * 3) == 0);
+      if (m.jointNv[i] != 1) continue;
+      special += m.jointAxis[i] >= 0;
+      const Motion s = worldSubspaceColumn(m, d, i);
+      const Motion sRef = d.X_WB[i].actMotion(d.S[i].col(0));
+      CHECK((s.array() == sRef.array()).all());
+    }
+  }
+  CHECK(special == 20 * 22);  // bodies 1-29 but the negative axes (3, 7, ..., 27)
 }

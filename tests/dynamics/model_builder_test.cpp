@@ -136,3 +136,34 @@ TEST_CASE("loops get consecutive rows") {
   CHECK(m.loops[1].row == 5);
   CHECK(m.nc == 7);
 }
+
+TEST_CASE("joints about a coordinate axis are marked for the kernels' special case") {
+  ModelBuilder b;
+  b.addBody("x", "world", Joint::revolute(Vector3::UnitX()), {}, rodInertia(1.0, 1.0));
+  b.addBody("y", "x", Joint::prismatic(Vector3(0.0, 2.0, 0.0)), {},
+            rodInertia(1.0, 1.0));  // normalised
+  b.addBody("negz", "y", Joint::revolute(-Vector3::UnitZ()), {}, rodInertia(1.0, 1.0));
+  b.addBody("oblique", "negz", Joint::revolute(Vector3(1.0, 1.0, 0.0)), {}, rodInertia(1.0, 1.0));
+  b.addBody("cyl", "oblique", Joint::cylindrical(Vector3::UnitZ()), {}, rodInertia(1.0, 1.0));
+  b.addBody("z", "cyl", Joint::revolute(Vector3(-0.0, 0.0, 1.0)), {}, rodInertia(1.0, 1.0));
+  const Model m = b.build();
+  REQUIRE(m.jointAxis.size() == 7u);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("x"))] == 0);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("y"))] == 1);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("negz"))] == -1);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("oblique"))] == -1);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("cyl"))] == -1);
+  CHECK(m.jointAxis[static_cast<std::size_t>(m.bodyIndex("z"))] == -1);  // -0: not the same doubles
+}
+
+TEST_CASE("diagonal body inertias are marked for the kernels' scaling shortcut") {
+  ModelBuilder b;
+  b.addBody("rod", "world", Joint::revolute(Vector3::UnitX()), {}, rodInertia(1.0, 1.0));
+  Matrix3 J = Vector3(1.0, 2.0, 2.5).asDiagonal();
+  J(0, 1) = J(1, 0) = 0.1;
+  b.addBody("full", "rod", Joint::revolute(Vector3::UnitX()), {},
+            makeInertia(1.0, Vector3::Zero(), J));
+  const Model m = b.build();
+  CHECK(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("rod"))]);
+  CHECK_FALSE(m.inertiaDiagonal[static_cast<std::size_t>(m.bodyIndex("full"))]);
+}

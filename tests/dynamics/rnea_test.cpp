@@ -14,8 +14,9 @@ using namespace yardsim::dynamics::testing;
 
 TEST_CASE("RNEA = M ddq + h (CRBA), on random trees with every joint type") {
   std::mt19937 rng(14);
-  for (int n : {1, 5, 17}) {
-    const Model m = randomTree(rng, n);
+  for (int n : {1, 5, 17, -2, -6, -17}) {
+    // negative n: |n| bodies on coordinate axes in translated frames (the kernels' special case)
+    const Model m = n > 0 ? randomTree(rng, n) : randomAxisTree(rng, -n);
     Data d(m);
     const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), a = randomVectorX(rng, m.nv);
     const Eigen::VectorXd h = biasForces(m, d, q, v);

@@ -77,3 +77,16 @@ TEST_CASE("kinetic energy of a rigid body from the spatial inertia equals the te
   const double T = 0.5 * I.mass * vc.squaredNorm() + 0.5 * w.dot(I.inertiaCom * w);
   CHECK(0.5 * v.dot(I.apply(v)) == Approx(T).epsilon(1e-13));
 }
+
+TEST_CASE(
+    "the world-frame inertia of a diagonal body inertia is the same with its scaling shortcut") {
+  std::mt19937 rng(23);
+  for (int k = 0; k < 20; ++k) {
+    const SpatialInertia I =
+        makeInertia(1.5, randomVector(rng), Vector3(1.0, 2.0, 2.5).asDiagonal());
+    const Transform X{randomRotation(rng), randomVector(rng)};
+    const Matrix6 full = I.matrixIn(X);
+    CHECK((I.matrixIn<true>(X).array() == full.array()).all());
+    CHECK((full - actInertia(X, I.matrix())).norm() < 1e-12);
+  }
+}

@@ -104,6 +104,28 @@ inline Model randomTree(std::mt19937& rng, int n, Vector3 gravity = {0.0, 0.0, -
   return b.build();
 }
 
+/// A random tree of n bodies on a free root whose other joints are revolute and prismatic about
+/// the x, y or z axis of a translated joint frame (Model::jointAxis >= 0: the kernels' special
+/// case; randomTree's random axes and rotated frames take the general path), every fourth about
+/// the negative axis (the general path); with addedMass,
+/// every other body carries a random added mass.
+inline Model randomAxisTree(std::mt19937& rng, int n, bool addedMass = false) {
+  ModelBuilder b;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < n; ++i) {
+    const std::string parent = i == 0 ? "world" : indexed("b", static_cast<int>(u(rng) * i));
+    // every fourth axis negative ((-0, -1, -0): the general path, beside the special case)
+    const Vector3 axis =
+        i % 4 == 3 ? Vector3(-Vector3::Unit(i % 3)) : Vector3(Vector3::Unit(i % 3));
+    const Joint j =
+        i == 0 ? Joint::free() : (i % 2 ? Joint::revolute(axis) : Joint::prismatic(axis));
+    b.addBody(indexed("b", i), parent, j, Transform::translation(randomVector(rng)),
+              randomInertia(rng));
+    if (addedMass && i % 2 == 0) b.setAddedMass(indexed("b", i), randomAddedMass(rng));
+  }
+  return b.build();
+}
+
 /// A chain of n revolute links (1 kg, 1 m rods along x) turning about y, gravity along -z.
 inline Model planarChain(int n) {
   ModelBuilder b;

@@ -2,6 +2,7 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
+#include "mechanics/follow_draft.hpp"
 #include "mechanics/stage.hpp"
 
 namespace yardsim::mechanics {
@@ -11,9 +12,10 @@ double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::
   // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
   const auto& m = s.model();
   dynamics::forwardKinematics(m, kin, q, v);
+  followDraft(s, kin, kin);  // (pose) => the added mass of the kinetic energy, where it follows the draft
   double e = 0.0;
   for (int i = 1; i < m.nbodies; ++i) {
-    e += dynamics::bodyKineticEnergy(m, i, kin.V_B[i]) -  // with the fluid's share (added mass)
+    e += dynamics::bodyKineticEnergy(m, kin, i, kin.V_B[i]) -  // with the fluid's share (added mass)
          m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
   }
   forEachProvider(s, d, d.stage(s, t, kin, q, v),

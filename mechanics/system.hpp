@@ -3,12 +3,12 @@
 // (the immutable dynamics::Model, q0, v0, names, rope and load specs, the environment), the one
 // list of force providers built from them in evaluation order (ropes: the wire ropes, then the
 // equalizers; hydrostatics, wind and current loads, damping, body loads from time series, the
-// added mass following a draft (its momentum force), the providers of registered readers), the watched quantities and the
-// joint servos' settings. Built once; the stage function (stage.hpp), the energy balance
-// (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp) and the stiffness
-// estimate all iterate the same list. Providers are const while they are evaluated (their
-// scratch is in mechanics::Data); the ropes' winches take payout set-points between steps, so a
-// System serves one run at a time.
+// added mass following a draft (its momentum force), the providers of registered readers), the
+// watched quantities and the joint servos' settings. Built once; the stage function (stage.hpp),
+// the energy balance (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp)
+// and the stiffness estimate all iterate the same list. Providers are const while they are
+// evaluated (their scratch is in mechanics::Data); the ropes' winches take payout set-points
+// between steps, so a System serves one run at a time.
 #include <memory>
 #include <string>
 #include <vector>

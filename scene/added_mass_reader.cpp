@@ -58,7 +58,8 @@ std::optional<dynamics::Matrix6> matrix6(const spec::Reader& r, const YAML::Node
 // (follow_draft node) => the drafts, m, finite, > 0 and increasing, or nothing after a report
 std::vector<double> drafts(const spec::Reader& r, const YAML::Node& n, const std::string& key) {
   const std::string expected =
-      "expected a list of drafts in m, > 0 and increasing (the keel's depth below the still water at which the "
+      "expected a list of drafts in m, > 0 and increasing (the keel's depth below the still water "
+      "at which the "
       "added mass is computed), e.g. [0.25, 0.5, 1, 2]";
   if (!n.IsSequence() || n.size() == 0) {
     r.fail(n, key, expected);
@@ -73,9 +74,11 @@ std::vector<double> drafts(const spec::Reader& r, const YAML::Node& n, const std
       return {};
     }
     if (!(v > (out.empty() ? 0.0 : out.back()))) {
-      r.fail(n[k], at, out.empty() ? "expected a draft > 0 m (a dry hull has no added mass: draft 0 is implied)"
-                                   : "expected a draft greater than the one before (" + std::to_string(out.back()) +
-                                         " m): the drafts increase");
+      r.fail(n[k], at,
+             out.empty()
+                 ? "expected a draft > 0 m (a dry hull has no added mass: draft 0 is implied)"
+                 : "expected a draft greater than the one before (" + std::to_string(out.back()) +
+                       " m): the drafts increase");
       return {};
     }
     out.push_back(v);
@@ -97,7 +100,8 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
     if (n["rho"]) r.fail(n["rho"], key + ".rho", "'rho' goes with 'hull' (the computed added mass), not with 'matrix'");
     if (n["follow_draft"])
       r.fail(n["follow_draft"], key + ".follow_draft",
-             "'follow_draft' goes with 'hull' (the added mass computed at those drafts), not with 'matrix'");
+             "'follow_draft' goes with 'hull' (the added mass computed at those drafts), not with "
+             "'matrix'");
     b.addedMassAbout = r.length3(n["about"], key + ".about", dynamics::Vector3::Zero());
     b.addedMass = matrix6(r, m, key + ".matrix");
     return;
@@ -108,7 +112,8 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
     b.addedMassRho = r.number(n["rho"], key + ".rho", 0.0);
     if (!(b.addedMassRho > 0.0)) r.fail(n["rho"], key + ".rho", "expected a water density > 0, kg/m^3");
   }
-  if (const YAML::Node f = n["follow_draft"]) b.addedMassDrafts = drafts(r, f, key + ".follow_draft");
+  if (const YAML::Node f = n["follow_draft"])
+    b.addedMassDrafts = drafts(r, f, key + ".follow_draft");
   const YAML::Node h = n["hull"];
   if (!h || !h.IsScalar()) {
     r.fail(h ? h : n, key + ".hull",

@@ -15,7 +15,8 @@ using dynamics::Matrix6;
 using dynamics::Vector3;
 
 DraftAddedMassTable draftAddedMassTable(const PanelMesh& hull_B, const dynamics::Matrix3& R_WB,
-                                        const std::vector<double>& drafts, double rho, double waterLevel) {
+                                        const std::vector<double>& drafts, double rho,
+                                        double waterLevel) {
   if (drafts.empty()) throw std::invalid_argument("no drafts to tabulate the added mass at");
   for (std::size_t k = 0; k < drafts.size(); ++k)
     if (!(drafts[k] > (k == 0 ? 0.0 : drafts[k - 1])) || !std::isfinite(drafts[k]))
@@ -57,9 +58,11 @@ DraftAddedMass::DraftAddedMass(std::string name, const dynamics::Model& model, i
     : ForceProvider(std::move(name)), body_(body), table_(std::move(table)) {
   const std::string me = "added mass following the draft '" + this->name() + "': ";
   if (body_ < 1 || body_ >= model.nbodies)
-    throw std::invalid_argument(me + "body " + std::to_string(body_) + " is the world or outside the model");
+    throw std::invalid_argument(me + "body " + std::to_string(body_) +
+                                " is the world or outside the model");
   if (!table_ || table_->drafts.empty() || table_->drafts.size() != table_->A_B.size())
-    throw std::invalid_argument(me + "the table is empty or its drafts and matrices differ in number");
+    throw std::invalid_argument(me +
+                                "the table is empty or its drafts and matrices differ in number");
   if (model.hasAddedMass[static_cast<std::size_t>(body_)])
     throw std::invalid_argument(me + "the body has a constant added mass already");
 }
@@ -82,7 +85,8 @@ bool DraftAddedMass::interpolate(double d, Matrix6& A, Matrix6& dA) const {
     return true;
   }
   // (d) => the segment [d0, d1] holding it; below the first draft it starts from A = 0 at 0
-  const std::size_t k = static_cast<std::size_t>(std::upper_bound(ds.begin(), ds.end(), d) - ds.begin());
+  const std::size_t k =
+      static_cast<std::size_t>(std::upper_bound(ds.begin(), ds.end(), d) - ds.begin());
   const double d0 = k == 0 ? 0.0 : ds[k - 1], d1 = ds[k];
   const double s = (d - d0) / (d1 - d0);
   if (k == 0) {
@@ -98,12 +102,14 @@ bool DraftAddedMass::interpolate(double d, Matrix6& A, Matrix6& dA) const {
 Matrix6 DraftAddedMass::rate(const Stage& s) const {
   // (keel point's vertical velocity) => dd/dt = -v_z, then A' = dA/dd dd/dt
   Matrix6 A, dA;
-  if (!interpolate(draft(s.data.X_WB[static_cast<std::size_t>(body_)]), A, dA)) return Matrix6::Zero();
+  if (!interpolate(draft(s.data.X_WB[static_cast<std::size_t>(body_)]), A, dA))
+    return Matrix6::Zero();
   const double ddot = -dynamics::pointVelocity(s.data, body_, table_->p_BK).z();
   return dA * ddot;
 }
 
-void DraftAddedMass::doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& /*tau*/) const {
+void DraftAddedMass::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
+                                Eigen::VectorXd& /*tau*/) const {
   // (A', V) => -A' V while A grows (entering), body frame about the origin; nothing while it
   // shrinks (leaving: the water keeps the momentum it had)
   const Matrix6 Adot = rate(s);

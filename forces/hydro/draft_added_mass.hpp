@@ -29,18 +29,21 @@
 namespace yardsim::forces::hydro {
 
 struct DraftAddedMassTable {
-  std::vector<double> drafts;           ///< m, increasing, > 0 (A = 0 at draft 0 is implied)
-  std::vector<dynamics::Matrix6> A_B;   ///< at each draft: body frame, about the body origin, [angular; linear]
-  dynamics::Vector3 p_BK = dynamics::Vector3::Zero();  ///< keel point (centroid of the lowest hull vertices at set-up), body frame, m
-  double waterLevel = 0.0;              ///< z of the still-water level, world frame, m
+  std::vector<double> drafts;  ///< m, increasing, > 0 (A = 0 at draft 0 is implied)
+  std::vector<dynamics::Matrix6>
+      A_B;  ///< at each draft: body frame, about the body origin, [angular; linear]
+  dynamics::Vector3 p_BK = dynamics::Vector3::Zero();  ///< keel point (centroid of the lowest hull
+                                                       ///< vertices at set-up), body frame, m
+  double waterLevel = 0.0;  ///< z of the still-water level, world frame, m
 };
 
 /// (hull in the body frame, the body's attitude R_WB at set-up, drafts (m, increasing, > 0), rho
 /// kg/m^3, still-water level z) => A-infinity by the panel solver with the hull placed at each
-/// draft (its keel point that far below the level, its origin over the world's, attitude R_WB); throws PanelError (a bad
-/// mesh) or std::invalid_argument (drafts not increasing and positive).
+/// draft (its keel point that far below the level, its origin over the world's, attitude R_WB);
+/// throws PanelError (a bad mesh) or std::invalid_argument (drafts not increasing and positive).
 DraftAddedMassTable draftAddedMassTable(const PanelMesh& hull_B, const dynamics::Matrix3& R_WB,
-                                        const std::vector<double>& drafts, double rho, double waterLevel);
+                                        const std::vector<double>& drafts, double rho,
+                                        double waterLevel);
 
 class DraftAddedMass final : public ForceProvider {
  public:

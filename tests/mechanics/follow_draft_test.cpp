@@ -31,7 +31,8 @@ namespace {
 constexpr double kRho = 1025.0, kG = 9.81, kMass = 4.0e5, kL = 20.0, kB = 8.0;
 
 // (scene text in a directory holding box.obj, end time) => its time series
-testing::CsvFile runBox(testing::SceneDir& dir, const std::string& yaml, double until, const std::string& out = "out") {
+testing::CsvFile runBox(testing::SceneDir& dir, const std::string& yaml, double until,
+                        const std::string& out = "out") {
   forces::writeObj(forces::boxMesh(Vector3(kL, kB, 4), 10, 4, 4), dir.file("box.obj"));
   auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", yaml));
   auto root = scene::assemble(*scene);
@@ -79,8 +80,8 @@ record: {interval: 0.05}
 TEST_CASE("a box lowered slowly into still water hangs on its weight less its buoyancy") {
   testing::SceneDir dir;
   const auto csv = runBox(dir, kLowered, 56.0);
-  const int t = 0, tension = csv.column("wire.tension[N]"), disp = csv.column("box_hull.displacement[kg]"),
-            z = csv.column("box.z[m]");
+  const int t = 0, tension = csv.column("wire.tension[N]"),
+            disp = csv.column("box_hull.displacement[kg]"), z = csv.column("box.z[m]");
   REQUIRE(std::min({tension, disp, z}) > 0);
   const double W = kMass * kG;
   // (A33 of the panel solver at the scene's drafts) => its slope at a draft (the table's)
@@ -101,8 +102,8 @@ TEST_CASE("a box lowered slowly into still water hangs on its weight less its bu
     if (r[t] < 6.0 || r[t] > 51.0 || r[disp] < 0.02 * kMass) continue;
     ++wet;
     const double d = 2.0 - r[z], F = slope(d) * 0.05 * 0.05, lack = W - r[disp] * kG - r[tension];
-    INFO("t = " << r[t] << " s, buoyancy " << r[disp] * kG << " N, entry force " << F << " N, tension "
-                << r[tension] << " N");
+    INFO("t = " << r[t] << " s, buoyancy " << r[disp] * kG << " N, entry force " << F
+                << " N, tension " << r[tension] << " N");
     CHECK(std::abs(lack - F) < 2e-3 * W);
     if (d > 0.1 && d < 0.2) {  // (the entry: the first 0.25 m) => its mean lack against A33' w^2
       entry += F;
@@ -160,7 +161,8 @@ TEST_CASE("released it heaves at the period of its mass plus the added mass at i
   // (energy balance, kinetic energy with the added mass at each draft) => closed to a small
   // fraction of the work the winch has done
   double drift = 0;
-  for (const auto& r : csv.rows) drift = std::max(drift, std::abs(r[balance] - csv.rows[0][balance]));
+  for (const auto& r : csv.rows)
+    drift = std::max(drift, std::abs(r[balance] - csv.rows[0][balance]));
   const double scale = kMass * kG * 2.5;
   INFO("energy balance drift " << drift << " J against " << scale << " J");
   CHECK(drift < 1e-4 * scale);
@@ -181,7 +183,8 @@ mechanics:
       joint: {type: prismatic, axis: [1, 0, 0], q0: 0, v0: 0.05}
       mass: 4.0e5
       inertia: [2.7e6, 1.4e7, 1.5e7]
-      added_mass: )") + addedMass + R"(
+      added_mass: )") +
+           addedMass + R"(
   ropes:
     east: {path: [{body: world, point: [30, 0, 0]}, {body: box, point: [10, 0, 0]}], EA: 1.0e6, L0: 19.9}
     west: {path: [{body: world, point: [-30, 0, 0]}, {body: box, point: [-10, 0, 0]}], EA: 1.0e6, L0: 19.9}
@@ -190,7 +193,8 @@ record: {interval: 0.1}
   };
   testing::SceneDir dir;
   const auto constant = runBox(dir, scene("{hull: box.obj}"), 30.0, "constant");
-  const auto follows = runBox(dir, scene("{hull: box.obj, follow_draft: [1.0, 2.0, 3.0]}"), 30.0, "follows");
+  const auto follows =
+      runBox(dir, scene("{hull: box.obj, follow_draft: [1.0, 2.0, 3.0]}"), 30.0, "follows");
   // (the files without their header comments, which name the scene and its hash) => equal bytes
   auto body = [&](const char* run) {
     std::ifstream in(dir.path() / run / "timeseries.csv");
@@ -211,8 +215,8 @@ record: {interval: 0.1}
   }
   REQUIRE(up.size() >= 2);
   const Matrix6 A = forces::hydro::floatingAddedMass(
-      forces::hydro::panelMesh(forces::boxMesh(Vector3(kL, kB, 4), 10, 4, 4)), dynamics::Transform::identity(), kRho,
-      0.0);
+      forces::hydro::panelMesh(forces::boxMesh(Vector3(kL, kB, 4), 10, 4, 4)),
+      dynamics::Transform::identity(), kRho, 0.0);
   const double k = 2 * 1.0e6 / 19.9;
   CHECK((up.back() - up.front()) / static_cast<double>(up.size() - 1) ==
         Approx(2 * M_PI * std::sqrt((kMass + A(0, 0)) / k)).epsilon(0.005));

@@ -58,10 +58,13 @@ TEST_CASE("the table holds the panel solver's A-infinity at each draft") {
   for (std::size_t k = 0; k < drafts.size(); ++k) {
     // (the hull at draft d, 7 m east and 3 m south of the table's place) => the same matrix
     // about the body origin in body axes
-    dynamics::Transform X_WB = dynamics::Transform::translation(Vector3(7.0, -3.0, 2.0 - drafts[k]));
+    dynamics::Transform X_WB =
+        dynamics::Transform::translation(Vector3(7.0, -3.0, 2.0 - drafts[k]));
     const Matrix6 A = forces::hydro::floatingAddedMass(box(), X_WB, kRho, 0.0);
-    const Matrix6 direct = dynamics::addedMassAboutOrigin(0.5 * (A + A.transpose()), Vector3::Zero());
-    INFO("draft " << drafts[k] << " m: A33 table " << t->A_B[k](5, 5) << " direct " << direct(5, 5));
+    const Matrix6 direct =
+        dynamics::addedMassAboutOrigin(0.5 * (A + A.transpose()), Vector3::Zero());
+    INFO("draft " << drafts[k] << " m: A33 table " << t->A_B[k](5, 5) << " direct "
+                  << direct(5, 5));
     CHECK((t->A_B[k] - direct).norm() < 1e-6 * direct.norm());  // rounding of the moved panels
   }
   // heave added mass: positive at every draft, of the order of the flat plate's rho pi/8 B^2 L

@@ -44,10 +44,10 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.C_W[i] += crossMotion(d.V_W[i], vJ);
     }
     d.IA_W[i] = m.inertiaDiagonal[i] ? m.inertias[i].matrixIn<true>(X) : m.inertias[i].matrixIn(X);
-    if (m.hasAddedMass[i]) {
+    if (d.hasAddedMass[i]) {
       // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
       // not act on it: its share A_W (0, -g) goes back as an external force
-      const Matrix6 A_W = actInertia(X, m.addedMass[i]);
+      const Matrix6 A_W = actInertia(X, d.addedMass[i]);
       d.IA_W[i] += A_W;
       d.PA_W[i] = crossForce(d.V_W[i], d.IA_W[i] * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {

@@ -16,7 +16,7 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
     d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
     for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
     d.IC_W[i] = m.inertias[i].matrixIn(d.X_WB[i]);
-    if (m.hasAddedMass[i]) d.IC_W[i] += actInertia(d.X_WB[i], m.addedMass[i]);
+    if (d.hasAddedMass[i]) d.IC_W[i] += actInertia(d.X_WB[i], d.addedMass[i]);
   }
   // (IC_W) => composite inertias of subtrees
   for (int i = m.nbodies - 1; i >= 1; --i) {

@@ -39,7 +39,9 @@ Data::Data(const Model& m)
       V_W(m.nbodies, Motion::Zero()),
       A0_W(m.nbodies, Motion::Zero()),
       dv(Eigen::VectorXd::Zero(m.nv)),
-      dq(Eigen::VectorXd::Zero(m.nq)) {
+      dq(Eigen::VectorXd::Zero(m.nq)),
+      addedMass(m.addedMass),
+      hasAddedMass(m.hasAddedMass) {
   // (model) => S for constant joints, sized buffers for the rest
   Eigen::VectorXd q0(m.nq);
   for (int i = 1; i < m.nbodies; ++i) {

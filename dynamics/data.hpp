@@ -57,6 +57,13 @@ struct Data {
   std::vector<Motion> A0_W; ///< spatial acceleration with ddq = 0, world frame (no gravity)
   Eigen::VectorXd dv;       ///< nv scratch
   Eigen::VectorXd dq;       ///< nq scratch
+
+  // added mass as the kernels use it (ABA, CRBA, RNEA, energy): per body, about the body origin
+  // in the body frame, [angular; linear], kg, kg m, kg m^2; initialised from Model::addedMass.
+  // A body whose added mass follows its state (its draft: forces/hydro/draft_added_mass.hpp)
+  // gets it written here before the kernels run at each stage.
+  std::vector<Matrix6> addedMass;
+  std::vector<char> hasAddedMass;  ///< addedMass[i] is not zero (char, as Model's)
 };
 
 }  // namespace yardsim::dynamics

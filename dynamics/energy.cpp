@@ -7,7 +7,7 @@ namespace yardsim::dynamics {
 double kineticEnergy(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   forwardKinematics(m, d, q, v);
   double T = 0.0;
-  for (int i = 1; i < m.nbodies; ++i) T += bodyKineticEnergy(m, i, d.V_B[i]);
+  for (int i = 1; i < m.nbodies; ++i) T += bodyKineticEnergy(m, d, i, d.V_B[i]);
   return T;
 }
 
@@ -30,7 +30,7 @@ Force momentum(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::V
   Force h = Force::Zero();
   for (int i = 1; i < m.nbodies; ++i) {
     Force h_B = m.inertias[i].apply(d.V_B[i]);
-    if (m.hasAddedMass[i]) h_B += m.addedMass[i] * d.V_B[i];  // the fluid's impulse
+    if (d.hasAddedMass[i]) h_B += d.addedMass[i] * d.V_B[i];  // the fluid's impulse
     h += d.X_WB[i].actForce(h_B);
   }
   return h;

@@ -8,11 +8,13 @@
 
 namespace yardsim::dynamics {
 
-/// (body i, its spatial velocity V in the body frame) => 1/2 V . (I_i + A_i) V, the kinetic
-/// energy of the body and of the fluid it carries along (A_i its added mass, if any).
-inline double bodyKineticEnergy(const Model& model, int i, const Motion& V) {
+/// (body i, its spatial velocity V in the body frame, the added mass in data) => 1/2 V . (I_i +
+/// A_i) V, the kinetic energy of the body and of the fluid it carries along (A_i its added mass, if
+/// any).
+inline double bodyKineticEnergy(const Model& model, const Data& data, int i, const Motion& V) {
   double T = 0.5 * V.dot(model.inertias[static_cast<std::size_t>(i)].apply(V));
-  if (model.hasAddedMass[static_cast<std::size_t>(i)]) T += 0.5 * V.dot(model.addedMass[static_cast<std::size_t>(i)] * V);
+  if (data.hasAddedMass[static_cast<std::size_t>(i)])
+    T += 0.5 * V.dot(data.addedMass[static_cast<std::size_t>(i)] * V);
   return T;
 }
 /// (q, v) => T = 1/2 sum V_i . (I_i + A_i) V_i, A_i the added mass (body and fluid; runs forward kinematics).

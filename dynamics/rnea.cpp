@@ -70,10 +70,10 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
         if (nv > 0) d.A_W[i] += S * ddq->segment(iv, nv);
       }
     }
-    if (m.hasAddedMass[i]) {
+    if (d.hasAddedMass[i]) {
       // I + A_W (added mass); gravity, folded into the base acceleration -g, acts on the rigid
       // mass only: A_W (0, -g) is taken back
-      const Matrix6 A_W = actInertia(X, m.addedMass[i]);
+      const Matrix6 A_W = actInertia(X, d.addedMass[i]);
       const Matrix6 I = m.inertias[i].matrixIn(X) + A_W;
       d.F_W[i] = I * d.A_W[i] + crossForce(d.V_W[i], I * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
     } else {

@@ -1,7 +1,7 @@
 #pragma once
 // Added mass into the model builder (docs/hydrodynamics.md): given 6x6 matrices (naval order,
 // kg, kg m, kg m^2, about a point of the body frame) or computed by the Rankine-panel solver from
-// a hull mesh at the body's initial (mean) pose.
+// a hull mesh at the body's initial (mean) pose, or tabulated against the draft.
 #include <vector>
 
 #include <Eigen/Core>
@@ -16,7 +16,7 @@ namespace yardsim::mechanics {
 void setGivenAddedMass(const std::vector<MechanicsSpec::Body>& bodies,
                        dynamics::ModelBuilder& builder);
 
-/// True when a body asks for its added mass from a hull mesh.
+/// True when a body asks for a constant added mass from a hull mesh.
 bool needsHullAddedMass(const std::vector<MechanicsSpec::Body>& bodies);
 
 /// (model without those, initial q, spec: bodies and water) => builder.setAddedMass for each body
@@ -24,5 +24,12 @@ bool needsHullAddedMass(const std::vector<MechanicsSpec::Body>& bodies);
 /// hull).
 void setHullAddedMass(const dynamics::Model& model, const Eigen::VectorXd& q0,
                       const MechanicsSpec& spec, dynamics::ModelBuilder& builder);
+
+/// (final model, initial q, spec: bodies and water) => for each body whose added mass follows its
+/// draft, its table by the panel solver at its attitude at q0; throws dynamics::ModelError naming
+/// the body.
+std::vector<BuiltMechanics::DraftAddedMass> draftAddedMassTables(const dynamics::Model& model,
+                                                                 const Eigen::VectorXd& q0,
+                                                                 const MechanicsSpec& spec);
 
 }  // namespace yardsim::mechanics

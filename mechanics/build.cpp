@@ -108,6 +108,8 @@ BuiltMechanics buildMechanics(const MechanicsSpec& spec) {
     setHullAddedMass(out.model, out.q0, spec, builder);
     out.model = builder.build();
   }
+  // (hull meshes with drafts) => their tables, at the attitude of q0
+  out.draftAddedMass = draftAddedMassTables(out.model, out.q0, spec);
   return out;
 }
 

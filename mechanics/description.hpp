@@ -19,6 +19,7 @@
 #include "forces/flow_load.hpp"
 #include "forces/force_provider.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
+#include "forces/hydro/draft_added_mass.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/rope_path.hpp"
 #include "forces/wind_profile.hpp"
@@ -57,6 +58,9 @@ struct MechanicsSpec {
     dynamics::Vector3 addedMassAbout = dynamics::Vector3::Zero();
     std::shared_ptr<const forces::TriangleMesh> addedMassHull;
     double addedMassRho = 0.0;  // kg/m^3; 0: the scene's water density
+    // m, increasing, > 0: addedMassHull's A-infinity is tabulated at these drafts and follows the
+    // body's draft (forces/hydro/draft_added_mass.hpp); empty: constant, at the initial position
+    std::vector<double> addedMassDrafts;
   };
   struct Loop {
     std::string name, bodyA, bodyB;
@@ -191,6 +195,12 @@ struct BuiltMechanics {
   MechanicsSpec environment;  // water, waves, current, wind, hulls, flow loads, dampers, hydrodynamics (no bodies)
   std::vector<MechanicsSpec::Visual> visuals = {};          // per body index (0: world); defaulted
   std::vector<MechanicsSpec::ProviderSpec> providers = {};  // from registered readers
+  // bodies whose added mass follows their draft, with their tables (added_mass_build.hpp)
+  struct DraftAddedMass {
+    std::string body;
+    std::shared_ptr<const forces::hydro::DraftAddedMassTable> table;
+  };
+  std::vector<DraftAddedMass> draftAddedMass = {};
 };
 
 }  // namespace yardsim::mechanics

@@ -2,6 +2,7 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
+#include "mechanics/follow_draft.hpp"
 #include "mechanics/stage.hpp"
 
 namespace yardsim::mechanics {
@@ -11,10 +12,13 @@ double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::
   // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
   const auto& m = s.model();
   dynamics::forwardKinematics(m, kin, q, v);
+  // (pose) => the added mass of the kinetic energy, where it follows the draft
+  followDraft(s, kin, kin);
   double e = 0.0;
   for (int i = 1; i < m.nbodies; ++i) {
-    e += dynamics::bodyKineticEnergy(m, i, kin.V_B[i]) -  // with the fluid's share (added mass)
-         m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
+    e +=
+        dynamics::bodyKineticEnergy(m, kin, i, kin.V_B[i]) -  // with the fluid's share (added mass)
+        m.inertias[i].mass * m.gravity.dot(kin.X_WB[i].actPoint(m.inertias[i].com));
   }
   forEachProvider(s, d, d.stage(s, t, kin, q, v),
                   [&](const forces::ForceProvider& p, const forces::Stage& st) {

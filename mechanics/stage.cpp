@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dynamics/rnea.hpp"
+#include "mechanics/follow_draft.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 
 namespace yardsim::mechanics {
@@ -57,6 +58,13 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
                  const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
                  Eigen::VectorXd& tau) {
   const SetPoints& sp = *d.setPoints;
+  // (kinematics of the stage) => the draft-following added mass of the kernel's ABA, the servos'
+  // bias forces and the reactions' RNEA (nothing without such a body)
+  if (!s.draftAddedMass().empty()) {
+    followDraft(s, kin, d.kernel.data());
+    followDraft(s, kin, d.feedforward);
+    followDraft(s, kin, d.reaction);
+  }
   if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any())
     d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
   forEachProvider(s, d, d.stage(s, t, kin, q, v),

@@ -67,6 +67,9 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (const auto& d : env.dampers)
     dampers_.push_back(std::make_unique<forces::LinearQuadraticDamping>(
         d.name, model, bodyOf(d.body), d.point, d.coefficients));
+  for (const auto& t : mech_.draftAddedMass)
+    draftAddedMass_.push_back(std::make_unique<forces::hydro::DraftAddedMass>(
+        "added_mass:" + t.body, model, bodyOf(t.body), t.table));
   for (const auto& h : env.hydrodynamics) contributed_.push_back(h.build(h.name, model, bodyOf(h.body), sea));
   // (providers of registered readers) => built at their attachments
   for (const auto& p : mech_.providers) {
@@ -86,6 +89,7 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (auto& f : flows_) providers_.push_back(f.get());
   for (auto& d : dampers_) providers_.push_back(d.get());
   for (auto& b : bodyLoads_) providers_.push_back(b.get());
+  for (auto& a : draftAddedMass_) providers_.push_back(a.get());
   for (auto& c : contributed_) providers_.push_back(c.get());
   // (contributed providers with events) => their event functions, in order
   for (auto& c : contributed_)

@@ -3,12 +3,12 @@
 // (the immutable dynamics::Model, q0, v0, names, rope and load specs, the environment), the one
 // list of force providers built from them in evaluation order (ropes: the wire ropes, then the
 // equalizers; hydrostatics, wind and current loads, damping, body loads from time series, the
-// providers of registered readers), the watched quantities and the
-// joint servos' settings. Built once; the stage function (stage.hpp), the energy balance
-// (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp) and the stiffness
-// estimate all iterate the same list. Providers are const while they are evaluated (their
-// scratch is in mechanics::Data); the ropes' winches take payout set-points between steps, so a
-// System serves one run at a time.
+// added mass following a draft (its momentum force), the providers of registered readers), the
+// watched quantities and the joint servos' settings. Built once; the stage function (stage.hpp),
+// the energy balance (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp)
+// and the stiffness estimate all iterate the same list. Providers are const while they are
+// evaluated (their scratch is in mechanics::Data); the ropes' winches take payout set-points
+// between steps, so a System serves one run at a time.
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +17,7 @@
 #include "forces/rope.hpp"
 #include "forces/flow_load.hpp"
 #include "forces/provider_events.hpp"
+#include "forces/hydro/draft_added_mass.hpp"
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/rope.hpp"
@@ -65,6 +66,10 @@ class System {
   const std::vector<std::unique_ptr<forces::ForceProvider>>& contributed() const {
     return contributed_;
   }
+  // the bodies whose added mass follows their draft (mechanics/follow_draft.hpp)
+  const std::vector<std::unique_ptr<forces::hydro::DraftAddedMass>>& draftAddedMass() const {
+    return draftAddedMass_;
+  }
   const std::vector<WatchRef>& watches() const { return watchRefs_; }
   // the located state events the contributed providers declare (forces/provider_events.hpp)
   const std::vector<const forces::ProviderEvent*>& providerEvents() const {
@@ -86,6 +91,7 @@ class System {
   std::vector<std::unique_ptr<forces::LinearQuadraticDamping>> dampers_;
   std::vector<std::unique_ptr<forces::BodyLoad>> bodyLoads_;
   std::vector<std::unique_ptr<forces::ForceProvider>> contributed_;
+  std::vector<std::unique_ptr<forces::hydro::DraftAddedMass>> draftAddedMass_;
   std::vector<forces::ForceProvider*> providers_;
   std::vector<WatchRef> watchRefs_;
   std::vector<const forces::ProviderEvent*> providerEvents_;

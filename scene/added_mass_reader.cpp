@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "dynamics/added_mass.hpp"
 #include "dynamics/data.hpp"
@@ -54,11 +55,42 @@ std::optional<dynamics::Matrix6> matrix6(const spec::Reader& r, const YAML::Node
   return A;
 }
 
+// (follow_draft node) => the drafts, m, finite, > 0 and increasing, or nothing after a report
+std::vector<double> drafts(const spec::Reader& r, const YAML::Node& n, const std::string& key) {
+  const std::string expected =
+      "expected a list of drafts in m, > 0 and increasing (the keel's depth below the still water "
+      "at which the "
+      "added mass is computed), e.g. [0.25, 0.5, 1, 2]";
+  if (!n.IsSequence() || n.size() == 0) {
+    r.fail(n, key, expected);
+    return {};
+  }
+  std::vector<double> out;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    double v = 0.0;
+    const std::string at = key + "[" + std::to_string(k) + "]";
+    if (!n[k].IsScalar() || !YAML::convert<double>::decode(n[k], v) || !std::isfinite(v)) {
+      r.fail(n[k], at, "expected a number (a draft in m)");
+      return {};
+    }
+    if (!(v > (out.empty() ? 0.0 : out.back()))) {
+      r.fail(n[k], at,
+             out.empty()
+                 ? "expected a draft > 0 m (a dry hull has no added mass: draft 0 is implied)"
+                 : "expected a draft greater than the one before (" + std::to_string(out.back()) +
+                       " m): the drafts increase");
+      return {};
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
 }  // namespace
 
 void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::string& key, const std::string& yamlFile,
                     MechanicsSpec::Body& b) {
-  if (!r.keys(n, {"matrix", "about", "hull", "rho"}, key)) return;
+  if (!r.keys(n, {"matrix", "about", "hull", "rho", "follow_draft"}, key)) return;
   if (n["matrix"].IsDefined() == n["hull"].IsDefined()) {
     r.fail(n, key, "give exactly one of 'matrix' (a 6x6 in the naval order) and 'hull' (a mesh to compute it from)");
     return;
@@ -66,6 +98,10 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
   // (matrix, about) => the given added mass
   if (const YAML::Node m = n["matrix"]) {
     if (n["rho"]) r.fail(n["rho"], key + ".rho", "'rho' goes with 'hull' (the computed added mass), not with 'matrix'");
+    if (n["follow_draft"])
+      r.fail(n["follow_draft"], key + ".follow_draft",
+             "'follow_draft' goes with 'hull' (the added mass computed at those drafts), not with "
+             "'matrix'");
     b.addedMassAbout = r.length3(n["about"], key + ".about", dynamics::Vector3::Zero());
     b.addedMass = matrix6(r, m, key + ".matrix");
     return;
@@ -76,6 +112,8 @@ void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::strin
     b.addedMassRho = r.number(n["rho"], key + ".rho", 0.0);
     if (!(b.addedMassRho > 0.0)) r.fail(n["rho"], key + ".rho", "expected a water density > 0, kg/m^3");
   }
+  if (const YAML::Node f = n["follow_draft"])
+    b.addedMassDrafts = drafts(r, f, key + ".follow_draft");
   const YAML::Node h = n["hull"];
   if (!h || !h.IsScalar()) {
     r.fail(h ? h : n, key + ".hull",

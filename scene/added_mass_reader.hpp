@@ -22,7 +22,8 @@ namespace yardsim::scene {
 using mechanics::MechanicsSpec;
 
 /// (reader, the `added_mass` node, its key path, the YAML file naming it) => b.addedMass or
-/// b.addedMassHull (read, checked as a closed surface and as panels); problems reported at
+/// b.addedMassHull (read, checked as a closed surface and as panels), with b.addedMassDrafts
+/// when it follows the draft (`follow_draft: [m, ...]`); problems reported at
 /// their node.
 void parseAddedMass(const spec::Reader& r, const YAML::Node& n, const std::string& key, const std::string& yamlFile,
                     MechanicsSpec::Body& b);

@@ -71,6 +71,34 @@ TEST_CASE("an added mass computed from a hull next to the YAML file") {
   CHECK(b.model.addedMass[1](5, 5) > 0.0);
 }
 
+TEST_CASE("a hull that follows its draft may start dry and keeps no constant matrix") {
+  testing::SceneDir dir;
+  // the pontoon 3 m above the water: dry at q0, its table computed at 0.5 and 1 m draft
+  forces::writeObj(forces::boxMesh(dynamics::Vector3(10, 4, 2), 5, 2, 2), dir.file("pontoon.obj"));
+  const std::string body = "          added_mass: {hull: pontoon.obj, follow_draft: [0.5, 1.0]}\n";
+  const auto r =
+      scene::loadScene(dir.write("s.yaml",
+                                 "schema_version: 1\ncomponents:\n  m:\n    type: multibody\n"
+                                 "    params:\n      dt: 0.01\n      bodies:\n"
+                                 "        barge:\n          parent: world\n          joint: {type: "
+                                 "free, q0: {xyz: [0, 0, 4]}}\n"
+                                 "          mass: 1000\n          inertia: [100, 200, 300]\n" +
+                                     body));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  const auto b = built(r);
+  CHECK_FALSE(b.model.hasAddedMass[1]);
+  REQUIRE(b.draftAddedMass.size() == 1);
+  CHECK(b.draftAddedMass[0].body == "barge");
+  CHECK(b.draftAddedMass[0].table->drafts == std::vector<double>{0.5, 1.0});
+  // at 1 m draft (the origin at the water level) the table holds the constant path's matrix
+  const dynamics::Matrix6 A = forces::hydro::floatingAddedMass(
+      forces::hydro::panelMesh(forces::boxMesh(dynamics::Vector3(10, 4, 2), 5, 2, 2)), {}, 1025.0);
+  CHECK((b.draftAddedMass[0].table->A_B[1] -
+         dynamics::addedMassAboutOrigin(0.5 * (A + A.transpose()), dynamics::Vector3::Zero()))
+            .norm() < 1e-9 * A.norm());
+}
+
 TEST_CASE("a hull above the water at the initial position is refused naming the body") {
   testing::SceneDir dir;
   forces::writeObj(forces::boxMesh(dynamics::Vector3(10, 4, 2), 5, 2, 2), dir.file("pontoon.obj"));
@@ -126,18 +154,35 @@ TEST_CASE("bad added mass input is refused with its position") {
   };
   // the body's own keys end on line 12; added_mass starts on line 13
   const std::vector<Case> cases{
-      {"          added_mass: {matrix: [[1, 0, 0, 0, 0, 0]]}\n", "bodies.barge.added_mass.matrix", "6 rows of 6 numbers", 13},
-      {"          added_mass:\n            matrix:\n              - [1, 0, 0, 0, 0, 0]\n              - [0, 1, 0, 0, 0, 0]\n"
-       "              - [0, 0, 1, 0, 0, 0]\n              - [0, 0, 0, 1, 0, 0]\n              - [0, 0, 0, 0, 1, 0]\n"
+      {"          added_mass: {matrix: [[1, 0, 0, 0, 0, 0]]}\n", "bodies.barge.added_mass.matrix",
+       "6 rows of 6 numbers", 13},
+      {"          added_mass:\n            matrix:\n              - [1, 0, 0, 0, 0, 0]\n           "
+       "   - [0, 1, 0, 0, 0, 0]\n"
+       "              - [0, 0, 1, 0, 0, 0]\n              - [0, 0, 0, 1, 0, 0]\n              - "
+       "[0, 0, 0, 0, 1, 0]\n"
        "              - [0, 0, 0, 0, 7, 1]\n",
-       "bodies.barge.added_mass.matrix", "not symmetric: row 5 column 6", 15},  // first row's first number
-      {"          added_mass: {matrix: [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0], [0, 0, 0, 1, 0, 0], "
+       "bodies.barge.added_mass.matrix", "not symmetric: row 5 column 6",
+       15},  // first row's first number
+      {"          added_mass: {matrix: [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, "
+       "0], [0, 0, 0, 1, 0, 0], "
        "[0, 0, 0, 0, 1, 0], [0, 0, 0, 0, x, 1]]}\n",
        "bodies.barge.added_mass.matrix[5][4]", "expected a number", 13},
       {"          added_mass: {hull: none.obj}\n", "bodies.barge.added_mass.hull", "none.obj", 13},
       {"          added_mass: {hull: open.obj}\n", "bodies.barge.added_mass.hull", "open.obj", 13},
-      {"          added_mass: {hull: open.obj, matrix: [[1]]}\n", "bodies.barge.added_mass", "exactly one of", 13},
-      {"          added_mass: {matrx: [[1]]}\n", "bodies.barge.added_mass.matrx", "did you mean 'matrix'?", 13},
+      {"          added_mass: {hull: open.obj, matrix: [[1]]}\n", "bodies.barge.added_mass",
+       "exactly one of", 13},
+      {"          added_mass: {matrx: [[1]]}\n", "bodies.barge.added_mass.matrx",
+       "did you mean 'matrix'?", 13},
+      {"          added_mass: {hull: open.obj, follow_draft: 2}\n",
+       "bodies.barge.added_mass.follow_draft", "expected a list of drafts in m", 13},
+      {"          added_mass:\n            hull: open.obj\n            follow_draft: [0.5, x]\n",
+       "bodies.barge.added_mass.follow_draft[1]", "expected a number", 15},
+      {"          added_mass:\n            hull: open.obj\n            follow_draft: [0, 1]\n",
+       "bodies.barge.added_mass.follow_draft[0]", "expected a draft > 0 m", 15},
+      {"          added_mass:\n            hull: open.obj\n            follow_draft: [1, 2, 1.5]\n",
+       "bodies.barge.added_mass.follow_draft[2]", "greater than the one before", 15},
+      {"          added_mass: {matrix: [[1]], follow_draft: [1]}\n",
+       "bodies.barge.added_mass.follow_draft", "'follow_draft' goes with 'hull'", 13},
   };
   for (const Case& c : cases) {
     INFO(c.yaml);

@@ -1,14 +1,18 @@
 #pragma once
 // Common base of atomic and coupled models: a name, a parent, typed input and output ports.
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <new>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "devs/port.hpp"
+#include "devs/small_vector.hpp"
 
 namespace yardsim::devs {
 
@@ -37,26 +41,44 @@ class Model {
   Coupled* parent() const { return parent_; }
   virtual bool isAtomic() const = 0;
 
-  const std::vector<std::unique_ptr<PortBase>>& inPorts() const { return in_; }
-  const std::vector<std::unique_ptr<PortBase>>& outPorts() const { return out_; }
+  // Ports in the order they were added; owned by this model, valid as long as it lives.
+  std::span<PortBase* const> inPorts() const { return in_.span(); }
+  std::span<PortBase* const> outPorts() const { return out_.span(); }
   // (name) => input or output port of that name, or nullptr
   PortBase* findPort(std::string_view name) const;
 
   template <class T>
   InPort<T>& addInPort(std::string name) {
-    return static_cast<InPort<T>&>(
-        registerPort(std::make_unique<InPort<T>>(*this, std::move(name)), in_));
+    return addPort<InPort<T>>(std::move(name), in_);
   }
   template <class T>
   OutPort<T>& addOutPort(std::string name) {
-    return static_cast<OutPort<T>&>(
-        registerPort(std::make_unique<OutPort<T>>(*this, std::move(name)), out_));
+    return addPort<OutPort<T>>(std::move(name), out_);
   }
 
  private:
   friend class Coupled;
-  PortBase& registerPort(std::unique_ptr<PortBase> port,
-                         std::vector<std::unique_ptr<PortBase>>& list);
+  using PortList = SmallVector<PortBase*, 2>;
+  // (port type P, name, list) => a P owned by this model, placed in its inline port store when
+  // it fits (a model's first ports take no heap block), else on the heap; throws ModelError on a
+  // bad or duplicate name
+  template <class P>
+  P& addPort(std::string name, PortList& list) {
+    checkNewPort(name);
+    list.reserve(list.size() + 1);
+    const std::size_t at = (portStoreUsed_ + alignof(P) - 1) / alignof(P) * alignof(P);
+    P* port;
+    if (alignof(P) <= alignof(std::max_align_t) && at + sizeof(P) <= kPortStoreBytes) {
+      port = ::new (static_cast<void*>(portStore_ + at)) P(*this, std::move(name));
+      portStoreUsed_ = static_cast<std::uint32_t>(at + sizeof(P));
+    } else {
+      port = new P(*this, std::move(name));
+    }
+    list.push_back(port);
+    return *port;
+  }
+  // (name) => throws ModelError unless it is a valid, unused port name of this model
+  void checkNewPort(std::string_view name) const;
 
   // () => every cached path is stale (a model was added somewhere, or a name hidden): paths are
   // recomputed when next asked for, so adding a subtree costs O(1), not a walk over it
@@ -68,8 +90,12 @@ class Model {
   mutable std::uint64_t pathGeneration_ = 0;  // the tree generation path_ was computed in
   Coupled* parent_ = nullptr;
   bool hidden_ = false;
-  std::vector<std::unique_ptr<PortBase>> in_;
-  std::vector<std::unique_ptr<PortBase>> out_;
+  std::uint32_t portStoreUsed_ = 0;  // bytes of portStore_ taken
+  PortList in_;
+  PortList out_;
+  // Room for two ports of small value types (an atomic's in and out) inside the model.
+  static constexpr std::size_t kPortStoreBytes = 256;
+  alignas(std::max_align_t) std::byte portStore_[kPortStoreBytes];
 };
 
 // (name) => throws ModelError unless it is a valid model or port name (non-empty, no '.')

@@ -3,11 +3,13 @@
 // copies bags along the flattened couplings and clears them after the transitions, so in the
 // steady state a message costs a copy and no heap allocation (bags keep their capacity).
 #include <cstddef>
+#include <span>
 #include <string>
 #include <typeinfo>
 #include <utility>
 #include <vector>
 
+#include "devs/small_vector.hpp"
 #include "devs/trace_format.hpp"
 
 namespace yardsim::devs {
@@ -40,7 +42,7 @@ class PortBase {
   virtual void writeValue(std::string& out, std::size_t i) const = 0;
 
   // Couplings leaving this port, in the coupled model that declared them (read by flatten).
-  const std::vector<PortBase*>& links() const { return links_; }
+  std::span<PortBase* const> links() const { return links_.span(); }
 
  protected:
   std::size_t count_ = 0;
@@ -51,7 +53,7 @@ class PortBase {
   std::string name_;
   const std::type_info* type_;
   bool isInput_;
-  std::vector<PortBase*> links_;
+  SmallVector<PortBase*, 1> links_;  // most atomic ports have at most one coupling
 };
 
 template <class T>

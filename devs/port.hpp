@@ -71,7 +71,10 @@ class Port : public PortBase {
   }
   void appendTo(PortBase& dst) const final {
     auto& to = static_cast<Port<T>&>(dst);  // flatten checked the types
-    to.bag_.insert(to.bag_.end(), bag_.begin(), bag_.end());
+    if (bag_.size() == 1)
+      to.bag_.push_back(bag_.front());  // the common case, without a range insert's memmove
+    else
+      to.bag_.insert(to.bag_.end(), bag_.begin(), bag_.end());
     to.count_ = to.bag_.size();
   }
   void writeValue(std::string& out, std::size_t i) const final {

@@ -39,32 +39,31 @@ Model::Model(std::string name) : name_(std::move(name)) {
 
 Model::~Model() {
   // (ports) => destroyed; those in the inline store in place, the others freed
-  for (PortList* list : {&in_, &out_})
-    for (PortBase* p : *list) {
-      const auto* at = reinterpret_cast<const std::byte*>(p);
-      if (at >= portStore_ && at < portStore_ + kPortStoreBytes)
-        p->~PortBase();
-      else
-        delete p;
-    }
+  for (PortBase* p : ports_) {
+    const auto* at = reinterpret_cast<const std::byte*>(p);
+    if (at >= portStore_ && at < portStore_ + kPortStoreBytes)
+      p->~PortBase();
+    else
+      delete p;
+  }
 }
 
 std::atomic<std::uint64_t> Model::treeGeneration_{1};
 
 const std::string& Model::path() const {
   const std::uint64_t now = treeGeneration_.load(std::memory_order_relaxed);
-  if (path_.empty() || pathGeneration_ != now) {
+  if (!path_) path_ = std::make_unique<PathCache>();
+  if (path_->path.empty() || path_->generation != now) {
     const Model* p = parent_;
-    path_ = (p && !p->hidden_) ? p->path() + "." + name_ : name_;
-    pathGeneration_ = now;
+    path_->path = (p && !p->hidden_) ? p->path() + "." + name_ : name_;
+    path_->generation = now;
   }
-  return path_;
+  return path_->path;
 }
 
 PortBase* Model::findPort(std::string_view name) const {
-  for (const PortList* list : {&in_, &out_})
-    for (PortBase* p : *list)
-      if (p->name() == name) return p;
+  for (PortBase* p : ports_)
+    if (p->name() == name) return p;
   return nullptr;
 }
 

@@ -42,39 +42,42 @@ class Model {
   virtual bool isAtomic() const = 0;
 
   // Ports in the order they were added; owned by this model, valid as long as it lives.
-  std::span<PortBase* const> inPorts() const { return in_.span(); }
-  std::span<PortBase* const> outPorts() const { return out_.span(); }
+  std::span<PortBase* const> inPorts() const { return {ports_.data(), nIn_}; }
+  std::span<PortBase* const> outPorts() const {
+    return {ports_.data() + nIn_, ports_.size() - nIn_};
+  }
   // (name) => input or output port of that name, or nullptr
   PortBase* findPort(std::string_view name) const;
 
   template <class T>
   InPort<T>& addInPort(std::string name) {
-    return addPort<InPort<T>>(std::move(name), in_);
+    auto& p = addPort<InPort<T>>(std::move(name), nIn_);
+    ++nIn_;
+    return p;
   }
   template <class T>
   OutPort<T>& addOutPort(std::string name) {
-    return addPort<OutPort<T>>(std::move(name), out_);
+    return addPort<OutPort<T>>(std::move(name), ports_.size());
   }
 
  private:
   friend class Coupled;
-  using PortList = SmallVector<PortBase*, 2>;
-  // (port type P, name, list) => a P owned by this model, placed in its inline port store when
-  // it fits (a model's first ports take no heap block), else on the heap; throws ModelError on a
-  // bad or duplicate name
+  // (port type P, name, position in ports_) => a P owned by this model, placed in its inline
+  // port store when it fits (a model's first ports take no heap block), else on the heap;
+  // throws ModelError on a bad or duplicate name
   template <class P>
-  P& addPort(std::string name, PortList& list) {
+  P& addPort(std::string&& name, std::uint32_t at) {
     checkNewPort(name);
-    list.reserve(list.size() + 1);
-    const std::size_t at = (portStoreUsed_ + alignof(P) - 1) / alignof(P) * alignof(P);
+    ports_.reserve(ports_.size() + 1);
+    const std::size_t from = (portStoreUsed_ + alignof(P) - 1) / alignof(P) * alignof(P);
     P* port;
-    if (alignof(P) <= alignof(std::max_align_t) && at + sizeof(P) <= kPortStoreBytes) {
-      port = ::new (static_cast<void*>(portStore_ + at)) P(*this, std::move(name));
-      portStoreUsed_ = static_cast<std::uint32_t>(at + sizeof(P));
+    if (alignof(P) <= alignof(std::max_align_t) && from + sizeof(P) <= kPortStoreBytes) {
+      port = ::new (static_cast<void*>(portStore_ + from)) P(*this, std::move(name));
+      portStoreUsed_ = static_cast<std::uint32_t>(from + sizeof(P));
     } else {
       port = new P(*this, std::move(name));
     }
-    list.push_back(port);
+    ports_.insert(at, port);
     return *port;
   }
   // (name) => throws ModelError unless it is a valid, unused port name of this model
@@ -85,16 +88,20 @@ class Model {
   static void treeChanged() { treeGeneration_.fetch_add(1, std::memory_order_relaxed); }
   static std::atomic<std::uint64_t> treeGeneration_;
 
+  struct PathCache {
+    std::string path;
+    std::uint64_t generation = 0;  // the tree generation path was computed in
+  };
+
   std::string name_;
-  mutable std::string path_;
-  mutable std::uint64_t pathGeneration_ = 0;  // the tree generation path_ was computed in
+  mutable std::unique_ptr<PathCache> path_;  // made when a path is first asked for
   Coupled* parent_ = nullptr;
   bool hidden_ = false;
   std::uint32_t portStoreUsed_ = 0;  // bytes of portStore_ taken
-  PortList in_;
-  PortList out_;
+  std::uint32_t nIn_ = 0;            // ports_[0, nIn_) are inputs, the rest outputs
+  SmallVector<PortBase*, 2> ports_;
   // Room for two ports of small value types (an atomic's in and out) inside the model.
-  static constexpr std::size_t kPortStoreBytes = 256;
+  static constexpr std::size_t kPortStoreBytes = 224;
   alignas(std::max_align_t) std::byte portStore_[kPortStoreBytes];
 };
 

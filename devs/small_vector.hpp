@@ -27,6 +27,12 @@ class SmallVector {
     if (size_ == cap_) grow(2 * cap_);
     data_[size_++] = v;
   }
+  // (position <= size, value) => inserted there, the later elements moved up by one
+  void insert(std::uint32_t at, T v) {
+    push_back(v);
+    std::memmove(static_cast<void*>(data_ + at + 1), data_ + at, (size_ - 1 - at) * sizeof(T));
+    data_[at] = v;
+  }
   // (n) => room for n elements without another allocation
   void reserve(std::uint32_t n) {
     if (n > cap_) grow(n);

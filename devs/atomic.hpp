@@ -77,6 +77,8 @@ class Atomic : public AtomicBase {
   void setState(S s) { state_ = std::move(s); }
 
   void writeState(std::string& out) const override { TraceFormat<S>::write(out, state_); }
+  // (tl) => tl + timeAdvance(state), without going through ta()
+  Time nextEventTime(Time tl) const override { return tl + timeAdvance(state_); }
 
   bool canCheckpoint() const override { return HasStateCodec<S>; }
   void saveCheckpoint(CheckpointWriter& w) const override {

@@ -3,9 +3,9 @@
 // ports. External input couplings (this.in -> child.in), internal couplings
 // (child.out -> child.in) and external output couplings (child.out -> this.out) are checked
 // when they are added: direction, ownership and value type.
+#include <cstdint>
 #include <memory>
 #include <string_view>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -40,8 +40,17 @@ class Coupled : public Model {
   std::size_t couplingCount() const { return couplings_; }
 
  private:
+  // (name, its hash) => the component of that name, or nullptr
+  Model* find(std::string_view name, std::uint64_t hash) const;
+  // (component at position i, its name's hash) => in the name index (rebuilt when half full)
+  void index(std::uint32_t i, std::uint64_t hash);
+
   std::vector<std::unique_ptr<Model>> components_;
-  std::unordered_map<std::string_view, Model*> byName_;
+  // Name index over components_, built once there are more than kLinearNames of them: open
+  // addressing, a power-of-two table of (position + 1), 0 for an empty slot. One array, so
+  // adding a component takes no heap block of its own.
+  static constexpr std::size_t kLinearNames = 8;
+  std::vector<std::uint32_t> index_;
   std::size_t couplings_ = 0;
 };
 

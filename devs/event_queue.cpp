@@ -10,9 +10,18 @@ void EventQueue::resize(std::size_t models) {
 }
 
 std::uint32_t EventQueue::pop() {
+  // (heap) => its root removed: the last entry sifted down from the root (removeAt's siftUp
+  // would not move it there)
   const std::uint32_t top = heap_.front();
-  removeAt(0);
+  pos_[top] = kAbsent;
   tn_[top] = kInfinity;
+  const std::uint32_t last = heap_.back();
+  heap_.pop_back();
+  if (!heap_.empty()) {
+    heap_[0] = last;
+    pos_[last] = 0;
+    siftDown(0);
+  }
   return top;
 }
 

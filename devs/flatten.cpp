@@ -25,9 +25,9 @@ FlatModel flatten(Model& root) {
   flat.outBegin.reserve(flat.atomics.size() + 1);
   for (AtomicBase* a : flat.atomics) {
     flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
-    for (const auto& out : a->outPorts()) {
+    for (PortBase* out : a->outPorts()) {
       flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
-      flat.outPorts.push_back(out.get());
+      flat.outPorts.push_back(out);
       frontier.assign(out->links().begin(), out->links().end());
       while (!frontier.empty()) {
         PortBase* p = frontier.back();

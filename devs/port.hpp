@@ -3,11 +3,14 @@
 // copies bags along the flattened couplings and clears them after the transitions, so in the
 // steady state a message costs a copy and no heap allocation (bags keep their capacity).
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <typeinfo>
 #include <utility>
 #include <vector>
 
+#include "devs/small_vector.hpp"
 #include "devs/trace_format.hpp"
 
 namespace yardsim::devs {
@@ -17,8 +20,8 @@ class Coupled;
 
 class PortBase {
  public:
-  PortBase(Model& owner, std::string name, bool isInput, const std::type_info& type)
-      : owner_(&owner), name_(std::move(name)), type_(&type), isInput_(isInput) {}
+  PortBase(Model& owner, std::string&& name, bool isInput, const std::type_info& type)
+      : isInput_(isInput), owner_(&owner), name_(std::move(name)), type_(&type) {}
   virtual ~PortBase() = default;
   PortBase(const PortBase&) = delete;
   PortBase& operator=(const PortBase&) = delete;
@@ -40,25 +43,25 @@ class PortBase {
   virtual void writeValue(std::string& out, std::size_t i) const = 0;
 
   // Couplings leaving this port, in the coupled model that declared them (read by flatten).
-  const std::vector<PortBase*>& links() const { return links_; }
+  std::span<PortBase* const> links() const { return links_.span(); }
 
  protected:
-  std::size_t count_ = 0;
+  std::uint32_t count_ = 0;  // messages in the bag
 
  private:
   friend class Coupled;
+  bool isInput_;  // packed with count_
   Model* owner_;
   std::string name_;
   const std::type_info* type_;
-  bool isInput_;
-  std::vector<PortBase*> links_;
+  SmallVector<PortBase*, 1> links_;  // most atomic ports have at most one coupling
 };
 
 template <class T>
 class Port : public PortBase {
  public:
   using value_type = T;
-  Port(Model& owner, std::string name, bool isInput)
+  Port(Model& owner, std::string&& name, bool isInput)
       : PortBase(owner, std::move(name), isInput, typeid(T)) {}
 
   const std::vector<T>& values() const { return bag_; }
@@ -69,8 +72,11 @@ class Port : public PortBase {
   }
   void appendTo(PortBase& dst) const final {
     auto& to = static_cast<Port<T>&>(dst);  // flatten checked the types
-    to.bag_.insert(to.bag_.end(), bag_.begin(), bag_.end());
-    to.count_ = to.bag_.size();
+    if (bag_.size() == 1)
+      to.bag_.push_back(bag_.front());  // the common case, without a range insert's memmove
+    else
+      to.bag_.insert(to.bag_.end(), bag_.begin(), bag_.end());
+    to.count_ = static_cast<std::uint32_t>(to.bag_.size());
   }
   void writeValue(std::string& out, std::size_t i) const final {
     TraceFormat<T>::write(out, bag_[i]);
@@ -83,13 +89,13 @@ class Port : public PortBase {
 template <class T>
 class InPort final : public Port<T> {
  public:
-  InPort(Model& owner, std::string name) : Port<T>(owner, std::move(name), true) {}
+  InPort(Model& owner, std::string&& name) : Port<T>(owner, std::move(name), true) {}
 };
 
 template <class T>
 class OutPort final : public Port<T> {
  public:
-  OutPort(Model& owner, std::string name) : Port<T>(owner, std::move(name), false) {}
+  OutPort(Model& owner, std::string&& name) : Port<T>(owner, std::move(name), false) {}
   // (value) => appended to this event time's output bag; call only from an output function
   void add(const T& value) {
     this->bag_.push_back(value);

@@ -1,7 +1,9 @@
 #include "devs/coupled.hpp"
 #include "devs/simulator.hpp"
 
+#include <array>
 #include <catch2/catch.hpp>
+#include <string>
 
 #include "support/test_models.hpp"
 
@@ -98,4 +100,51 @@ TEST_CASE("a direct coupling crosses the hierarchy between atomics below the mod
   sim.run();
   REQUIRE(col.state().bags.size() == 1);
   CHECK(col.state().bags[0].first == 1.0);
+}
+
+TEST_CASE("a model with many components finds each by name and refuses a duplicate") {
+  // past the linear scan the name index is a hash table: every name found, none invented
+  Coupled root("root");
+  std::vector<Collector*> added;
+  for (int i = 0; i < 1000; ++i) added.push_back(&root.add<Collector>("c" + std::to_string(i)));
+  for (int i = 0; i < 1000; ++i) CHECK(root.findComponent("c" + std::to_string(i)) == added[i]);
+  CHECK(root.findComponent("c1000") == nullptr);
+  CHECK(root.findComponent("c") == nullptr);
+  CHECK_THROWS_WITH(root.add<Collector>("c517"), Catch::Contains("already has a component named"));
+  CHECK(root.components().size() == 1000);
+}
+
+namespace {
+// A model with more ports, and larger ones, than fit inside it.
+struct Wide final : devs::Atomic<int> {
+  explicit Wide(std::string name) : devs::Atomic<int>(std::move(name), 0) {}
+  std::array<devs::InPort<std::array<double, 16>>*, 3> big{
+      &addInPort<std::array<double, 16>>("b0"), &addInPort<std::array<double, 16>>("b1"),
+      &addInPort<std::array<double, 16>>("b2")};
+  std::array<devs::OutPort<int>*, 4> outs{&addOutPort<int>("o0"), &addOutPort<int>("o1"),
+                                          &addOutPort<int>("o2"), &addOutPort<int>("o3")};
+  devs::Time timeAdvance(const int&) const override { return devs::kInfinity; }
+  void output(const int&) const override {}
+  void internalTransition(int&) const override {}
+  void externalTransition(int&, devs::Time) const override {}
+};
+}  // namespace
+
+TEST_CASE("ports beyond what fits inside a model keep their order names and owner") {
+  Wide w("w");
+  REQUIRE(w.inPorts().size() == 3);
+  REQUIRE(w.outPorts().size() == 4);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(w.inPorts()[i] == w.big[i]);
+    CHECK(w.inPorts()[i]->name() == "b" + std::to_string(i));
+    CHECK(w.findPort("b" + std::to_string(i)) == w.big[i]);
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(w.outPorts()[i] == w.outs[i]);
+    CHECK(&w.outPorts()[i]->owner() == &w);
+    CHECK(!w.outPorts()[i]->isInput());
+  }
+  CHECK_THROWS_WITH(w.addOutPort<int>("b1"), Catch::Contains("already has a port named 'b1'"));
+  CHECK_THROWS_WITH(w.addOutPort<int>("x.y"), Catch::Contains("dots"));
+  CHECK(w.outPorts().size() == 4);
 }

@@ -1,0 +1,38 @@
+#include "devs/small_vector.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+
+using yardsim::devs::SmallVector;
+
+TEST_CASE("a small vector keeps every element across its move to the heap") {
+  SmallVector<std::uint64_t, 2> v;
+  CHECK(v.empty());
+  const std::uint64_t* inlineData = v.data();
+  for (std::uint64_t i = 0; i < 1000; ++i) {
+    v.push_back(i * i + 7);
+    if (i < 2) CHECK(v.data() == inlineData);  // the first two live in the object
+  }
+  CHECK(v.data() != inlineData);
+  REQUIRE(v.size() == 1000);
+  std::uint64_t sum = 0;
+  for (std::uint64_t x : v) sum += x;
+  CHECK(sum == 332833500 + 7000);  // sum of i^2 for i < 1000, plus 7 each
+  CHECK(v.span().size() == 1000);
+  CHECK(v[999] == 999 * 999 + 7);
+}
+
+TEST_CASE("reserve keeps the elements and takes no block while they fit") {
+  SmallVector<int, 4> v;
+  v.push_back(1);
+  v.reserve(3);
+  const int* before = v.data();
+  v.push_back(2);
+  v.push_back(3);
+  CHECK(v.data() == before);
+  v.reserve(100);
+  const int* grown = v.data();
+  for (int i = 4; i <= 100; ++i) v.push_back(i);
+  CHECK(v.data() == grown);
+  for (int i = 0; i < 100; ++i) CHECK(v[static_cast<std::uint32_t>(i)] == i + 1);
+}

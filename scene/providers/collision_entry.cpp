@@ -14,6 +14,24 @@ namespace {
 // m: the linear law's damping ramp unless given: none, the plain law (docs/collision.md "Stiff
 // contact")
 constexpr double kDefaultDampingDepth = 0.0;
+// groups a set can name: the kernel's 32 group bits less bit 0 (what no group holds)
+constexpr std::size_t kMaxGroups = 31;
+
+// (a mapping's entry) => the node to report it at: its key, or its value when the key has no
+// place (the loader rebuilds mappings while resolving $references, and keys lose their marks)
+YAML::Node keyNode(const YAML::const_iterator& it) {
+  return it->first.Mark().is_null() ? it->second : it->first;
+}
+
+// (mapping, name, key path) => a required number of it: missing, reported at the mapping
+double required(const spec::Reader& r, const YAML::Node& map, const char* name,
+                const std::string& key, double fallback) {
+  if (!map[name]) {
+    r.fail(map, key, std::string("missing required key '") + name + "' (a number)");
+    return fallback;
+  }
+  return r.number(map[name], key + "." + name, fallback);
+}
 
 // ({box: [lx, ly, lz]} | {sphere: r} | {cylinder: {radius, length}} | {capsule: {radius,
 // length}}) => the shape; every size must be > 0 m
@@ -27,9 +45,11 @@ collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std
   }
   if (!r.keys(n, {"box", "sphere", "cylinder", "capsule"}, key))
     return collision::Shape::sphere(1.0);
-  auto positive = [&](const YAML::Node& at, const std::string& k) {
-    const double v = r.number(at, k, 1.0, true);
-    if (at && !(v > 0)) r.fail(at, k, "must be > 0 m, got " + std::to_string(v));
+  // (mapping, its key, name) => the number under name, > 0 m
+  auto positive = [&](const YAML::Node& map, const std::string& k, const char* name) {
+    const double v = required(r, map, name, k, 1.0);
+    if (map[name] && !(v > 0))
+      r.fail(map[name], k + "." + name, "must be > 0 m, got " + std::to_string(v));
     return v > 0 ? v : 1.0;
   };
   if (const YAML::Node b = n["box"]) {
@@ -37,14 +57,13 @@ collision::Shape readShape(const spec::Reader& r, const YAML::Node& n, const std
     if (!(size.minCoeff() > 0)) r.fail(b, key + ".box", "every edge must be > 0 m");
     return collision::Shape::box(size.cwiseMax(1e-9));
   }
-  if (const YAML::Node s = n["sphere"])
-    return collision::Shape::sphere(positive(s, key + ".sphere"));
+  if (n["sphere"]) return collision::Shape::sphere(positive(n, key, "sphere"));
   const bool cyl = bool(n["cylinder"]);
   YAML::Node c = cyl ? n["cylinder"] : n["capsule"];
   const std::string k = key + (cyl ? ".cylinder" : ".capsule");
   if (!r.keys(c, {"radius", "length"}, k)) return collision::Shape::sphere(1.0);
-  const double radius = positive(c["radius"], k + ".radius");
-  const double length = positive(c["length"], k + ".length");
+  const double radius = positive(c, k, "radius");
+  const double length = positive(c, k, "length");
   return cyl ? collision::Shape::cylinder(radius, length)
              : collision::Shape::capsule(radius, length);
 }
@@ -64,7 +83,7 @@ forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n,
     r.fail(n["law"], key + ".law", "expected hunt_crossley or linear, got '" + law + "'");
   m.law.kind =
       law == "linear" ? forces::NormalLawKind::kLinear : forces::NormalLawKind::kHuntCrossley;
-  m.law.stiffness = r.number(n["k"], key + ".k", 1.0, true);
+  m.law.stiffness = required(r, n, "k", key, 1.0);
   if (n["k"] && !(m.law.stiffness > 0)) r.fail(n["k"], key + ".k", "must be > 0 (N/m^n)");
   m.law.exponent = r.number(n["n"], key + ".n", law == "linear" ? 1.0 : 1.5);
   if (!(m.law.exponent >= 1.0)) r.fail(n["n"], key + ".n", "must be >= 1");
@@ -73,7 +92,7 @@ forces::ContactMaterial readLaw(const spec::Reader& r, const YAML::Node& n,
   m.law.damping = nonNegative(r, n["c"], key + ".c", 0.0);
   if (const YAML::Node e = n["restitution"]) {  // (e, v0) => Lankarani-Nikravesh damping
     const double rest = r.number(e, key + ".restitution", 1.0);
-    const double v0 = r.number(n["impact_speed"], key + ".impact_speed", 1.0, true);
+    const double v0 = required(r, n, "impact_speed", key, 1.0);
     if (!(rest > 0 && rest <= 1))
       r.fail(e, key + ".restitution", "must be in (0, 1]");
     else if (law == "linear")
@@ -118,7 +137,46 @@ std::vector<std::string> names(const spec::Reader& r, const YAML::Node& n, const
   return out;
 }
 
+// (entry) => its `groups: {name: [patterns], ...}` into c.groups: at most 31 (one bit each of
+// the kernel's 32-bit groups, bit 0 for what no group holds); a name of a listed body or
+// `ground` is refused (an ignore pair must say which it means)
+void readGroups(const YAML::Node& n, const spec::Reader& r, const std::string& key,
+                CollisionSpec& c) {
+  const YAML::Node g = n["groups"];
+  if (!g) return;
+  if (!g.IsMap()) {
+    r.fail(g, key + ".groups", "expected {group: [body or rope names or patterns], ...}");
+    return;
+  }
+  for (auto it = g.begin(); it != g.end(); ++it) {
+    GroupSpec group;
+    group.name = it->first.as<std::string>();
+    const std::string k = key + ".groups." + group.name;
+    group.place = placeOf(keyNode(it), k);
+    if (c.groups.size() == kMaxGroups) {
+      r.fail(keyNode(it), k, "at most " + std::to_string(kMaxGroups) + " groups");
+      return;
+    }
+    if (group.name == "ground" ||
+        std::find(c.bodies.begin(), c.bodies.end(), group.name) != c.bodies.end()) {
+      r.fail(keyNode(it), k,
+             "'" + group.name + "' names a body (or the ground): give the group another name");
+      continue;
+    }
+    group.patterns = names(r, it->second, k);
+    for (std::size_t i = 0; i < group.patterns.size(); ++i)
+      group.places.push_back(placeOf(it->second[i], k + "[" + std::to_string(i) + "]"));
+    c.groups.push_back(std::move(group));
+  }
+}
+
 }  // namespace
+
+int groupIndex(const CollisionSpec& c, const std::string& name) {
+  for (std::size_t i = 0; i < c.groups.size(); ++i)
+    if (c.groups[i].name == name) return static_cast<int>(i);
+  return -1;
+}
 
 // (node) => its 1-based line and column
 NamePlace placeOf(const YAML::Node& n, std::string key) {
@@ -156,8 +214,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     c.contact = scene.Scalar() == "contact";
   }
   if (!r.keys(n,
-              {"bodies", "shapes", "ground", "materials", "contact", "ignore", "clearance",
-               "points_per_pair", "rope_diameter", "_scene"},
+              {"bodies", "shapes", "ground", "materials", "contact", "ignore", "groups",
+               "clearance", "points_per_pair", "rope_diameter", "_scene"},
               key))
     return c;
   c.place = placeOf(n, key);
@@ -169,14 +227,19 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     r.fail(n, key, "missing required key 'bodies' (the bodies that touch: [a, b, ...])");
   // (a name under shapes, materials or ignore) => checked now against listed bodies, or kept
   auto member = [&](const std::string& b, const YAML::Node& at, const std::string& k,
-                    bool groundToo) {
+                    bool groundToo, bool groupToo = false) {
     if (groundToo && b == "ground") return;
+    if (groupToo && groupIndex(c, b) >= 0) return;
     if (c.sceneLevel && !n["bodies"]) {
       c.named.emplace_back(b, placeOf(at, k));
       return;
     }
     if (std::find(c.bodies.begin(), c.bodies.end(), b) == c.bodies.end())
-      r.fail(at, k, "'" + b + "' is not one of bodies" + (groundToo ? " (or ground)" : ""));
+      r.fail(at, k,
+             "'" + b + "' is not one of bodies" +
+                 (groupToo    ? " (or ground, or a group)"
+                  : groundToo ? " (or ground)"
+                              : ""));
   };
   if (const YAML::Node s = n["shapes"]) {
     if (!s.IsMap())
@@ -185,7 +248,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       for (auto it = s.begin(); it != s.end(); ++it) {
         const std::string b = it->first.as<std::string>();
         c.shapes.emplace(b, readShape(r, it->second, key + ".shapes." + b));
-        member(b, it->first, key + ".shapes." + b, false);
+        member(b, keyNode(it), key + ".shapes." + b, false);
       }
   }
   if (const YAML::Node g = n["ground"]) {  // (ground: z) => the half-space below z (world)
@@ -198,7 +261,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
     else
       for (auto it = m.begin(); it != m.end(); ++it) {
         const std::string b = it->first.as<std::string>();
-        member(b, it->first, key + ".materials." + b, true);
+        member(b, keyNode(it), key + ".materials." + b, true);
         if (it->second.IsScalar())
           c.materials[b] = it->second.Scalar();
         else
@@ -216,7 +279,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       std::string pair = it->first.as<std::string>();
       const auto slash = pair.find('/');
       if (pair != "default" && slash == std::string::npos) {
-        r.fail(it->first, key + ".contact." + pair,
+        r.fail(keyNode(it), key + ".contact." + pair,
                "expected default or a pair material_a/material_b");
         continue;
       }
@@ -225,6 +288,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       c.laws[pair] = readLaw(r, it->second, key + ".contact." + it->first.as<std::string>());
     }
   }
+  readGroups(n, r, key, c);
   if (const YAML::Node ig = n["ignore"]) {
     if (!ig.IsSequence())
       r.fail(ig, key + ".ignore", "expected a list of pairs [[a, b], ...]");
@@ -236,7 +300,7 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
           continue;
         }
         for (const auto& b : pair)
-          member(b, ig[i], key + ".ignore[" + std::to_string(i) + "]", true);
+          member(b, ig[i], key + ".ignore[" + std::to_string(i) + "]", true, true);
         c.ignore.emplace_back(pair[0], pair[1]);
       }
   }
@@ -270,7 +334,8 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
         };
         ws.a = side(0);
         ws.b = side(1);
-        ws.below = nonNegative(r, e["below"], k + ".below", 0.0, true);
+        if (!e["below"]) r.fail(e, k, "missing required key 'below' (m, >= 0)");
+        ws.below = nonNegative(r, e["below"], k + ".below", 0.0);
         ws.range = nonNegative(r, e["range"], k + ".range", ws.below);
         const NamePlace at = placeOf(between, k + ".between");
         ws.line = at.line;

@@ -30,15 +30,26 @@ struct NamePlace {
   std::string key;
 };
 
+// A named group of bodies and ropes as written (`groups: {cranes: ["GOC201.*"], ...}`): its
+// patterns and where each was written. A pair of groups under `ignore:` is never tested (the
+// kernel's groups and masks); a group paired with a body or `ground` stands for its members.
+struct GroupSpec {
+  std::string name;
+  std::vector<std::string> patterns;
+  std::vector<NamePlace> places;  // per pattern
+  NamePlace place;                // of the group's name
+};
+
 // Everything an entry says, read at the door; resolved against the built system later.
 struct CollisionSpec {
   std::vector<std::string> bodies;
   std::map<std::string, collision::Shape> shapes;  // separate collision shapes, centred on B
   bool ground = false;
-  double groundHeight = 0.0;                            // m, world z of the ground plane
-  std::map<std::string, std::string> materials;         // body or "ground" => material name
-  std::map<std::string, forces::ContactMaterial> laws;  // "a/b" (sorted) or "default"
-  std::vector<std::pair<std::string, std::string>> ignore;
+  double groundHeight = 0.0;                                // m, world z of the ground plane
+  std::map<std::string, std::string> materials;             // body or "ground" => material name
+  std::map<std::string, forces::ContactMaterial> laws;      // "a/b" (sorted) or "default"
+  std::vector<std::pair<std::string, std::string>> ignore;  // body, ground or group names
+  std::vector<GroupSpec> groups;
   std::vector<WatchSpec> watches;
   int pointsPerPair = 4;
   double ropeDiameter = 0.04;  // m, the capsules of ropes that give no diameter of their own
@@ -58,6 +69,8 @@ struct CollisionSpec {
 NamePlace placeOf(const YAML::Node& n, std::string key);
 // (name, pattern with `*`) => whether the pattern matches the whole name
 bool matches(const std::string& name, const std::string& pattern);
+// (spec, name) => the index of the group of that name, or -1
+int groupIndex(const CollisionSpec& c, const std::string& name);
 // (entry, reader, its key path) => what it says, every problem reported at its node
 CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::string& key);
 

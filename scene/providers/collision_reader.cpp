@@ -16,6 +16,7 @@
 #include "forces/geometry/triangle_mesh.hpp"
 #include "scene/provider_readers.hpp"
 #include "scene/providers/collision_entry.hpp"
+#include "scene/providers/collision_groups.hpp"
 
 namespace yardsim::scene::providers {
 
@@ -70,7 +71,11 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
     for (const auto& a : at) bodies.push_back(model.names[static_cast<std::size_t>(a.body)]);
   for (const auto& [b, where] : c.named)  // (names under shapes, materials, ignore) => bodies
     if (std::find(bodies.begin(), bodies.end(), b) == bodies.end())
-      fail("'" + b + "' is not a body with a geometry", where.line, where.column, where.key);
+      fail("'" + b + "' is not a body with a geometry" +
+               (where.key.find(".ignore[") != std::string::npos && !c.groups.empty()
+                    ? " (nor ground, nor a group)"
+                    : ""),
+           where.line, where.column, where.key);
   collision::BodyCollisionSpec spec;
   spec.bodyCount = model.nbodies;
   spec.maxPointsPerPair = c.pointsPerPair;
@@ -132,7 +137,9 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
     const auto it = std::find(bodies.begin(), bodies.end(), n);
     return at.at(static_cast<std::size_t>(it - bodies.begin())).body;
   };
-  for (const auto& [a, b] : c.ignore) spec.ignore.emplace_back(indexOf(a), indexOf(b));
+  for (const auto& [a, b] : c.ignore)  // (two bodies or ground) => the pair; groups: below
+    if (groupIndex(c, a) < 0 && groupIndex(c, b) < 0)
+      spec.ignore.emplace_back(indexOf(a), indexOf(b));
   // (ropes, and each branch of an equalizer from its sheave) => capsules with their own diameter
   // (the set's rope_diameter when they give none); only those a watch names are built
   auto bodyOf = [&](const std::string& b) { return b == "world" ? 0 : model.bodyIndex(b); };
@@ -150,24 +157,22 @@ std::unique_ptr<forces::ForceProvider> build(const CollisionSpec& c, const std::
       for (const auto& [body, p] : branch) rope.path.emplace_back(bodyOf(body), p);
       spec.ropes.push_back(std::move(rope));
     }
+  const std::string noMatch =
+      std::string("matches no body") +
+      (c.sceneLevel && c.bodies.empty() ? " with a geometry" : " of bodies:") +
+      ", no rope and no equalizer";
+  // (groups) => group bits and masks of the shapes and ropes, a group's pairs with a body
+  applyGroups(
+      c, prefix, bodies, indexOf, noMatch, spec,
+      [&](const std::string& msg, const NamePlace& p) { fail(msg, p.line, p.column, p.key); });
   for (const WatchSpec& w : c.watches) {
     collision::ClearanceSpec cs{w.name, {}, {}, {}, {}, w.below, w.range};
     auto side = [&](const std::vector<std::string>& patterns, std::vector<int>& shapes,
                     std::vector<int>& ropes) {
-      for (const std::string& p : patterns) {
-        const std::size_t before = shapes.size() + ropes.size();
-        for (std::size_t i = 0; i < spec.shapes.size(); ++i)
-          if (matches(spec.shapes[i].name, p) || matches(spec.shapes[i].name, prefix + p))
-            shapes.push_back(static_cast<int>(i));
-        for (std::size_t i = 0; i < spec.ropes.size(); ++i)
-          if (matches(spec.ropes[i].name, p) || matches(spec.ropes[i].name, prefix + p))
-            ropes.push_back(static_cast<int>(i));
-        if (shapes.size() + ropes.size() == before)
-          fail("clearance '" + w.name + "': '" + p + "' matches no body" +
-                   (c.sceneLevel && c.bodies.empty() ? " with a geometry" : " of bodies:") +
-                   ", no rope and no equalizer",
-               w.line, w.column, c.keyRoot + ".clearance." + w.name + ".between");
-      }
+      for (const std::string& p : patterns)
+        if (!matchPattern(p, prefix, spec, shapes, ropes))
+          fail("clearance '" + w.name + "': '" + p + "' " + noMatch, w.line, w.column,
+               c.keyRoot + ".clearance." + w.name + ".between");
     };
     side(w.a, cs.shapesA, cs.ropesA);
     side(w.b, cs.shapesB, cs.ropesB);
@@ -197,7 +202,8 @@ YARDSIM_REGISTER_PROVIDER(
         .key = "collision",
         .summary =
             "name: {bodies: [a, b], ground: z, shapes, materials, contact: {default: {law, k, "
-            "n, c | restitution, mu}}, ignore: [[a, b]], clearance: {w: {between: [a, b], "
+            "n, c | restitution, mu}}, groups: {g: [a, b*]}, ignore: [[a | g, b | g]], clearance: "
+            "{w: {between: [a, b], "
             "below: m}}}",
         .read = [](const std::string&, const YAML::Node& n, const spec::Reader& r,
                    const std::string& key) {

@@ -160,7 +160,7 @@ void readGroups(const YAML::Node& n, const spec::Reader& r, const std::string& k
     if (group.name == "ground" ||
         std::find(c.bodies.begin(), c.bodies.end(), group.name) != c.bodies.end()) {
       r.fail(keyNode(it), k,
-             "'" + group.name + "' names a body (or the ground): give the group another name");
+             "group '" + group.name + "' has the name of a body or of the ground: give it another");
       continue;
     }
     group.patterns = names(r, it->second, k);

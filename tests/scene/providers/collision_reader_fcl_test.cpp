@@ -62,7 +62,7 @@ TEST_CASE("collision scene: a scene with collision builds FCL objects and frees 
   const collision::FclCounts before = collision::fclCounts();
   const auto [during, after] =
       runCounted(sceneText("collision: {ground: 0, contact: {default: {law: linear, k: 1.0e8}}}\n"
-                       "clearance: {w: {between: [hoist, base], below: 0.5}}\n"));
+                           "clearance: {w: {between: [hoist, base], below: 0.5}}\n"));
   CHECK(during.worldsAlive >= before.worldsAlive + 2);
   CHECK(during.objectsAlive >= before.objectsAlive + 2 + 2);
   CHECK(during.objectsMade > before.objectsMade);

@@ -4,7 +4,8 @@
 // element `<watch>`): one entry is one collision set of a mechanical system — the bodies that touch
 // (each body's `geometry` is its collision shape unless `shapes:` gives another), an optional
 // ground, materials and the contact law of each material pair (forces/contact.hpp, evaluated at
-// every integrator stage), ignored pairs, and clearance watches between bodies and ropes
+// every integrator stage), ignored pairs (bodies, ground or groups: collision_groups.hpp), and
+// clearance watches between bodies and ropes
 // (collision/body_collision.hpp). Channels: <name>.points, <name>.normal_force, <name>.<body>.fz
 // per body, <name>.<watch>.distance per watch, and <name>.energy / <name>.power like every
 // provider.
@@ -202,9 +203,8 @@ YARDSIM_REGISTER_PROVIDER(
         .key = "collision",
         .summary =
             "name: {bodies: [a, b], ground: z, shapes, materials, contact: {default: {law, k, "
-            "n, c | restitution, mu}}, groups: {g: [a, b*]}, ignore: [[a | g, b | g]], clearance: "
-            "{w: {between: [a, b], "
-            "below: m}}}",
+            "n, c | restitution, mu}}, groups: {g: [a, b*]}, ignore: [[a | g, b | g]], "
+            "clearance: {w: {between: [a, b], below: m}}}",
         .read = [](const std::string&, const YAML::Node& n, const spec::Reader& r,
                    const std::string& key) {
           MechanicsSpec::ProviderSpec out;

@@ -25,8 +25,9 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
   };
   // (shapes) => the contact world
   for (const BodyShape& s : spec_.shapes) {
-    contactIds_.push_back(spec_.contact ? contact_.add(s.shape, poseOf(s, kin), {s.name, {s.body}})
-                                        : -1);
+    contactIds_.push_back(
+        spec_.contact ? contact_.add(s.shape, poseOf(s, kin), {s.name, {s.body, s.group, s.mask}})
+                      : -1);
     // (shape) => the points of it that can touch the ground, in its frame
     std::vector<Vector3> points;
     const Vector3 h = s.shape.size / 2;
@@ -70,7 +71,7 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
         auto& id = clearanceShapeIds_[static_cast<std::size_t>(i)];
         if (id >= 0) continue;
         const BodyShape& s = spec_.shapes[static_cast<std::size_t>(i)];
-        id = clearance_.add(s.shape, poseOf(s, kin), {s.name, {s.body}});
+        id = clearance_.add(s.shape, poseOf(s, kin), {s.name, {s.body, s.group, s.mask}});
         clearanceOwnerName_.push_back(i);
       }
     for (const auto* list : {&w.ropesA, &w.ropesB})
@@ -78,8 +79,9 @@ BodyCollision::BodyCollision(BodyCollisionSpec spec, const dynamics::Data& kin)
         const auto k = static_cast<std::size_t>(r);
         if (!clearanceRopeIds_[k].empty()) continue;
         const RopeShape& rope = spec_.ropes[k];
-        clearanceRopeIds_[k] = clearance_.addRope(ropePath(rope, kin.X_WB), rope.diameter,
-                                                  {rope.name, {ropeOwner(k)}});
+        clearanceRopeIds_[k] =
+            clearance_.addRope(ropePath(rope, kin.X_WB), rope.diameter,
+                               {rope.name, {ropeOwner(k), rope.group, rope.mask}});
         clearanceOwnerName_.resize(static_cast<std::size_t>(clearance_.size()), -1 - r);
         ignoreAttached(k, clearance_);
       }

@@ -8,11 +8,13 @@
 //
 // Filtering by rule: a body never collides with itself (its shapes share an owner), nor the
 // world's shapes with each other; a rope never with the bodies it is attached to; and the body
-// pairs of `ignore` (the caller lists jointed bodies and what the scene ignores). Materials: each
+// pairs of `ignore` (the caller lists jointed bodies and what the scene ignores), and each shape's
+// and rope's group bits and mask (collision_filter.hpp). Materials: each
 // shape has a material index; the pair (m_a, m_b) picks a contact law index from the pair table.
 //
 // Frames and units: X_WB from dynamics::Data (body pose in the world W), X_BS shape frame in
 // the body frame B, points and normals in W, m. Not thread-safe (the worlds reuse scratch).
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +32,8 @@ struct BodyShape {
   Shape shape;
   Transform X_BS = Transform::identity();
   int material = 0;  // index into the material names of the spec
+  // the filter's group bits and mask (collision_filter.hpp), in both worlds
+  std::uint32_t group = 1, mask = kAllGroups;
 };
 
 // A rope: its path points on bodies (body index, p_B m), its diameter (m).
@@ -37,6 +41,7 @@ struct RopeShape {
   std::string name;
   std::vector<std::pair<int, Vector3>> path;
   double diameter = 0.0;
+  std::uint32_t group = 1, mask = kAllGroups;  // as BodyShape's (clearance world)
 };
 
 // A clearance watch: the closest approach between the objects named in a and in b (body or
@@ -51,10 +56,11 @@ struct ClearanceSpec {
 struct BodyCollisionSpec {
   std::vector<BodyShape> shapes;
   std::vector<RopeShape> ropes;
-  int bodyCount = 1;                        // the model's bodies (with the world)
-  std::vector<std::pair<int, int>> ignore;  // body index pairs never tested (jointed bodies, ...)
-  int materialCount = 1;                    // material names
-  std::vector<int> pairLaw;                 // [m_a * materialCount + m_b] => law index
+  int bodyCount = 1;  // the model's bodies (with the world)
+  // owner pairs never tested (jointed bodies, ...): body indices, a rope r as bodyCount + r
+  std::vector<std::pair<int, int>> ignore;
+  int materialCount = 1;     // material names
+  std::vector<int> pairLaw;  // [m_a * materialCount + m_b] => law index
   std::vector<ClearanceSpec> watches;
   int maxPointsPerPair = 4;
   // false: no contact world (only the clearance watches): contacts() gives nothing

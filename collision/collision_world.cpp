@@ -93,6 +93,11 @@ Record& CollisionWorld::Impl::at(ObjectId id) {
   return records[static_cast<std::size_t>(id)];
 }
 
+FclCounts fclCounts() {
+  return {detail::worldTally.made, detail::worldTally.alive, detail::objectTally.made,
+          detail::objectTally.alive};
+}
+
 CollisionWorld::CollisionWorld(WorldOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->options = options;
   impl_->probe = std::make_unique<detail::FclObject>(std::make_shared<fcl::Sphered>(1.0));

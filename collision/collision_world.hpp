@@ -75,6 +75,16 @@ struct QueryStats {
   int contacts = 0;
 };
 
+// The FCL side of the process: worlds (one FCL broad-phase manager each) and FCL collision
+// objects (one per object, one query probe per world), made since the process started and alive
+// now. Counted when they are made and destroyed, never by a query: for tests ("a scene without
+// collision builds no FCL object", docs/collision.md).
+struct FclCounts {
+  long worldsMade = 0, worldsAlive = 0, objectsMade = 0, objectsAlive = 0;
+};
+// () => the counts now
+FclCounts fclCounts();
+
 class CollisionWorld {
  public:
   explicit CollisionWorld(WorldOptions options = {});

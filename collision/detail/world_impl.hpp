@@ -9,6 +9,7 @@
 #include <fcl/narrowphase/collision_object.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -20,6 +21,24 @@
 
 namespace yardsim::collision::detail {
 
+// How many of one kind of FCL thing were made and are alive, process-wide (fclCounts()).
+struct Tally {
+  std::atomic<long> made{0}, alive{0};
+};
+inline Tally worldTally, objectTally;
+
+// A member that counts its owner in a tally: when it is made (or copied) and destroyed only.
+template <Tally& T>
+struct Counted {
+  Counted() {
+    ++T.made;
+    ++T.alive;
+  }
+  Counted(const Counted&) : Counted() {}
+  Counted& operator=(const Counted&) { return *this; }
+  ~Counted() { --T.alive; }
+};
+
 // An FCL object whose world box we set ourselves (CollisionObject keeps it in a protected
 // member and only knows how to compute its loose default).
 class FclObject : public fcl::CollisionObjectd {
@@ -30,6 +49,9 @@ class FclObject : public fcl::CollisionObjectd {
     aabb.min_ = b.min;
     aabb.max_ = b.max;
   }
+
+ private:
+  Counted<objectTally> counted_;
 };
 
 struct Record {
@@ -65,6 +87,7 @@ inline ObjectId idOf(const fcl::CollisionObjectd* o) {
 namespace yardsim::collision {
 
 struct CollisionWorld::Impl {
+  detail::Counted<detail::worldTally> counted;  // one FCL broad-phase manager
   WorldOptions options;
   std::vector<detail::Record> records;
   std::vector<ObjectId> dirty;    // poses changed since the last update()

@@ -232,3 +232,30 @@ TEST_CASE("collision: FCL's default boxes still bound a half-space finitely") {
   w.setPose(s, Transform::translation(Vector3(3, 4, 0.6)));
   CHECK(w.candidatePairs().empty());
 }
+
+TEST_CASE("collision: the FCL counts follow worlds and objects made and destroyed") {
+  const FclCounts before = fclCounts();
+  {
+    CollisionWorld world;  // one manager and its query probe
+    FclCounts now = fclCounts();
+    CHECK(now.worldsMade == before.worldsMade + 1);
+    CHECK(now.worldsAlive == before.worldsAlive + 1);
+    CHECK(now.objectsAlive == before.objectsAlive + 1);
+    world.add(Shape::box(Vector3(1, 1, 1)), Transform::identity());
+    world.addRope({Vector3(0, 0, 5), Vector3(0, 0, 2), Vector3(3, 0, 2)}, 0.04, {"rope", {7}});
+    now = fclCounts();
+    CHECK(now.objectsMade == before.objectsMade + 4);  // probe, box, two segments
+    CHECK(now.objectsAlive == before.objectsAlive + 4);
+    // queries make no FCL object
+    world.contacts(4);
+    world.candidatePairs();
+    CHECK(fclCounts().objectsMade == now.objectsMade);
+    CollisionWorld moved(std::move(world));  // the same objects, not new ones
+    CHECK(fclCounts().worldsMade == now.worldsMade);
+    CHECK(fclCounts().objectsMade == now.objectsMade);
+  }
+  const FclCounts after = fclCounts();
+  CHECK(after.worldsAlive == before.worldsAlive);
+  CHECK(after.objectsAlive == before.objectsAlive);
+  CHECK(after.worldsMade == before.worldsMade + 1);
+}

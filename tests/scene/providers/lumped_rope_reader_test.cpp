@@ -213,6 +213,65 @@ TEST_CASE("lumped rope: the energy balance closes - undamped and with internal d
   CHECK(damped[0] < 5e-3 * damped[2]);
 }
 
+TEST_CASE(
+    "lumped rope: over a sheave at rest the ends differ from the sheave by the rope between") {
+  // (anchor 20 m below a sheave, the rope up over it and down to a 2 t block on a slider with a
+  // damper; the block placed at the continuous rope's rest) => at rest the block end carries M g,
+  // the sheave T_S = M g + w u_B (u_B the unstretched rope below the sheave on the block side),
+  // and each end's tension is T_S less the weight of the rope between it and the sheave: together
+  // 2 T_S - first - last = w L0, the whole rope's weight
+  const double M = 2000.0, L0 = 40.0, w = weight();
+  const double lamA = std::hypot(0.5, 20.0);
+  double uA = 20.0;  // (span A's unstretched length: its stretch under T_S falling by w per metre)
+  for (int it = 0; it < 50; ++it) {
+    const double ts = M * kG + w * (L0 - uA);
+    const double f = uA + (ts * uA - 0.5 * w * uA * uA) / kEA - lamA;
+    uA -= f / (1.0 + (ts - 2.0 * w * uA) / kEA);
+  }
+  const double uB = L0 - uA, lamB = uB + (M * kG * uB + 0.5 * w * uB * uB) / kEA;
+  const double ts = M * kG + w * uB;
+  testing::SceneDir dir;
+  const auto csv = simulate(dir,
+                            R"(schema_version: 1
+integrator: {method: rk4, dt: 0.0002}
+mechanics:
+  bodies:
+    head: {parent: world, joint: {type: fixed}, placement: {xyz: [0, 0, 30]}, mass: 1000, inertia: [1, 1, 1]}
+    anchor: {parent: world, joint: {type: fixed}, placement: {xyz: [-0.5, 0, 10]}, mass: 1000, inertia: [1, 1, 1]}
+    block: {parent: world, joint: {name: lift, type: prismatic, axis: [0, 0, 1], q0: )" +
+                                num(30.0 - std::sqrt(lamB * lamB - 0.25)) + R"(},
+            placement: {xyz: [0.5, 0, 0]}, mass: 2000, inertia: [100, 100, 100]}
+  ropes:
+    hoist: {model: lumped, path: [{body: anchor}, {body: head}, {body: block}], L0: 40, segments: 21, )" +
+                                kRope + R"(}
+  joint_springs:
+    brake: {body: block, coordinate: 0, k: 0, c: 5.0e4}
+record: {interval: 0.05, channels: ["hoist.*", "lift.q", "mechanics.energy_balance", "mechanics.work"]}
+)",
+                            10.0);
+  const auto& r = csv.rows.back();
+  const double first = r[col(csv, "hoist.first_tension[N]")],
+               last = r[col(csv, "hoist.last_tension[N]")],
+               sheave = r[col(csv, "hoist.sheave_tension[N]")];
+  INFO("first " << first << " N, last " << last << " N, sheave " << sheave << " N against " << ts
+                << " N; rope weight " << w * L0 << " N");
+  CHECK(last == Approx(M * kG).epsilon(1e-3));
+  CHECK(sheave == Approx(ts).epsilon(1e-3));
+  CHECK(2.0 * sheave - first - last == Approx(w * L0).epsilon(2e-3));
+  CHECK(r[col(csv, "hoist.max_tension[N]")] == Approx(sheave).epsilon(1e-9));
+  // (the nodes next to the sheave and both spans' nodes are bodies)
+  CHECK(csv.column("hoist.a.node1.z[m]") > 0);
+  CHECK(csv.column("hoist.b.node1.z[m]") > 0);
+  // (energy balance: the brake's and the rope's damping are the work)
+  const int balance = col(csv, "mechanics.energy_balance[J]"), work = col(csv, "mechanics.work[J]");
+  double drift = 0.0;
+  for (const auto& row : csv.rows)
+    drift = std::max(drift, std::abs(row[balance] - csv.rows[0][balance]));
+  INFO("balance drift " << drift << " J, work " << r[work] << " J");
+  CHECK(std::abs(r[work]) > 1.0);
+  CHECK(drift < 0.05 * std::abs(r[work]));
+}
+
 TEST_CASE("lumped rope: problems at their nodes") {
   testing::SceneDir dir;
   std::string text = hanging(2000.0, 20.0, 10, 0.0);

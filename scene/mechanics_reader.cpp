@@ -336,7 +336,8 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       rope.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       const std::string k = rope.name;
-      // (model: lumped) => a rope with mass whose nodes are bodies (scene/providers/lumped_rope_reader.hpp)
+      // (model: lumped) => a rope with mass whose nodes are bodies
+      // (scene/providers/lumped_rope_reader.hpp)
       const YAML::Node model = n.IsMap() ? n["model"] : YAML::Node();
       if (model && model.IsScalar() && model.Scalar() == "lumped") {
         if (!rr.keys(n, providers::lumpedRopeKeys(), k)) continue;

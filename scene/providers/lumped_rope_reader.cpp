@@ -1,8 +1,10 @@
 // `ropes:` entries with `model: lumped`: a crane rope (hoist wire, sling) with mass, the
-// lumped-mass line of the mooring lines between the two points of its path, in still air: its
-// weight with the air's buoyancy, no drag, no added mass, no sea bed. Channels: the force on each
-// end's body, the largest segment tension, the stretched length; the inner nodes are bodies
-// `<rope>.node<i>` (their positions are their channels, their spheres are drawn in the replay).
+// lumped-mass line of the mooring lines between the two points of its path
+// (forces/lines/lumped_line_provider.hpp), or over the middle one of three, a sheave
+// (forces/lines/lumped_rope_over_sheave.hpp); in still air: its weight with the air's buoyancy,
+// no drag, no added mass, no sea bed. Channels: the force on each end's body, the largest segment
+// tension, the stretched length, over a sheave the tension there; the inner nodes are bodies
+// (their positions are their channels, their spheres are drawn in the replay).
 #include "scene/providers/lumped_rope_reader.hpp"
 
 #include <algorithm>

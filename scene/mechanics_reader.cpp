@@ -336,29 +336,10 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       rope.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       const std::string k = rope.name;
-      // (model: lumped) => a rope with mass whose nodes are bodies
-      // (scene/providers/lumped_rope_reader.hpp)
-      const YAML::Node model = n.IsMap() ? n["model"] : YAML::Node();
-      if (model && model.IsScalar() && model.Scalar() == "lumped") {
-        if (!rr.keys(n, providers::lumpedRopeKeys(), k)) continue;
-        std::vector<MechanicsSpec::Point> path;
-        if (rr.required(n, "path", k, "a list of 2 points {body, point: [x, y, z]}"))
-          path = points(rr, n["path"], k + ".path", 2);
-        if (path.size() < 2) continue;
-        if (auto ps = providers::readLumpedRope(rr, n, k, path, spec.gravity)) {
-          ps->kind = "ropes";
-          ps->name = rope.name;
-          spec.providers.push_back(std::move(*ps));
-        }
-        continue;
-      }
+      if (providers::readLumpedRope(rr, n, k, spec)) continue;  // model: lumped, else massless
       auto keys = materialKeys;
       keys.insert(keys.end(), {"path", "parts", "model"});
       if (!rr.keys(n, keys, k)) continue;
-      if (model && (!model.IsScalar() || model.Scalar() != "massless"))
-        rr.fail(model, k + ".model",
-                "expected massless (the default) or lumped, got '" +
-                    (model.IsScalar() ? model.Scalar() : std::string("a collection")) + "'");
       if (rr.required(n, "path", k, "a list of at least 2 points {body, point: [x, y, z]}"))
         rope.path = points(rr, n["path"], k + ".path", 2);
       rope.material = material(rr, n, k);

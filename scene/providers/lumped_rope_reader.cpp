@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "forces/lines/lumped_line_provider.hpp"
@@ -157,16 +158,9 @@ mechanics::MechanicsSpec::ProviderBuild overSheaveBuild(const forces::LumpedLine
   };
 }
 
-}  // namespace
-
-const std::vector<std::string>& lumpedRopeKeys() {
-  static const std::vector<std::string> keys{
-      "model",   "path",          "EA",    "L0",  "mass_per_length", "diameter", "segments",
-      "damping", "damping_ratio", "parts", "mbl", "min_length"};
-  return keys;
-}
-
-std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumpedRope(
+// (a lumped rope's entry, its path read, the block's gravity) => its provider spec, or nullopt
+// after a problem reported at its node
+std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumped(
     const spec::Reader& r, const YAML::Node& n, const std::string& key,
     const std::vector<mechanics::MechanicsSpec::Point>& path, const dynamics::Vector3& gravity) {
   bool refused = false;
@@ -247,6 +241,43 @@ std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumpedRope(
         lumpedRopeOutputs);
   };
   return out;
+}
+
+}  // namespace
+
+bool readLumpedRope(const spec::Reader& r, const YAML::Node& n, const std::string& key,
+                    mechanics::MechanicsSpec& spec) {
+  const YAML::Node model = n.IsMap() ? n["model"] : YAML::Node();
+  if (!model) return false;
+  if (!model.IsScalar() || model.Scalar() != "lumped") {
+    if (!model.IsScalar() || model.Scalar() != "massless")
+      r.fail(model, key + ".model",
+             "expected massless (the default) or lumped, got '" +
+                 (model.IsScalar() ? model.Scalar() : std::string("a collection")) + "'");
+    return false;
+  }
+  static const std::vector<std::string> keys{
+      "model",   "path",          "EA",    "L0",  "mass_per_length", "diameter", "segments",
+      "damping", "damping_ratio", "parts", "mbl", "min_length"};
+  if (!r.keys(n, keys, key)) return true;
+  // (path: first end, [sheave,] last end) => points; their bodies are checked when the fragments
+  // are merged
+  const YAML::Node at = n["path"];
+  if (!at || !at.IsSequence() || at.size() < 2) {
+    r.fail(at ? at : n, key + ".path",
+           "expected a list of 2 or 3 points {body, point: [x, y, z]} (first end, [sheave,] last "
+           "end)");
+    return true;
+  }
+  std::vector<mechanics::MechanicsSpec::Point> path;
+  for (std::size_t i = 0; i < at.size(); ++i)
+    path.push_back(readPoint(r, at[i], key + ".path[" + std::to_string(i) + "]"));
+  if (auto ps = readLumped(r, n, key, path, spec.gravity)) {
+    ps->kind = "ropes";
+    ps->name = key;
+    spec.providers.push_back(std::move(*ps));
+  }
+  return true;
 }
 
 }  // namespace yardsim::scene::providers

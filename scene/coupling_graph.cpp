@@ -149,6 +149,19 @@ void checkElementReferences(Scene& scene, Diagnostics& diags) {
               owner[e.name] = s->name;
             }
         const std::string full = resolveName(from, ref.name, names);
+        if (full.empty() && ref.kind == "rope") {
+          // (a rope with model: lumped, a provider of kind ropes) => it has no winch yet
+          std::vector<std::string> lumped;
+          for (const auto& s : scene.systems)
+            for (const auto& e : systemElements(*s))
+              if (e.kind == "ropes") lumped.push_back(e.name);
+          if (!resolveName(from, ref.name, lumped).empty()) {
+            diags.error(a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
+                        "rope '" + ref.name + "' has model: lumped, which has no winch yet; pay "
+                        "out a massless rope (docs/lines.md, crane ropes with mass)");
+            continue;
+          }
+        }
         if (full.empty()) {
           diags.error(a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
                       "no " + ref.kind + " '" + ref.name + "' in the scene's mechanics (seen from '" +

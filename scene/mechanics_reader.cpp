@@ -13,6 +13,7 @@
 #include "scene/added_mass_reader.hpp"
 #include "scene/floating_reader.hpp"
 #include "scene/provider_readers.hpp"
+#include "scene/providers/lumped_rope_reader.hpp"
 #include "scene/spec_reader.hpp"
 #include "scene/yard_reader.hpp"
 
@@ -335,8 +336,9 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
       rope.name = it->first.as<std::string>();
       const YAML::Node n = it->second;
       const std::string k = rope.name;
+      if (providers::readLumpedRope(rr, n, k, spec)) continue;  // model: lumped, else massless
       auto keys = materialKeys;
-      keys.insert(keys.end(), {"path", "parts"});
+      keys.insert(keys.end(), {"path", "parts", "model"});
       if (!rr.keys(n, keys, k)) continue;
       if (rr.required(n, "path", k, "a list of at least 2 points {body, point: [x, y, z]}"))
         rope.path = points(rr, n["path"], k + ".path", 2);

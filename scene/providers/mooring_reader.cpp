@@ -16,6 +16,7 @@
 #include "forces/lines/catenary_line.hpp"
 #include "forces/lines/lumped_line_provider.hpp"
 #include "forces/provider_outputs.hpp"
+#include "scene/providers/lumped_line_bodies.hpp"
 #include "scene/providers/reader_support.hpp"
 
 namespace yardsim::scene::providers {
@@ -132,27 +133,7 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
     r.fail(n, key, e.what());
     return;
   }
-  // (full name, ends at q0) => the inner nodes: point masses on translation joints from the world
-  out.bodies = [p](const std::string& name, const std::vector<dynamics::Vector3>& at) {
-    const forces::LumpedLine line(p, name);
-    std::vector<MechanicsSpec::Body> bodies;
-    for (const auto& node : forces::lumpedLineNodes(line, name, at.at(0), at.at(1))) {
-      MechanicsSpec::Body b;
-      b.name = b.jointName = node.name;
-      b.parent = "world";
-      b.joint = dynamics::Joint::translation();
-      b.X_PJ = dynamics::Transform::identity();
-      b.mass = node.mass;
-      // (a point mass; the translation joint never turns it) => the inertia of a sphere of the
-      // line's diameter, only to keep the body's inertia positive definite
-      b.inertia = 0.1 * node.mass * p.diameter * p.diameter * dynamics::Matrix3::Identity();
-      b.q0 = {node.p_W.x(), node.p_W.y(), node.p_W.z()};
-      b.visual.shape = MechanicsSpec::Visual::Shape::Sphere;
-      b.visual.size = dynamics::Vector3(p.diameter, 0.0, 0.0);
-      bodies.push_back(std::move(b));
-    }
-    return bodies;
-  };
+  out.bodies = lumpedLineBodies(p);  // (full name, ends at q0) => the inner nodes
   // (full name, the system with its sea, ends) => the provider; the line sees the scene's waves
   // (regular or irregular components) and current, owned with it; none in still water
   out.buildFromSystem = [p](const std::string& name, const mechanics::BuiltMechanics& mech,

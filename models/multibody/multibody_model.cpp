@@ -1,7 +1,6 @@
 #include "models/multibody/multibody_model.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -20,10 +19,7 @@ void appendStateText(std::string& out, const MultibodyState& s) {
   out += "q=[";
   for (Eigen::Index i = 0; i < s.q.size(); ++i) {
     if (i) out += ',';
-    char buf[32];  // "%g" of a double: at most 13 characters ("-1.23457e-308")
-    const auto [end, ec] =
-        std::to_chars(buf, buf + sizeof buf, s.q[i], std::chars_format::general, 6);
-    out.append(buf, ec == std::errc() ? end : buf);
+    devs::appendGeneral6(out, s.q[i]);  // "%g"
   }
   out += ']';
 }

@@ -18,14 +18,9 @@ namespace yardsim::devs {
 void appendJsonString(std::string& out, std::string_view text);
 // (number) => JSON number appended to out (non-finite values as null, since JSON has none)
 void appendJsonNumber(std::string& out, double value);
-// (number) => printf's "%g" text of it appended to out (six significant digits; "nan", "inf"),
-// the same bytes as std::to_chars(general, 6), in a fraction of its time for most values
-void appendGeneral6(std::string& out, double value);
 
 template <class T>
-concept Streamable = requires(std::ostream& os, const T& v) {
-  os << v;
-};
+concept Streamable = requires(std::ostream& os, const T& v) { os << v; };
 
 template <class T>
 struct TraceFormat {

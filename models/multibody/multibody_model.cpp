@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "devs/general_text.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"

@@ -14,7 +14,12 @@ std::string stepModulePath() {
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&stepModulePath), &info) == 0 || info.dli_fname == nullptr)
     return "libyardsim_step.so";
-  return (std::filesystem::path(info.dli_fname).parent_path() / "libyardsim_step.so").string();
+  // (the loader's path, e.g. bin/../lib/../lib/libyardsim_forces.so) => without the detours
+  const std::filesystem::path module =
+      std::filesystem::path(info.dli_fname).parent_path() / "libyardsim_step.so";
+  std::error_code error;
+  const std::filesystem::path plain = std::filesystem::weakly_canonical(module, error);
+  return (error ? module : plain).string();
 #else
   return {};
 #endif

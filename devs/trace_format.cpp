@@ -1,39 +1,88 @@
 #include "devs/trace_format.hpp"
 
+#include <bit>
 #include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace yardsim::devs {
 
 void appendJsonString(std::string& out, std::string_view text) {
   out += '"';
-  for (char c : text) {
+  // (text) => runs that need no escape appended whole, the escapes one by one
+  std::size_t run = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20) continue;
+    out.append(text.data() + run, i - run);
+    run = i + 1;
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-          out += buf;
-        } else {
-          out += c;
-        }
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default: {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+        out += buf;
+      }
     }
   }
+  out.append(text.data() + run, text.size() - run);
   out += '"';
 }
+
+namespace {
+
+// The last few numbers written and their text: a trace writes one time several times in a row
+// (a transition's record, the state's record and the time inside the state), and the shortest
+// round-trip conversion costs some 550 instructions. Keyed by the bits, so -0.0 and 0.0 (equal
+// as doubles, written "-0" and "0") stay apart; one cache per thread.
+struct NumberCache {
+  static constexpr std::size_t kSize = 4;
+  std::uint64_t bits[kSize] = {};
+  char text[kSize][32] = {};
+  unsigned char length[kSize] = {};  // 0: empty
+  std::size_t next = 0;              // the entry replaced next (round robin)
+};
+thread_local NumberCache tCache;
+
+}  // namespace
 
 void appendJsonNumber(std::string& out, double value) {
   if (!std::isfinite(value)) {
     out += "null";
     return;
   }
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  NumberCache& c = tCache;
+  for (std::size_t i = 0; i < NumberCache::kSize; ++i)
+    if (c.length[i] != 0 && c.bits[i] == bits) {
+      out.append(c.text[i], c.length[i]);
+      return;
+    }
+  // (value) => its shortest round-trip form, kept in the cache
   char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);  // shortest round-trip form
-  out.append(buf, ec == std::errc() ? end : buf);
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
+  const auto n = static_cast<std::size_t>(ec == std::errc() ? end - buf : 0);
+  out.append(buf, n);
+  if (n == 0) return;
+  std::memcpy(c.text[c.next], buf, n);
+  c.bits[c.next] = bits;
+  c.length[c.next] = static_cast<unsigned char>(n);
+  c.next = (c.next + 1) % NumberCache::kSize;
 }
 
 }  // namespace yardsim::devs

@@ -1,7 +1,9 @@
 #include "run/timeseries_writer.hpp"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace yardsim::run {
@@ -26,6 +28,7 @@ TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scen
                                    const std::string& restartedFrom)
     : out_(file), channels_(std::move(channels)), lastFlush_(std::chrono::steady_clock::now()) {
   if (!out_) throw std::runtime_error("cannot write '" + file.string() + "'");
+  last_.assign(channels_.size(), {});
   out_ << "# yardsim " << kVersion << "\n"
        << "# scene " << scene.file.string() << "\n"
        << "# scene_sha256 " << scene.sha256 << "\n"
@@ -44,9 +47,22 @@ TimeseriesWriter::~TimeseriesWriter() { out_.flush(); }
 void TimeseriesWriter::sample(double t) {
   line_.clear();
   appendCsvNumber(line_, t);
-  for (const auto& c : channels_) {
+  for (std::size_t i = 0; i < channels_.size(); ++i) {
     line_ += ',';
-    appendCsvNumber(line_, c.read());
+    // (value) => the previous row's text again when the bits are the same, else converted
+    const double v = channels_[i].read();
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    Cell& cell = last_[i];
+    if (cell.length != 0 && cell.bits == bits) {
+      line_.append(cell.text, cell.length);
+      continue;
+    }
+    const std::size_t at = line_.size();
+    appendCsvNumber(line_, v);
+    const std::size_t n = line_.size() - at;
+    cell.length = static_cast<unsigned char>(n <= sizeof cell.text ? n : 0);
+    if (cell.length != 0) line_.copy(cell.text, n, at);
+    cell.bits = bits;
   }
   line_ += '\n';
   out_ << line_;

@@ -4,6 +4,7 @@
 // Rows are flushed as the run goes (at least every 0.2 s of wall time, and when the writer is
 // destroyed), so a run that fails keeps every sample taken before the failure.
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -32,6 +33,14 @@ class TimeseriesWriter {
   std::ofstream out_;
   std::vector<Channel> channels_;
   std::string line_;
+  // per channel, the last value written and its text (a channel often holds still for many rows;
+  // keyed by the bits, so -0 and 0 stay apart)
+  struct Cell {
+    std::uint64_t bits = 0;
+    char text[32] = {};
+    unsigned char length = 0;  // 0: none
+  };
+  std::vector<Cell> last_;
   std::size_t rows_ = 0;
   std::chrono::steady_clock::time_point lastFlush_;
 };

@@ -1,10 +1,10 @@
 #include "models/multibody/multibody_model.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
+#include "devs/general_text.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/loop_constraints.hpp"
@@ -20,10 +20,7 @@ void appendStateText(std::string& out, const MultibodyState& s) {
   out += "q=[";
   for (Eigen::Index i = 0; i < s.q.size(); ++i) {
     if (i) out += ',';
-    char buf[32];  // "%g" of a double: at most 13 characters ("-1.23457e-308")
-    const auto [end, ec] =
-        std::to_chars(buf, buf + sizeof buf, s.q[i], std::chars_format::general, 6);
-    out.append(buf, ec == std::errc() ? end : buf);
+    devs::appendGeneral6(out, s.q[i]);  // "%g"
   }
   out += ']';
 }

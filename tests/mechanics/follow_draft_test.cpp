@@ -229,7 +229,8 @@ TEST_CASE("a trolley started at once on a floating box makes it recoil with its 
   // (M + A11) V + m (V + 0.5) = 0: the box recoils at V = -0.5 m / (M + A11 + m), A11 the panel
   // solver's at the 2 m draft; and the impulse's work is the kinetic energy it gave the box, the
   // trolley and the water (the energy balance does not jump). With the added mass of the box's
-  // start (dry: none) in the impulse, the recoil is 4 % faster and the balance jumps by A11 V^2 / 2.
+  // start (dry: none) in the impulse, the recoil is 4 % faster and the balance jumps by
+  // A11 V^2 / 2.
   const char* yaml = R"(schema_version: 1
 integrator: {method: rk4, dt: 0.01}
 components:
@@ -286,7 +287,8 @@ record: {interval: 0.05}
   const double kinetic = 0.5 * ((kMass + A(0, 0)) * V * V + m * (V + 0.5) * (V + 0.5));
   for (const double s : {6.0, 10.0}) {
     const double jump = at(s + 0.1)[balance] - at(s - 0.1)[balance];
-    INFO("t = " << s << " s: the balance moves " << jump << " J; kinetic energy " << kinetic << " J");
+    INFO("t = " << s << " s: the balance moves " << jump << " J; kinetic energy " << kinetic
+                << " J");
     CHECK(std::abs(jump) < 1e-6 * kinetic);
   }
 }

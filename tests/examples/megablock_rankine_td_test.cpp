@@ -24,7 +24,7 @@
 using namespace yardsim;
 
 namespace {
-constexpr double kTol = 0.01;  // of a rope's static tension (README.md)
+constexpr double kTol = 0.002;  // of a rope's static tension: 5e-4 measured (README.md)
 const std::string kDir = std::string(YARDSIM_SOURCE_DIR) + "/examples/megablock_floating_crane/";
 
 // (scene file) => its lines after the header comment, without the `name:` line and without the
@@ -119,11 +119,11 @@ TEST_CASE(
     CHECK(td.still.at(name) == Approx(s).epsilon(1e-6));
   }
   // (the same panels, the response at a 3.0 m draft, the marched model at the crane's start
-  // pose, 3.16 m) => A-infinity in heave, roll and pitch within a few per cent ([angular; linear])
+  // pose, 3.16 m) => A-infinity in heave, roll and pitch within 2 % ([angular; linear])
   for (const int k : {0, 1, 5}) {
     INFO("diagonal element " << k << ": response " << ir.addedMass(k, k) << ", marched "
                              << td.addedMass(k, k));
-    CHECK(td.addedMass(k, k) == Approx(ir.addedMass(k, k)).epsilon(0.05));
+    CHECK(td.addedMass(k, k) == Approx(ir.addedMass(k, k)).epsilon(0.02));  // 0.6-0.9 %
   }
   // (the hoist from 5 s) => every rope's tension on the two paths within kTol of its static level
   // at every 0.5 s, while the hoist's start moves it by more than that

@@ -78,9 +78,11 @@ SourceMark placeOf(const Fragment& f, const std::string& section, const std::str
   return where;
 }
 
-// (instance tree, accumulated placement) => every fragment, parsed
-void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>& out,
-             Diagnostics& diags) {
+// (instance tree, accumulated placement, the root's water) => every fragment, parsed; an
+// included fragment reads the root's water (its hydrodynamics solvers and door checks see the
+// scene's depth, density and sea)
+void collect(const Instance& inst, const Transform& X_WP, const YAML::Node& rootWater,
+             std::vector<Fragment>& out, Diagnostics& diags) {
   if (inst.atomic()) return;
   if (inst.mechanics.IsDefined()) {
     Params p;
@@ -93,7 +95,12 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
             inst.mechanicsWhere);
     // (the environment) => the root's only: one sea and one wind per scene
     for (const char* key : {"water", "wind"}) {
-      p.set(key, inst.mechanics[key] ? inst.mechanics[key] : YAML::Node(YAML::NodeType::Null), inst.mechanicsWhere);
+      const bool rootsWater = !inst.path.empty() && key == std::string("water") && rootWater;
+      p.set(key,
+            inst.mechanics[key] ? inst.mechanics[key]
+            : rootsWater        ? rootWater
+                                : YAML::Node(YAML::NodeType::Null),
+            inst.mechanicsWhere);
       if (inst.mechanics[key] && !inst.path.empty())
         diags.error(inst.mechanicsWhere, joinKey(inst.keyPath, "mechanics") + "." + key,
                     std::string("only the scene root declares the ") + key +
@@ -141,7 +148,7 @@ void collect(const Instance& inst, const Transform& X_WP, std::vector<Fragment>&
     out.push_back({&inst, X_WP, std::move(spec)});
   }
   for (const auto& child : inst.children)
-    collect(*child, X_WP * placementTransform(child->placement), out, diags);
+    collect(*child, X_WP * placementTransform(child->placement), rootWater, out, diags);
 }
 
 }  // namespace
@@ -179,7 +186,9 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
 std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Scene& scene,
                                                                        Diagnostics& diags) {
   std::vector<Fragment> fragments;
-  collect(scene.root, Transform::identity(), fragments, diags);
+  const YAML::Node& root = scene.root.mechanics;
+  collect(scene.root, Transform::identity(), root.IsMap() ? root["water"] : YAML::Node(), fragments,
+          diags);
   if (fragments.empty() || diags.hasErrors()) return {};
 
   // (fragments) => bodies with full names, references resolved, placements applied

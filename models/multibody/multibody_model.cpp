@@ -11,6 +11,7 @@
 #include "dynamics/rnea.hpp"
 #include "dynamics/static_equilibrium.hpp"
 #include "mechanics/energy.hpp"
+#include "mechanics/follow_draft.hpp"
 #include "mechanics/stage.hpp"
 #include "models/numerical_error.hpp"
 
@@ -176,6 +177,12 @@ void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::Vect
   // of kinetic energy
   const auto& m = system_.model();
   auto& d = ws_.data;
+  // (q) => the added mass at this pose where it follows the draft (the impulse's mass matrix and
+  // both kinetic energies read it), not whatever the scratch held last
+  if (!system_.draftAddedMass().empty()) {
+    dynamics::forwardKinematics(m, d.scratch, x.q);
+    mechanics::followDraft(system_, d.scratch, d.scratch);
+  }
   const double before = dynamics::kineticEnergy(m, d.scratch, x.q, x.v);
   mechanics::prescribedDofs(system_, d, x.setPoints);
   d.kernel.hybrid().setPrescribed(d.prescribedMask);

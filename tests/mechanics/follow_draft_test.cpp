@@ -75,6 +75,13 @@ mechanics:
 record: {interval: 0.05}
 )";
 
+// (time series, time s) => the first row at or after s (the last one when none is)
+std::vector<double> rowAt(const testing::CsvFile& csv, double s) {
+  for (const auto& r : csv.rows)
+    if (r[0] >= s - 1e-9) return r;
+  return csv.rows.back();
+}
+
 }  // namespace
 
 TEST_CASE("a box lowered slowly into still water hangs on its weight less its buoyancy") {
@@ -220,4 +227,128 @@ record: {interval: 0.1}
   const double k = 2 * 1.0e6 / 19.9;
   CHECK((up.back() - up.front()) / static_cast<double>(up.size() - 1) ==
         Approx(2 * M_PI * std::sqrt((kMass + A(0, 0)) / k)).epsilon(0.005));
+}
+
+TEST_CASE("a trolley started at once on a floating box makes it recoil with its added mass") {
+  // (the box lowered from the air to a 2 m draft by a servo on its heave joint, 1 .. 4.5 s, then a
+  // 200 t trolley on its deck started by a prescribed joint_actor at 6 s: a velocity step of
+  // 0.5 m/s) => the surge momentum of the box, the water it carries and the trolley stays zero,
+  // (M + A11) V + m (V + 0.5) = 0: the box recoils at V = -0.5 m / (M + A11 + m), A11 the panel
+  // solver's at the 2 m draft; and the impulse's work is the kinetic energy it gave the box, the
+  // trolley and the water (the energy balance does not jump). With the added mass of the box's
+  // start (dry: none) in the impulse, the recoil is 4 % faster and the balance jumps by
+  // A11 V^2 / 2.
+  const char* yaml = R"(schema_version: 1
+integrator: {method: rk4, dt: 0.01}
+components:
+  lower: {type: joint_actor, params: {joint: heave, target: 0.0, speed: 1.0, start_at: 1.0}}
+  start: {type: joint_actor, params: {joint: trolley_x, target: 2.0, speed: 0.5, mode: prescribed, start_at: 6.0}}
+mechanics:
+  gravity: [0, 0, 0]
+  drive_bandwidth: 5.0
+  water: {density: 1025.0, level: 0.0}
+  bodies:
+    carrier:
+      parent: world
+      joint: {name: heave, type: prismatic, axis: [0, 0, 1], q0: 2.5, hold: true}
+      mass: 1.0e3
+      inertia: [1.0e3, 1.0e3, 1.0e3]
+    box:
+      parent: carrier
+      joint: {type: prismatic, axis: [1, 0, 0], q0: 0}
+      mass: 4.0e5
+      inertia: [2.7e6, 1.4e7, 1.5e7]
+      added_mass: {hull: box.obj, follow_draft: [1.0, 2.0, 3.0]}
+    trolley:
+      parent: box
+      joint: {name: trolley_x, type: prismatic, axis: [1, 0, 0], q0: 0}
+      placement: {xyz: [0, 0, 3]}
+      mass: 2.0e5
+      inertia: [1.0e5, 1.0e5, 1.0e5]
+record: {interval: 0.05}
+)";
+  testing::SceneDir dir;
+  const auto csv = runBox(dir, yaml, 11.0);
+  const int t = 0, x = csv.column("box.x[m]"), z = csv.column("box.z[m]"),
+            balance = csv.column("mechanics.energy_balance[J]");
+  REQUIRE(std::min({x, z, balance}) > 0);
+  auto at = [&](double s) { return rowAt(csv, s); };
+  // (box.x over the ramp, 6.5 .. 9.5 s: the trolley moves 2 m at 0.5 m/s from 6 s) => V
+  const auto r0 = at(6.5), r1 = at(9.5);
+  REQUIRE(std::abs(r0[z]) < 1e-3);  // lowered to its 2 m draft and held there
+  const Matrix6 A = forces::hydro::floatingAddedMass(
+      forces::hydro::panelMesh(forces::boxMesh(Vector3(kL, kB, 4), 10, 4, 4)),
+      dynamics::Transform::identity(), kRho, 0.0);
+  const double m = 2.0e5, V = (r1[x] - r0[x]) / (r1[t] - r0[t]);
+  INFO("A11 " << A(0, 0) << " kg, recoil " << V << " m/s");
+  REQUIRE(A(0, 0) > 0.05 * kMass);
+  CHECK(V == Approx(-0.5 * m / (kMass + A(0, 0) + m)).epsilon(0.002));
+  // (the trolley locked at 2 m: 10 s) => the box stops with it (against 0.08 m while moving)
+  CHECK(std::abs(csv.rows.back()[x] - at(10.5)[x]) < 1e-5);
+  // (each impulse) => no jump in the energy balance, against the kinetic energy it gives
+  const double kinetic = 0.5 * ((kMass + A(0, 0)) * V * V + m * (V + 0.5) * (V + 0.5));
+  for (const double s : {6.0, 10.0}) {
+    const double jump = at(s + 0.1)[balance] - at(s - 0.1)[balance];
+    INFO("t = " << s << " s: the balance moves " << jump << " J; kinetic energy " << kinetic
+                << " J");
+    CHECK(std::abs(jump) < 1e-6 * kinetic);
+  }
+}
+
+TEST_CASE(
+    "a floating box welded in a closed loop accelerates with its added mass under generalized "
+    "alpha") {
+  // (the box lowered from the air to a 2 m draft by a servo on its heave joint, 1 .. 4.5 s; a 200 t
+  // rider on a free joint welded to its deck by a loop closure; pushed along x by 10 kN from 6 s,
+  // generalized alpha: its loop terms take the mass matrix with the added mass at the stage's
+  // draft) => x = F t^2 / (2 (M + A11 + m)), A11 the panel solver's at the 2 m draft (with no
+  // added mass in the loop terms' mass matrix, as at the box's dry start, it came out 2.5 % low)
+  const char* yaml = R"(schema_version: 1
+integrator: {method: generalized_alpha, dt: 0.01}
+components:
+  lower: {type: joint_actor, params: {joint: heave, target: 0.0, speed: 1.0, start_at: 1.0}}
+mechanics:
+  gravity: [0, 0, 0]
+  drive_bandwidth: 5.0
+  water: {density: 1025.0, level: 0.0}
+  bodies:
+    carrier:
+      parent: world
+      joint: {name: heave, type: prismatic, axis: [0, 0, 1], q0: 2.5, hold: true}
+      mass: 1.0e3
+      inertia: [1.0e3, 1.0e3, 1.0e3]
+    box:
+      parent: carrier
+      joint: {type: prismatic, axis: [1, 0, 0], q0: 0}
+      mass: 4.0e5
+      inertia: [2.7e6, 1.4e7, 1.5e7]
+      added_mass: {hull: box.obj, follow_draft: [1.0, 2.0, 3.0]}
+    rider:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 5.5]}}
+      mass: 2.0e5
+      inertia: [1.0e5, 1.0e5, 1.0e5]
+  loops:
+    weld: {body_a: box, frame_a: {xyz: [0, 0, 3]}, body_b: rider, frame_b: {xyz: [0, 0, 0]}, constrain: weld}
+  loads:
+    push: {body: box, frame: world, series: [[0, 0, 0, 0, 0, 0, 0], [6, 0, 0, 0, 0, 0, 0], [6.0001, 1.0e4, 0, 0, 0, 0, 0], [11, 1.0e4, 0, 0, 0, 0, 0]]}
+record: {interval: 0.05}
+)";
+  testing::SceneDir dir;
+  const auto csv = runBox(dir, yaml, 11.0);
+  const int x = csv.column("box.x[m]"), z = csv.column("box.z[m]");
+  REQUIRE(std::min(x, z) > 0);
+  auto at = [&](double s) { return rowAt(csv, s); };
+  REQUIRE(std::abs(at(6.0)[z]) < 0.01);  // lowered to its 2 m draft
+  const Matrix6 A = forces::hydro::floatingAddedMass(
+      forces::hydro::panelMesh(forces::boxMesh(Vector3(kL, kB, 4), 10, 4, 4)),
+      dynamics::Transform::identity(), kRho, 0.0);
+  // (x at 8 and 11 s, from where it was at 6 s) => the acceleration, twice
+  const double x6 = at(6.0)[x], a8 = 2 * (at(8.0)[x] - x6) / 4.0,
+               a11 = 2 * (at(11.0)[x] - x6) / 25.0;
+  const double expected = 1.0e4 / (kMass + A(0, 0) + 2.0e5);
+  INFO("A11 " << A(0, 0) << " kg; acceleration " << a8 << ", " << a11 << " m/s^2, expected "
+              << expected);
+  CHECK(a8 == Approx(expected).epsilon(0.005));
+  CHECK(a11 == Approx(expected).epsilon(0.005));
 }

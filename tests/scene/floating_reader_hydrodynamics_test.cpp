@@ -348,3 +348,60 @@ TEST_CASE("rankine_td is built by the method registered for it") {
   auto root = scene::assemble(*r.scene);
   CHECK(built >= 1);  // (the door's checks build the system too)
 }
+
+TEST_CASE("a hydrodynamics block in an included file sees the scene root's water and sea") {
+  // (a crane-like file included by the root, its hydrodynamics by a registered method) => the
+  // method's request and its door check get the root's depth and density, and its check the
+  // root's sea (they used to get the default water: deep, and no sea)
+  testing::SceneDir dir;
+  meshes(dir);
+  double depth = 0.0, density = 0.0;
+  std::size_t components = 0;
+  auto probe = [&](const HydrodynamicsRequest& q, const forces::AiryWaves& sea) {
+    depth = q.water.depth;
+    density = q.water.density;
+    components = sea.size();
+    return std::vector<std::string>{};
+  };
+  registerTimeDomainMethod(
+      {"water_probe",
+       [](const std::string& name, const dynamics::Model& model, int body,
+          const HydrodynamicsRequest& q,
+          std::shared_ptr<const forces::AiryWaves> sea) -> std::unique_ptr<forces::ForceProvider> {
+         HydrodynamicsRequest r = q;
+         r.settings["scale"] = 1;
+         r.headings = {0.0};
+         return std::make_unique<ImpulseResponseForce>(
+             name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
+       },
+       probe,
+       {}});
+  dir.write("barge.yaml", R"(schema_version: 1
+mechanics:
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 246000
+      inertia: [1.64e6, 8.53e6, 9.51e6]
+  hydrostatics:
+    hull: {body: barge, mesh: meshes/barge.stl}
+  hydrodynamics:
+    hd: {body: barge, method: water_probe, hull: meshes/barge.stl}
+)");
+  const auto r = scene::loadScene(dir.write("s.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.02}
+components:
+  crane: {include: barge.yaml}
+mechanics:
+  water:
+    density: 1020
+    depth: 20
+    waves: [{height: 1, period: 8}, {height: 0.5, period: 6}]
+)"));
+  INFO(r.diagnostics.report());
+  REQUIRE(r.scene);
+  CHECK(depth == 20.0);
+  CHECK(density == 1020.0);
+  CHECK(components == 2);
+}

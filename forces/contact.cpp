@@ -96,8 +96,8 @@ double ContactForce::doPower(const Stage& s) const {
   return p;
 }
 
-// (stage) => (count of points pressing: F_n > 0, deeper than kPressingDepth) + 2^20 x (sum of a hash of their body pairs and
-// materials): independent of the order the source lists its points in
+// (stage) => (count of points pressing: F_n > 0, deeper than kPressingDepth) + 2^20 x (sum of a
+// hash of their body pairs and materials): independent of the order the source lists its points in
 std::uint64_t ContactForce::doRegime(const Stage& s) const {
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& at = scratchOf<Scratch>(s, temporary);

@@ -56,6 +56,9 @@ class CollisionSet final : public forces::ForceProvider,
     return contact_->makeScratch();
   }
   const forces::ContactForce& contact() const { return *contact_; }
+  // contacts close and open (not a set of watches only): the implicit methods sub-step a step
+  // that changes which points press (forces/force_provider.hpp, regime)
+  bool switches() const override { return options_.contact; }
   // (model) => the highest frequency of a body resting on its contacts under its weight: the
   // normal law's sqrt(k_eff / m) (k_eff = N k, Hunt-Crossley N n k delta^(n-1) at the static
   // depth, N = 4 points for a box, mesh or cylinder, 1 for a sphere or capsule) and friction's
@@ -72,6 +75,7 @@ class CollisionSet final : public forces::ForceProvider,
     return contact_->potentialEnergy(s);
   }
   double doPower(const forces::Stage& s) const override { return contact_->power(s); }
+  std::uint64_t doRegime(const forces::Stage& s) const override { return contact_->regime(s); }
 
  private:
   // (stage) => the contact points and the law's responses at it, in the stage's scratch or a

@@ -78,6 +78,12 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
   if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
 }
 
+std::uint64_t MultibodySystem::regime(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  if (!regime_) return 0;
+  forwardKinematics(model_, data_, q, v);
+  return regime_(t, q, v, data_);
+}
+
 void MultibodySystem::unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                                 Eigen::VectorXd& a) {
   const ExternalForces* f = stageForces(t, q, v);

@@ -22,9 +22,16 @@ class MultibodySystem final : public AccelerationSource {
   using ForceCallback = std::function<void(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Data& data,
                                            ExternalForces& forces, Eigen::VectorXd& tau)>;
 
+  /// (t, q, v, data after forward kinematics(q, v)) => the signature of the switching forces'
+  /// branches (AccelerationSource::regime).
+  using RegimeCallback =
+      std::function<std::uint64_t(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Data& data)>;
+
   explicit MultibodySystem(const Model& model);
 
   void setForces(ForceCallback callback) { callback_ = std::move(callback); }
+  /// Set when a force of the callback switches (a contact): switches() is then true.
+  void setRegime(RegimeCallback callback) { regime_ = std::move(callback); }
   void setBaumgarte(const Baumgarte& stab) { stab_ = stab; }
   /// Project positions (to tol) and velocities onto the loop manifold after every step.
   void setProjection(bool on, double tol = 1e-12) {
@@ -37,6 +44,9 @@ class MultibodySystem final : public AccelerationSource {
   void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, Eigen::VectorXd& a) override;
   void afterStep(double t, Eigen::VectorXd& q, Eigen::VectorXd& v) override;
   int constraintRows() const override { return model_.nc; }
+  bool switches() const override { return static_cast<bool>(regime_); }
+  /// (t, q, v) => the regime callback after forward kinematics (0 without one).
+  std::uint64_t regime(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
   /// (t, q, v) => ABA on the tree with the same forces, without the loops' forces.
   void unconstrainedAcceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                  Eigen::VectorXd& a) override;
@@ -67,6 +77,7 @@ class MultibodySystem final : public AccelerationSource {
   HybridDynamics hybrid_;
   Eigen::VectorXd aPrescribed_, effort_;
   ForceCallback callback_;
+  RegimeCallback regime_;
   std::shared_ptr<const JacobianPattern> pattern_;
   // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
   const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);

@@ -6,6 +6,13 @@
 
 namespace yardsim::forces {
 
+namespace {
+// m: a point touching less deep than this is not yet pressing for the regime. A contact onset is
+// located as a state event to 1e-9 s (dtss/atomic.hpp), so 1e-9 m deep or less at up to 1 m/s
+// and 1e-8 m at 10 m/s: the step from there is the one that closes the contact
+constexpr double kPressingDepth = 1e-8;
+}  // namespace
+
 ContactForce::ContactForce(std::string name, ContactSource source, NormalLaw law,
                            FrictionLaw friction, std::size_t reserve)
     : ContactForce(std::move(name), std::move(source), {ContactMaterial{law, friction}}, reserve) {}
@@ -87,6 +94,24 @@ double ContactForce::doPower(const Stage& s) const {
   double p = 0.0;
   for (const ContactResponse& r : at.responses) p += r.power;
   return p;
+}
+
+// (stage) => (count of points pressing: F_n > 0, deeper than kPressingDepth) + 2^20 x (sum of a
+// hash of their body pairs and materials): independent of the order the source lists its points in
+std::uint64_t ContactForce::doRegime(const Stage& s) const {
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& at = scratchOf<Scratch>(s, temporary);
+  collect(s, at);
+  std::uint64_t count = 0, pairs = 0;
+  for (std::size_t i = 0; i < at.points.size(); ++i) {
+    const ContactPoint& c = at.points[i];
+    if (!(at.responses[i].normalForce > 0.0) || !(c.depth > kPressingDepth)) continue;
+    ++count;
+    pairs += (static_cast<std::uint64_t>(c.bodyA) * 0x9E3779B97F4A7C15ULL) ^
+             (static_cast<std::uint64_t>(c.bodyB) * 0xC2B2AE3D27D4EB4FULL) ^
+             static_cast<std::uint64_t>(c.material);
+  }
+  return count + (pairs << 20);
 }
 
 }  // namespace yardsim::forces

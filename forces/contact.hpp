@@ -58,12 +58,16 @@ class ContactForce final : public ForceProvider {
     std::vector<ContactResponse> responses;
   };
   std::unique_ptr<ProviderScratch> makeScratch() const override;
+  // a contact closes and opens: its regime is the set of points pressing (F_n > 0)
+  bool switches() const override { return true; }
 
  protected:
   void doEvaluate(const Stage& s, dynamics::ExternalForces& f,
                   Eigen::VectorXd& tau) const override;
   double doPotentialEnergy(const Stage& s) const override;
   double doPower(const Stage& s) const override;
+  // (stage) => the number of points pressing and the body pairs they join, as one signature
+  std::uint64_t doRegime(const Stage& s) const override;
 
  private:
   // (stage) => the scratch's points from the source and responses from the law

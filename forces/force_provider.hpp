@@ -14,6 +14,7 @@
 // in a ProviderScratch it makes once (makeScratch()) and the caller owns: mechanics::Data holds
 // one per provider of a system and hands it over in Stage::scratch. A caller that gives none
 // (a test, a one-off evaluation) gets a temporary one, made, used and dropped in that call.
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <span>
@@ -80,6 +81,12 @@ class ForceProvider {
   // (stage) => power of the non-conservative part into the system, W (damping <= 0; a winch
   // paying out or hauling in: the rate of change of stored energy it causes)
   double power(const Stage& s) const { return doPower(s); }
+  // Whether the provider's law has branches a step can switch between (a contact closing or
+  // opening); false by default. The implicit integrators then compare regime() at a step's start
+  // and end and sub-step a step that switched (docs/integrators.md "Switching forces").
+  virtual bool switches() const { return false; }
+  // (stage) => a signature of the branches in force at the stage (equal: the same branches)
+  std::uint64_t regime(const Stage& s) const { return doRegime(s); }
 
  protected:
   virtual void doEvaluate(const Stage& s, dynamics::ExternalForces& f,
@@ -93,6 +100,7 @@ class ForceProvider {
   }
   virtual double doPotentialEnergy(const Stage& /*s*/) const { return 0.0; }
   virtual double doPower(const Stage& /*s*/) const { return 0.0; }
+  virtual std::uint64_t doRegime(const Stage& /*s*/) const { return 0; }
 
  private:
   std::string name_;

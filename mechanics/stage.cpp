@@ -77,6 +77,20 @@ void connectStage(const System& s, Data& d) {
   d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                               const dynamics::Data& kin, dynamics::ExternalForces& f,
                               Eigen::VectorXd& tau) { stageForces(s, d, t, q, v, kin, f, tau); });
+  // (a provider whose law switches, e.g. a contact) => the kernel reports the providers' regimes
+  const auto& providers = s.providers();
+  if (std::none_of(providers.begin(), providers.end(), [](const auto& p) { return p->switches(); }))
+    return;
+  d.kernel.setRegime([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                              const dynamics::Data& kin) {
+    // (stage) => the switching providers' signatures, combined in the list's order
+    std::uint64_t r = 0;
+    forEachProvider(s, d, d.stage(s, t, kin, q, v),
+                    [&](const forces::ForceProvider& p, const forces::Stage& st) {
+                      if (p.switches()) r = r * 0x100000001B3ULL + p.regime(st);
+                    });
+    return r;
+  });
 }
 
 }  // namespace yardsim::mechanics

@@ -29,7 +29,8 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
                  const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
                  Eigen::VectorXd& tau);
 
-// (system, workspace) => d.kernel evaluates stageForces at every stage
+// (system, workspace) => d.kernel evaluates stageForces at every stage, and reports the regime of
+// the providers whose law switches (a contact) when the system has one
 void connectStage(const System& s, Data& d);
 
 }  // namespace yardsim::mechanics

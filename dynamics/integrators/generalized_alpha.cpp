@@ -213,7 +213,11 @@ void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::Vector
   resize(system.constraintRows());
   // (t, q, v) => restart unless this step continues the previous one
   const double tol = 1e-9 * std::max(1.0, std::abs(t));
-  if (!started_ || std::abs(t - tLast_) > tol || q != qLast_ || v != vLast_) start(system, t, q, v, h);
+  if (!started_ || std::abs(t - tLast_) > tol || q != qLast_ || v != vLast_) {
+    start(system, t, q, v, h);
+    if (system.switches()) regime_ = system.regime(t, q, v);
+    resolving_ = false;
+  }
   advance(system, t, q, v, h, 0);
   tLast_ = t;
   qLast_ = q;
@@ -255,8 +259,27 @@ bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen
   return false;
 }
 
+void GeneralizedAlpha::subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                                double h) {
+  // (step of h) => kSwitchSteps equal sub-steps, the regime read after each; resolving_ while
+  // the regime changed at any of them (the next step is sub-stepped at once), false once a whole
+  // step kept it
+  bool changed = false;
+  for (int k = 0; k < kSwitchSteps; ++k) {
+    advance(system, t, q, v, h / kSwitchSteps, kSubStep);
+    const std::uint64_t r = system.regime(t, q, v);
+    changed = changed || r != regime_;
+    regime_ = r;
+  }
+  resolving_ = changed;
+}
+
 void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
                                double h, int depth) {
+  if (resolving_ && depth < kSubStep && system.switches()) {
+    subSteps(system, t, q, v, h);
+    return;
+  }
   if (!attempt(system, t, q, v, h)) {
     // (Newton failed, e.g. a rope going taut inside the step) => two half steps, down to h / 16
     // (sparse path: a Jacobian costs O(colours) stages) => the halves keep the last matrix,
@@ -274,8 +297,20 @@ void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::Vec
     stats_.f_evals += 4;
     ++stats_.steps;
     start(system, t, q, v, h);
+    if (system.switches()) regime_ = system.regime(t, q, v);
     stale_ = true;
     return;
+  }
+  // (converged, but a switching force changed branch inside the step: a contact closed or opened
+  // that the step does not resolve) => taken again in sub-steps
+  if (system.switches() && depth < kSubStep) {
+    const std::uint64_t end = system.regime(t + h, qNew_, vNew_);
+    if (end != regime_) {
+      lambda_ = lambdaStart_;
+      subSteps(system, t, q, v, h);
+      return;
+    }
+    regime_ = end;
   }
   // (converged) => new state and history
   q = qNew_;

@@ -44,7 +44,10 @@ class GeneralizedAlpha final : public Integrator {
                    double newtonTol = 1e-8, int maxNewton = 8);
   void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
   std::string_view name() const override { return name_; }
-  void reset() override { started_ = false; }
+  void reset() override {
+    started_ = false;
+    resolving_ = false;
+  }
   bool carriesHistory() const override { return true; }
   const GeneralizedAlphaParameters& parameters() const { return p_; }
   /// Lagrange multipliers of the last step (size rows of the loops).
@@ -73,6 +76,15 @@ class GeneralizedAlpha final : public Integrator {
   const Model& model_;
   GeneralizedAlphaParameters p_;
   std::string_view name_;
+  // a step whose start and end differ in the source's regime (a contact closed or opened) is
+  // taken again as kSwitchSteps equal sub-steps, and so are the steps after it while the regime
+  // changes inside them (docs/integrators.md "Switching forces"); the sub-steps' depth kSubStep
+  // marks them: not checked again, not halved (RK4 where Newton fails)
+  static constexpr int kSwitchSteps = 256, kSubStep = 1000;
+  std::uint64_t regime_ = 0;  // the source's regime at the start of the next (sub-)step
+  bool resolving_ = false;    // the last step's regime changed in its sub-steps
+  // (step of h) => kSwitchSteps sub-steps; resolving_ set when the regime changed in them
+  void subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h);
   double newtonTol_;
   int maxNewton_;
   Rk4 explicitStep_;  // crosses a force jump where Newton has no solution

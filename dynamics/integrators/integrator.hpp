@@ -5,6 +5,7 @@
 // use the loop-constraint terms; adaptive methods (SUNDIALS) may locate state events.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -43,6 +44,14 @@ class AccelerationSource {
   /// The structure of d a / d(q, v) when the source knows it (lumped-mass lines), or nullptr
   /// (the default: dense). Implicit methods then form and factorise a sparse Newton matrix.
   virtual const JacobianPattern* jacobianPattern() const { return nullptr; }
+
+  /// Whether some force of the source switches between branches of its law (a contact closing or
+  /// opening) that regime() tells apart; false (the default): regime() is never asked.
+  virtual bool switches() const { return false; }
+  /// (t, q, v) => a signature of the switching forces' branches at this state: two states with
+  /// the same signature have the same forces on (the implicit methods sub-step a step whose start
+  /// and end differ, docs/integrators.md "Switching forces").
+  virtual std::uint64_t regime(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/) { return 0; }
 
   /// Number of state-event functions located by integrators that find roots (0: none).
   virtual int eventCount() const { return 0; }

@@ -71,6 +71,16 @@ record: {interval: )"
 
 const std::string kBox = "{box: [1, 1, 1]}", kBall = "{sphere: 0.5}";
 
+// (timeseries) => the largest rise of the mechanical energy (kinetic, gravity, the springs) above
+// its first row, J
+double energyRise(const testing::CsvFile& csv) {
+  const double e0 = at(csv, 0, "mechanics.energy[J]");
+  double rise = 0.0;
+  for (std::size_t r = 0; r < csv.rows.size(); ++r)
+    rise = std::max(rise, at(csv, r, "mechanics.energy[J]") - e0);
+  return rise;
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -95,7 +105,8 @@ TEST_CASE(
 
 TEST_CASE(
     "collision scene: stiff ramped linear contact set down with damped HHT and generalized-alpha "
-    "at 0.01 s") {
+    "at 0.01 s",
+    "[long]") {
   for (const double k : {1e9, 1e10}) {
     for (const std::string integrator : {"{method: hht, dt: 0.01, alpha: -0.3}",
                                          "{method: generalized_alpha, dt: 0.01, rho_inf: 0.5}"}) {
@@ -115,10 +126,12 @@ TEST_CASE(
           rise = std::max(rise, at(csv, r, "mechanics.energy[J]") - e0);
         CHECK(rise < 1e-9);
         const double corners = shape == kBox ? 4 : 1;
-        if (shape == kBox && k == 1e10) {
-          // not at rest: the box chatters on its corners about 1 um deep (docs/collision.md
-          // "Stiff contact", what is left); bounded, and never lifting off by more than that
-          CHECK(std::abs(0.5 - at(csv, last, "box.z[m]")) < 2e-6);
+        if (k == 1e10) {
+          // not at rest after 5 s: at k = 1e10 a bounce is a few um deep, where the ramp leaves
+          // c delta/delta_0 of the damping and the law is nearly elastic (restitution ~ 0.99);
+          // the steps that close or open a contact are sub-stepped and follow it
+          // (docs/collision.md "Stiff contact"): the energy only lost, below the 1 mm start
+          CHECK(std::abs(0.5 - at(csv, last, "box.z[m]")) < 5e-4);
           continue;
         }
         CHECK(at(csv, last, "floor.box.fz[N]") == Approx(kM * kG).epsilon(1e-6));
@@ -129,7 +142,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "collision scene: stiff drops from 1 cm come to rest with generalized-alpha at rho_inf = 0") {
+    "collision scene: stiff drops from 1 cm come to rest with generalized-alpha at rho_inf = 0",
+    "[long]") {
   // 0.44 m/s at impact, a bounce of 1-3 ms inside a 10 ms step: rho_inf = 0 removes the contact's
   // unresolved mode in one step; energy never gained, the weight carried, for Hunt-Crossley and
   // the ramped linear law (docs/collision.md "Stiff contact": with rho_inf = 0.5 some drops gain)
@@ -155,14 +169,69 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "collision scene: without its damping ramp the stiff linear law fails the same set-down") {
+    "collision scene: stiff set-downs and drops come to rest with HHT and generalized-alpha at "
+    "their default damping at 0.01 s",
+    "[long]") {
+  // HHT alpha = -0.1 and generalized-alpha rho_inf = 0.8, the box and the ball set down from 1 mm
+  // (0.14 m/s at impact) and dropped from 1 cm (0.44 m/s), Hunt-Crossley and the ramped linear law
+  // at k = 1e9 and 1e10: contacts of 0.5-3 ms inside a 10 ms step. The implicit methods take a
+  // step in which a contact closes or opens again in 256 sub-steps (omega h/256 <= 0.25), and the
+  // steps after it while the contact set keeps changing (docs/integrators.md "Switching forces"):
+  // no blow-up, the mechanical energy never above its start, at rest carrying the weight
+  struct Case {
+    std::string law;
+    double k, n;    // N/m^n, the law's stiffness and exponent
+    bool boxRests;  // false: the box chatters (docs/collision.md "Stiff contact", what is left)
+  };
+  for (const Case& c :
+       {Case{"{law: hunt_crossley, n: 1.5, k: 1.0e9, restitution: 0.5, impact_speed: 0.1, mu: 0.3}",
+             1e9, 1.5, true},
+        Case{
+            "{law: hunt_crossley, n: 1.5, k: 1.0e10, restitution: 0.5, impact_speed: 0.1, mu: 0.3}",
+            1e10, 1.5, true},
+        Case{"{law: linear, k: 1.0e9, c: 1.0e5, damping_depth: 1.0e-4, mu: 0.3}", 1e9, 1, true},
+        Case{"{law: linear, k: 1.0e10, c: 1.0e6, damping_depth: 1.0e-4, mu: 0.3}", 1e10, 1,
+             false}}) {
+    for (const std::string method : {"hht", "generalized_alpha"}) {
+      for (const std::string& shape : {kBox, kBall}) {
+        for (const double z0 : {0.51, 0.501}) {
+          INFO(method << " " << c.law << " " << shape << " from z = " << z0);
+          const auto csv =
+              drop("{method: " + method + ", dt: 0.01}", c.law, shape, z0, kG, 0.0, 5.0, 0.01);
+          const std::size_t last = csv.rows.size() - 1;
+          REQUIRE(at(csv, last, "time[s]") == Approx(5.0));
+          CHECK(energyRise(csv) < 1e-9);  // J, of the drop's 98 J or the set-down's 9.8 J
+          if (shape == kBox && !c.boxRests) {
+            // bounded: on its corners within 2 um of the ground
+            CHECK(std::abs(0.5 - at(csv, last, "box.z[m]")) < 2e-6);
+            continue;
+          }
+          // the weight, and the law's static sink (m g / (N k))^(1/n), N = 4 corners or 1 point
+          CHECK(at(csv, last, "floor.box.fz[N]") == Approx(kM * kG).epsilon(1e-6));
+          const double corners = shape == kBox ? 4 : 1;
+          CHECK(0.5 - at(csv, last, "box.z[m]") ==
+                Approx(std::pow(kM * kG / (corners * c.k), 1 / c.n)).epsilon(1e-6));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE(
+    "collision scene: without its damping ramp the stiff linear law sets down through the "
+    "switching sub-steps") {
   // the box at k = 1e10 with HHT (alpha = -0.3) at 0.01 s: with damping_depth: 0 the damping force
-  // jumps where the contact closes; the run stops on its numerical failure check
+  // jumps where the contact closes, and a step across it has no solution; before the switching
+  // sub-steps the run stopped on its numerical failure check. The step that closes the contact is
+  // now taken in 256 sub-steps (omega h/256 = 0.25), the Newton failure at the jump is crossed by
+  // one RK4 sub-step, and the box comes to rest at its weight, the energy only lost
   const std::string plain = "{law: linear, k: 1.0e10, c: 1.0e5, damping_depth: 0, mu: 0.3}";
-  CHECK_THROWS(drop("{method: hht, dt: 0.01, alpha: -0.3}", plain, kBox, 0.501, kG, 0.0, 5.0, 0.5));
-  const std::string ramped = "{law: linear, k: 1.0e10, c: 1.0e5, damping_depth: 1.0e-4, mu: 0.3}";
-  CHECK_NOTHROW(
-      drop("{method: hht, dt: 0.01, alpha: -0.3}", ramped, kBox, 0.501, kG, 0.0, 5.0, 0.5));
+  const auto csv =
+      drop("{method: hht, dt: 0.01, alpha: -0.3}", plain, kBox, 0.501, kG, 0.0, 5.0, 0.01);
+  const std::size_t last = csv.rows.size() - 1;
+  REQUIRE(at(csv, last, "time[s]") == Approx(5.0));
+  CHECK(energyRise(csv) < 1e-9);
+  CHECK(at(csv, last, "floor.box.fz[N]") == Approx(kM * kG).epsilon(1e-6));
 }
 
 TEST_CASE(

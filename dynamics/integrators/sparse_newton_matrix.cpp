@@ -1,17 +1,18 @@
 #include "dynamics/integrators/sparse_newton_matrix.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 namespace yardsim::dynamics {
 
-SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern)
+SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern,
+                                       const JacobianBlocks* blocks)
     : model_(model) {
-  // (pattern) => colouring; A's compressed columns: the pattern's rows and the diagonal
+  // (pattern) => A's compressed columns: the pattern's rows and the diagonal
   const int n = model.nv;
   if (pattern.n != n || static_cast<int>(pattern.rows.size()) != n)
     throw std::invalid_argument("SparseNewtonMatrix: the pattern is not nv x nv");
-  colouring_ = colourColumns(pattern);
   std::vector<Eigen::Triplet<double>> entries;
   for (int j = 0; j < n; ++j) {
     entries.emplace_back(j, j, 1.0);
@@ -24,6 +25,53 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
   for (int j = 0; j < n; ++j)
     for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
       if (A_.innerIndexPtr()[k] == j) diagonal_[static_cast<std::size_t>(j)] = k;
+  // (blocks) => their entries' places; the columns they cover whole leave the colouring
+  auto place = [&](int i, int j) {
+    for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
+      if (A_.innerIndexPtr()[k] == i) return k;
+    throw std::invalid_argument("SparseNewtonMatrix: a closed-form block lies outside the pattern");
+  };
+  std::vector<int> covered(static_cast<std::size_t>(n), 0);  // per column: rows in blocks
+  if (blocks != nullptr) {
+    for (const auto& [r0, c0] : blocks->at) {
+      if (r0 < 0 || c0 < 0 || r0 + 3 > n || c0 + 3 > n)
+        throw std::invalid_argument("SparseNewtonMatrix: a closed-form block leaves the matrix");
+      std::array<int, 9> idx{};
+      for (int b = 0; b < 3; ++b) {
+        for (int a = 0; a < 3; ++a) idx[static_cast<std::size_t>(3 * b + a)] = place(r0 + a, c0 + b);
+        covered[static_cast<std::size_t>(c0 + b)] += 3;
+      }
+      blockIndex_.push_back(idx);
+    }
+    dq_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
+    dv_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
+  }
+  JacobianPattern differenced = pattern;  // the columns that still need differences
+  std::vector<char> closed(static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n; ++j) {
+    auto& rows = differenced.rows[static_cast<std::size_t>(j)];
+    const bool hasDiagonal = std::find(rows.begin(), rows.end(), j) != rows.end();
+    const int count = static_cast<int>(rows.size());
+    if (hasDiagonal && covered[static_cast<std::size_t>(j)] >= count) {
+      closed[static_cast<std::size_t>(j)] = 1;
+      rows.clear();
+    }
+  }
+  colouring_ = colourColumns(differenced);
+  if (blocks != nullptr) {
+    // (colouring of all columns) => without the closed ones, empty colours dropped
+    ColumnColouring kept;
+    kept.colour.assign(static_cast<std::size_t>(n), -1);
+    for (const auto& cols : colouring_.columns) {
+      std::vector<int> open;
+      for (int j : cols)
+        if (!closed[static_cast<std::size_t>(j)]) open.push_back(j);
+      if (open.empty()) continue;
+      for (int j : open) kept.colour[static_cast<std::size_t>(j)] = kept.count();
+      kept.columns.push_back(std::move(open));
+    }
+    colouring_ = std::move(kept);
+  }
   fq_.setZero(A_.nonZeros());
   fv_.setZero(A_.nonZeros());
   for (Eigen::VectorXd* x : {&step_, &deltaP_, &vp_, &fp_}) x->setZero(n);
@@ -39,6 +87,20 @@ void SparseNewtonMatrix::scatter(const std::vector<int>& cols, const Eigen::Vect
       const int i = A_.innerIndexPtr()[k];
       values[k] = (fp_[i] - f[i]) / step_[j];
     }
+}
+
+bool SparseNewtonMatrix::applyBlocks(std::uint64_t signature) {
+  // (blocks) => their nine entries each in F_q and F_v
+  for (std::size_t b = 0; b < blockIndex_.size(); ++b)
+    for (int e = 0; e < 9; ++e) {
+      const auto k = static_cast<std::size_t>(e);
+      fq_[blockIndex_[b][k]] = dq_[b](e % 3, e / 3);
+      fv_[blockIndex_[b][k]] = dv_[b](e % 3, e / 3);
+    }
+  const bool changed = !applied_ || signature != signature_;
+  applied_ = true;
+  signature_ = signature;
+  return changed;
 }
 
 bool SparseNewtonMatrix::factorise(double cq, double cv) {

@@ -76,6 +76,8 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
   fv_.setZero(A_.nonZeros());
   for (Eigen::VectorXd* x : {&step_, &deltaP_, &vp_, &fp_}) x->setZero(n);
   qp_.setZero(model.nq);
+  y_.setZero(n);
+  work_.setZero(n);
   lu_.analyzePattern(A_);
 }
 
@@ -113,12 +115,48 @@ bool SparseNewtonMatrix::factorise(double cq, double cv) {
   return ok_;
 }
 
+namespace {
+// (L of a SparseLU: unit lower, supernodal; x; work sized n, zero) => x = L^-1 x. Eigen 3.4's
+// MappedSuperNodalMatrix::solveInPlace with its work vector passed in instead of allocated
+template <class Supernodal>
+void lowerSolve(const Supernodal& L, Eigen::VectorXd& x, Eigen::VectorXd& work) {
+  using Map = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+  const double* values = L.valuePtr();
+  for (Eigen::Index k = 0; k <= L.nsuper(); ++k) {
+    const Eigen::Index first = L.supToCol()[k], start = L.rowIndexPtr()[first];
+    const Eigen::Index rows = L.rowIndexPtr()[first + 1] - start;
+    const Eigen::Index cols = L.supToCol()[k + 1] - first, below = rows - cols;
+    if (cols == 1) {
+      typename Supernodal::InnerIterator it(L, first);
+      for (++it; it; ++it) x[it.row()] -= x[first] * it.value();
+      continue;
+    }
+    const Eigen::Index at = L.colIndexPtr()[first];
+    const Eigen::Index lda = L.colIndexPtr()[first + 1] - at;
+    auto u = x.segment(first, cols);
+    Map(values + at, cols, cols, Eigen::OuterStride<>(lda)).triangularView<Eigen::UnitLower>().solveInPlace(u);
+    work.head(below).noalias() = Map(values + at + cols, below, cols, Eigen::OuterStride<>(lda)) * u;
+    for (Eigen::Index i = 0; i < below; ++i) {
+      x[L.rowIndex()[start + cols + i]] -= work[i];
+      work[i] = 0.0;
+    }
+  }
+}
+}  // namespace
+
 void SparseNewtonMatrix::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // (b) => P_c^-1 U^-1 L^-1 P_r b, as SparseLU::solve but in the preallocated y_, work_ and x
   if (!ok_) {
     x.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  x = lu_.solve(b);
+  const auto& pr = lu_.rowsPermutation().indices();
+  const auto& pc = lu_.colsPermutation().indices();
+  for (Eigen::Index i = 0; i < b.size(); ++i) y_[pr[i]] = b[i];
+  lowerSolve(lu_.matrixL().m_mapL, y_, work_);
+  lu_.matrixU().solveInPlace(y_);
+  x.resize(b.size());
+  for (Eigen::Index i = 0; i < b.size(); ++i) x[i] = y_[pc[i]];
 }
 
 void SparseNewtonMatrix::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {

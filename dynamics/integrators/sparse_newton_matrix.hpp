@@ -94,6 +94,7 @@ class SparseNewtonMatrix {
   std::vector<int> diagonal_;      // per column: the index of its diagonal entry in A_'s values
   Eigen::VectorXd fq_, fv_;        // F_q, F_v on A_'s structure
   Eigen::VectorXd step_, deltaP_, qp_, vp_, fp_;
+  mutable Eigen::VectorXd y_, work_;  // solve(): the permuted right-hand side, L's work vector
   std::vector<std::array<int, 9>> blockIndex_;  // per block: its entries in A_'s values, by column
   std::vector<Eigen::Matrix3d> dq_, dv_;
   std::uint64_t signature_ = 0;

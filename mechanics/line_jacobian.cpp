@@ -23,8 +23,12 @@ LineJacobian lineJacobian(const System& s, const Data& d) {
     const forces::LumpedLineProvider* line = lumpedLine(*p);
     if (line == nullptr) continue;
     const int n = line->line().properties().segments;
-    Line l{p.get(), line, std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))),
-           std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))), {}, {}};
+    Line l{p.get(),
+           line,
+           std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))),
+           std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))),
+           {},
+           {}};
     auto isNode = [&](int i) {
       return i >= 1 && i < n && node[static_cast<std::size_t>(line->nodeBody(i))] != 0;
     };
@@ -47,7 +51,8 @@ LineJacobian lineJacobian(const System& s, const Data& d) {
     for (Line& l : *lines) {
       forces::Stage stage = d.stage(s, t, kin, q, v);
       stage.scratch = d.scratchOf(s, *l.provider);
-      signature = signature * 1099511628211ull + l.line->accelerationJacobian(stage, l.dadr, l.dadv);
+      signature =
+          signature * 1099511628211ull + l.line->accelerationJacobian(stage, l.dadr, l.dadv);
       for (std::size_t k = 0; k < l.block.size(); ++k) {
         dq[l.block[k]] = l.dadr[l.slot[k]];
         dv[l.block[k]] = l.dadv[l.slot[k]];

@@ -38,7 +38,8 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
         throw std::invalid_argument("SparseNewtonMatrix: a closed-form block leaves the matrix");
       std::array<int, 9> idx{};
       for (int b = 0; b < 3; ++b) {
-        for (int a = 0; a < 3; ++a) idx[static_cast<std::size_t>(3 * b + a)] = place(r0 + a, c0 + b);
+        for (int a = 0; a < 3; ++a)
+          idx[static_cast<std::size_t>(3 * b + a)] = place(r0 + a, c0 + b);
         covered[static_cast<std::size_t>(c0 + b)] += 3;
       }
       blockIndex_.push_back(idx);
@@ -134,8 +135,11 @@ void lowerSolve(const Supernodal& L, Eigen::VectorXd& x, Eigen::VectorXd& work) 
     const Eigen::Index at = L.colIndexPtr()[first];
     const Eigen::Index lda = L.colIndexPtr()[first + 1] - at;
     auto u = x.segment(first, cols);
-    Map(values + at, cols, cols, Eigen::OuterStride<>(lda)).triangularView<Eigen::UnitLower>().solveInPlace(u);
-    work.head(below).noalias() = Map(values + at + cols, below, cols, Eigen::OuterStride<>(lda)) * u;
+    Map(values + at, cols, cols, Eigen::OuterStride<>(lda))
+        .triangularView<Eigen::UnitLower>()
+        .solveInPlace(u);
+    work.head(below).noalias() =
+        Map(values + at + cols, below, cols, Eigen::OuterStride<>(lda)) * u;
     for (Eigen::Index i = 0; i < below; ++i) {
       x[L.rowIndex()[start + cols + i]] -= work[i];
       work[i] = 0.0;

@@ -171,7 +171,9 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
   }
   std::uint64_t signature = 1469598103934665603ull;  // FNV-1a over the switches
   auto mix = [&](bool on) { signature = (signature ^ (on ? 1u : 2u)) * 1099511628211ull; };
-  auto at = [](int node, int other) { return static_cast<std::size_t>(3 * node + other - node + 1); };
+  auto at = [](int node, int other) {
+    return static_cast<std::size_t>(3 * node + other - node + 1);
+  };
   // (taut segment, d = r_(i+1) - r_i, u = d/|d|, P = I - u u^T) => d(T u)/dd = EA/l u u^T
   // + T/|d| P + c/(l |d|) u (P dv)^T and d(T u)/d(dv) = c/l u u^T; T u acts on i, -T u on i + 1
   for (int i = 0; i < n; ++i) {
@@ -184,7 +186,8 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
       if (T > 0.0) {
         taut = true;
         const Matrix3 uu = u * u.transpose(), P = Matrix3::Identity() - uu;
-        const Matrix3 K = (p_.ea / l_) * uu + (T / len) * P + (c_ / (l_ * len)) * u * (P * dv).transpose();
+        const Matrix3 K =
+            (p_.ea / l_) * uu + (T / len) * P + (c_ / (l_ * len)) * u * (P * dv).transpose();
         const Matrix3 C = (c_ / l_) * uu;
         dfdr[at(i, i + 1)] += K;
         dfdr[at(i, i)] -= K;
@@ -221,7 +224,8 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
     bool onBed = false, sliding = false;
     if (p_.seabed && p.z() < p_.seabedZ) {
       const double dl = p_.diameter * nodeLength(i);
-      const double normal = (p_.seabedZ - p.z()) * p_.bedStiffness * dl - vi.z() * p_.bedDamping * dl;
+      const double normal =
+          (p_.seabedZ - p.z()) * p_.bedStiffness * dl - vi.z() * p_.bedDamping * dl;
       if (normal > 0.0) {
         onBed = true;
         const double dNdz = -p_.bedStiffness * dl, dNdvz = -p_.bedDamping * dl;

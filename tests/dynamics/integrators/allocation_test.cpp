@@ -4,10 +4,10 @@
 
 #include "support/allocation_counter.hpp"
 
+#include "../test_mechanisms.hpp"
 #include "dynamics/integrators/factory.hpp"
 #include "dynamics/integrators/sparse_newton_matrix.hpp"
 #include "dynamics/multibody_system.hpp"
-#include "../test_mechanisms.hpp"
 #include "integrator_cases.hpp"
 
 using yardsim::testing::allocationCount;
@@ -52,7 +52,8 @@ TEST_CASE("the sparse Newton matrix solves without allocating") {
   MultibodySystem sys(tree);
   SparseNewtonMatrix A(tree, pattern);
   const Eigen::VectorXd q = randomConfiguration(tree, rng);
-  const Eigen::VectorXd v = Eigen::VectorXd::Constant(tree.nv, 0.1), delta = Eigen::VectorXd::Zero(tree.nv);
+  const Eigen::VectorXd v = Eigen::VectorXd::Constant(tree.nv, 0.1),
+                        delta = Eigen::VectorXd::Zero(tree.nv);
   Eigen::VectorXd f(tree.nv), x(tree.nv), b = Eigen::VectorXd::LinSpaced(tree.nv, -1.0, 1.0);
   sys.unconstrainedAcceleration(0.0, q, v, f);
   A.form([&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool,
@@ -65,7 +66,8 @@ TEST_CASE("the sparse Newton matrix solves without allocating") {
   for (int k = 0; k < 100; ++k) A.solve(b, x);
   CHECK(allocationCount() == before);
   // (the same solution as Eigen's SparseLU::solve of the dense A) => the solve is right
-  const Eigen::MatrixXd dense = Eigen::MatrixXd::Identity(tree.nv, tree.nv) - 0.25e-6 * A.denseFq() - 0.5e-3 * A.denseFv();
+  const Eigen::MatrixXd dense =
+      Eigen::MatrixXd::Identity(tree.nv, tree.nv) - 0.25e-6 * A.denseFq() - 0.5e-3 * A.denseFv();
   CHECK((dense * x - b).lpNorm<Eigen::Infinity>() < 1e-12);
   CHECK(x == first);
 }

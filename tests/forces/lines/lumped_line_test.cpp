@@ -350,10 +350,11 @@ TEST_CASE("the line's force Jacobian equals central differences: taut and slack,
   const std::vector<double> lengths{10.05, 9.5, 10.05, 10.05, 9.5, 10.05};
   Eigen::Matrix3Xd r(3, 7), v(3, 7);
   r.col(0) = Vector3(0.0, 0.0, 0.0);
-  const std::vector<Vector3> dirs{{1, 0, -0.001}, {1, 0, 0}, {1, -0.1, 0.3}, {1, 0.3, 0.5},
-                                  {0.8, 0.1, 1}, {1, -0.2, 0.7}};
+  const std::vector<Vector3> dirs{{1, 0, -0.001}, {1, 0, 0},     {1, -0.1, 0.3},
+                                  {1, 0.3, 0.5},  {0.8, 0.1, 1}, {1, -0.2, 0.7}};
   for (int i = 0; i < 6; ++i)
-    r.col(i + 1) = r.col(i) + lengths[static_cast<std::size_t>(i)] * dirs[static_cast<std::size_t>(i)].normalized();
+    r.col(i + 1) = r.col(i) + lengths[static_cast<std::size_t>(i)] *
+                                  dirs[static_cast<std::size_t>(i)].normalized();
   for (int i = 0; i < 7; ++i) v.col(i) = Vector3(0.03 * i, -0.02 * i, 0.01 * (i % 3));
   v.col(1) = Vector3(0.1, 0.02, 0.05);
   v.col(2) = Vector3(2e-4, -1e-4, 0.01);
@@ -366,7 +367,8 @@ TEST_CASE("the line's force Jacobian equals central differences: taut and slack,
       for (int j = 0; j < 7; ++j) {
         const Eigen::Matrix3d a = A.block<3, 3>(3 * i, 3 * j), c = N.block<3, 3>(3 * i, 3 * j);
         INFO((which == 0 ? "df/dr" : "df/dv") << " block " << i << ", " << j << "\nclosed form\n"
-                                              << a << "\ncentral\n" << c);
+                                              << a << "\ncentral\n"
+                                              << c);
         CHECK((a - c).norm() <= 1e-6 * c.norm() + 1e-2);
         if (std::abs(i - j) > 1) CHECK(c.norm() == 0.0);
       }

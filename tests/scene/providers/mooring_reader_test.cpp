@@ -364,7 +364,8 @@ TEST_CASE("mooring: a lumped line takes the scene's water density unless it give
       const double ls = 0.5 * ((at(i) - at(i - 1)).norm() + (at(i + 1) - at(i)).norm());
       INFO(node << " at rho " << rho);
       CHECK(model.inertias[model.bodyIndex(node)].mass == Approx(m).epsilon(1e-12));
-      CHECK(c->a[c->nodeV(node) + 1] == Approx(0.5 * rho * cdn * kD * ls * U * U / m).epsilon(1e-9));
+      CHECK(c->a[c->nodeV(node) + 1] ==
+            Approx(0.5 * rho * cdn * kD * ls * U * U / m).epsilon(1e-9));
     }
   }
 }

@@ -113,4 +113,12 @@ void MultibodySystem::afterStep(double, Eigen::VectorXd& q, Eigen::VectorXd& v) 
   projectVelocities(model_, data_, q, v);
 }
 
+std::uint64_t MultibodySystem::blockJacobian(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                             std::vector<Eigen::Matrix3d>& dq, std::vector<Eigen::Matrix3d>& dv) {
+  // (q, v) => kinematics in data_ (the next stage recomputes them), then the callback's blocks
+  if (!blockCallback_) return 0;
+  forwardKinematics(model_, data_, q, v);
+  return blockCallback_(t, q, v, data_, dq, dv);
+}
+
 }  // namespace yardsim::dynamics

@@ -57,6 +57,19 @@ class MultibodySystem final : public AccelerationSource {
   /// dense, the default); the implicit integrators use it for a sparse Newton matrix.
   void setJacobianPattern(std::shared_ptr<const JacobianPattern> p) { pattern_ = std::move(p); }
   const JacobianPattern* jacobianPattern() const override { return pattern_.get(); }
+  /// (t, q, v, data after forward kinematics(q, v), d a/dq, d a/dv) => the blocks' values and
+  /// the switch signature (AccelerationSource::blockJacobian).
+  using BlockCallback = std::function<std::uint64_t(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                                    const Data& data, std::vector<Eigen::Matrix3d>& dq,
+                                                    std::vector<Eigen::Matrix3d>& dv)>;
+  /// The blocks of the Jacobian the callback gives in closed form (nullptr: none).
+  void setJacobianBlocks(std::shared_ptr<const JacobianBlocks> b, BlockCallback callback) {
+    blocks_ = std::move(b);
+    blockCallback_ = std::move(callback);
+  }
+  const JacobianBlocks* jacobianBlocks() const override { return pattern_ ? blocks_.get() : nullptr; }
+  std::uint64_t blockJacobian(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                              std::vector<Eigen::Matrix3d>& dq, std::vector<Eigen::Matrix3d>& dv) override;
 
   /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
   /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
@@ -79,6 +92,8 @@ class MultibodySystem final : public AccelerationSource {
   ForceCallback callback_;
   RegimeCallback regime_;
   std::shared_ptr<const JacobianPattern> pattern_;
+  std::shared_ptr<const JacobianBlocks> blocks_;
+  BlockCallback blockCallback_;
   // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
   const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;

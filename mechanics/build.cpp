@@ -54,7 +54,7 @@ std::vector<MechanicsSpec::Body> providerBodies(const MechanicsSpec& spec,
   dynamics::Data data(m);
   bool placed = false;
   for (const auto& p : spec.providers) {
-    if (!p.bodies) continue;
+    if (!p.bodies && !p.bodiesInSea) continue;
     if (!placed) dynamics::forwardKinematics(m, data, out.q0, out.v0);
     placed = true;
     std::vector<dynamics::Vector3> at_W;
@@ -64,7 +64,7 @@ std::vector<MechanicsSpec::Body> providerBodies(const MechanicsSpec& spec,
         throw dynamics::ModelError(p.kind + " '" + p.name + "': unknown body '" + body + "'");
       at_W.push_back(dynamics::pointPosition(data, b, p_B));
     }
-    for (auto& b : p.bodies(p.name, at_W)) {
+    for (auto& b : p.bodiesInSea ? p.bodiesInSea(p.name, at_W, spec) : p.bodies(p.name, at_W)) {
       builder.addBody(b.name, b.parent, b.joint, b.X_PJ,
                       dynamics::makeInertia(b.mass, b.com, b.inertia), b.geometry);
       added.push_back(std::move(b));

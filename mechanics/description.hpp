@@ -147,6 +147,12 @@ struct MechanicsSpec {
   // part of q and v like any body's: integrated, linearised by the stiffness guard, checkpointed.
   using ProviderBodies = std::function<std::vector<Body>(
       const std::string& name, const std::vector<dynamics::Vector3>& at_W)>;
+  // The same, for bodies that depend on the scene's environment (a lumped line's net weight on
+  // the scene's water density): (full name, attachments' world points, the scene's spec with its
+  // environment) => bodies; used instead of bodies when set.
+  using ProviderBodiesInSea = std::function<std::vector<Body>(
+      const std::string& name, const std::vector<dynamics::Vector3>& at_W,
+      const MechanicsSpec& environment)>;
   // The same, for a provider that needs more of the built system than its model: the bodies'
   // geometry, the ropes' paths (the collision reader); used instead of build when set.
   using ProviderBuildFromSystem = std::function<std::unique_ptr<forces::ForceProvider>(
@@ -157,6 +163,7 @@ struct MechanicsSpec {
     std::vector<Point> attachments;
     ProviderBuild build;
     ProviderBodies bodies = {};  // empty: the provider owns no body
+    ProviderBodiesInSea bodiesInSea = {};
     ProviderBuildFromSystem buildFromSystem = {};
     // true: when the fragments are merged, every body with a geometry becomes an attachment
     // (the scene-level `collision:`: bodies need not be listed)

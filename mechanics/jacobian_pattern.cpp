@@ -8,10 +8,6 @@
 
 namespace yardsim::mechanics {
 
-namespace {
-
-// (provider) => the lumped line it is, or wraps with its channels (the mooring reader's), or
-// nullptr
 const forces::LumpedLineProvider* lumpedLine(const forces::ForceProvider& p) {
   if (const auto* line = dynamic_cast<const forces::LumpedLineProvider*>(&p)) return line;
   if (const auto* observed =
@@ -19,6 +15,8 @@ const forces::LumpedLineProvider* lumpedLine(const forces::ForceProvider& p) {
     return &observed->inner();
   return nullptr;
 }
+
+namespace {
 
 // (system) => per body: named by something other than its own line's nodes (rigid, then)
 std::vector<char> namedElsewhere(const System& s) {
@@ -59,25 +57,33 @@ std::vector<char> namedElsewhere(const System& s) {
 
 }  // namespace
 
+std::vector<char> lineNodes(const System& s) {
+  const dynamics::Model& m = s.model();
+  const std::vector<char> named = namedElsewhere(s);
+  std::vector<char> node(static_cast<std::size_t>(m.nbodies), 0);
+  for (const auto& p : s.contributed())
+    if (const forces::LumpedLineProvider* line = lumpedLine(*p))
+      for (int i = 1; i + 1 < line->line().nodes(); ++i) {
+        const auto b = static_cast<std::size_t>(line->nodeBody(i));
+        node[b] = m.parent[b] == 0 && m.jointNv[b] == 3 && !named[b] ? 1 : 0;
+      }
+  return node;
+}
+
 std::shared_ptr<const dynamics::JacobianPattern> jacobianPattern(const System& s) {
   const dynamics::Model& m = s.model();
   const auto nb = static_cast<std::size_t>(m.nbodies);
   // (lumped lines) => per node body its chain neighbours (bodies; 0: the world)
-  const std::vector<char> named = namedElsewhere(s);
-  std::vector<char> node(nb, 0);
+  const std::vector<char> node = lineNodes(s);
   std::vector<std::vector<int>> neighbours(nb);
-  std::vector<std::vector<int>> chains;
   for (const auto& p : s.contributed()) {
     const forces::LumpedLineProvider* line = lumpedLine(*p);
     if (line == nullptr) continue;
     std::vector<int> chain{line->anchor().body};
     for (int i = 1; i + 1 < line->line().nodes(); ++i) chain.push_back(line->nodeBody(i));
     chain.push_back(line->fairlead().body);
-    for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
-      const auto b = static_cast<std::size_t>(chain[k]);
-      node[b] = m.parent[b] == 0 && m.jointNv[b] == 3 && !named[b] ? 1 : 0;
-      neighbours[b] = {chain[k - 1], chain[k + 1]};
-    }
+    for (std::size_t k = 1; k + 1 < chain.size(); ++k)
+      neighbours[static_cast<std::size_t>(chain[k])] = {chain[k - 1], chain[k + 1]};
   }
   if (std::none_of(node.begin(), node.end(), [](char c) { return c != 0; })) return nullptr;
   // (node flags) => the rigid dofs; the nodes that touch a rigid dof (a body or a rigid node)

@@ -9,11 +9,20 @@
 // names (a rope, a load, another provider's attachment, a loop, a child body, a geometry) counts
 // as rigid. Sizes: dofs (nv).
 #include <memory>
+#include <vector>
 
 #include "dynamics/integrators/column_colouring.hpp"
+#include "forces/lines/lumped_line_provider.hpp"
 #include "mechanics/system.hpp"
 
 namespace yardsim::mechanics {
+
+// (provider) => the lumped line it is, or wraps with its channels (the mooring reader's), or
+// nullptr
+const forces::LumpedLineProvider* lumpedLine(const forces::ForceProvider& p);
+// (system) => per body: 1 for a lumped line's inner node that the pattern couples to its
+// neighbours only (on its own joint from the world, named by nothing else), else 0
+std::vector<char> lineNodes(const System& s);
 
 // (system) => its pattern, or nullptr when it has no lumped-line node (the dense path)
 std::shared_ptr<const dynamics::JacobianPattern> jacobianPattern(const System& s);

@@ -6,6 +6,7 @@
 #include "dynamics/rnea.hpp"
 #include "mechanics/follow_draft.hpp"
 #include "mechanics/jacobian_pattern.hpp"
+#include "mechanics/line_jacobian.hpp"
 
 namespace yardsim::mechanics {
 
@@ -74,6 +75,8 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
 
 void connectStage(const System& s, Data& d) {
   d.kernel.setJacobianPattern(jacobianPattern(s));
+  LineJacobian lines = lineJacobian(s, d);
+  d.kernel.setJacobianBlocks(std::move(lines.blocks), std::move(lines.evaluate));
   d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                               const dynamics::Data& kin, dynamics::ExternalForces& f,
                               Eigen::VectorXd& tau) { stageForces(s, d, t, q, v, kin, f, tau); });

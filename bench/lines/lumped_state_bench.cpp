@@ -101,6 +101,7 @@ BENCHMARK(BM_LumpedLinesHht)
     ->Arg(10)
     ->Arg(20)
     ->Arg(40)
+    ->Arg(80)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -5,6 +5,7 @@
 // chain of point masses coupled to its neighbours (a lumped-mass line) needs 3 node colours per
 // line, whatever its length; lines that share no body share colours. Sizes are dofs (nv); the
 // pattern is structural (an entry that may be non-zero somewhere), the same for q and v.
+#include <array>
 #include <vector>
 
 namespace yardsim::dynamics {
@@ -14,6 +15,14 @@ namespace yardsim::dynamics {
 struct JacobianPattern {
   int n = 0;
   std::vector<std::vector<int>> rows;
+};
+
+// The 3x3 blocks of d(dv/dt)/dq and d(dv/dt)/dv that a system gives in closed form (a lumped
+// line's nodes among themselves): per block the first row and the first column (dofs). Each
+// block lies inside the pattern; a column all of whose pattern rows lie in blocks needs no
+// finite difference.
+struct JacobianBlocks {
+  std::vector<std::array<int, 2>> at;
 };
 
 // Per column its colour in [0, count), and per colour its columns (increasing).

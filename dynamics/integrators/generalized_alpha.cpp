@@ -100,7 +100,8 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
   sparseActive_ = pattern != nullptr;
   if (sparseActive_) {
     // (a structured system) => F_q, F_v by column colours (sparse_newton_matrix.hpp)
-    if (sparseFor_ != pattern) sparse_ = std::make_unique<SparseNewtonMatrix>(model_, *pattern);
+    if (sparseFor_ != pattern)
+      sparse_ = std::make_unique<SparseNewtonMatrix>(model_, *pattern, system.jacobianBlocks());
     sparseFor_ = pattern;
     stats_.f_evals += sparse_->form(
         [&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool qMoved,
@@ -110,6 +111,7 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
           if (nc_ > 0) out.noalias() += (qMoved ? MinvJt_ : MinvJtf_) * lambda_;
         },
         q, delta_, qNew_, vNew_, f_);
+    refreshBlocks(system, t + h);
   }
   for (int i = 0; i < model_.nv && !sparseActive_; ++i) {
     const double dqi = eps * std::max(1.0, std::abs(delta_[i]));
@@ -157,6 +159,12 @@ void GeneralizedAlpha::factorise(double h) {
   hFactor_ = h;
 }
 
+bool GeneralizedAlpha::refreshBlocks(AccelerationSource& system, double t) {
+  if (!sparseActive_ || !sparse_->hasBlocks()) return false;
+  const std::uint64_t signature = system.blockJacobian(t, qNew_, vNew_, sparse_->blockDq(), sparse_->blockDv());
+  return sparse_->applyBlocks(signature);
+}
+
 void GeneralizedAlpha::solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (sparseActive_)
     sparse_->solve(b, x);
@@ -182,6 +190,8 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
       r_.noalias() -= MinvJt_ * lambda_;
       rc_ = g_ / (p_.beta * s * h * h);
     }
+    // (a line's segment went slack or taut, a node touched the bed) => its blocks here
+    if (refreshBlocks(system, t + h)) factorise(h);
     // (r, r_c) => corrections: S dlambda = -r_c + J A^-1 r, dx = A^-1 (-r + M^-1 J^T dlambda)
     solveA(r_, dx_);
     if (nc_ > 0) {

@@ -15,6 +15,9 @@
 // lumped-mass lines: sparse_newton_matrix.hpp) that is factorised once and reused over steps
 // until Newton slows down; a failed solve is retried with a fresh matrix at the predictor, then
 // with one at the last iterate (a rope going taut inside the step), then as two half steps, down
+// (the blocks a system gives in closed form, a lumped line's nodes, are re-evaluated at every
+// iterate, and the matrix refactorised when a segment went slack or taut or a node touched the
+// bed: a semi-smooth Newton on those rows; the other entries stay as formed)
 // to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
 // is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
 // ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
@@ -63,6 +66,9 @@ class GeneralizedAlpha final : public Integrator {
   // (state at the end of the step) => f_q, f_v by finite differences; factorised for h
   void jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h);
   void factorise(double h);
+  // (system with closed-form blocks, the iterate (qNew_, vNew_) at t) => the blocks written into
+  // the sparse matrix; true when a force law switched since they were last written
+  bool refreshBlocks(AccelerationSource& system, double t);
   // (x) => A^-1 x by the dense or the sparse LU, whichever the last jacobian() formed
   void solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   // (step of h) => Newton with the current matrix, then with a fresh one; false if both fail

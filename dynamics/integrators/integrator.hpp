@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <vector>
 #include <stdexcept>
 #include <string_view>
 
@@ -44,6 +45,15 @@ class AccelerationSource {
   /// The structure of d a / d(q, v) when the source knows it (lumped-mass lines), or nullptr
   /// (the default: dense). Implicit methods then form and factorise a sparse Newton matrix.
   virtual const JacobianPattern* jacobianPattern() const { return nullptr; }
+  /// The blocks of the Jacobian known in closed form (with a pattern only), or nullptr.
+  virtual const JacobianBlocks* jacobianBlocks() const { return nullptr; }
+  /// (t, q, v) => the values of jacobianBlocks()' blocks, d a/d q (1/s^2) and d a/d v (1/s), in
+  /// its order; returns a signature of the force laws' switches (slack or taut, contact) that
+  /// changes when one switches.
+  virtual std::uint64_t blockJacobian(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/,
+                                      std::vector<Eigen::Matrix3d>& /*dq*/, std::vector<Eigen::Matrix3d>& /*dv*/) {
+    return 0;
+  }
 
   /// Whether some force of the source switches between branches of its law (a contact closing or
   /// opening) that regime() tells apart; false (the default): regime() is never asked.

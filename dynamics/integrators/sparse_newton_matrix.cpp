@@ -1,17 +1,18 @@
 #include "dynamics/integrators/sparse_newton_matrix.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
 namespace yardsim::dynamics {
 
-SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern)
+SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern,
+                                       const JacobianBlocks* blocks)
     : model_(model) {
-  // (pattern) => colouring; A's compressed columns: the pattern's rows and the diagonal
+  // (pattern) => A's compressed columns: the pattern's rows and the diagonal
   const int n = model.nv;
   if (pattern.n != n || static_cast<int>(pattern.rows.size()) != n)
     throw std::invalid_argument("SparseNewtonMatrix: the pattern is not nv x nv");
-  colouring_ = colourColumns(pattern);
   std::vector<Eigen::Triplet<double>> entries;
   for (int j = 0; j < n; ++j) {
     entries.emplace_back(j, j, 1.0);
@@ -24,10 +25,60 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
   for (int j = 0; j < n; ++j)
     for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
       if (A_.innerIndexPtr()[k] == j) diagonal_[static_cast<std::size_t>(j)] = k;
+  // (blocks) => their entries' places; the columns they cover whole leave the colouring
+  auto place = [&](int i, int j) {
+    for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
+      if (A_.innerIndexPtr()[k] == i) return k;
+    throw std::invalid_argument("SparseNewtonMatrix: a closed-form block lies outside the pattern");
+  };
+  std::vector<int> covered(static_cast<std::size_t>(n), 0);  // per column: rows in blocks
+  if (blocks != nullptr) {
+    for (const auto& [r0, c0] : blocks->at) {
+      if (r0 < 0 || c0 < 0 || r0 + 3 > n || c0 + 3 > n)
+        throw std::invalid_argument("SparseNewtonMatrix: a closed-form block leaves the matrix");
+      std::array<int, 9> idx{};
+      for (int b = 0; b < 3; ++b) {
+        for (int a = 0; a < 3; ++a)
+          idx[static_cast<std::size_t>(3 * b + a)] = place(r0 + a, c0 + b);
+        covered[static_cast<std::size_t>(c0 + b)] += 3;
+      }
+      blockIndex_.push_back(idx);
+    }
+    dq_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
+    dv_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
+  }
+  JacobianPattern differenced = pattern;  // the columns that still need differences
+  std::vector<char> closed(static_cast<std::size_t>(n), 0);
+  for (int j = 0; j < n; ++j) {
+    auto& rows = differenced.rows[static_cast<std::size_t>(j)];
+    const bool hasDiagonal = std::find(rows.begin(), rows.end(), j) != rows.end();
+    const int count = static_cast<int>(rows.size());
+    if (hasDiagonal && covered[static_cast<std::size_t>(j)] >= count) {
+      closed[static_cast<std::size_t>(j)] = 1;
+      rows.clear();
+    }
+  }
+  colouring_ = colourColumns(differenced);
+  if (blocks != nullptr) {
+    // (colouring of all columns) => without the closed ones, empty colours dropped
+    ColumnColouring kept;
+    kept.colour.assign(static_cast<std::size_t>(n), -1);
+    for (const auto& cols : colouring_.columns) {
+      std::vector<int> open;
+      for (int j : cols)
+        if (!closed[static_cast<std::size_t>(j)]) open.push_back(j);
+      if (open.empty()) continue;
+      for (int j : open) kept.colour[static_cast<std::size_t>(j)] = kept.count();
+      kept.columns.push_back(std::move(open));
+    }
+    colouring_ = std::move(kept);
+  }
   fq_.setZero(A_.nonZeros());
   fv_.setZero(A_.nonZeros());
   for (Eigen::VectorXd* x : {&step_, &deltaP_, &vp_, &fp_}) x->setZero(n);
   qp_.setZero(model.nq);
+  y_.setZero(n);
+  work_.setZero(n);
   lu_.analyzePattern(A_);
 }
 
@@ -41,6 +92,20 @@ void SparseNewtonMatrix::scatter(const std::vector<int>& cols, const Eigen::Vect
     }
 }
 
+bool SparseNewtonMatrix::applyBlocks(std::uint64_t signature) {
+  // (blocks) => their nine entries each in F_q and F_v
+  for (std::size_t b = 0; b < blockIndex_.size(); ++b)
+    for (int e = 0; e < 9; ++e) {
+      const auto k = static_cast<std::size_t>(e);
+      fq_[blockIndex_[b][k]] = dq_[b](e % 3, e / 3);
+      fv_[blockIndex_[b][k]] = dv_[b](e % 3, e / 3);
+    }
+  const bool changed = !applied_ || signature != signature_;
+  applied_ = true;
+  signature_ = signature;
+  return changed;
+}
+
 bool SparseNewtonMatrix::factorise(double cq, double cv) {
   // (F_q, F_v on the structure) => A's values, then the numeric LU on the analysed ordering
   Eigen::Map<Eigen::VectorXd> a(A_.valuePtr(), A_.nonZeros());
@@ -51,12 +116,51 @@ bool SparseNewtonMatrix::factorise(double cq, double cv) {
   return ok_;
 }
 
+namespace {
+// (L of a SparseLU: unit lower, supernodal; x; work sized n, zero) => x = L^-1 x. Eigen 3.4's
+// MappedSuperNodalMatrix::solveInPlace with its work vector passed in instead of allocated
+template <class Supernodal>
+void lowerSolve(const Supernodal& L, Eigen::VectorXd& x, Eigen::VectorXd& work) {
+  using Map = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+  const double* values = L.valuePtr();
+  for (Eigen::Index k = 0; k <= L.nsuper(); ++k) {
+    const Eigen::Index first = L.supToCol()[k], start = L.rowIndexPtr()[first];
+    const Eigen::Index rows = L.rowIndexPtr()[first + 1] - start;
+    const Eigen::Index cols = L.supToCol()[k + 1] - first, below = rows - cols;
+    if (cols == 1) {
+      typename Supernodal::InnerIterator it(L, first);
+      for (++it; it; ++it) x[it.row()] -= x[first] * it.value();
+      continue;
+    }
+    const Eigen::Index at = L.colIndexPtr()[first];
+    const Eigen::Index lda = L.colIndexPtr()[first + 1] - at;
+    auto u = x.segment(first, cols);
+    Map(values + at, cols, cols, Eigen::OuterStride<>(lda))
+        .triangularView<Eigen::UnitLower>()
+        .solveInPlace(u);
+    work.head(below).noalias() =
+        Map(values + at + cols, below, cols, Eigen::OuterStride<>(lda)) * u;
+    for (Eigen::Index i = 0; i < below; ++i) {
+      x[L.rowIndex()[start + cols + i]] -= work[i];
+      work[i] = 0.0;
+    }
+  }
+}
+}  // namespace
+
 void SparseNewtonMatrix::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // (b) => P_c^-1 U^-1 L^-1 P_r b, as SparseLU::solve but in the preallocated y_, work_ and x
   if (!ok_) {
     x.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  x = lu_.solve(b);
+  const auto& pr = lu_.rowsPermutation().indices();
+  const auto& pc = lu_.colsPermutation().indices();
+  for (Eigen::Index i = 0; i < b.size(); ++i) y_[pr[i]] = b[i];
+  lowerSolve(lu_.matrixL().m_mapL, y_, work_);
+  lu_.matrixU().solveInPlace(y_);
+  x.resize(b.size());
+  for (Eigen::Index i = 0; i < b.size(); ++i) x[i] = y_[pc[i]];
 }
 
 void SparseNewtonMatrix::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {

@@ -6,12 +6,18 @@
 // (compressed columns), and factorised by Eigen's SparseLU with the COLAMD ordering analysed once
 // at construction. The factorisation then costs about what the fill of the pattern does: linear
 // in the nodes of banded lines, where a dense LU is cubic (docs/performance.md).
+// The blocks a system gives in closed form (JacobianBlocks: a lumped line's nodes among
+// themselves) are written from the system's blockJacobian instead, and a column all of whose
+// entries lie in such blocks is left out of the colours: the differences are then needed only for
+// the columns of the rigid dofs and of the nodes next to them.
 // F is the accelerations (1/s^2 per m or rad, 1/s per m/s or rad/s); A is dimensionless.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "dynamics/configuration.hpp"
@@ -22,9 +28,11 @@ namespace yardsim::dynamics {
 
 class SparseNewtonMatrix {
  public:
-  // (model, pattern of F_q and F_v) => the colouring, A's structure (the pattern and the
-  // diagonal) and its ordering; throws std::invalid_argument when the pattern is not nv x nv
-  SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern);
+  // (model, pattern of F_q and F_v, blocks given in closed form or null) => the colouring of the
+  // columns the blocks do not cover, A's structure (the pattern and the diagonal) and its
+  // ordering; throws std::invalid_argument when the pattern is not nv x nv or a block leaves it
+  SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern,
+                     const JacobianBlocks* blocks = nullptr);
 
   const ColumnColouring& colouring() const { return colouring_; }
   int nonZeros() const { return static_cast<int>(A_.nonZeros()); }
@@ -58,6 +66,14 @@ class SparseNewtonMatrix {
     return 2 * colouring_.count();
   }
 
+  // the blocks' values, to be filled by AccelerationSource::blockJacobian (3x3 each)
+  bool hasBlocks() const { return !blockIndex_.empty(); }
+  std::vector<Eigen::Matrix3d>& blockDq() { return dq_; }
+  std::vector<Eigen::Matrix3d>& blockDv() { return dv_; }
+  // (blocks filled, their switch signature) => written into F_q and F_v; true when the signature
+  // differs from the one last written (a segment went slack or taut, a node touched the bed)
+  bool applyBlocks(std::uint64_t signature);
+
   // (c_q, c_v) => LU of A = I - c_q F_q - c_v F_v; false when SparseLU finds it singular
   bool factorise(double cq, double cv);
   // (b) => x = A^-1 b (NaN when the last factorisation failed: Newton then gives up)
@@ -78,6 +94,11 @@ class SparseNewtonMatrix {
   std::vector<int> diagonal_;      // per column: the index of its diagonal entry in A_'s values
   Eigen::VectorXd fq_, fv_;        // F_q, F_v on A_'s structure
   Eigen::VectorXd step_, deltaP_, qp_, vp_, fp_;
+  mutable Eigen::VectorXd y_, work_;  // solve(): the permuted right-hand side, L's work vector
+  std::vector<std::array<int, 9>> blockIndex_;  // per block: its entries in A_'s values, by column
+  std::vector<Eigen::Matrix3d> dq_, dv_;
+  std::uint64_t signature_ = 0;
+  bool applied_ = false;
   bool ok_ = false;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
 };

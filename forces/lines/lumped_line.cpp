@@ -152,4 +152,103 @@ void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd&
   }
 }
 
+namespace {
+// (x) => d(|x| x)/dx = |x| I + x x^T / |x| (zero at x = 0)
+Matrix3 quadraticGradient(const Vector3& x) {
+  const double n = x.norm();
+  return n > 0.0 ? Matrix3(n * Matrix3::Identity() + x * x.transpose() / n) : Matrix3::Zero();
+}
+}  // namespace
+
+std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v,
+                                        double t, std::vector<Matrix3>& dfdr,
+                                        std::vector<Matrix3>& dfdv) const {
+  const int n = p_.segments;
+  const double rho = p_.waterDensity;
+  for (std::size_t k = 0; k < dfdr.size(); ++k) {
+    dfdr[k].setZero();
+    dfdv[k].setZero();
+  }
+  std::uint64_t signature = 1469598103934665603ull;  // FNV-1a over the switches
+  auto mix = [&](bool on) { signature = (signature ^ (on ? 1u : 2u)) * 1099511628211ull; };
+  auto at = [](int node, int other) {
+    return static_cast<std::size_t>(3 * node + other - node + 1);
+  };
+  // (taut segment, d = r_(i+1) - r_i, u = d/|d|, P = I - u u^T) => d(T u)/dd = EA/l u u^T
+  // + T/|d| P + c/(l |d|) u (P dv)^T and d(T u)/d(dv) = c/l u u^T; T u acts on i, -T u on i + 1
+  for (int i = 0; i < n; ++i) {
+    const Vector3 d = r.col(i + 1) - r.col(i);
+    const double len = d.norm();
+    bool taut = false;
+    if (len > l_) {
+      const Vector3 u = d / len, dv = v.col(i + 1) - v.col(i);
+      const double T = p_.ea * (len / l_ - 1.0) + c_ * u.dot(dv) / l_;
+      if (T > 0.0) {
+        taut = true;
+        const Matrix3 uu = u * u.transpose(), P = Matrix3::Identity() - uu;
+        const Matrix3 K =
+            (p_.ea / l_) * uu + (T / len) * P + (c_ / (l_ * len)) * u * (P * dv).transpose();
+        const Matrix3 C = (c_ / l_) * uu;
+        dfdr[at(i, i + 1)] += K;
+        dfdr[at(i, i)] -= K;
+        dfdr[at(i + 1, i + 1)] -= K;
+        dfdr[at(i + 1, i)] += K;
+        dfdv[at(i, i + 1)] += C;
+        dfdv[at(i, i)] -= C;
+        dfdv[at(i + 1, i + 1)] -= C;
+        dfdv[at(i + 1, i)] += C;
+      }
+    }
+    mix(taut);
+  }
+  // (nodes) => drag on the relative velocity vr = u_f - v: -(kn G(vn) (I - q q^T) + kt G(vt) q q^T)
+  for (int i = 0; i <= n; ++i) {
+    const Vector3 p = r.col(i), vi = v.col(i);
+    Matrix3& kr = dfdr[at(i, i)];
+    Matrix3& kv = dfdv[at(i, i)];
+    if (p_.cdn > 0.0 || p_.cdt > 0.0) {
+      const double ls = 0.5 * ((i > 0 ? (r.col(i) - r.col(i - 1)).norm() : 0.0) +
+                               (i < n ? (r.col(i + 1) - r.col(i)).norm() : 0.0));
+      const Vector3 q = tangent(r, i);
+      Vector3 uf = current_ ? current_->velocity(p) : Vector3::Zero();
+      if (waves_) uf += waves_->velocity(p, t);
+      const Vector3 vr = uf - vi;
+      const Vector3 vt = vr.dot(q) * q, vn = vr - vt;
+      const Matrix3 qq = q * q.transpose();
+      const double k = 0.5 * rho * p_.diameter * ls;
+      kv -= k * (p_.cdn * quadraticGradient(vn) * (Matrix3::Identity() - qq) +
+                 p_.cdt * std::numbers::pi * quadraticGradient(vt) * qq);
+    }
+    // (below the bed, pressing) => N = (z_bed - z) kb d l_n - vz cb d l_n; friction -mu N g vh
+    // with g = min(1, s/s0)/s on the horizontal velocity vh, s = |vh|
+    bool onBed = false, sliding = false;
+    if (p_.seabed && p.z() < p_.seabedZ) {
+      const double dl = p_.diameter * nodeLength(i);
+      const double normal =
+          (p_.seabedZ - p.z()) * p_.bedStiffness * dl - vi.z() * p_.bedDamping * dl;
+      if (normal > 0.0) {
+        onBed = true;
+        const double dNdz = -p_.bedStiffness * dl, dNdvz = -p_.bedDamping * dl;
+        kr(2, 2) += dNdz;
+        kv(2, 2) += dNdvz;
+        if (p_.bedFriction > 0.0) {
+          const Vector3 vh(vi.x(), vi.y(), 0.0);
+          const double s = vh.norm();
+          sliding = s >= p_.frictionSpeed;
+          const double g = sliding ? 1.0 / s : 1.0 / p_.frictionSpeed;
+          const double mu = p_.bedFriction;
+          kr.col(2) -= mu * g * dNdz * vh;
+          kv.col(2) -= mu * g * dNdvz * vh;
+          Matrix3 Ih = Matrix3::Zero();
+          Ih(0, 0) = Ih(1, 1) = 1.0;
+          kv -= mu * normal * g * (sliding ? Matrix3(Ih - vh * vh.transpose() / (s * s)) : Ih);
+        }
+      }
+    }
+    mix(onBed);
+    mix(sliding);
+  }
+  return signature;
+}
+
 }  // namespace yardsim::forces

@@ -15,6 +15,7 @@
 // positions and velocities; lumped_line_provider.hpp makes the inner nodes bodies of the
 // multibody tree (their states integrated with the rest); the end nodes' forces are what the
 // attached bodies (anchor, fairlead) feel, their own weight share included.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,17 @@ class LumpedLine {
   // the bed springs), N, sized 3 x nodes(); nodeForces minus it is what dissipates or comes from
   // the flow (internal and bed damping, friction, drag, fluid inertia). Allocation-free.
   void conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const;
+  // (r, v, t) => per node i the 3x3 blocks df_i/dr_j (N/m) and df_i/dv_j (N s/m) of nodeForces
+  // for j = i - 1, i, i + 1 at [3 i + j - i + 1] (zero past the ends), both sized 3 nodes():
+  // the taut segments' EA/l u u^T + T/|d| (I - u u^T) with their damping's terms (zero while
+  // slack), the drag's velocity terms, the bed's spring, damping and friction. Left out: the
+  // drag's and the fluid inertia's dependence on the positions (the flow field, the tangent,
+  // the stretched length), small beside EA/l. Returns a signature of the switches (taut
+  // segments, nodes on the bed, friction below its regularising speed): it changes when one
+  // does. Allocation-free.
+  std::uint64_t forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v, double t,
+                              std::vector<dynamics::Matrix3>& dfdr,
+                              std::vector<dynamics::Matrix3>& dfdv) const;
 
  private:
   // (r, node) => unit tangent: along the chord of its neighbours (the end segment at an end)

@@ -175,4 +175,20 @@ double LumpedLineProvider::laidLength(const Stage& s) const {
   return laid;
 }
 
+std::uint64_t LumpedLineProvider::accelerationJacobian(const Stage& s,
+                                                       std::vector<dynamics::Matrix3>& dadr,
+                                                       std::vector<dynamics::Matrix3>& dadv) const {
+  // (node forces' blocks) => the inner nodes' rows over their masses
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& w = scratchOf<Scratch>(s, temporary);
+  gather(s, w);
+  const std::uint64_t signature = line_->forceJacobian(w.r, w.v, s.t, dadr, dadv);
+  for (int i = 1; i < line_->properties().segments; ++i)
+    for (int k = 3 * i; k < 3 * i + 3; ++k) {
+      dadr[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
+      dadv[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
+    }
+  return signature;
+}
+
 }  // namespace yardsim::forces

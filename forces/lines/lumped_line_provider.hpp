@@ -69,6 +69,13 @@ class LumpedLineProvider final : public ForceProvider {
   double anchorTension(const Stage& s) const;
   // (stage) => unstretched length of the nodes at or below the sea bed (0 without one), m
   double laidLength(const Stage& s) const;
+  // (stage) => per inner node i the blocks d a_i/d r_j (1/s^2) and d a_i/d v_j (1/s) of its
+  // acceleration a_i = f_i / m_i (a point mass on its own joint) for j = i - 1, i, i + 1 at
+  // [3 i + j - i + 1] (LumpedLine::forceJacobian over the node's mass; the end nodes' rows are
+  // the force's, N/m and N s/m), both sized 3 (N + 1); returns the line's switch signature.
+  // Allocation-free.
+  std::uint64_t accelerationJacobian(const Stage& s, std::vector<dynamics::Matrix3>& dadr,
+                                     std::vector<dynamics::Matrix3>& dadv) const;
 
   const LumpedLine& line() const { return *line_; }
   const Attachment& anchor() const { return anchor_; }

@@ -110,11 +110,14 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
   p.cdt = nonNegative(r, n["cdt"], key + ".cdt", 0.05);
   p.can = nonNegative(r, n["can"], key + ".can", 1.0);
   p.cat = nonNegative(r, n["cat"], key + ".cat", 0.0);
+  // (water_density: an override; else the scene's water: density, inSea below)
+  const bool ownDensity = static_cast<bool>(n["water_density"]);
   p.waterDensity = nonNegative(r, n["water_density"], key + ".water_density", 1025.0);
   p.gravity = nonNegative(r, n["gravity"], key + ".gravity", 9.81);
   const bool worldAnchor = out.attachments[0].first == "world";
   const double area = 0.25 * M_PI * p.diameter * p.diameter;
   p.seabed = worldAnchor && p.massPerLength > p.waterDensity * area;
+  const bool ownSeabed = static_cast<bool>(n["seabed"]);
   if (const YAML::Node s = n["seabed"]) {
     if (!s.IsScalar() || !YAML::convert<bool>::decode(s, p.seabed))
       r.fail(s, key + ".seabed", "expected true or false");
@@ -133,11 +136,29 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
     r.fail(n, key, e.what());
     return;
   }
-  out.bodies = lumpedLineBodies(p);  // (full name, ends at q0) => the inner nodes
+  // (the scene's environment) => the properties in it: the scene's water density unless the
+  // line gives its own, and with it the default sea bed (a sinking line anchored in the world)
+  auto inSea = [p, ownDensity, ownSeabed, worldAnchor, area](const MechanicsSpec& env) {
+    forces::LumpedLineProperties q = p;
+    if (!ownDensity && env.hasWater) q.waterDensity = env.water.density;
+    if (!ownSeabed) q.seabed = worldAnchor && q.massPerLength > q.waterDensity * area;
+    return q;
+  };
+  // (full name, ends at q0, the scene's environment) => the inner nodes: point masses on
+  // translation joints from the world
+  out.bodiesInSea = [inSea](const std::string& name, const std::vector<dynamics::Vector3>& at,
+                            const MechanicsSpec& env) {
+    const forces::LumpedLineProperties sea = inSea(env);
+    const forces::LumpedLine line(sea, name);
+    std::vector<MechanicsSpec::Body> bodies;
+    for (const auto& node : forces::lumpedLineNodes(line, name, at.at(0), at.at(1)))
+      bodies.push_back(lumpedNodeBody(node, sea.diameter));
+    return bodies;
+  };
   // (full name, the system with its sea, ends) => the provider; the line sees the scene's waves
   // (regular or irregular components) and current, owned with it; none in still water
-  out.buildFromSystem = [p](const std::string& name, const mechanics::BuiltMechanics& mech,
-                            const std::vector<forces::Attachment>& at) {
+  out.buildFromSystem = [inSea](const std::string& name, const mechanics::BuiltMechanics& mech,
+                                const std::vector<forces::Attachment>& at) {
     struct Owner {
       std::unique_ptr<const forces::AiryWaves> waves;
       std::unique_ptr<const forces::CurrentField> current;
@@ -145,13 +166,14 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
     };
     auto owner = std::make_shared<Owner>();
     const MechanicsSpec& env = mech.environment;
+    const forces::LumpedLineProperties sea = inSea(env);
     if (!env.waves.empty()) {
       forces::WaterProperties water = env.water;  // (as the system's sea: mechanics/system.cpp)
       if (-mech.model.gravity.z() > 0 && !env.hasWater) water.gravity = -mech.model.gravity.z();
       owner->waves = std::make_unique<const forces::AiryWaves>(water, env.waves);
     }
     if (env.current) owner->current = std::make_unique<const forces::CurrentField>(*env.current);
-    owner->line.emplace(p, name, owner->waves.get(), owner->current.get());
+    owner->line.emplace(sea, name, owner->waves.get(), owner->current.get());
     const std::shared_ptr<const forces::LumpedLine> line(owner, &*owner->line);
     return forces::withOutputs<forces::LumpedLineProvider>(
         std::make_unique<forces::LumpedLineProvider>(name, mech.model, at.at(0), at.at(1), line),

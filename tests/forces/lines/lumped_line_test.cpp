@@ -301,3 +301,92 @@ TEST_CASE("Morison drag in a current, fluid inertia in waves, added mass, the se
   bad.cdn = -1.0;
   CHECK_THROWS_AS(LumpedLine(bad, "bad"), std::invalid_argument);
 }
+
+namespace {
+
+// (line, r, v, which: 0 positions, 1 velocities) => d f / d x by central differences, 3 nodes x
+// 3 nodes, with a step of 1e-6 m or m/s
+Eigen::MatrixXd centralJacobian(const LumpedLine& line, const Eigen::Matrix3Xd& r,
+                                const Eigen::Matrix3Xd& v, int which) {
+  const int n = line.nodes();
+  Eigen::MatrixXd J(3 * n, 3 * n);
+  Eigen::Matrix3Xd fp(3, n), fm(3, n);
+  Eigen::VectorXd tension(n - 1);
+  const double h = 1e-6;
+  for (int j = 0; j < 3 * n; ++j) {
+    Eigen::Matrix3Xd rp = r, vp = v, rm = r, vm = v;
+    (which == 0 ? rp : vp)(j % 3, j / 3) += h;
+    (which == 0 ? rm : vm)(j % 3, j / 3) -= h;
+    line.nodeForces(rp, vp, 0.0, fp, tension);
+    line.nodeForces(rm, vm, 0.0, fm, tension);
+    J.col(j) = Eigen::Map<const Eigen::VectorXd>(fp.data(), 3 * n) / (2 * h) -
+               Eigen::Map<const Eigen::VectorXd>(fm.data(), 3 * n) / (2 * h);
+  }
+  return J;
+}
+
+// (blocks per node, slot 3 i + j - i + 1) => the dense 3 nodes x 3 nodes matrix
+Eigen::MatrixXd denseBlocks(const std::vector<Matrix3>& b, int nodes) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(3 * nodes, 3 * nodes);
+  for (int i = 0; i < nodes; ++i)
+    for (int j = std::max(0, i - 1); j <= std::min(nodes - 1, i + 1); ++j)
+      J.block<3, 3>(3 * i, 3 * j) = b[static_cast<std::size_t>(3 * i + j - i + 1)];
+  return J;
+}
+
+}  // namespace
+
+TEST_CASE("the line's force Jacobian equals central differences: taut and slack, bed, friction") {
+  // (6 segments of 10 m: taut ones stretched 0.5 %, slack ones 5 % short; nodes 1 and 2 pressed
+  // 5 mm into the bed with friction, node 1 sliding at 0.1 m/s, node 2 below the regularising
+  // speed; every node moving) => df/dr without drag (the drag's position terms are left out by
+  // design) and df/dv with drag, block by block, against central differences
+  LumpedLineProperties p = chain(6, true);
+  p.length = 60.0;
+  p.bedFriction = 0.5;
+  p.seabedZ = -0.005;  // nodes 1 and 2 5 mm into it, the anchor above it
+  p.cdn = 0.0;
+  p.cdt = 0.0;
+  const std::vector<double> lengths{10.05, 9.5, 10.05, 10.05, 9.5, 10.05};
+  Eigen::Matrix3Xd r(3, 7), v(3, 7);
+  r.col(0) = Vector3(0.0, 0.0, 0.0);
+  const std::vector<Vector3> dirs{{1, 0, -0.001}, {1, 0, 0},     {1, -0.1, 0.3},
+                                  {1, 0.3, 0.5},  {0.8, 0.1, 1}, {1, -0.2, 0.7}};
+  for (int i = 0; i < 6; ++i)
+    r.col(i + 1) = r.col(i) + lengths[static_cast<std::size_t>(i)] *
+                                  dirs[static_cast<std::size_t>(i)].normalized();
+  for (int i = 0; i < 7; ++i) v.col(i) = Vector3(0.03 * i, -0.02 * i, 0.01 * (i % 3));
+  v.col(1) = Vector3(0.1, 0.02, 0.05);
+  v.col(2) = Vector3(2e-4, -1e-4, 0.01);
+  std::vector<Matrix3> dfdr(21), dfdv(21);
+  const auto check = [&](const LumpedLine& line, int which) {
+    line.forceJacobian(r, v, 0.0, dfdr, dfdv);
+    const Eigen::MatrixXd A = denseBlocks(which == 0 ? dfdr : dfdv, 7);
+    const Eigen::MatrixXd N = centralJacobian(line, r, v, which);
+    for (int i = 0; i < 7; ++i)
+      for (int j = 0; j < 7; ++j) {
+        const Eigen::Matrix3d a = A.block<3, 3>(3 * i, 3 * j), c = N.block<3, 3>(3 * i, 3 * j);
+        INFO((which == 0 ? "df/dr" : "df/dv") << " block " << i << ", " << j << "\nclosed form\n"
+                                              << a << "\ncentral\n"
+                                              << c);
+        CHECK((a - c).norm() <= 1e-6 * c.norm() + 1e-2);
+        if (std::abs(i - j) > 1) CHECK(c.norm() == 0.0);
+      }
+    CHECK(A.norm() > 1e7);  // EA/l = 7.5e7 N/m or c/l = 1.6e5 N s/m: something is compared
+  };
+  check(LumpedLine(p, "still"), 0);
+  check(LumpedLine(p, "still"), 1);
+  p.cdn = 1.2;
+  p.cdt = 0.4;
+  check(LumpedLine(p, "drag"), 1);
+  // (the switches) => the signature changes when a segment goes slack or a node leaves the bed
+  const LumpedLine line(p, "drag");
+  const std::uint64_t s0 = line.forceJacobian(r, v, 0.0, dfdr, dfdv);
+  CHECK(line.forceJacobian(r, v, 0.0, dfdr, dfdv) == s0);
+  Eigen::Matrix3Xd moved = r;
+  moved.col(6) -= 0.2 * (r.col(6) - r.col(5));  // the last segment 20 % shorter: slack
+  CHECK(line.forceJacobian(moved, v, 0.0, dfdr, dfdv) != s0);
+  moved = r;
+  moved(2, 2) = 0.0;  // node 2 above the bed
+  CHECK(line.forceJacobian(moved, v, 0.0, dfdr, dfdv) != s0);
+}

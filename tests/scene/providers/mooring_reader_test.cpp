@@ -249,14 +249,14 @@ struct LumpedInSea {
   }
 };
 LumpedInSea lumpedInSea(const testing::SceneDir& dir, char axis, const std::string& water,
-                        const std::string& keys, double t) {
+                        const std::string& keys, double t, double density = 1025.0) {
   const std::string post = axis == 'x' ? "[100, 0, -20]" : "[0, 100, -20]";
   const std::string text = R"(schema_version: 1
 integrator: {method: hht, dt: 0.05}
 mechanics:
   gravity: [0, 0, 0]
-  water: {density: 1025.0, level: 0.0, depth: 40.0)" +
-                           water + R"(}
+  water: {density: )" + std::to_string(density) +
+                           R"(, level: 0.0, depth: 40.0)" + water + R"(}
   bodies:
     post: {parent: world, joint: {type: fixed}, placement: {xyz: )" +
                            post + R"(}, mass: 1.0e3, inertia: [1, 1, 1]}
@@ -338,4 +338,34 @@ TEST_CASE("mooring: a lumped line in the scene's waves feels the Morison inertia
     ++checked;
   }
   CHECK(checked == 3);
+}
+
+TEST_CASE("mooring: a lumped line takes the scene's water density unless it gives its own") {
+  // (scene water 1000 kg/m^3, a current across the line) => per inner node the drag
+  // 1/2 rho Cdn d l_s U^2 over the mass (mu + rho A Can) l with rho = 1000; with the line's own
+  // water_density: 1025 the same with 1025; the node bodies' masses alike
+  testing::SceneDir dir;
+  const double U = 1.5, cdn = 1.1, can = 0.8, A = 0.25 * M_PI * kD * kD;
+  const std::string current = ", current: {speed: 1.5, direction_deg: 90}";
+  const auto scene = lumpedInSea(dir, 'x', current, ", cdn: 1.1, can: 0.8", 0.0, 1000.0);
+  const auto own =
+      lumpedInSea(dir, 'x', current, ", cdn: 1.1, can: 0.8, water_density: 1025", 0.0, 1000.0);
+  for (const auto* c : {&scene, &own}) {
+    const double rho = c == &scene ? 1000.0 : 1025.0;
+    const auto& model = c->mech->model;
+    auto at = [&](int i) -> Eigen::Vector3d {
+      if (i == 0) return {0, 0, -20};
+      if (i == 4) return {100, 0, -20};
+      return c->mech->q0.segment<3>(model.idxQ[model.bodyIndex("line.node" + std::to_string(i))]);
+    };
+    const double m = (kMu + rho * A * can) * kL;
+    for (int i = 1; i < 4; ++i) {
+      const std::string node = "line.node" + std::to_string(i);
+      const double ls = 0.5 * ((at(i) - at(i - 1)).norm() + (at(i + 1) - at(i)).norm());
+      INFO(node << " at rho " << rho);
+      CHECK(model.inertias[model.bodyIndex(node)].mass == Approx(m).epsilon(1e-12));
+      CHECK(c->a[c->nodeV(node) + 1] ==
+            Approx(0.5 * rho * cdn * kD * ls * U * U / m).epsilon(1e-9));
+    }
+  }
 }

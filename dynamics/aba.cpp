@@ -12,9 +12,10 @@ namespace {
 
 // (body i with an NV-dof joint, IA_W[i], PA_W[i], c = C_W[i]) => U = IA S, D^-1 = (S^T U)^-1,
 // u = tau - S^T PA, and the articulated inertia and bias handed to the parent p (p = 0: none);
-// fixed-size maps of Data's buffers: the same doubles as the dynamic-size code below (the examples'
-// outputs are byte-identical) without its heap temporaries (Eigen's dynamic inverse and
-// matrix-matrix products call malloc for their blocking workspace at every call)
+// fixed-size maps of Data's buffers, used for the free joint (NV = 6): the same doubles as the
+// dynamic-size code below without its heap temporaries (Eigen's dynamic-size inverse takes its
+// LU's workspace from malloc at every call). For NV = 2, 3 the fixed-size code differs from the
+// dynamic one in the last bits, so those joints keep the dynamic code (and its malloc).
 template <int NV>
 inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorXd& tau) {
   const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
@@ -22,8 +23,7 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
   Eigen::Map<Eigen::Matrix<double, NV, NV>> Dinv(d.Dinv[i].data());
   Eigen::Map<Eigen::Matrix<double, NV, 1>> u(d.u[i].data());
   U.noalias() = d.IA_W[i] * S;
-  // (as Eigen's dynamic-size inverse does, also for NV = 2, 3, where its fixed-size one uses
-  // closed forms with other last bits)
+  // (as Eigen's dynamic-size inverse does; its fixed-size one would use closed forms for NV <= 4)
   Dinv = Eigen::PartialPivLU<Eigen::Matrix<double, NV, NV>>(S.transpose() * U).inverse();
   u.noalias() = tau.segment<NV>(iv) - S.transpose() * d.PA_W[i];
   if (p == 0) return;
@@ -114,10 +114,6 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.IA_W[p].noalias() -= (Dinv * U) * U.transpose();
     } else if (nv == 6) {
       abaJointBackward<6>(d, i, p, iv, tau);
-    } else if (nv == 3) {
-      abaJointBackward<3>(d, i, p, iv, tau);
-    } else if (nv == 2) {
-      abaJointBackward<2>(d, i, p, iv, tau);
     } else if (nv > 0) {
       const auto S = d.S_W.middleCols(iv, nv);
       d.U[i].noalias() = d.IA_W[i] * S;
@@ -147,10 +143,6 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.A_W[i] = a + d.S_W.col(iv) * qdd;
     } else if (nv == 6) {
       abaJointForward<6>(d, i, iv, a);
-    } else if (nv == 3) {
-      abaJointForward<3>(d, i, iv, a);
-    } else if (nv == 2) {
-      abaJointForward<2>(d, i, iv, a);
     } else if (nv > 0) {
       auto qdd = d.ddq.segment(iv, nv);
       qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);

@@ -12,10 +12,9 @@ namespace {
 
 // (body i with an NV-dof joint, IA_W[i], PA_W[i], c = C_W[i]) => U = IA S, D^-1 = (S^T U)^-1,
 // u = tau - S^T PA, and the articulated inertia and bias handed to the parent p (p = 0: none);
-// fixed-size maps of Data's buffers, used for the free joint (NV = 6): the same doubles as the
-// dynamic-size code below without its heap temporaries (Eigen's dynamic-size inverse takes its
-// LU's workspace from malloc at every call). For NV = 2, 3 the fixed-size code differs from the
-// dynamic one in the last bits, so those joints keep the dynamic code (and its malloc).
+// fixed-size maps of Data's buffers, without the heap temporaries of the dynamic-size code below
+// (Eigen's dynamic-size inverse takes its LU's workspace from malloc at every call): for the free
+// joint (NV = 6) the same doubles, for NV = 2, 3 the same to round-off (3.6e-13 relative in ddq)
 template <int NV>
 inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorXd& tau) {
   const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
@@ -114,6 +113,10 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.IA_W[p].noalias() -= (Dinv * U) * U.transpose();
     } else if (nv == 6) {
       abaJointBackward<6>(d, i, p, iv, tau);
+    } else if (nv == 3) {
+      abaJointBackward<3>(d, i, p, iv, tau);
+    } else if (nv == 2) {
+      abaJointBackward<2>(d, i, p, iv, tau);
     } else if (nv > 0) {
       const auto S = d.S_W.middleCols(iv, nv);
       d.U[i].noalias() = d.IA_W[i] * S;
@@ -143,6 +146,10 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.A_W[i] = a + d.S_W.col(iv) * qdd;
     } else if (nv == 6) {
       abaJointForward<6>(d, i, iv, a);
+    } else if (nv == 3) {
+      abaJointForward<3>(d, i, iv, a);
+    } else if (nv == 2) {
+      abaJointForward<2>(d, i, iv, a);
     } else if (nv > 0) {
       auto qdd = d.ddq.segment(iv, nv);
       qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);

@@ -1,5 +1,7 @@
 #include "dynamics/aba.hpp"
 
+#include <Eigen/LU>
+
 #include "dynamics/checks.hpp"
 #include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
@@ -7,6 +9,41 @@
 namespace yardsim::dynamics {
 
 namespace {
+
+// (body i with an NV-dof joint, IA_W[i], PA_W[i], c = C_W[i]) => U = IA S, D^-1 = (S^T U)^-1,
+// u = tau - S^T PA, and the articulated inertia and bias handed to the parent p (p = 0: none);
+// fixed-size maps of Data's buffers, without the heap temporaries of the dynamic-size code below
+// (Eigen's dynamic-size inverse takes its LU's workspace from malloc at every call): for the free
+// joint (NV = 6) the same doubles, for NV = 2, 3 the same to round-off (3.6e-13 relative in ddq)
+template <int NV>
+inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorXd& tau) {
+  const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
+  Eigen::Map<Eigen::Matrix<double, 6, NV>> U(d.U[i].data());
+  Eigen::Map<Eigen::Matrix<double, NV, NV>> Dinv(d.Dinv[i].data());
+  Eigen::Map<Eigen::Matrix<double, NV, 1>> u(d.u[i].data());
+  U.noalias() = d.IA_W[i] * S;
+  // (as Eigen's dynamic-size inverse does; its fixed-size one would use closed forms for NV <= 4)
+  Dinv = Eigen::PartialPivLU<Eigen::Matrix<double, NV, NV>>(S.transpose() * U).inverse();
+  u.noalias() = tau.segment<NV>(iv) - S.transpose() * d.PA_W[i];
+  if (p == 0) return;
+  const Motion& c = d.C_W[i];
+  const Eigen::Matrix<double, NV, 1> w = Dinv * (u - U.transpose() * c);
+  d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + U * w;
+  d.IA_W[p] += d.IA_W[i];
+  d.IA_W[p].noalias() -= U * Dinv * U.transpose();
+}
+
+// (body i with an NV-dof joint, a = A_W[parent] + C_W[i]) => ddq of the joint, A_W[i]
+template <int NV>
+inline void abaJointForward(Data& d, int i, int iv, const Motion& a) {
+  const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
+  const Eigen::Map<const Eigen::Matrix<double, 6, NV>> U(d.U[i].data());
+  const Eigen::Map<const Eigen::Matrix<double, NV, NV>> Dinv(d.Dinv[i].data());
+  const Eigen::Map<const Eigen::Matrix<double, NV, 1>> u(d.u[i].data());
+  auto qdd = d.ddq.segment<NV>(iv);
+  qdd.noalias() = Dinv * (u - U.transpose() * a);
+  d.A_W[i] = a + S * qdd;
+}
 
 // (q, v, tau, fext; with kPlaced, d.X_PB and d.X_WB already hold q's placements) => ddq
 // flatten (YARDSIM_FLATTEN): inline every Eigen helper into the three passes (GCC otherwise leaves
@@ -74,6 +111,12 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + U * (Dinv * (ui - U.dot(c)));
       d.IA_W[p] += d.IA_W[i];
       d.IA_W[p].noalias() -= (Dinv * U) * U.transpose();
+    } else if (nv == 6) {
+      abaJointBackward<6>(d, i, p, iv, tau);
+    } else if (nv == 3) {
+      abaJointBackward<3>(d, i, p, iv, tau);
+    } else if (nv == 2) {
+      abaJointBackward<2>(d, i, p, iv, tau);
     } else if (nv > 0) {
       const auto S = d.S_W.middleCols(iv, nv);
       d.U[i].noalias() = d.IA_W[i] * S;
@@ -101,6 +144,12 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       const double qdd = d.Dinv[i](0, 0) * (d.u[i][0] - d.U[i].col(0).dot(a));
       d.ddq[iv] = qdd;
       d.A_W[i] = a + d.S_W.col(iv) * qdd;
+    } else if (nv == 6) {
+      abaJointForward<6>(d, i, iv, a);
+    } else if (nv == 3) {
+      abaJointForward<3>(d, i, iv, a);
+    } else if (nv == 2) {
+      abaJointForward<2>(d, i, iv, a);
     } else if (nv > 0) {
       auto qdd = d.ddq.segment(iv, nv);
       qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);

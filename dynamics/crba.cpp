@@ -11,11 +11,16 @@ namespace yardsim::dynamics {
 YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "crba");
   // (q) => X_WB, S_W, IC_W = X_WB^* (I + A) X_WB^-1 (A: added mass)
+  // (placeBody, worldSubspaceColumn, matrixIn<true>: the shortcuts of RNEA and ABA for
+  // coordinate-axis joints and diagonal inertias, equal in value to the general products)
   for (int i = 1; i < m.nbodies; ++i) {
-    updateJointPlacement(m, d, i, q);
-    d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
-    for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
-    d.IC_W[i] = m.inertias[i].matrixIn(d.X_WB[i]);
+    placeBody(m, d, i, q);
+    if (m.jointNv[i] == 1) {
+      d.S_W.col(m.idxV[i]) = worldSubspaceColumn(m, d, i);
+    } else {
+      for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
+    }
+    d.IC_W[i] = m.inertiaDiagonal[i] ? m.inertias[i].matrixIn<true>(d.X_WB[i]) : m.inertias[i].matrixIn(d.X_WB[i]);
     if (d.hasAddedMass[i]) d.IC_W[i] += actInertia(d.X_WB[i], d.addedMass[i]);
   }
   // (IC_W) => composite inertias of subtrees

@@ -54,7 +54,9 @@ inline void updateJointPlacement(const Model& model, Data& data, int i, const Ei
     // the general path below, without its call and its axis-angle formula
     Transform& X = data.X_PB[i];
     if (j.type == JointType::Revolute) {
-      coordinateAxisRotation(k, std::sin(qi[0]), std::cos(qi[0]), X.R);
+      double s = 0.0, c = 0.0;
+      sinCos(qi[0], s, c);
+      coordinateAxisRotation(k, s, c, X.R);
       X.p = model.X_PJ[i].p + Vector3::Zero();
     } else {
       X.R.setIdentity();
@@ -78,7 +80,8 @@ template <int K>
 inline void placeRevolute(const Model& model, Data& data, int i, double q) {
   constexpr int a = (K + 1) % 3;
   constexpr int b = (K + 2) % 3;
-  const double s = std::sin(q), c = std::cos(q);
+  double s = 0.0, c = 0.0;
+  sinCos(q, s, c);
   Transform& X_PB = data.X_PB[i];
   coordinateAxisRotation(K, s, c, X_PB.R);
   X_PB.p = model.X_PJ[i].p + Vector3::Zero();

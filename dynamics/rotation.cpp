@@ -41,8 +41,8 @@ Matrix3 rightJacobianInverse(const Vector3& w) {
 }
 
 Matrix3 axisRotation(const Vector3& axis, double angle) {
-  const double s = std::sin(angle);
-  const double c = std::cos(angle);
+  double s = 0.0, c = 0.0;
+  sinCos(angle, s, c);
   const double x = axis.x(), y = axis.y(), z = axis.z();
   const double k = 1.0 - c;
   Matrix3 R;

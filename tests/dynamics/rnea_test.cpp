@@ -26,6 +26,38 @@ TEST_CASE("RNEA = M ddq + h (CRBA), on random trees with every joint type") {
   }
 }
 
+TEST_CASE("RNEA = M ddq + h and RNEA(ddq = 0) = h with diagonal inertias") {
+  // the kernels' shortcut for inertias diagonal about the centre of mass (Model::inertiaDiagonal)
+  // in RNEA's centroidal form, biasForces' spatial form and CRBA, on coordinate-axis trees whose
+  // bodies turn about every axis (a gyroscopic term taken in the wrong frame shows here)
+  std::mt19937 rng(16);
+  for (int n : {3, 9, 24}) {
+    const Model m = randomAxisTree(rng, n, false, true);
+    Data d(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = 3.0 * randomVectorX(rng, m.nv);
+    const Eigen::VectorXd a = randomVectorX(rng, m.nv);
+    const Eigen::VectorXd h = biasForces(m, d, q, v);
+    const Eigen::MatrixXd M = crba(m, d, q);
+    CHECK(relativeError(rnea(m, d, q, v, a), M * a + h) < 1e-10);
+    CHECK(relativeError(rnea(m, d, q, v, Eigen::VectorXd::Zero(m.nv)), h) < 1e-12);
+  }
+}
+
+TEST_CASE("RNEA with ddq = 0 equals the bias forces of the spatial form") {
+  // rnea's inertia force is written about the centre of mass, biasForces' in spatial form
+  // (rnea.cpp): two formulas for the same torques, a bias of the Coriolis, centrifugal or
+  // gyroscopic terms in either shows here
+  std::mt19937 rng(15);
+  for (int n : {1, 6, 17, -3, -17}) {
+    const Model m = n > 0 ? randomTree(rng, n) : randomAxisTree(rng, -n);
+    Data d(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = 3.0 * randomVectorX(rng, m.nv);
+    const Eigen::VectorXd h = biasForces(m, d, q, v);
+    const Eigen::VectorXd tau = rnea(m, d, q, v, Eigen::VectorXd::Zero(m.nv));
+    CHECK(relativeError(tau, h) < 1e-12);
+  }
+}
+
 TEST_CASE("gravity torques are the gradient of the potential energy") {
   const Model m = planarChain(5);
   Data d(m);

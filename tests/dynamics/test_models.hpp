@@ -108,8 +108,10 @@ inline Model randomTree(std::mt19937& rng, int n, Vector3 gravity = {0.0, 0.0, -
 /// the x, y or z axis of a translated joint frame (Model::jointAxis >= 0: the kernels' special
 /// case; randomTree's random axes and rotated frames take the general path), every fourth about
 /// the negative axis (the general path); with addedMass,
-/// every other body carries a random added mass.
-inline Model randomAxisTree(std::mt19937& rng, int n, bool addedMass = false) {
+/// every other body carries a random added mass; with diagonalInertia, every body's inertia about
+/// its centre of mass is diagonal with distinct entries (Model::inertiaDiagonal: the kernels'
+/// other special case).
+inline Model randomAxisTree(std::mt19937& rng, int n, bool addedMass = false, bool diagonalInertia = false) {
   ModelBuilder b;
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < n; ++i) {
@@ -119,8 +121,11 @@ inline Model randomAxisTree(std::mt19937& rng, int n, bool addedMass = false) {
         i % 4 == 3 ? Vector3(-Vector3::Unit(i % 3)) : Vector3(Vector3::Unit(i % 3));
     const Joint j =
         i == 0 ? Joint::free() : (i % 2 ? Joint::revolute(axis) : Joint::prismatic(axis));
-    b.addBody(indexed("b", i), parent, j, Transform::translation(randomVector(rng)),
-              randomInertia(rng));
+    const SpatialInertia inertia =
+        diagonalInertia ? makeInertia(1.0 + u(rng), randomVector(rng, 0.5),
+                                      Vector3(2.0 + u(rng), 2.5 + u(rng), 3.0 + u(rng)).asDiagonal())
+                        : randomInertia(rng);
+    b.addBody(indexed("b", i), parent, j, Transform::translation(randomVector(rng)), inertia);
     if (addedMass && i % 2 == 0) b.setAddedMass(indexed("b", i), randomAddedMass(rng));
   }
   return b.build();

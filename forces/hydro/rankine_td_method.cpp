@@ -158,7 +158,8 @@ std::vector<std::string> checkRunLength(const HydrodynamicsRequest& q, double un
   if (!(until > 0) || !std::isfinite(until)) return {};
   try {
     const auto model = rankineTdModel(q);
-    if (auto m = checkSurfaceGrowth(surfaceGrowth(*model),
+    const double step = setting(q, "panel_step", q.dt);
+    if (auto m = checkSurfaceGrowth(surfaceGrowth(*model, step),
                                     model->settings().freeSurface.surfaceDamping, until))
       return {"rankine_td: " + *m};
   } catch (const std::exception& e) {

@@ -86,16 +86,17 @@ TEST_CASE("the growth estimate equals the full system's and the surface damping 
 
 TEST_CASE("a long march grows at the estimated rate and stays bounded with the surface damping", "[long]") {
   const RankineTdModel plain = bargeModel(0.0);
-  const double rate = surfaceGrowth(plain).rate;
-  const double dt = 0.25;  // (emp limit 0.27 s)
+  const double dt = 0.25;  // (emp limit 0.27 s: the scheme adds growth, 0.0092 against 0.0070 1/s)
+  const double rate = surfaceGrowth(plain, dt).rate;
   // (no damping, 1,600 s) => the growing mode dominates: its rate from the peaks of 1,100-1,200 s
   // and 1,500-1,600 s
   const std::vector<double> grow = marchPeaks(plain, dt, 1600.0, 100.0);
   const double measured = std::log(grow[15] / grow[11]) / 400.0;
   INFO("estimated " << rate << " 1/s, measured " << measured);
   CHECK(std::abs(measured - rate) < 0.15 * rate);
-  // (uniform damping 10 % above the rate, 4,000 s) => no growth: every later peak below the start's
-  const RankineTdModel damped = bargeModel(1.1 * rate);
+  // (uniform damping 20 % above the rate, 4,000 s) => no growth: every later peak below the start's
+  const RankineTdModel damped = bargeModel(1.2 * rate);
+  CHECK(surfaceGrowth(damped, dt).rate < 0.0);
   const std::vector<double> kept = marchPeaks(damped, dt, 4000.0, 500.0);
   INFO("peaks " << kept[0] << " ... " << kept.back());
   CHECK(*std::max_element(kept.begin() + 1, kept.end()) <= kept[0]);

@@ -36,7 +36,8 @@ SurfaceGrowth surfaceGrowth(const RankineTdModel& model, double dt) {
       m10 = -g;
       m11 = 0.0;
     }
-    const std::complex<double> tr = m00 + m11, root = std::sqrt(tr * tr - 4.0 * (m00 * m11 - m01 * m10));
+    const std::complex<double> tr = m00 + m11,
+                               root = std::sqrt(tr * tr - 4.0 * (m00 * m11 - m01 * m10));
     for (const std::complex<double> z : {0.5 * (tr + root), 0.5 * (tr - root)}) {
       // (eigenvalue) => rate and frequency: Re s, |Im s|; or ln|z| / dt, |arg z| / dt
       const double rate = dt > 0.0 ? std::log(std::abs(z)) / dt : z.real();

@@ -27,10 +27,11 @@ struct SurfaceGrowth {
 /// free surface, per eigenvalue lambda of L: phi -> phi_z the 2 x 2 system of its mode with the
 /// uniform damping nu0: continuous (dt = 0: Re s = |Im sqrt(g lambda)| - nu0), or one emp step
 /// (ln|z| / dt for the step's eigenvalue z: the scheme adds growth at a step near its limit,
-/// 0.0092 against 0.0070 1/s at 0.25 s on the barge's 2 rad/s mesh; measured in a march). The beach is left out (it only damps: on the box barge's meshes the full system
-/// of order 2 Nf with the beach has the same largest rate to the 5 digits printed, at 14 times the cost). Dense:
-/// Nf solves with the model's factors and an eigenvalue solve of order Nf, O(Nf^3) (about 1 s
-/// of CPU at 640 panels, 0.2 s at 580).
+/// 0.0092 against 0.0070 1/s at 0.25 s on the barge's 2 rad/s mesh; measured in a march). The beach
+/// is left out (it only damps: on the box barge's meshes the full system of order 2 Nf with the
+/// beach has the same largest rate to the 5 digits printed, at 14 times the cost). Dense: Nf solves
+/// with the model's factors and an eigenvalue solve of order Nf, O(Nf^3) (about 1 s of CPU at 640
+/// panels, 0.2 s at 580).
 SurfaceGrowth surfaceGrowth(const RankineTdModel& model, double dt = 0.0);
 
 }  // namespace yardsim::forces::hydro

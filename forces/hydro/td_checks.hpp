@@ -29,8 +29,8 @@ std::optional<std::string> checkPanelSize(const FreeSurfaceMesh& surface,
 std::optional<std::string> checkEmpStep(const EmpLimit& limit, double dt);
 
 /// The largest growth rate x run length a marched free surface may have: its free short waves grow
-/// by at most e^2 = 7.4 over the run (from the start's transients, some e^-5 of the physical surface
-/// on the box barge: they reach the physical level after some 5 / rate).
+/// by at most e^2 = 7.4 over the run (from the start's transients, some e^-5 of the physical
+/// surface on the box barge: they reach the physical level after some 5 / rate).
 inline constexpr double kSurfaceGrowthLimit = 2.0;
 
 /// (growth of the mesh's free solutions with its uniform damping nu0 (1/s) included, nu0, the run's

@@ -363,16 +363,18 @@ TEST_CASE("a sea component above the response's resolved frequency is refused at
   ir.key = "given";
   ir.excitationWindow = 0.6;
   writeImpulseResponse(ir, dir.path() / "barge.ysir");
-  const std::string entry = "    hd: {body: barge, method: impulse_response, response: barge.ysir}\n";
+  const std::string entry =
+      "    hd: {body: barge, method: impulse_response, response: barge.ysir}\n";
   const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml(entry)));
   const auto* d = find(r, "mechanics.hydrodynamics.hd");
   REQUIRE(d);
   CHECK(d->where.line == 16);
   CHECK(d->where.column == 31);
-  CHECK_THAT(d->message, Contains("1 of the sea's 1 wave components lie above the impulse response's "
-                                  "resolved frequency 0.6 rad/s") &&
-                             Contains("component 1 at 0.785 rad/s (period 8 s, height 1 m)") &&
-                             Contains("a longer tp"));
+  CHECK_THAT(d->message,
+             Contains("1 of the sea's 1 wave components lie above the impulse response's "
+                      "resolved frequency 0.6 rad/s") &&
+                 Contains("component 1 at 0.785 rad/s (period 8 s, height 1 m)") &&
+                 Contains("a longer tp"));
   std::string calm = sceneYaml(entry);
   calm.replace(calm.find("period: 8"), 9, "period: 12");
   const auto ok = scene::loadScene(dir.write("ok.yaml", calm));
@@ -386,7 +388,8 @@ TEST_CASE("a marched run longer than its free surface's growth allows is refused
   // refused with the numbers; 200 s, or surface_damping 0.008 1/s, is taken
   testing::SceneDir dir;
   std::filesystem::create_directories(dir.path() / "meshes");
-  forces::writeStl(forces::boxMesh(dynamics::Vector3(6, 4, 2), 6, 4, 2), dir.file("meshes/box.stl"));
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(6, 4, 2), 6, 4, 2),
+                   dir.file("meshes/box.stl"));
   auto yaml = [](const std::string& until, const std::string& more) {
     return "schema_version: 1\nintegrator: {method: rk4, dt: 0.05}\nuntil: " + until + R"(
 mechanics:
@@ -398,7 +401,8 @@ mechanics:
   hydrodynamics:
     hd: {body: box, method: rankine_td, hull: meshes/box.stl, dt: 0.05,
          settings: {truncation_radius: 42.54, first_spacing: 0.5, max_spacing: 1.5398, growth: 1.15,
-                    longest_period: 3.14159)" + more + "}}\n";
+                    longest_period: 3.14159)" +
+           more + "}}\n";
   };
   const auto r = scene::loadScene(dir.write("long.yaml", yaml("1000", "")));
   INFO(r.diagnostics.report());
@@ -406,9 +410,11 @@ mechanics:
   REQUIRE(d);
   CHECK(d->where.line == 11);
   CHECK(d->where.column == 29);
-  CHECK_THAT(d->message, Contains("rankine_td: the free surface's short waves of the mesh grow at 0.00") &&
-                             Contains("surface_damping to at least") && Contains("until = 1e+03 s"));
-  for (const auto& [until, more] : {std::pair<std::string, std::string>{"200", ""}, {"1000", ", surface_damping: 0.008"}}) {
+  CHECK_THAT(d->message,
+             Contains("rankine_td: the free surface's short waves of the mesh grow at 0.00") &&
+                 Contains("surface_damping to at least") && Contains("until = 1e+03 s"));
+  for (const auto& [until, more] :
+       {std::pair<std::string, std::string>{"200", ""}, {"1000", ", surface_damping: 0.008"}}) {
     const auto ok = scene::loadScene(dir.write("ok.yaml", yaml(until, more)));
     INFO(until << more << ": " << ok.diagnostics.report());
     CHECK(ok.scene);

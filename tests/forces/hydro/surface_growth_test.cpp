@@ -37,7 +37,8 @@ double fullSystemRate(const RankineTdModel& model) {
   const MixedProblem& pb = model.problem();
   const int nb = pb.bodyCount(), nf = pb.surfaceCount();
   const double g = model.settings().g;
-  const Eigen::MatrixXd u = pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf));
+  const Eigen::MatrixXd u =
+      pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf));
   const Eigen::ArrayXd nu = model.damping().array();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * nf, 2 * nf);
   a.topRightCorner(nf, nf) = -u.bottomRows(nf);
@@ -67,7 +68,8 @@ std::vector<double> marchPeaks(const RankineTdModel& model, double dt, double en
 
 }  // namespace
 
-TEST_CASE("the growth estimate equals the full system's and the surface damping lowers it by itself") {
+TEST_CASE(
+    "the growth estimate equals the full system's and the surface damping lowers it by itself") {
   const RankineTdModel plain = bargeModel(0.0), damped = bargeModel(0.01);
   const SurfaceGrowth g0 = surfaceGrowth(plain), g1 = surfaceGrowth(damped);
   const double full0 = fullSystemRate(plain), full1 = fullSystemRate(damped);
@@ -84,7 +86,8 @@ TEST_CASE("the growth estimate equals the full system's and the surface damping 
   CHECK(full1 < 0.0);
 }
 
-TEST_CASE("a long march grows at the estimated rate and stays bounded with the surface damping", "[long]") {
+TEST_CASE("a long march grows at the estimated rate and stays bounded with the surface damping",
+          "[long]") {
   const RankineTdModel plain = bargeModel(0.0);
   const double dt = 0.25;  // (emp limit 0.27 s: the scheme adds growth, 0.0092 against 0.0070 1/s)
   const double rate = surfaceGrowth(plain, dt).rate;
@@ -111,7 +114,8 @@ TEST_CASE("the door's growth check gives the numbers and the damping that stops 
   const auto m = checkSurfaceGrowth(g, 0.0, 1000.0);
   REQUIRE(m);
   CHECK_THAT(*m, Contains("grow at 0.005 1/s (at 5.26 rad/s)") && Contains("factor 148.4") &&
-                     Contains("surface_damping to at least 0.0055 1/s") && Contains("before 400 s"));
+                     Contains("surface_damping to at least 0.0055 1/s") &&
+                     Contains("before 400 s"));
   g.rate = -0.001;  // (damped)
   CHECK_FALSE(checkSurfaceGrowth(g, 0.006, 1e5));
 }
@@ -138,9 +142,9 @@ TEST_CASE("forced heave with the surface damping stays at Hulme's coefficients",
       coefficients[damped][0] = r.addedMass[2] / kHemisphereMass;
       coefficients[damped][1] = r.damping[2] / (kHemisphereMass * omega);
     }
-    INFO("ka " << row.ka << ": A " << coefficients[0][0] << " / " << coefficients[1][0] << " (Hulme "
-               << row.a << "), B " << coefficients[0][1] << " / " << coefficients[1][1] << " (Hulme "
-               << row.b << ")");
+    INFO("ka " << row.ka << ": A " << coefficients[0][0] << " / " << coefficients[1][0]
+               << " (Hulme " << row.a << "), B " << coefficients[0][1] << " / "
+               << coefficients[1][1] << " (Hulme " << row.b << ")");
     CHECK(coefficients[1][0] == Approx(coefficients[0][0]).epsilon(0.005));
     CHECK(coefficients[1][1] == Approx(coefficients[0][1]).epsilon(0.01));
     CHECK(coefficients[1][0] == Approx(row.a).epsilon(0.02));

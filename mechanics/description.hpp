@@ -133,6 +133,12 @@ struct MechanicsSpec {
   struct Hydrodynamics {
     std::string name, body;
     HydroBuild build;
+    // (the run's end time, s) => why a run that long is not fine, one sentence each with the
+    // numbers (a marched free surface's growing short waves); empty: none to check
+    std::function<std::vector<std::string>(double until)> runCheck;
+    // (the scene's one sea) => why the provider cannot take it (a component above the frequency
+    // its response resolves), one sentence each with the numbers; empty: none to check
+    std::function<std::vector<std::string>(const forces::AiryWaves& sea)> seaCheck;
   };
   // A force provider contributed by a registered reader (scene/provider_readers.hpp; a new
   // provider is its forces/ file pair and one reader function): attached at points on bodies

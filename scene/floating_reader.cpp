@@ -334,6 +334,7 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
       }
       h.build = [build = td->build, q](const std::string& name, const dynamics::Model& model, int b,
                                        std::shared_ptr<const forces::AiryWaves> sea) { return build(name, model, b, q, sea); };
+      if (td->runCheck) h.runCheck = [c = td->runCheck, q](double until) { return c(q, until); };
       spec.hydrodynamics.push_back(std::move(h));
       continue;
     }
@@ -382,6 +383,8 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
         b.addedMass = response->aInf;
         b.addedMassAbout = Vector3::Zero();
       }
+    if (excitation && response->excitationWindow > 0)
+      h.seaCheck = [response](const forces::AiryWaves& sea) { return hydro::checkResolvedSea(*response, sea); };
     h.build = [response, excitation](const std::string& name, const dynamics::Model& model, int b,
                                      std::shared_ptr<const forces::AiryWaves> sea) -> std::unique_ptr<forces::ForceProvider> {
       return std::make_unique<hydro::ImpulseResponseForce>(name, model, b, response, excitation ? sea : nullptr);

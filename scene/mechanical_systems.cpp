@@ -197,6 +197,7 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     for (const auto& b : f.spec.bodies) names.push_back(prefixed(f.owner->path, b.name));
   MechanicsSpec all;
   std::vector<std::pair<SourceMark, std::string>> loopPlaces;  // parallel to all.loops
+  std::vector<std::pair<SourceMark, std::string>> hydroPlaces;  // parallel to all.hydrodynamics
   if (fragments.front().owner == &scene.root) {  // the settings and the environment: the root's
     all.gravity = fragments.front().spec.gravity;
     all.settings = fragments.front().spec.settings;
@@ -275,8 +276,15 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
     for (const auto& c : f.spec.currentLoads)
       all.currentLoads.push_back(provider(c, "current load", "current_loads"));
     for (const auto& d : f.spec.dampers) all.dampers.push_back(provider(d, "damping", "damping"));
-    for (const auto& h : f.spec.hydrodynamics)
+    for (const auto& h : f.spec.hydrodynamics) {
+      // (the entry's method value, where the fragment writes it) => the place of its problems
+      SourceMark at = placeOf(f, "hydrodynamics", h.name, "impulse_response");
+      if (at.line == f.owner->mechanicsWhere.line && at.column == f.owner->mechanicsWhere.column)
+        at = placeOf(f, "hydrodynamics", h.name, "rankine_td");
+      hydroPlaces.emplace_back(at,
+                               joinKey(f.owner->keyPath, "mechanics.hydrodynamics." + h.name));
       all.hydrodynamics.push_back(provider(h, "hydrodynamics", "hydrodynamics"));
+    }
     for (auto c :
          f.spec.providers) {  // (registered readers' providers) => full names, points placed
       const std::string own = c.name;
@@ -434,7 +442,15 @@ std::vector<std::shared_ptr<const MechanicalSystem>> mechanicalSystems(const Sce
   for (const auto& w : all.windLoads) on(w.body)->spec.windLoads.push_back(w);
   for (const auto& c : all.currentLoads) on(c.body)->spec.currentLoads.push_back(c);
   for (const auto& d : all.dampers) on(d.body)->spec.dampers.push_back(d);
-  for (const auto& h : all.hydrodynamics) on(h.body)->spec.hydrodynamics.push_back(h);
+  for (std::size_t i = 0; i < all.hydrodynamics.size(); ++i) {
+    const auto s = on(all.hydrodynamics[i].body);
+    s->spec.hydrodynamics.push_back(all.hydrodynamics[i]);
+    s->hydroPlaces.push_back(hydroPlaces[i]);
+    // (the scene's one sea, the root's) => what the entry cannot take, at the entry
+    if (const auto& seaCheck = all.hydrodynamics[i].seaCheck)
+      for (const std::string& problem : seaCheck(forces::AiryWaves(all.water, all.waves)))
+        diags.error(hydroPlaces[i].first, hydroPlaces[i].second, problem);
+  }
 
   // (message naming "body 'x'") => where that body's added_mass (or else its first value) is
   // written, and its key path; the root otherwise

@@ -28,6 +28,8 @@ struct MechanicalSystem {
   MechanicsSpec spec;  // bodies, joints, ropes, equalizers, loops with full path names
   // parallel to spec.loops: where each loop's key is written and its key path (mechanics.loops.x)
   std::vector<std::pair<SourceMark, std::string>> loopPlaces;
+  // parallel to spec.hydrodynamics: where each entry's method is written and its key path
+  std::vector<std::pair<SourceMark, std::string>> hydroPlaces;
   // the spec built once at validation (model, added mass from hulls, q0): shared by the stiffness
   // guard and the assembler; null when it could not be built (an error was reported)
   std::shared_ptr<const mechanics::BuiltMechanics> built;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <functional>
 
+#include "scene/mechanical_systems.hpp"
+
 namespace yardsim::scene {
 
 namespace {
@@ -56,6 +58,13 @@ void checkResourceLimits(const Scene& scene, double until, const std::string& un
   });
   check("a record interval", scene.record.interval, scene.record.where, "record.interval",
         scene.limits.rows, "recorded rows", "rows");
+  // (hydrodynamics with a run-length check: a marched free surface) => its problems over `until`
+  for (const auto& system : scene.systems)
+    for (std::size_t i = 0; i < system->spec.hydrodynamics.size(); ++i)
+      if (const auto& runCheck = system->spec.hydrodynamics[i].runCheck)
+        for (const std::string& problem : runCheck(until))
+          diags.error(system->hydroPlaces[i].first, system->hydroPlaces[i].second,
+                      problem + " (" + end + ")");
 }
 
 }  // namespace yardsim::scene

@@ -88,10 +88,10 @@ std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean) {
 
 FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSettings& s) {
   if (!(s.firstSpacing > 0.0) || !(s.maxSpacing >= s.firstSpacing) || !(s.growth >= 1.0) ||
-      !(s.dampingWidth >= 0.0) || !(s.dampingStrength >= 0.0)) {
+      !(s.dampingWidth >= 0.0) || !(s.dampingStrength >= 0.0) || !(s.surfaceDamping >= 0.0)) {
     throw FreeSurfaceError(
         "free surface: need firstSpacing > 0, maxSpacing >= firstSpacing, growth >= 1, "
-        "dampingWidth and dampingStrength >= 0");
+        "dampingWidth, dampingStrength and surfaceDamping >= 0");
   }
   const std::vector<int> loop = waterlineLoop(wetted);
   const auto nw = static_cast<int>(loop.size());
@@ -164,7 +164,7 @@ FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSetti
       const double rc = std::hypot(c.x() - out.centre.x(), c.y() - out.centre.y());
       const double x =
           s.dampingWidth > 0.0 ? std::max(0.0, (rc - zoneStart) / s.dampingWidth) : 0.0;
-      out.damping.push_back(s.dampingStrength * x * x);
+      out.damping.push_back(s.dampingStrength * x * x + s.surfaceDamping);
     }
   }
   return out;

@@ -17,6 +17,9 @@
 // which turns a plane wave exp(i(k x - w t)) into w = +-sqrt(g k) - i nu: damped at the rate nu
 // with its real frequency unchanged. nu(r) = dampingStrength ((r - (R - dampingWidth)) /
 // dampingWidth)^2 rises smoothly from 0 at the inner edge of the annulus.
+// surfaceDamping nu0 is added to nu on every panel, in the same form: it multiplies every free
+// solution by e^(-nu0 t) and keeps the real frequencies; a nu0 above the growth rate of the
+// mesh's short-wave modes (surface_growth.hpp) keeps a long marched run bounded.
 #include <stdexcept>
 #include <vector>
 
@@ -31,6 +34,7 @@ struct FreeSurfaceSettings {
   double growth = 1.15;           ///< ratio of neighbouring ring widths (>= 1)
   double dampingWidth = 0.0;      ///< m, width of the damping annulus (0: none)
   double dampingStrength = 0.0;   ///< nu at the truncation radius, 1/s
+  double surfaceDamping = 0.0;    ///< nu0 added on every panel, 1/s (0: none)
 };
 
 /// (period of the longest relevant wave T, s; g) => a damping zone one deep-water wavelength

@@ -56,6 +56,9 @@ struct TimeDomainMethod {
   // (request) => the infinite-frequency added mass the body carries on the left-hand side (body
   // axes about its origin, naval order), or empty when the provider needs none
   std::function<ImpulseResponse::Matrix6(const HydrodynamicsRequest&)> addedMass;
+  // (request, the run's end time s) => problems with a run that long (one sentence each with its
+  // numbers and a way out), checked at the door with the scene's `until` or `--until`; may be empty
+  std::function<std::vector<std::string>(const HydrodynamicsRequest&, double until)> runCheck;
 };
 
 // (solver) => registered under its name (a second one of that name replaces the first)

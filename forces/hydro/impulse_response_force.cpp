@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -34,11 +35,39 @@ struct ImpulseResponseForce::Scratch final : ProviderScratch {
 
 namespace {
 constexpr double kTwoPi = 2.0 * M_PI;
+
+// (number) => "%.3g" text for messages
+std::string shortNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
 double wrapped(double a) {
   a = std::fmod(a, kTwoPi);
   return a < 0.0 ? a + kTwoPi : a;
 }
 }  // namespace
+
+std::vector<std::string> checkResolvedSea(const ImpulseResponse& ir, const AiryWaves& sea) {
+  const double wc = ir.excitationWindow;
+  if (!(wc > 0.0)) return {};
+  // (sea) => how many components lie above w_c, and the highest
+  std::size_t above = 0, highest = 0;
+  for (std::size_t i = 0; i < sea.size(); ++i) {
+    if (sea.frequency(i) > wc) ++above;
+    if (sea.frequency(i) > sea.frequency(highest)) highest = i;
+  }
+  if (above == 0) return {};
+  const WaveComponent& c = sea.component(highest);
+  return {std::to_string(above) + " of the sea's " + std::to_string(sea.size()) +
+          " wave components lie above the impulse response's resolved frequency " +
+          shortNumber(wc) + " rad/s (its excitation window's cutoff), the highest component " +
+          std::to_string(highest + 1) + " at " + shortNumber(sea.frequency(highest)) +
+          " rad/s (period " + shortNumber(c.period) + " s, height " + shortNumber(c.height) +
+          " m): leave the shorter waves out of the sea (a longer tp), or compute the response on "
+          "a finer free-surface mesh with a cutoff of at least " +
+          shortNumber(sea.frequency(highest)) + " rad/s"};
+}
 
 ImpulseResponseForce::ImpulseResponseForce(std::string name, const dynamics::Model& model, int body,
                                            std::shared_ptr<const ImpulseResponse> response,

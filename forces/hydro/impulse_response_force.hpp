@@ -18,6 +18,7 @@
 // step's start; it is carried into checkpoints. Allocation-free given its scratch.
 #include <complex>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "forces/airy_waves.hpp"
@@ -26,6 +27,13 @@
 #include "forces/hydro/radiation_memory.hpp"
 
 namespace yardsim::forces::hydro {
+
+/// (response, the sea) => a problem per sea component above the response's resolved frequency,
+/// its excitation window's cutoff w_c (a response computed with the default cutoff has w_c = the
+/// frequency its free-surface mesh resolves; a cutoff set by hand claims that much): above w_c
+/// the recorded excitation is the window's tail, and dividing W(w) out amplifies its error
+/// (e^1 at w_c, e^4 at 2 w_c, where the force itself refuses). None for a response without window.
+std::vector<std::string> checkResolvedSea(const ImpulseResponse& response, const AiryWaves& sea);
 
 class ImpulseResponseForce final : public ForceProvider {
  public:

@@ -11,6 +11,7 @@
 
 #include "forces/hydro/emp_scheme.hpp"
 #include "forces/hydro/rankine_td_provider.hpp"
+#include "forces/hydro/surface_growth.hpp"
 #include "forces/hydro/td_checks.hpp"
 #include "forces/hydro/wetted_surface.hpp"
 
@@ -19,8 +20,8 @@ namespace {
 
 const std::set<std::string> kSettings = {
     "truncation_radius", "first_spacing", "max_spacing", "growth", "longest_period",
-    "damping_width", "damping_strength", "cutoff", "band_start", "band_end", "froude_krylov",
-    "panel_step"};
+    "damping_width", "damping_strength", "surface_damping", "cutoff", "band_start", "band_end",
+    "froude_krylov", "panel_step"};
 
 // (request, name, default; NaN: required) => the setting
 double setting(const HydrodynamicsRequest& q, const std::string& name, double fallback) {
@@ -61,12 +62,13 @@ ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
     fs.dampingWidth = setting(q, "damping_width", 0.0);
     fs.dampingStrength = setting(q, "damping_strength", 0.0);
   }
+  fs.surfaceDamping = setting(q, "surface_damping", 0.0);
   if (!(fs.truncationRadius > 0 && fs.firstSpacing > 0 && fs.maxSpacing >= fs.firstSpacing &&
         fs.growth >= 1 && fs.dampingWidth >= 0 && fs.dampingWidth < fs.truncationRadius &&
-        fs.dampingStrength >= 0))
+        fs.dampingStrength >= 0 && fs.surfaceDamping >= 0))
     throw std::invalid_argument(
         "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= 1, "
-        "0 <= damping_width < truncation_radius, damping_strength >= 0");
+        "0 <= damping_width < truncation_radius, damping_strength >= 0, surface_damping >= 0");
   s.solver.rho = q.water.density;
   s.solver.g = q.water.gravity;
   s.solver.depth = q.water.depth;
@@ -97,9 +99,9 @@ std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest&
 }
 
 namespace {
-// (request, its settings, its model, sea) => a problem when a wave component lies above twice
-// the excitation window's cutoff (the given one, or what the free-surface mesh resolves):
-// ImpulseResponseForce divides W(w) out only up to there
+// (request, its settings, its model, sea) => a problem when a wave component lies above the
+// excitation window's cutoff (the given one, or what the free-surface mesh resolves): the
+// response's resolved frequency (checkResolvedSea, impulse_response_force.hpp, on the scene's sea)
 std::optional<std::string> checkExcitationWindow(const HydrodynamicsRequest& q,
                                                  const ImpulseResponseSettings& s,
                                                  const RankineTdModel& model, const AiryWaves& sea) {
@@ -107,12 +109,13 @@ std::optional<std::string> checkExcitationWindow(const HydrodynamicsRequest& q,
   const double wc = s.cutoff > 0 ? s.cutoff : resolvedFrequency(model);
   double highest = 0.0;
   for (std::size_t i = 0; i < sea.size(); ++i) highest = std::max(highest, sea.frequency(i));
-  if (!(highest > 2.0 * wc)) return std::nullopt;
+  if (!(highest > wc)) return std::nullopt;
   return "rankine_td: the sea's highest component (" + std::to_string(highest) +
-         " rad/s) lies above twice the excitation window's cutoff (" + std::to_string(wc) +
+         " rad/s) lies above the excitation window's cutoff (" + std::to_string(wc) +
          " rad/s, " + (s.cutoff > 0 ? "given" : "what the free-surface mesh resolves") +
-         "); set cutoff to at least " + std::to_string(0.5 * highest) +
-         " rad/s with a free-surface mesh that resolves it (smaller max_spacing)";
+         "), the response's resolved frequency; set cutoff to at least " + std::to_string(highest) +
+         " rad/s with a free-surface mesh that resolves it (smaller max_spacing), or leave the "
+         "shorter waves out of the sea";
 }
 
 // (request, sea, whether the path convolves an excitation response) => the door's problems
@@ -151,6 +154,20 @@ std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& q, const Air
   return checkRankineTdPath(q, sea, false);
 }
 
+std::vector<std::string> checkRunLength(const HydrodynamicsRequest& q, double until) {
+  if (!(until > 0) || !std::isfinite(until)) return {};
+  try {
+    const auto model = rankineTdModel(q);
+    const double step = setting(q, "panel_step", q.dt);
+    if (auto m = checkSurfaceGrowth(surfaceGrowth(*model, step),
+                                    model->settings().freeSurface.surfaceDamping, until))
+      return {"rankine_td: " + *m};
+  } catch (const std::exception& e) {
+    return {std::string("rankine_td: ") + e.what()};
+  }
+  return {};
+}
+
 namespace {
 // (added mass from the panels) => its symmetric part: the discrete A_ij = -rho int psi_j N_i dS
 // is symmetric only to the panel error, and the multibody model takes a symmetric one
@@ -185,7 +202,8 @@ const bool registered = [] {
        [](const HydrodynamicsRequest& q) {
          const auto model = rankineTdModel(q);
          return symmetric(toBodyAxes(model->aInf(), model->rotation()));
-       }});
+       },
+       checkRunLength});
   return true;
 }();
 }  // namespace

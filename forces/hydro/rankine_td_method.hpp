@@ -29,4 +29,8 @@ std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest&
 // free-surface panel longer than a tenth of the sea's shortest wave, a step above the emp limit
 std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& request, const AiryWaves& sea);
 
+// (request, the run's end time s) => a problem when the marched free surface's short-wave modes
+// grow by more than e^2 over the run (surface_growth.hpp, td_checks.hpp: checkSurfaceGrowth)
+std::vector<std::string> checkRunLength(const HydrodynamicsRequest& request, double until);
+
 }  // namespace yardsim::forces::hydro

@@ -71,4 +71,20 @@ std::optional<std::string> checkEmpStep(const EmpLimit& limit, double dt) {
   return std::nullopt;
 }
 
+std::optional<std::string> checkSurfaceGrowth(const SurfaceGrowth& growth, double nu0,
+                                              double until) {
+  if (!(growth.rate * until > kSurfaceGrowthLimit)) return std::nullopt;
+  // (undamped rate) => a uniform damping 10 % above it (the growth then stops, with a margin)
+  const double undamped = growth.rate + nu0;
+  return "the free surface's short waves of the mesh grow at " + number(growth.rate) + " 1/s (at " +
+         number(growth.frequency) + " rad/s" +
+         (nu0 > 0 ? ", surface_damping " + number(nu0) + " 1/s included" : std::string()) +
+         "), by a factor " + number(std::exp(growth.rate * until)) + " over " + number(until) +
+         " s (at most e^" + number(kSurfaceGrowthLimit) +
+         "): set settings.surface_damping to at least " + number(1.1 * undamped) +
+         " 1/s (a uniform damping in the beach's form: the real frequencies kept), or end the run "
+         "before " +
+         number(kSurfaceGrowthLimit / growth.rate) + " s";
+}
+
 }  // namespace yardsim::forces::hydro

@@ -8,6 +8,7 @@
 
 #include "forces/hydro/emp_scheme.hpp"
 #include "forces/hydro/free_surface_mesh.hpp"
+#include "forces/hydro/surface_growth.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -26,5 +27,16 @@ std::optional<std::string> checkPanelSize(const FreeSurfaceMesh& surface,
 
 /// (emp limit of the mesh, step) => a message when dt exceeds the limit 2 / sqrt(g lambda_max).
 std::optional<std::string> checkEmpStep(const EmpLimit& limit, double dt);
+
+/// The largest growth rate x run length a marched free surface may have: its free short waves grow
+/// by at most e^2 = 7.4 over the run (from the start's transients, some e^-5 of the physical
+/// surface on the box barge: they reach the physical level after some 5 / rate).
+inline constexpr double kSurfaceGrowthLimit = 2.0;
+
+/// (growth of the mesh's free solutions with its uniform damping nu0 (1/s) included, nu0, the run's
+/// end time T s) => a message when rate T > kSurfaceGrowthLimit, with the rate, its frequency, the
+/// growth factor and the uniform damping (surface_damping) that stops it.
+std::optional<std::string> checkSurfaceGrowth(const SurfaceGrowth& growth, double surfaceDamping,
+                                              double until);
 
 }  // namespace yardsim::forces::hydro

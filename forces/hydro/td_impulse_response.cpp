@@ -261,6 +261,11 @@ std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transfor
   // (a finite depth) => another key than before the impulsive wave followed the depth (2026-11-25):
   // a cached response of the old deep-water wave on a finite depth is not found any more
   if (std::isfinite(s.solver.depth)) f.integer(-2);
+  // (a uniform surface damping) => another key; without one the key is unchanged
+  if (fs.surfaceDamping != 0.0) {
+    f.integer(-3);
+    f.number(fs.surfaceDamping);
+  }
   f.integer(static_cast<std::int64_t>(s.headings.size()));
   for (const double b : s.headings) f.number(b);
   static const char* hex = "0123456789abcdef";

@@ -320,6 +320,46 @@ TEST_CASE("bad hydrodynamics input is refused at its key") {
   }
 }
 
+// (before the next case, which replaces the registered rankine_td by its own)
+TEST_CASE("a marched run longer than its free surface's growth allows is refused at the entry") {
+  // (the box barge 6 x 4 m at 1 m draft on the free surface of the 2 rad/s RAO tests, whose short
+  // waves grow at 0.0070 1/s: tests/forces/hydro/surface_growth_test.cpp) => until 1,000 s is
+  // refused with the numbers; 200 s, or surface_damping 0.008 1/s, is taken
+  testing::SceneDir dir;
+  std::filesystem::create_directories(dir.path() / "meshes");
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(6, 4, 2), 6, 4, 2),
+                   dir.file("meshes/box.stl"));
+  auto yaml = [](const std::string& until, const std::string& more) {
+    return "schema_version: 1\nintegrator: {method: rk4, dt: 0.05}\nuntil: " + until + R"(
+mechanics:
+  water: {density: 1025}
+  bodies:
+    box: {parent: world, joint: {type: free}, mass: 24600, inertia: [3.2e4, 8.0e4, 8.0e4]}
+  hydrostatics:
+    hull: {body: box, mesh: meshes/box.stl}
+  hydrodynamics:
+    hd: {body: box, method: rankine_td, hull: meshes/box.stl, dt: 0.05,
+         settings: {truncation_radius: 42.54, first_spacing: 0.5, max_spacing: 1.5398, growth: 1.15,
+                    longest_period: 3.14159)" +
+           more + "}}\n";
+  };
+  const auto r = scene::loadScene(dir.write("long.yaml", yaml("1000", "")));
+  INFO(r.diagnostics.report());
+  const auto* d = find(r, "mechanics.hydrodynamics.hd");
+  REQUIRE(d);
+  CHECK(d->where.line == 11);
+  CHECK(d->where.column == 29);
+  CHECK_THAT(d->message,
+             Contains("rankine_td: the free surface's short waves of the mesh grow at 0.00") &&
+                 Contains("surface_damping to at least") && Contains("until = 1e+03 s"));
+  for (const auto& [until, more] :
+       {std::pair<std::string, std::string>{"200", ""}, {"1000", ", surface_damping: 0.008"}}) {
+    const auto ok = scene::loadScene(dir.write("ok.yaml", yaml(until, more)));
+    INFO(until << more << ": " << ok.diagnostics.report());
+    CHECK(ok.scene);
+  }
+}
+
 TEST_CASE("rankine_td is built by the method registered for it") {
   testing::SceneDir dir;
   meshes(dir);
@@ -338,6 +378,7 @@ TEST_CASE("rankine_td is built by the method registered for it") {
          return std::make_unique<ImpulseResponseForce>(
              name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
        },
+       {},
        {},
        {}});
   const auto r = scene::loadScene(
@@ -404,4 +445,36 @@ mechanics:
   CHECK(depth == 20.0);
   CHECK(density == 1020.0);
   CHECK(components == 2);
+}
+
+TEST_CASE("a sea component above the response's resolved frequency is refused at the entry") {
+  // (a response whose excitation window's cutoff is 0.6 rad/s) => the sea's 8 s wave (0.785
+  // rad/s) lies above what it resolves: refused at the entry's method, naming the component;
+  // a 12 s wave (0.524 rad/s) is taken
+  testing::SceneDir dir;
+  meshes(dir);
+  HydrodynamicsRequest q;
+  q.settings["scale"] = 1;
+  q.headings = {0.0};
+  ImpulseResponse ir = testSolve(q);
+  ir.key = "given";
+  ir.excitationWindow = 0.6;
+  writeImpulseResponse(ir, dir.path() / "barge.ysir");
+  const std::string entry =
+      "    hd: {body: barge, method: impulse_response, response: barge.ysir}\n";
+  const auto r = scene::loadScene(dir.write("s.yaml", sceneYaml(entry)));
+  const auto* d = find(r, "mechanics.hydrodynamics.hd");
+  REQUIRE(d);
+  CHECK(d->where.line == 16);
+  CHECK(d->where.column == 31);
+  CHECK_THAT(d->message,
+             Contains("1 of the sea's 1 wave components lie above the impulse response's "
+                      "resolved frequency 0.6 rad/s") &&
+                 Contains("component 1 at 0.785 rad/s (period 8 s, height 1 m)") &&
+                 Contains("a longer tp"));
+  std::string calm = sceneYaml(entry);
+  calm.replace(calm.find("period: 8"), 9, "period: 12");
+  const auto ok = scene::loadScene(dir.write("ok.yaml", calm));
+  INFO(ok.diagnostics.report());
+  CHECK(ok.scene);
 }

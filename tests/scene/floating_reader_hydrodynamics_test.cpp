@@ -416,6 +416,7 @@ TEST_CASE("a hydrodynamics block in an included file sees the scene root's water
              name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
        },
        probe,
+       {},
        {}});
   dir.write("barge.yaml", R"(schema_version: 1
 mechanics:

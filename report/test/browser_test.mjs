@@ -1,8 +1,10 @@
 // Opens a report.html in Debian's chromium (puppeteer-core, headless, no GPU, fresh profile)
 // and checks what a person would: no console errors, no network requests, plots drawn, one
 // mesh per body, the slider moves the block (or the most-travelled body) and the plot cursor (and the plot
-// cursor moves the slider), one timeline row per actor; saves a screenshot.
+// cursor moves the slider), one timeline row per actor; saves a screenshot. --bodies names the
+// bodies the replay must show, each moving over the run (a scene's replay asserted present).
 //   node test/browser_test.mjs OUTDIR/report.html SCREENSHOT.png [--chromium /usr/bin/chromium]
+//     [--bodies block,FC.barge]
 import { mkdtempSync, readFileSync, rmSync, existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -12,6 +14,7 @@ import puppeteer from 'puppeteer-core';
 const args = process.argv.slice(2);
 const flag = name => { const i = args.indexOf(name); return i >= 0 ? args.splice(i, 2)[1] : undefined; };
 const chromium = flag('--chromium') || process.env.CHROMIUM || '/usr/bin/chromium';
+const required = (flag('--bodies') || '').split(',').filter(Boolean);
 const [reportPath, screenshot] = args;
 if (!reportPath || !screenshot) {
   console.error('usage: node test/browser_test.mjs OUTDIR/report.html SCREENSHOT.png [--chromium PATH]');
@@ -240,6 +243,10 @@ async function checkReport(page) {
     r.scene.traverse(o => { if (o.isMesh && o.userData.body !== undefined) out.push(o.userData.body); });
     return out;
   });
+  if (required.length)
+    check(`the replay shows ${required.join(', ')}, each moving`, meshes !== null &&
+      required.every(n => meshes.includes(n) && bodies.some(b => b.name === n && b.travel > 0)),
+    required.map(n => `${n}: ${(bodies.find(b => b.name === n) || { travel: 'absent' }).travel}`).join(', '));
   if (bodies.length)
     check('one mesh per body', meshes !== null && meshes.length === bodies.length &&
       bodies.every(b => meshes.includes(b.name)), `${meshes && meshes.length} meshes, ${bodies.length} bodies`);

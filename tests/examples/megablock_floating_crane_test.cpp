@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "devs/simulator.hpp"
 #include "dynamics/model.hpp"
@@ -36,6 +38,100 @@ void give(scene::ParamOverrides& o, const std::string& name, const std::string& 
   v.keyPath = "params." + name;
 }
 }  // namespace
+
+// At rest in calm water (the scene starts in static equilibrium; its sea is taken away, and at
+// 4 s it would not have begun anyway): every rope pulls along the straight line between its two
+// ends with its parts times its tension, so the vertical components can be summed per body
+// group from the tensions and the ends' positions (the bodies' pose channels) alone, and each
+// group's balance is a closed form. The block with its loader (clamp and beam) hangs on the eight
+// goliath ropes and the four slings, clear of the water: their vertical pulls sum to its weight.
+// The hook hangs on the 16 hoist parts and carries the slings: the hoist's vertical pull is its
+// weight plus the slings' downward pull. The floating crane with its hook (no other vertical
+// force on them: the carriage's bushing and the wind are horizontal) displaces its mass plus the
+// slings' downward pull over g. (The ends' distance is checked against each rope's length
+// channel: the geometry is the rope's own.)
+TEST_CASE(
+    "megablock with a floating crane: at rest the ropes' vertical pulls carry the block and the "
+    "crane displaces its mass plus the slings' pull",
+    "[long]") {
+  scene::ParamOverrides o;
+  give(o, "sea", "[]");
+  auto loaded = scene::loadScene(
+      std::string(YARDSIM_SOURCE_DIR) + "/examples/megablock_floating_crane/scene.yaml", o);
+  INFO(loaded.diagnostics.report());
+  REQUIRE(loaded.scene);
+  auto root = scene::assemble(*loaded.scene);
+  devs::Simulator sim(*root);
+  const auto& mb = static_cast<const models::MultibodyModel&>(*root->findComponent("mechanics"));
+  const Reader read(mb);
+  const dynamics::Model& m = mb.mechanics();
+  auto mass = [&](const std::string& b) { return m.inertias[m.bodyIndex(b)].mass; };
+  sim.runUntil(4.0);
+  REQUIRE(mb.state().x.v.cwiseAbs().maxCoeff() < 1e-6);
+  REQUIRE(read("collision.points") == 0.0);
+
+  // (rope, parts, body and point of the end pulled, body and point of the other end) => the
+  // vertical force of the rope on the first body, N
+  auto pullZ = [&](const std::string& rope, int parts, const std::string& body,
+                   const Eigen::Vector3d& p, const std::string& other, const Eigen::Vector3d& q) {
+    const Eigen::Vector3d d = read.world(other, q) - read.world(body, p);
+    INFO(rope);
+    CHECK(d.norm() == Approx(read(rope + ".length")).epsilon(1e-9));
+    return parts * read(rope + ".tension") * d.z() / d.norm();
+  };
+  // the goliath ropes: the trolleys' points [-1 | 1, 0, 0] to the lugs the scene passes in
+  struct Lug {
+    const char* rope;
+    const char* trolley;
+    double x;
+    const char* body;
+    Eigen::Vector3d lug;
+  };
+  const Lug lugs[] = {
+      {"GOC201.upper_fore", "GOC201.upper_trolley", -1, "loader_beam", {-7, 0, 1.5}},
+      {"GOC201.upper_aft", "GOC201.upper_trolley", 1, "loader_beam", {-5, 0, 1.5}},
+      {"GOC201.lower_fore", "GOC201.lower_trolley", -1, "block", {-21, -16, 0}},
+      {"GOC201.lower_aft", "GOC201.lower_trolley", 1, "block", {-19, -16, 0}},
+      {"GOC202.upper_fore", "GOC202.upper_trolley", -1, "loader_beam", {5, 0, 1.5}},
+      {"GOC202.upper_aft", "GOC202.upper_trolley", 1, "loader_beam", {7, 0, 1.5}},
+      {"GOC202.lower_fore", "GOC202.lower_trolley", -1, "block", {-9, -16, 0}},
+      {"GOC202.lower_aft", "GOC202.lower_trolley", 1, "block", {-7, -16, 0}}};
+  // the slings: the hook's points to the block's +x end
+  const std::pair<Eigen::Vector3d, Eigen::Vector3d> slings[] = {
+      {{-1, 1, -3}, {24, -10, 6}}, {{1, 1, -3}, {14, -10, 6}},
+      {{1, -1, -3}, {14, 10, 6}},  {{-1, -1, -3}, {24, 10, 6}}};
+
+  // 1. the block and its loader: sum of the vertical pulls = their weight (no buoyancy: the
+  // block's bottom is 4 m above the water; the wind on it is horizontal)
+  REQUIRE(read("block.z") - 6.0 > 0.0);
+  double onBlock = 0.0, onHook = 0.0;
+  for (const Lug& l : lugs)
+    onBlock += pullZ(l.rope, 4, l.body, l.lug, l.trolley, Eigen::Vector3d(l.x, 0, 0));
+  for (int k = 0; k < 4; ++k) {
+    const std::string s = "sling" + std::to_string(k + 1);
+    onBlock += pullZ(s, 1, "block", slings[k].second, "FC.hook", slings[k].first);
+    onHook += pullZ(s, 1, "FC.hook", slings[k].first, "block", slings[k].second);
+  }
+  const double block = mass("block") + mass("loader_clamp") + mass("loader_beam");
+  REQUIRE(block == Approx(3.55e6));
+  INFO("vertical pull on the block " << onBlock << " N, its weight " << block * kG << " N");
+  CHECK(onBlock == Approx(block * kG).epsilon(1e-6));
+  CHECK(onHook < 0.0);  // the slings pull the hook down
+
+  // 2. the hook: the hoist's 16 parts carry its weight and the slings' pull
+  const double hoist =
+      pullZ("FC.main_hoist", 16, "FC.hook", Eigen::Vector3d::Zero(), "FC.boom", {100, 0, 0});
+  CHECK(hoist + onHook == Approx(mass("FC.hook") * kG).epsilon(1e-6));
+
+  // 3. the floating crane and its hook displace their mass plus the slings' downward pull
+  double crane = 0.0;
+  for (int i = 1; i < m.nbodies; ++i)
+    if (m.names[i].rfind("FC.", 0) == 0) crane += m.inertias[i].mass;
+  REQUIRE(crane == Approx(7.5e6 + 2 * 2.0e6 + 2 * 1.0e5 + 6.0e5 + 1.1e6 + 8.0e4));
+  INFO("displacement " << read("FC.hull.displacement") << " kg, crane " << crane
+                       << " kg, slings' pull " << -onHook / kG << " kg");
+  CHECK(read("FC.hull.displacement") == Approx(crane - onHook / kG).epsilon(1e-6));
+}
 
 TEST_CASE(
     "megablock with a floating crane: statics and action order and transport and peak over "

@@ -3,6 +3,7 @@
 # report/test/browser_test.mjs (node + puppeteer-core driving Debian's chromium) on PAGE, then
 # the Khronos glTF validator on the replay.glb beside it, if any.
 #   browser_test.sh PAGE SCREENSHOT COMMAND...
+# REPORT_BODIES=a,b (environment) names bodies the page's replay must show, each moving.
 # Without chromium, node or report/node_modules it fails under CI (CI=true: .ci/run installs
 # them) and is skipped elsewhere (exit 77), saying what to install.
 set -euo pipefail
@@ -24,7 +25,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 rm -f "$page"
 "$@"
-node "$js/test/browser_test.mjs" "$page" "$shot" --chromium "$chromium"
+node "$js/test/browser_test.mjs" "$page" "$shot" --chromium "$chromium" \
+  ${REPORT_BODIES:+--bodies "$REPORT_BODIES"}
 # (the run's replay.glb, when it has one) => the Khronos glTF validator finds nothing
 glb="$(dirname "$page")/replay.glb"
 if [ -f "$glb" ]; then node "$js/test/validate_glb.mjs" "$glb"; fi

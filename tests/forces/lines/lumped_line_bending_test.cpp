@@ -160,11 +160,12 @@ TEST_CASE("bending: the Jacobian's 5-node blocks equal central differences") {
             CHECK(c.norm() == 0.0);
             continue;
           }
-          const Matrix3& a = (which == 0 ? dfdr : dfdv)[static_cast<std::size_t>(5 * i + j - i + 2)];
-          INFO((which == 0 ? "df/dr" : "df/dv") << " block " << i << ", " << j << " length "
-                                                << length << "\nclosed form\n"
-                                                << a << "\ncentral\n"
-                                                << c);
+          const Matrix3& a =
+              (which == 0 ? dfdr : dfdv)[static_cast<std::size_t>(5 * i + j - i + 2)];
+          INFO((which == 0 ? "df/dr" : "df/dv")
+               << " block " << i << ", " << j << " length " << length << "\nclosed form\n"
+               << a << "\ncentral\n"
+               << c);
           CHECK((a - c).norm() <= 1e-6 * c.norm() + 1e-2);
           if (std::abs(i - j) == 2) farthest = std::max(farthest, c.norm());
         }
@@ -227,8 +228,8 @@ TEST_CASE("bending: a line spanned between pinned ends sags as a beam under its 
 
 TEST_CASE("bending: RK4 conserves the energy of a swinging stiff line, drift at fourth order") {
   // (a 10 m line of 10 segments pinned at both ends, EI 2e3 N m^2, EA 1e6 N, spanned 0.2 %
-  // longer than its length (taut) and released from a transverse bow) => kinetic + potential (strain, bending, weight)
-  // drifts by RK4's error only, about 16 times less at half the step
+  // longer than its length (taut) and released from a transverse bow) => kinetic + potential
+  // (strain, bending, weight) drifts by RK4's error only, about 16 times less at half the step
   LumpedLineProperties p = pipe(10, 2e3);
   p.ea = 1e6;
   const LumpedLine line(p, "pipe");

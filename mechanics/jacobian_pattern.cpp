@@ -73,7 +73,9 @@ std::vector<char> lineNodes(const System& s) {
 std::shared_ptr<const dynamics::JacobianPattern> jacobianPattern(const System& s) {
   const dynamics::Model& m = s.model();
   const auto nb = static_cast<std::size_t>(m.nbodies);
-  // (lumped lines) => per node body its chain neighbours (bodies; 0: the world)
+  // (lumped lines) => per node body its chain neighbours within the line's bandwidth b (bodies;
+  // 0: the world): the nodes and ends i - b .. i + b, b = 2 with bending stiffness (the angle at
+  // node i - 1 moves with node i - 2)
   const std::vector<char> node = lineNodes(s);
   std::vector<std::vector<int>> neighbours(nb);
   for (const auto& p : s.contributed()) {
@@ -82,8 +84,13 @@ std::shared_ptr<const dynamics::JacobianPattern> jacobianPattern(const System& s
     std::vector<int> chain{line->anchor().body};
     for (int i = 1; i + 1 < line->line().nodes(); ++i) chain.push_back(line->nodeBody(i));
     chain.push_back(line->fairlead().body);
-    for (std::size_t k = 1; k + 1 < chain.size(); ++k)
-      neighbours[static_cast<std::size_t>(chain[k])] = {chain[k - 1], chain[k + 1]};
+    const auto b = static_cast<std::size_t>(line->line().jacobianBandwidth());
+    for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
+      std::vector<int>& around = neighbours[static_cast<std::size_t>(chain[k])];
+      around.clear();
+      for (std::size_t j = k > b ? k - b : 0; j <= std::min(chain.size() - 1, k + b); ++j)
+        if (j != k) around.push_back(chain[j]);
+    }
   }
   if (std::none_of(node.begin(), node.end(), [](char c) { return c != 0; })) return nullptr;
   // (node flags) => the rigid dofs; the nodes that touch a rigid dof (a body or a rigid node)

@@ -3,9 +3,10 @@
 // integrators' sparse Newton matrix (dynamics/integrators/sparse_newton_matrix.hpp). A system with
 // lumped-mass lines (forces/lines/lumped_line_provider.hpp) has it: an inner node is a point mass
 // on its own joint from the world whose force comes from its line alone, so its acceleration
-// depends on itself and its two neighbours. Everything else (the rigid bodies' dofs, through ABA,
-// the loops and every other provider) is taken as coupled to everything rigid, and a node next to
-// a body (the fairlead's, the anchor's) as coupled to every rigid dof. A node that anything else
+// depends on itself and its two neighbours (four: two on each side, for a line with bending
+// stiffness EI > 0). Everything else (the rigid bodies' dofs, through ABA, the loops and every
+// other provider) is taken as coupled to everything rigid, and a node next to a body (the
+// fairlead's, the anchor's; with bending, within two nodes of it) as coupled to every rigid dof. A node that anything else
 // names (a rope, a load, another provider's attachment, a loop, a child body, a geometry) counts
 // as rigid. Sizes: dofs (nv).
 #include <memory>

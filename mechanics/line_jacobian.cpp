@@ -23,20 +23,21 @@ LineJacobian lineJacobian(const System& s, const Data& d) {
     const forces::LumpedLineProvider* line = lumpedLine(*p);
     if (line == nullptr) continue;
     const int n = line->line().properties().segments;
+    const int b = line->line().jacobianBandwidth();  // (1, or 2 with bending)
     Line l{p.get(),
            line,
-           std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))),
-           std::vector<dynamics::Matrix3>(static_cast<std::size_t>(3 * (n + 1))),
+           std::vector<dynamics::Matrix3>(static_cast<std::size_t>((2 * b + 1) * (n + 1))),
+           std::vector<dynamics::Matrix3>(static_cast<std::size_t>((2 * b + 1) * (n + 1))),
            {},
            {}};
     auto isNode = [&](int i) {
       return i >= 1 && i < n && node[static_cast<std::size_t>(line->nodeBody(i))] != 0;
     };
     for (int i = 1; i < n; ++i)
-      for (int j = i - 1; j <= i + 1; ++j) {
+      for (int j = i - b; j <= i + b; ++j) {
         if (!isNode(i) || !isNode(j)) continue;
         l.block.push_back(blocks->at.size());
-        l.slot.push_back(static_cast<std::size_t>(3 * i + j - i + 1));
+        l.slot.push_back(static_cast<std::size_t>((2 * b + 1) * i + j - i + b));
         blocks->at.push_back({m.idxV[line->nodeBody(i)], m.idxV[line->nodeBody(j)]});
       }
     if (!l.block.empty()) lines->push_back(std::move(l));

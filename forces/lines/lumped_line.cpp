@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "forces/lines/lumped_line_bending.hpp"
+
 namespace yardsim::forces {
 
 using dynamics::Matrix3;
@@ -20,6 +22,7 @@ const LumpedLineProperties& checked(const LumpedLineProperties& p, const std::st
   auto nonNegative = [](double x) { return std::isfinite(x) && x >= 0.0; };
   if (!positive(p.length) || !positive(p.diameter) || !positive(p.massPerLength) || !positive(p.ea))
     bad("length, diameter, mass per length and EA must be finite and > 0");
+  if (!nonNegative(p.ei)) bad("the bending stiffness EI must be finite and >= 0");
   if (p.segments < 1) bad("it needs at least one segment");
   if (!std::isfinite(p.damping)) bad("the damping must be finite");
   if (!nonNegative(p.cdn) || !nonNegative(p.cdt) || !nonNegative(p.can) || !nonNegative(p.cat))
@@ -70,6 +73,8 @@ void LumpedLine::nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v
     }
     tension[i] = T;
   }
+  // (EI > 0) => the bending's node forces
+  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l_, f);
   // (nodes) => weight, Morison drag and fluid inertia, sea bed
   for (int i = 0; i <= n; ++i) {
     const Vector3 p = r.col(i), vi = v.col(i);
@@ -121,6 +126,7 @@ double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r) const {
     const double strain = (r.col(i + 1) - r.col(i)).norm() / l_ - 1.0;
     if (strain > 0.0) e += 0.5 * p_.ea * l_ * strain * strain;
   }
+  if (p_.ei > 0.0) e += bendingEnergy(r, p_.ei / l_);
   for (int i = 0; i <= p_.segments; ++i) {
     const double ln = nodeLength(i), z = r(2, i);
     e += w_ * ln * z;
@@ -144,6 +150,7 @@ void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd&
       f.col(i + 1) -= pull;
     }
   }
+  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l_, f);
   for (int i = 0; i <= n; ++i) {
     const double ln = nodeLength(i), z = r(2, i);
     f(2, i) -= w_ * ln;
@@ -171,8 +178,9 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
   }
   std::uint64_t signature = 1469598103934665603ull;  // FNV-1a over the switches
   auto mix = [&](bool on) { signature = (signature ^ (on ? 1u : 2u)) * 1099511628211ull; };
-  auto at = [](int node, int other) {
-    return static_cast<std::size_t>(3 * node + other - node + 1);
+  const int b = jacobianBandwidth();
+  auto at = [b](int node, int other) {
+    return static_cast<std::size_t>((2 * b + 1) * node + other - node + b);
   };
   // (taut segment, d = r_(i+1) - r_i, u = d/|d|, P = I - u u^T) => d(T u)/dd = EA/l u u^T
   // + T/|d| P + c/(l |d|) u (P dv)^T and d(T u)/d(dv) = c/l u u^T; T u acts on i, -T u on i + 1
@@ -201,6 +209,9 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
     }
     mix(taut);
   }
+  // (EI > 0) => the bending energy's Hessian, blocks within two nodes
+  if (p_.ei > 0.0)
+    bendingJacobian(r, p_.ei / l_, [&](int i, int j, const Matrix3& K) { dfdr[at(i, j)] += K; });
   // (nodes) => drag on the relative velocity vr = u_f - v: -(kn G(vn) (I - q q^T) + kt G(vt) q q^T)
   for (int i = 0; i <= n; ++i) {
     const Vector3 p = r.col(i), vi = v.col(i);

@@ -11,6 +11,9 @@
 // l_n), and a sea bed: a normal force (z_bed - z) kb d l_n - vz cb d l_n (>= 0) while below it,
 // with Coulomb friction mu N against the horizontal velocity (linear below a regularizing
 // speed). Each node's mass is mu l_n plus the added mass rho V [Can (I - q q^T) + Cat q q^T].
+// Optional bending stiffness EI (lumped_line_bending.hpp): an energy EI/l (1 - cos theta) at every
+// inner node, theta the angle between its two segments, with its exact gradient as node forces;
+// the ends pinned (no moment). EI = 0 (the default) leaves every result as without it.
 // All world frame, SI units. This is the node-force evaluation as a pure function of node
 // positions and velocities; lumped_line_provider.hpp makes the inner nodes bodies of the
 // multibody tree (their states integrated with the rest); the end nodes' forces are what the
@@ -33,6 +36,7 @@ struct LumpedLineProperties {
   double diameter = 0.0;         // d, volume-equivalent, m
   double massPerLength = 0.0;    // mu, in air, kg/m
   double ea = 0.0;               // N
+  double ei = 0.0;               // bending stiffness, N m^2 (>= 0; 0: none)
   double damping = 0.0;          // c, N s (>= 0); < 0: -c is a fraction of a segment's critical
                                  // damping l sqrt(EA mu)
   double cdn = 0.0, cdt = 0.0;   // Morison drag coefficients, normal and tangential
@@ -63,6 +67,8 @@ class LumpedLine {
   double dampingCoefficient() const { return c_; }  // c, N s
   // (node) => its unstretched length l_n (l/2 at the ends, l inside), m
   double nodeLength(int i) const { return i == 0 || i == p_.segments ? 0.5 * l_ : l_; }
+  // b: a node's force depends on the nodes i - b .. i + b (1 without bending, 2 with EI > 0)
+  int jacobianBandwidth() const { return p_.ei > 0.0 ? 2 : 1; }
 
   // (r, v: 3 x nodes, world, m and m/s; t, s) => f: the net force on every node (segments,
   // weight, drag, fluid inertia, bed), N, and the tension of every segment, N. f and tension
@@ -71,16 +77,19 @@ class LumpedLine {
                   Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const;
   // (r) => every node's 3x3 mass, structural plus added, kg; m sized nodes(). Allocation-free.
   void nodeMass(const Eigen::Matrix3Xd& r, std::vector<dynamics::Matrix3>& m) const;
-  // (r) => strain energy of the taut segments + net weight w l_n z + bed springs, J
+  // (r) => strain energy of the taut segments + bending + net weight w l_n z + bed springs, J
   double potentialEnergy(const Eigen::Matrix3Xd& r) const;
-  // (r) => f = -dV/dr, the conservative part of nodeForces (the segments' EA e, the net weight,
-  // the bed springs), N, sized 3 x nodes(); nodeForces minus it is what dissipates or comes from
-  // the flow (internal and bed damping, friction, drag, fluid inertia). Allocation-free.
+  // (r) => f = -dV/dr, the conservative part of nodeForces (the segments' EA e, bending, the net
+  // weight, the bed springs), N, sized 3 x nodes(); nodeForces minus it is what dissipates or
+  // comes from the flow (internal and bed damping, friction, drag, fluid inertia).
+  // Allocation-free.
   void conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const;
   // (r, v, t) => per node i the 3x3 blocks df_i/dr_j (N/m) and df_i/dv_j (N s/m) of nodeForces
-  // for j = i - 1, i, i + 1 at [3 i + j - i + 1] (zero past the ends), both sized 3 nodes():
-  // the taut segments' EA/l u u^T + T/|d| (I - u u^T) with their damping's terms (zero while
-  // slack), the drag's velocity terms, the bed's spring, damping and friction. Left out: the
+  // for j = i - b .. i + b at [(2 b + 1) i + j - i + b] (zero past the ends), b =
+  // jacobianBandwidth() (1: [3 i + j - i + 1]), both sized (2 b + 1) nodes(): the taut segments'
+  // EA/l u u^T + T/|d| (I - u u^T) with their damping's terms (zero while slack), the bending's
+  // Hessian (lumped_line_bending.hpp), the drag's velocity terms, the bed's spring, damping and
+  // friction. Left out: the
   // drag's and the fluid inertia's dependence on the positions (the flow field, the tangent,
   // the stretched length), small beside EA/l. Returns a signature of the switches (taut
   // segments, nodes on the bed, friction below its regularising speed): it changes when one

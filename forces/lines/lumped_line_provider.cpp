@@ -183,8 +183,9 @@ std::uint64_t LumpedLineProvider::accelerationJacobian(const Stage& s,
   Scratch& w = scratchOf<Scratch>(s, temporary);
   gather(s, w);
   const std::uint64_t signature = line_->forceJacobian(w.r, w.v, s.t, dadr, dadv);
+  const int width = 2 * line_->jacobianBandwidth() + 1;  // blocks per node row
   for (int i = 1; i < line_->properties().segments; ++i)
-    for (int k = 3 * i; k < 3 * i + 3; ++k) {
+    for (int k = width * i; k < width * i + width; ++k) {
       dadr[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
       dadv[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
     }

@@ -14,10 +14,10 @@
 // m_i g to every body; the line's net weight w l_n (buoyancy included) replaces it. The node mass
 // is mu l_n + rho V Can: the joint-space mass of a body is constant, so the added mass is taken
 // isotropic with the normal coefficient (the tangential one, usually smaller, is not used for the
-// mass; docs/lines.md). Potential energy: the line's (strain, net weight, bed springs) plus
-// sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes. Power: the
-// part of the node forces that is not -dV/dr (internal and bed damping, friction, drag, the
-// flow's inertia force) times the node velocities. World frame, SI units.
+// mass; docs/lines.md). Potential energy: the line's (strain, bending, net weight, bed springs)
+// plus sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes.
+// Power: the part of the node forces that is not -dV/dr (internal and bed damping, friction,
+// drag, the flow's inertia force) times the node velocities. World frame, SI units.
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,9 +70,10 @@ class LumpedLineProvider final : public ForceProvider {
   // (stage) => unstretched length of the nodes at or below the sea bed (0 without one), m
   double laidLength(const Stage& s) const;
   // (stage) => per inner node i the blocks d a_i/d r_j (1/s^2) and d a_i/d v_j (1/s) of its
-  // acceleration a_i = f_i / m_i (a point mass on its own joint) for j = i - 1, i, i + 1 at
-  // [3 i + j - i + 1] (LumpedLine::forceJacobian over the node's mass; the end nodes' rows are
-  // the force's, N/m and N s/m), both sized 3 (N + 1); returns the line's switch signature.
+  // acceleration a_i = f_i / m_i (a point mass on its own joint) for j = i - b .. i + b at
+  // [(2 b + 1) i + j - i + b], b = line().jacobianBandwidth() (1, or 2 with bending)
+  // (LumpedLine::forceJacobian over the node's mass; the end nodes' rows are the force's, N/m
+  // and N s/m), both sized (2 b + 1) (N + 1); returns the line's switch signature.
   // Allocation-free.
   std::uint64_t accelerationJacobian(const Stage& s, std::vector<dynamics::Matrix3>& dadr,
                                      std::vector<dynamics::Matrix3>& dadv) const;

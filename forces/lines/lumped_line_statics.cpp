@@ -4,6 +4,8 @@
 
 #include <Eigen/LU>
 
+#include "forces/lines/lumped_line_bending.hpp"
+
 namespace yardsim::forces {
 
 using dynamics::Matrix3;
@@ -20,7 +22,8 @@ Eigen::VectorXd residual(const LumpedLine& line, const Eigen::Matrix3Xd& r, Eige
   return out;
 }
 
-// (line, r) => K = -d(residual)/d(inner positions): the segments' tangent stiffness and the bed's
+// (line, r) => K = -d(residual)/d(inner positions): the segments' tangent stiffness, the
+// bending's and the bed's
 Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
   const LumpedLineProperties& p = line.properties();
   const int n = p.segments, inner = n - 1;
@@ -46,6 +49,12 @@ Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
       K.block<3, 3>(3 * b, 3 * a) -= k;
     }
   }
+  // (EI > 0) => minus the bending forces' Jacobian among the inner nodes
+  if (p.ei > 0.0)
+    bendingJacobian(r, p.ei / l, [&](int i, int j, const Matrix3& k) {
+      if (i >= 1 && i <= inner && j >= 1 && j <= inner)
+        K.block<3, 3>(3 * (i - 1), 3 * (j - 1)) -= k;
+    });
   if (p.seabed)
     for (int i = 0; i < inner; ++i)
       if (r(2, i + 1) < p.seabedZ)

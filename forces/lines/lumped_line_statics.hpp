@@ -1,10 +1,10 @@
 #pragma once
 // The static equilibrium of a lumped-mass line (lumped_line.hpp) with both ends held: the inner
 // node positions where the conservative node forces (the segments' EA e, the net weight, the bed
-// springs: LumpedLine::conservativeForces) vanish, by Newton's method on the 3 (N - 1) positions
-// with the analytic stiffness of the segments (EA/l along a taut segment, T/|d| across it) and of
-// the bed, from a guess (the catenary's points), each step halved while it does not reduce the
-// residual. A line placed on the continuous catenary is not at rest as a chain of straight
+// springs, the bending: LumpedLine::conservativeForces) vanish, by Newton's method on the
+// 3 (N - 1) positions with the analytic stiffness of the segments (EA/l along a taut segment, T/|d|
+// across it), of the bending and of the bed, from a guess (the catenary's points), each step
+// halved while it does not reduce the residual. A line placed on the continuous catenary is not at rest as a chain of straight
 // segments (its chords are shorter than its arcs by l dtheta^2 / 24, more than the elastic
 // stretch of a stiff chain), so lumped lines start from this equilibrium. World frame, SI units.
 #include <Eigen/Core>

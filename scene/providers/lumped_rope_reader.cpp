@@ -198,6 +198,8 @@ std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumped(
   p.length = positive("L0", "m, the unstretched length");
   p.massPerLength = positive("mass_per_length", "kg/m, the rope's mass per unstretched length");
   p.diameter = positive("diameter", "m, the rope's: the air's buoyancy and the replay's nodes");
+  // (N m^2, bending; 0: none; a negative one is reported at its node and read as 0)
+  p.ei = std::max(0.0, nonNegative(r, n["EI"], key + ".EI", 0.0));
   const double segments = r.number(n["segments"], key + ".segments", 10.0);
   if (!(segments >= 1.0 && segments <= 10000.0 && segments == std::floor(segments)))
     fail(n["segments"], key + ".segments", "expected a whole number of segments, 1 to 10000");
@@ -258,7 +260,7 @@ bool readLumpedRope(const spec::Reader& r, const YAML::Node& n, const std::strin
   }
   static const std::vector<std::string> keys{
       "model",   "path",          "EA",    "L0",  "mass_per_length", "diameter", "segments",
-      "damping", "damping_ratio", "parts", "mbl", "min_length"};
+      "damping", "damping_ratio", "parts", "mbl", "min_length",      "EI"};
   if (!r.keys(n, keys, key)) return true;
   // (path: first end, [sheave,] last end) => points; their bodies are checked when the fragments
   // are merged

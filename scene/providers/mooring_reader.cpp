@@ -83,7 +83,7 @@ std::vector<ProviderOutput> lumpedOutputs(const forces::LumpedLineProvider& l) {
 }
 
 // (entry with model: lumped, its ends read) => a LumpedLineProvider and its node bodies: {length,
-// EA, mass + diameter, segments, damping | damping_ratio, cdn, cdt, can, cat, water_density,
+// EA, EI, mass + diameter, segments, damping | damping_ratio, cdn, cdt, can, cat, water_density,
 // gravity, seabed, friction, bed_stiffness, bed_damping}
 void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& key,
                 MechanicsSpec::ProviderSpec& out) {
@@ -92,6 +92,8 @@ void readLumped(const YAML::Node& n, const spec::Reader& r, const std::string& k
   if (!n["length"]) r.fail(n, key, "missing required key 'length' (unstretched, m)");
   p.ea = r.number(n["EA"], key + ".EA", 1.0);
   if (!n["EA"]) r.fail(n, key, "missing required key 'EA' (N): a lumped line is elastic");
+  // (N m^2, bending; 0: none; a negative one is reported at its node and read as 0)
+  p.ei = std::max(0.0, nonNegative(r, n["EI"], key + ".EI", 0.0));
   if (n["weight"] || !n["mass"] || !n["diameter"])
     r.fail(n["weight"] ? n["weight"] : n, key,
            "a lumped line needs 'mass' (kg/m in air) and 'diameter' (m), not 'weight'");
@@ -189,7 +191,7 @@ MechanicsSpec::ProviderSpec readMooring(const std::string&, const YAML::Node& n,
   r.keys(n, {"anchor",   "fairlead",      "model",         "length",  "EA",     "weight",
              "mass",     "diameter",      "water_density", "gravity", "seabed", "friction",
              "segments", "damping",       "damping_ratio", "cdn",     "cdt",    "can",
-             "cat",      "bed_stiffness", "bed_damping"},
+             "cat",      "bed_stiffness", "bed_damping",   "EI"},
          key);
   if (!n.IsMap()) return out;
   out.attachments.push_back(readEnd(r, n, "anchor", key));
@@ -205,7 +207,7 @@ MechanicsSpec::ProviderSpec readMooring(const std::string&, const YAML::Node& n,
     return out;
   }
   for (const char* k : {"segments", "damping", "damping_ratio", "cdn", "cdt", "can", "cat",
-                        "bed_stiffness", "bed_damping"})
+                        "bed_stiffness", "bed_damping", "EI"})
     if (n[k]) r.fail(n[k], key + "." + k, std::string("'") + k + "' is a key of model: lumped");
   forces::CatenaryParameters p;
   p.length = r.number(n["length"], key + ".length", 1.0);
@@ -255,7 +257,7 @@ YARDSIM_REGISTER_PROVIDER(mooring,
                               .summary = "name: {anchor: [x, y, z] | {body, point}, fairlead: "
                                          "{body, point}, length, EA, weight | mass + diameter, "
                                          "seabed, friction, model: catenary | lumped, segments, "
-                                         "damping_ratio, cdn, cdt, can, cat}",
+                                         "damping_ratio, cdn, cdt, can, cat, EI}",
                               .read = readMooring});
 
 }  // namespace yardsim::scene::providers

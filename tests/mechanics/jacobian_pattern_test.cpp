@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "dynamics/integrators/factory.hpp"
 #include "mechanics/build.hpp"
@@ -22,9 +23,10 @@ using namespace yardsim;
 
 namespace {
 
-// (extra lines of the mechanics block) => a 200 t buoy on a surge-sway slider at the fairlead
-// height, moored by 4 lumped chain lines of 8 segments in still water, released at 0.5 m/s
-std::string buoyScene(const std::string& extra = "") {
+// (extra lines of the mechanics block, extra keys of every line) => a 200 t buoy on a surge-sway
+// slider at the fairlead height, moored by 4 lumped chain lines of 8 segments in still water,
+// released at 0.5 m/s
+std::string buoyScene(const std::string& extra = "", const std::string& lineKeys = "") {
   std::string s = R"(schema_version: 1
 integrator: {method: hht, dt: 0.05, stiffness_check: off}
 mechanics:
@@ -40,7 +42,8 @@ mechanics:
     s += "    line" + std::to_string(k) + ": {model: lumped, anchor: [" +
          std::to_string(290.0 * std::cos(a)) + ", " + std::to_string(290.0 * std::sin(a)) +
          ", 0], fairlead: {body: buoy}, length: 314, EA: 1.2e9, mass: 282.21, diameter: 0.216, "
-         "segments: 8}\n";
+         "segments: 8" +
+         lineKeys + "}\n";
   }
   return s + extra + "until: 1\n";
 }
@@ -73,41 +76,63 @@ bool inPattern(const dynamics::JacobianPattern& p, int i, int j) {
 }  // namespace
 
 TEST_CASE("the pattern of a moored buoy holds and its colouring needs few colours") {
-  Built b(buoyScene());
-  const auto& m = b.model();
-  const dynamics::JacobianPattern* p = b.data->kernel.jacobianPattern();
-  REQUIRE(p != nullptr);
-  REQUIRE(p->n == m.nv);
-  REQUIRE(m.nv == 2 + 4 * 7 * 3);
-  const dynamics::ColumnColouring c = dynamics::colourColumns(*p);
-  CHECK(dynamics::colouringConflict(*p, c) == -1);
-  // 2 rigid dofs, 4 nodes next to the buoy (12 dofs), the rest of the chains in at most 9 more
-  CHECK(c.count() >= 14);
-  CHECK(c.count() <= 23);
-  // (a moving state off equilibrium) => central differences of the stage's accelerations: every
-  // entry the pattern leaves out is zero, and the chains' inner entries are not all zero
-  Eigen::VectorXd q = b.system->description().q0, v = Eigen::VectorXd::Zero(m.nv);
-  for (int i = 0; i < m.nv; ++i) v[i] = 0.3 * std::sin(1.0 + i);
-  for (int i = 2; i < m.nv; ++i) q[i] += 0.5 * std::cos(2.0 * i);
-  Eigen::VectorXd ap(m.nv), am(m.nv);
-  int outside = 0, inside = 0;
-  for (int j = 0; j < m.nv; ++j) {
-    for (int which = 0; which < 2; ++which) {
-      Eigen::VectorXd qp = q, qm = q, vp = v, vm = v;
-      (which == 0 ? qp : vp)[j] += 1e-4;
-      (which == 0 ? qm : vm)[j] -= 1e-4;
-      b.data->kernel.acceleration(0.0, qp, vp, ap);
-      b.data->kernel.acceleration(0.0, qm, vm, am);
-      for (int i = 0; i < m.nv; ++i) {
-        if (inPattern(*p, i, j))
-          inside += ap[i] != am[i];
-        else
-          outside += ap[i] != am[i];
+  // (without and with bending stiffness: EI 1e10 N m^2 on 39 m segments, a node then coupled to
+  // the nodes two away and the two nodes nearest the buoy to the rigid dofs)
+  for (const std::string keys : {"", ", EI: 1.0e10"}) {
+    INFO("line keys '" << keys << "'");
+    Built b(buoyScene("", keys));
+    const auto& m = b.model();
+    const dynamics::JacobianPattern* p = b.data->kernel.jacobianPattern();
+    REQUIRE(p != nullptr);
+    REQUIRE(p->n == m.nv);
+    REQUIRE(m.nv == 2 + 4 * 7 * 3);
+    const dynamics::ColumnColouring c = dynamics::colourColumns(*p);
+    CHECK(dynamics::colouringConflict(*p, c) == -1);
+    // 2 rigid dofs, 4 nodes next to the buoy (12 dofs), the rest of the chains in at most 9 more
+    CHECK(c.count() >= 14);
+    // (with bending: the two nodes nearest the buoy touch the rigid dofs, 24 dofs, and 15 more)
+    CHECK(c.count() <= (keys.empty() ? 23 : 41));
+    // (a moving state off equilibrium) => central differences of the stage's accelerations: every
+    // entry the pattern leaves out is zero, and the chains' inner entries are not all zero
+    Eigen::VectorXd q = b.system->description().q0, v = Eigen::VectorXd::Zero(m.nv);
+    for (int i = 0; i < m.nv; ++i) v[i] = 0.3 * std::sin(1.0 + i);
+    for (int i = 2; i < m.nv; ++i) q[i] += 0.5 * std::cos(2.0 * i);
+    Eigen::VectorXd ap(m.nv), am(m.nv);
+    int outside = 0, inside = 0;
+    for (int j = 0; j < m.nv; ++j) {
+      for (int which = 0; which < 2; ++which) {
+        Eigen::VectorXd qp = q, qm = q, vp = v, vm = v;
+        (which == 0 ? qp : vp)[j] += 1e-4;
+        (which == 0 ? qm : vm)[j] -= 1e-4;
+        b.data->kernel.acceleration(0.0, qp, vp, ap);
+        b.data->kernel.acceleration(0.0, qm, vm, am);
+        for (int i = 0; i < m.nv; ++i) {
+          if (inPattern(*p, i, j))
+            inside += ap[i] != am[i];
+          else
+            outside += ap[i] != am[i];
+        }
       }
     }
+    CHECK(outside == 0);
+    CHECK(inside > 4 * 7 * 9);
+    // (with bending) => node 1 moves node 3 (its angle at node 2), and node 6 (two from the buoy)
+    // is coupled to the buoy's dofs, both in the pattern and in the differences
+    const int node1 = m.idxV[static_cast<std::size_t>(m.bodyIndex("line0.node1"))];
+    const int node3 = m.idxV[static_cast<std::size_t>(m.bodyIndex("line0.node3"))];
+    const int node6 = m.idxV[static_cast<std::size_t>(m.bodyIndex("line0.node6"))];
+    CHECK(inPattern(*p, node1, node3) == !keys.empty());
+    CHECK(inPattern(*p, 0, node6) == !keys.empty());
+    CHECK(inPattern(*p, node6, 0) == !keys.empty());
+    if (!keys.empty()) {
+      Eigen::VectorXd qp = q, qm = q;
+      qp[node3] += 1e-4;
+      qm[node3] -= 1e-4;
+      b.data->kernel.acceleration(0.0, qp, v, ap);
+      b.data->kernel.acceleration(0.0, qm, v, am);
+      CHECK(std::abs(ap[node1] - am[node1]) > 0.0);
+    }
   }
-  CHECK(outside == 0);
-  CHECK(inside > 4 * 7 * 9);
 }
 
 TEST_CASE("a spring on the buoy keeps the nodes sparse - a system without lines has no pattern") {
@@ -140,8 +165,8 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
     Eigen::VectorXd q, v;
     dynamics::IntegratorStats stats;
   };
-  auto run = [](bool sparse) {
-    Built b(buoyScene());
+  auto run = [](bool sparse, const std::string& keys) {
+    Built b(buoyScene("", keys));
     if (!sparse) b.data->kernel.setJacobianPattern(nullptr);
     dynamics::IntegratorSpec spec;
     spec.method = "hht";
@@ -153,20 +178,26 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
     r.stats = integrator->stats();
     return r;
   };
-  const Run dense = run(false), sparse = run(true);
-  INFO("dense: " << dense.stats.f_evals << " evaluations, " << dense.stats.jac_evals
-                 << " matrices; sparse: " << sparse.stats.f_evals << ", " << sparse.stats.jac_evals
-                 << "; steps " << dense.stats.steps << " and " << sparse.stats.steps
-                 << ", failed solves " << dense.stats.err_fails << " and "
-                 << sparse.stats.err_fails);
-  // 2 s at 0.5 m/s: the buoy moves about a metre; nodes and buoy agree to the Newton tolerance
-  // and, where the dense path's chord Newton fails and halves a step that the sparse one (the
-  // lines' blocks re-evaluated at every iterate) takes whole, to that step's truncation error
-  // (1.0e-5 m measured with one halving)
-  CHECK(std::abs(sparse.q[0]) > 0.3);
-  CHECK(sparse.stats.steps <= dense.stats.steps);
-  CHECK((sparse.q - dense.q).lpNorm<Eigen::Infinity>() <
-        (sparse.stats.steps == dense.stats.steps ? 1e-5 : 3e-5));
-  CHECK((sparse.v - dense.v).lpNorm<Eigen::Infinity>() < 1e-4);
-  CHECK(sparse.stats.f_evals < dense.stats.f_evals / 2);
+  // (with bending stiffness on these chains lying on the bed, EI 1e8 N m^2, both the dense and
+  // the sparse path fail Newton often (106 and 68 failed solves in 2 s) and end 3.5 cm apart:
+  // not yet understood, docs/lines.md "Bending stiffness", so only EI = 0 here)
+  for (const std::string keys : {""}) {
+  INFO("line keys '" << keys << "'");
+    const Run dense = run(false, keys), sparse = run(true, keys);
+    INFO("dense: " << dense.stats.f_evals << " evaluations, " << dense.stats.jac_evals
+                   << " matrices; sparse: " << sparse.stats.f_evals << ", "
+                   << sparse.stats.jac_evals << "; steps " << dense.stats.steps << " and "
+                   << sparse.stats.steps << ", failed solves " << dense.stats.err_fails << " and "
+                   << sparse.stats.err_fails);
+    // 2 s at 0.5 m/s: the buoy moves about a metre; nodes and buoy agree to the Newton tolerance
+    // and, where the dense path's chord Newton fails and halves a step that the sparse one (the
+    // lines' blocks re-evaluated at every iterate) takes whole, to that step's truncation error
+    // (1.0e-5 m measured with one halving)
+    CHECK(std::abs(sparse.q[0]) > 0.3);
+    CHECK(sparse.stats.steps <= dense.stats.steps);
+    CHECK((sparse.q - dense.q).lpNorm<Eigen::Infinity>() <
+          (sparse.stats.steps == dense.stats.steps ? 1e-5 : 3e-5));
+    CHECK((sparse.v - dense.v).lpNorm<Eigen::Infinity>() < 1e-4);
+    CHECK(sparse.stats.f_evals < dense.stats.f_evals / 2);
+  }
 }

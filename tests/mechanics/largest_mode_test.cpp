@@ -53,7 +53,9 @@ TEST_CASE(
     "eigen-solve") {
   // (on the bed: its damping's real eigenvalue leads; off it: the chains' axial modes, complex
   // pairs in a cluster at the top)
-  for (const std::string extra : {"", ", seabed: false"})
+  // (and with bending stiffness EI 1e12 N m^2 off the bed: 16 EI / l^3 beside 4 EA / l, its
+  // zigzag bending mode among the top ones; the pattern two nodes wide)
+  for (const std::string extra : {"", ", seabed: false", ", seabed: false, EI: 1.0e12"})
     for (int segments : {8, 16}) {
       testing::SceneDir dir;
       auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", moored(segments, extra)));

@@ -5,7 +5,9 @@
 //   1964) Haskind (deep water, Newman 1962): B_jj = w^3 / (4 pi rho g^3) int_0^2pi |X_j(beta)|^2
 //   dbeta, i.e. heave B33 = w^3 |X3|^2 / (2 rho g^3), surge B11 = w^3 |X1(0)|^2 / (4 rho g^3),
 // with X(w) = int h(t) e^(-i w t) dt / W(w) from the excitation response of the incident
-// impulse wave. And the cache key: the same inputs give the same key, any change another.
+// impulse wave. And the cache key: the same inputs give the same key, any change another. And the
+// two paths' radiation force histories for one transient motion: the march against the Cummins
+// convolution of its responses.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -16,6 +18,7 @@
 #include "forces/hydro/forced_oscillation.hpp"
 #include "forces/hydro/frequency_domain.hpp"
 #include "forces/hydro/incident_kinematics.hpp"
+#include "forces/hydro/radiation_memory.hpp"
 #include "forces/hydro/td_impulse_response.hpp"
 #include "td_fixtures.hpp"
 
@@ -228,5 +231,54 @@ TEST_CASE("the long-wave pitch excitation tends to the Froude-Krylov limit on a 
     CHECK(fdFk == Approx(fk).epsilon(0.03));
     CHECK(std::abs(x5) == Approx(fk).epsilon(0.08));
     CHECK(fk == Approx(slope).epsilon(0.05));
+  }
+}
+
+TEST_CASE("the marched radiation force and the convolution of its impulse responses agree in history") {
+  // (the hemisphere of rankine_td_provider_test.cpp, a = 1 m, its free surface sized for ka = 1,
+  // moved by a smooth transient in surge and heave: Gaussian displacements of 0.2 m and 0.1 m)
+  // => the emp march's memory force F^M(t) and the Cummins memory force -int K(t - tau)
+  // xi_dot(tau) dtau of the impulse responses of the same panels (RadiationMemory, as
+  // ImpulseResponseForce uses it), both at the response's step, over 16 s with a 10 s memory
+  const RankineTdModel model(cubeSphere(1.0, 6), yardsim::dynamics::Transform{}, hemisphereSettings(1.0));
+  ImpulseResponseSettings s;
+  s.solver = model.settings();
+  s.dt = std::min(0.05, 0.9 * empLimit(model, 60).dtMax);
+  s.memory = 10.0;
+  const ImpulseResponse ir = computeImpulseResponse(model, s);
+  // (t) => [surge, sway, heave, roll, pitch, yaw] velocity of x = 0.2 exp(-((t - 3) / 0.7)^2) and
+  // z = 0.1 exp(-((t - 2.5) / 0.5)^2)
+  const auto velocity = [](double t) {
+    Vector6 u = Vector6::Zero();
+    u[0] = -2.0 * (t - 3.0) / (0.7 * 0.7) * 0.2 * std::exp(-std::pow((t - 3.0) / 0.7, 2));
+    u[2] = -2.0 * (t - 2.5) / (0.5 * 0.5) * 0.1 * std::exp(-std::pow((t - 2.5) / 0.5, 2));
+    return u;
+  };
+  const RetardationKernel kernel(ir);
+  RadiationMemory memory(kernel);
+  FreeSurfaceState state = quietSurface(model);
+  EmpScratch emp = makeEmpScratch(model);
+  const Eigen::VectorXd none;
+  std::vector<Vector6> marched, convolved;
+  for (int n = 0; n * s.dt <= 16.0; ++n) {
+    const double t = n * s.dt;
+    const Vector6 u = velocity(t);
+    const Eigen::VectorXd a = model.modes() * u;  // (the pose is the identity: W = B axes)
+    marched.push_back(empStep(model, s.dt, a, none, state, emp));
+    memory.commit(t, u);
+    convolved.push_back(-memory.convolution(t, u));
+  }
+  // (surge force, heave force, pitch moment) => the largest difference against the force's range
+  for (const int i : {0, 2, 4}) {
+    double lo = 0.0, hi = 0.0, worst = 0.0;
+    for (std::size_t n = 0; n < marched.size(); ++n) {
+      lo = std::min(lo, marched[n][i]);
+      hi = std::max(hi, marched[n][i]);
+      worst = std::max(worst, std::abs(marched[n][i] - convolved[n][i]));
+    }
+    INFO("row " << i << ": range " << hi - lo << ", largest difference " << worst << " ("
+                << 100.0 * worst / (hi - lo) << " % of the range), dt " << s.dt << " s");
+    CHECK(hi - lo > 100.0);  // (N or N m: a 0.2 m surge of a 2.1 t hemisphere radiates kN)
+    CHECK(worst < 0.03 * (hi - lo));
   }
 }

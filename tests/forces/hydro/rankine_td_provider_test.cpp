@@ -326,22 +326,22 @@ TEST_CASE("the marched excitation in a two-component sea is the sum of its singl
 
 TEST_CASE("in an irregular sea the marched excitation agrees with the convolution of its response",
           "[long]") {
-  // (the hemisphere held at rest in a long-crested JONSWAP sea, Hs 0.3 m, Tp 4 s, its components
-  // below 0.8 of the frequency the free surface resolves) => the provider's marched Froude-Krylov +
+  // (the hemisphere held at rest in a long-crested JONSWAP sea, Hs 0.3 m, peaking at half the
+  // frequency the free surface resolves, cut at 0.8 of it) => the provider's marched Froude-Krylov +
   // diffraction force against ImpulseResponseForce's convolution of the excitation response of the
   // same panel model with the same elevation, after the 4 s ramp and the start's transient
   const auto pm = panels();
   const dynamics::Model model = heaveBody(pm->aInf());
   const double h = 0.05, wc = resolvedFrequency(*pm);
+  // (a swell peaking at half the resolved frequency, cut at 0.8 of it: irregular_sea.hpp)
   forces::hydro::IrregularSea irregular;
   irregular.hs = 0.3;
-  irregular.tp = 4.0;
+  irregular.tp = 2.0 * std::numbers::pi / (0.5 * wc);
+  irregular.cutoff = 0.8 * wc;
   irregular.seed = 16;
   irregular.components = 40;
-  std::vector<forces::WaveComponent> kept;
-  for (const auto& c : irregularWaves(irregular))
-    if (2.0 * std::numbers::pi / c.period < 0.8 * wc) kept.push_back(c);
-  REQUIRE(kept.size() >= 30);
+  const std::vector<forces::WaveComponent> kept = irregularWaves(irregular);
+  REQUIRE(kept.size() == 40);
   forces::WaterProperties water;
   water.density = kRho;
   water.gravity = kG;
@@ -368,7 +368,7 @@ TEST_CASE("in an irregular sea the marched excitation agrees with the convolutio
       hi = std::max(hi, marched[n][i]);
       worst = std::max(worst, std::abs(marched[n][i] - convolved[n][i]));
     }
-    INFO("row " << i << ": range " << hi - lo << ", largest difference " << worst << " ("
+    INFO("resolved " << wc << " rad/s; row " << i << ": range " << hi - lo << ", largest difference " << worst << " ("
                 << 100.0 * worst / (hi - lo) << " % of the range)");
     CHECK(hi - lo > 0.0);
     CHECK(worst < 0.04 * (hi - lo));

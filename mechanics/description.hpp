@@ -20,6 +20,7 @@
 #include "forces/force_provider.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
 #include "forces/hydro/draft_added_mass.hpp"
+#include "forces/hydro/marching_step.hpp"
 #include "forces/linear_quadratic_damping.hpp"
 #include "forces/rope_path.hpp"
 #include "forces/wind_profile.hpp"
@@ -139,6 +140,10 @@ struct MechanicsSpec {
     // (the scene's one sea) => why the provider cannot take it (a component above the frequency
     // its response resolves), one sentence each with the numbers; empty: none to check
     std::function<std::vector<std::string>(const forces::AiryWaves& sea)> seaCheck;
+    // () => the provider's own marching step and its stability limit (rankine_td: the panel step
+    // against the emp limit of its free surface), for the stiffness guard and run.json; empty:
+    // nothing marched at a step of its own
+    std::function<forces::hydro::MarchingStep()> marchingStep = {};
   };
   // A force provider contributed by a registered reader (scene/provider_readers.hpp; a new
   // provider is its forces/ file pair and one reader function): attached at points on bodies

@@ -66,6 +66,28 @@ void systems(const devs::Model& m, std::string& out) {
       appendJsonString(out, e.body);
     } catch (const std::exception&) {  // accelerations not finite at the start: the run says so
     }
+    // (marched providers: rankine_td's free surface) => their own step beside its stability limit:
+    // what the stiffness guard judged beside omega_max
+    std::string marching;
+    for (const auto& h : sea.hydrodynamics) {
+      if (!h.marchingStep) continue;
+      try {
+        const forces::hydro::MarchingStep step = h.marchingStep();
+        marching += marching.empty() ? "{\"name\":" : ",{\"name\":";
+        appendJsonString(marching, h.name);
+        marching += ",\"scheme\":";
+        appendJsonString(marching, step.scheme);
+        marching += ",\"step\":";
+        appendJsonNumber(marching, step.step);
+        marching += ",\"limit\":";
+        appendJsonNumber(marching, step.limit);
+        marching += ",\"lambda_max\":";
+        appendJsonNumber(marching, step.lambdaMax);
+        marching += "}";
+      } catch (const std::exception&) {  // the guard reported it before the run
+      }
+    }
+    if (!marching.empty()) out += ",\"marching\":[" + marching + "]";
     out += "}";
   }
 }

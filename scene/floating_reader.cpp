@@ -58,11 +58,11 @@ long wholeNumber(const Reader& r, const YAML::Node& n, const std::string& key, l
   return static_cast<long>(v);
 }
 
-// ({spectrum, hs, tp, gamma, direction_deg, spreading_s, seed, components}) => the sea's
+// ({spectrum, hs, tp, gamma, direction_deg, spreading_s, seed, components, cutoff}) => the sea's
 // components appended to spec.waves (docs/hydrodynamics.md, "Irregular seas")
 void irregular(const Reader& r, const YAML::Node& n, const std::string& key, const forces::WaterProperties& w,
                MechanicsSpec& spec) {
-  if (!r.keys(n, {"spectrum", "hs", "tp", "gamma", "direction", "direction_deg", "spreading_s", "seed", "components"},
+  if (!r.keys(n, {"spectrum", "hs", "tp", "gamma", "direction", "direction_deg", "spreading_s", "seed", "components", "cutoff"},
               key))
     return;
   forces::hydro::IrregularSea sea;
@@ -83,11 +83,13 @@ void irregular(const Reader& r, const YAML::Node& n, const std::string& key, con
   sea.spreadingS = r.number(n["spreading_s"], key + ".spreading_s", 0.0);
   sea.seed = static_cast<std::uint64_t>(wholeNumber(r, n["seed"], key + ".seed", 1, 0, 2147483647));
   sea.components = static_cast<int>(wholeNumber(r, n["components"], key + ".components", 200, 1, 100000));
+  sea.cutoff = r.number(n["cutoff"], key + ".cutoff", 0.0);
   // (each value at its own node) => the first word of the message names the key
   const std::pair<const char*, bool> checks[] = {{"hs", sea.hs > 0},
                                                  {"tp", sea.tp > 0},
                                                  {"gamma", sea.gamma >= 1 && sea.gamma <= 20},
-                                                 {"spreading_s", sea.spreadingS == 0 || (sea.spreadingS > 0 && sea.spreadingS <= 1000)}};
+                                                 {"spreading_s", sea.spreadingS == 0 || (sea.spreadingS > 0 && sea.spreadingS <= 1000)},
+                                                 {"cutoff", sea.cutoff >= 0}};
   if (!n["hs"] || !n["tp"]) return;  // (reported above)
   try {
     auto waves = forces::hydro::irregularWaves(sea);
@@ -97,6 +99,8 @@ void irregular(const Reader& r, const YAML::Node& n, const std::string& key, con
     const std::string what = e.what();
     for (const auto& [name, ok] : checks)
       if (!ok && n[name]) return r.fail(n[name], key + "." + name, what.substr(what.find(": ") + 2));
+    if (what.rfind("cutoff: ", 0) == 0 && n["cutoff"])
+      return r.fail(n["cutoff"], key + ".cutoff", what.substr(8));
     r.fail(n, key, what);
   }
 }
@@ -335,6 +339,7 @@ void hydrodynamics(const Reader& r, const YAML::Node& n, const std::string& file
       h.build = [build = td->build, q](const std::string& name, const dynamics::Model& model, int b,
                                        std::shared_ptr<const forces::AiryWaves> sea) { return build(name, model, b, q, sea); };
       if (td->runCheck) h.runCheck = [c = td->runCheck, q](double until) { return c(q, until); };
+      if (td->marchingStep) h.marchingStep = [c = td->marchingStep, q] { return c(q); };
       spec.hydrodynamics.push_back(std::move(h));
       continue;
     }

@@ -21,6 +21,7 @@
 #include "forces/force_provider.hpp"
 #include "forces/geometry/triangle_mesh.hpp"
 #include "forces/hydro/impulse_response.hpp"
+#include "forces/hydro/marching_step.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -59,6 +60,9 @@ struct TimeDomainMethod {
   // (request, the run's end time s) => problems with a run that long (one sentence each with its
   // numbers and a way out), checked at the door with the scene's `until` or `--until`; may be empty
   std::function<std::vector<std::string>(const HydrodynamicsRequest&, double until)> runCheck;
+  // (request) => the method's own marching step and its stability limit, for the stiffness guard
+  // and run.json (marching_step.hpp); may be empty (nothing marched at a step of its own)
+  std::function<MarchingStep(const HydrodynamicsRequest&)> marchingStep = {};
 };
 
 // (solver) => registered under its name (a second one of that name replaces the first)

@@ -8,7 +8,9 @@
 // energy quantiles is cut into N bins of equal energy; component i takes the frequency at the
 // energy fraction 0.001 + 0.998 (i + u_i)/N (u_i uniform in [0, 1): a random frequency within its
 // bin), the amplitude a = sqrt(2 m0 / N) (the variance sum a^2/2 is Hs^2/16 exactly) and a
-// uniform random phase. Random frequencies have no common period: the sea does not repeat within
+// uniform random phase. With a cutoff w_c below the upper quantile the bins span the energy from
+// the 0.1 % quantile to F(w_c) instead, each component keeping the spectrum's density (a^2/2 =
+// m0 (F(w_c) - 0.001) / (0.998 N)): the variance is Hs^2/16 times the kept fraction. Random frequencies have no common period: the sea does not repeat within
 // any run (equally spaced frequencies d omega would repeat after 2 pi / d omega).
 // Spreading (cos-2s, optional): each component one direction, b0 plus the cos-2s quantile of a
 // stratified fraction (p_i + v_i)/N, p a random permutation, so that directions and frequencies
@@ -32,10 +34,15 @@ struct IrregularSea {
   double spreadingS = 0.0;  // cos-2s exponent; 0: long-crested (every component along direction)
   std::uint64_t seed = 1;
   int components = 200;
+  // rad/s: the spectrum cut above this frequency (its energy there left out: the sea's variance is
+  // m0 times the kept fraction), e.g. at an impulse response's resolved frequency; 0: no cut
+  double cutoff = 0.0;
 };
 
-// (sea) => its components; throws std::invalid_argument for a bad spectrum or spreading, or
-// components outside [1, 100000]
+// (sea) => its components; throws std::invalid_argument for a bad spectrum or spreading,
+// components outside [1, 100000], or a cutoff not above the spectrum's 0.1 % quantile
+// (sea) => the fraction of m0 its components carry: 1, or (F(w_c) - 0.001) / 0.998 with a cutoff
+double keptEnergy(const IrregularSea& sea);
 std::vector<WaveComponent> irregularWaves(const IrregularSea& sea);
 
 // (seed) => a uniform number in [0, 1) from the top 53 bits of each mt19937_64 draw

@@ -98,6 +98,25 @@ std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest&
   return model;
 }
 
+EmpLimit rankineTdEmpLimit(const RankineTdModel& model) {
+  // (one limit per model: the models live as long as the program) => kept for the door and guard
+  static std::mutex lock;
+  static std::map<const RankineTdModel*, EmpLimit> known;
+  {
+    const std::lock_guard<std::mutex> guard(lock);
+    if (const auto it = known.find(&model); it != known.end()) return it->second;
+  }
+  const EmpLimit limit = empLimit(model);
+  const std::lock_guard<std::mutex> guard(lock);
+  return known.emplace(&model, limit).first->second;
+}
+
+MarchingStep rankineTdMarchingStep(const HydrodynamicsRequest& q) {
+  const auto model = rankineTdModel(q);
+  const EmpLimit limit = rankineTdEmpLimit(*model);
+  return {"emp", setting(q, "panel_step", q.dt), limit.dtMax, limit.lambdaMax, model->settings().g};
+}
+
 namespace {
 // (request, its settings, its model, sea) => a problem when a wave component lies above the
 // excitation window's cutoff (the given one, or what the free-surface mesh resolves): the
@@ -140,7 +159,7 @@ std::vector<std::string> checkRankineTdPath(const HydrodynamicsRequest& q, const
     }
     const auto model = rankineTdModel(q);
     const double step = setting(q, "panel_step", q.dt);
-    if (auto m = checkEmpStep(empLimit(*model), step)) problems.push_back(*m);
+    if (auto m = checkEmpStep(rankineTdEmpLimit(*model), step)) problems.push_back(*m);
     if (windowed)
       if (auto m = checkExcitationWindow(q, s, *model, sea)) problems.push_back(*m);
   } catch (const std::exception& e) {
@@ -203,7 +222,8 @@ const bool registered = [] {
          const auto model = rankineTdModel(q);
          return symmetric(toBodyAxes(model->aInf(), model->rotation()));
        },
-       checkRunLength});
+       checkRunLength,
+       rankineTdMarchingStep});
   return true;
 }();
 }  // namespace

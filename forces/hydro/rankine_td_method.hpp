@@ -13,6 +13,7 @@
 // Units SI; the hull in the body frame, the mean pose the body's initial one.
 #include <memory>
 
+#include "forces/hydro/emp_scheme.hpp"
 #include "forces/hydro/hydrodynamics_methods.hpp"
 #include "forces/hydro/td_impulse_response.hpp"
 
@@ -28,6 +29,14 @@ std::shared_ptr<const RankineTdModel> rankineTdModel(const HydrodynamicsRequest&
 // (request, sea) => the problems found before a run: the hull through the damping zone, a
 // free-surface panel longer than a tenth of the sea's shortest wave, a step above the emp limit
 std::vector<std::string> checkRankineTd(const HydrodynamicsRequest& request, const AiryWaves& sea);
+
+// (panel model) => its emp limit (emp_scheme.hpp: empLimit, 200 iterations), computed once per
+// model (rankineTdModel keeps the models for the program's life)
+EmpLimit rankineTdEmpLimit(const RankineTdModel& model);
+
+// (request) => the panel step (settings.panel_step, default the request's dt) against the emp
+// limit of the request's free surface: what the stiffness guard and run.json report
+MarchingStep rankineTdMarchingStep(const HydrodynamicsRequest& request);
 
 // (request, the run's end time s) => a problem when the marched free surface's short-wave modes
 // grow by more than e^2 over the run (surface_growth.hpp, td_checks.hpp: checkSurfaceGrowth)

@@ -1,17 +1,26 @@
 // examples/floating_barge against the hand formulas of its README: the equilibrium draft
 // m / (rho L B), the trim x_G / GM_L, the steady wind heel F_y (z_wind - z_damping) / (m g GM_T),
 // the roll period 2 pi sqrt(I_eff / (m g GM_T)) with I_eff = I_xx - I_xz^2 / I_zz about G, the
-// energy balance, and the beam sea rolling the barge once it has grown (run to 80 s of 150).
+// energy balance, and the beam sea rolling the barge once it has grown (run to 80 s of 150); and
+// irregular_sea.yaml: the barge in an irregular swell on the impulse-response path.
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "forces/hydro/irregular_sea.hpp"
+#include "forces/hydro/wave_spectrum.hpp"
 #include "scene/assembler.hpp"
+#include "scene/mechanical_systems.hpp"
 #include "run/runner.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
+
+namespace {
+// rad/s: irregular_sea.yaml's `cutoff` (its synthetic response's excitation window)
+constexpr double kIrregularCutoff = 2.0;
+}  // namespace
 
 TEST_CASE(
     "floating barge: draft, trim, wind heel and roll period of the hand formulas, and waves roll "
@@ -74,4 +83,62 @@ TEST_CASE(
   }
   CHECK(roll > 1.0 * M_PI / 180);
   CHECK(worst < 1e-6 * scale);
+}
+
+// examples/floating_barge/irregular_sea.yaml: the barge on the impulse-response path in a JONSWAP
+// beam swell (Hs 1.5 m, Tp 12 s, cut at its synthetic response's window, 2 rad/s). The sea's
+// components carry Hs^2/16 times the spectrum's share below the cut (F(w_c) by the spectrum's
+// cumulative, independent of the components), and the recorded elevation at the barge has that
+// variance over 40 .. 300 s; a swell this long (225 m at the peak, the barge 20 m wide) lifts the
+// barge quasi-statically: its heave follows the elevation (correlated, of the same size up to the
+// dynamic amplification 1 / (1 - (w / w_heave)^2), w_heave = 1.55 rad/s with the file's A33: 1.13
+// at the peak).
+TEST_CASE("floating barge in an irregular swell: the sea's variance, and it heaves with the swell",
+          "[long]") {
+  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
+                                       "/examples/floating_barge/irregular_sea.yaml");
+  // (the scene's sea) => its components' variance against the spectrum's energy below the cut
+  forces::hydro::IrregularSea swell;
+  swell.hs = 1.5;
+  swell.tp = 12.0;
+  swell.gamma = 3.3;
+  swell.cutoff = kIrregularCutoff;
+  const forces::hydro::WaveSpectrum spectrum(swell.spectrum, swell.hs, swell.tp, swell.gamma);
+  const double m0 = swell.hs * swell.hs / 16,
+               kept = (spectrum.cumulative(swell.cutoff) / m0 - 0.001) / 0.998;
+  const auto& waves = scene->systems.at(0)->spec.waves;
+  REQUIRE(waves.size() == 200);
+  double variance = 0, highest = 0;
+  for (const auto& w : waves) {
+    variance += w.height * w.height / 8;
+    highest = std::max(highest, 2 * M_PI / w.period);
+  }
+  CHECK(variance == Approx(kept * m0).epsilon(1e-9));
+  CHECK(highest <= swell.cutoff);
+  CHECK(kept > 0.99);  // (a 12 s swell has next to nothing above 2 rad/s)
+  auto root = scene::assemble(*scene);
+  testing::SceneDir out;
+  run::runScene(*scene, *root, {out.path(), 300.0, {}, {}, 0.1});
+  const testing::CsvFile csv((out.path() / "timeseries.csv").string());
+  const int t = 0, eta = csv.column("hull.wave_elevation[m]"), z = csv.column("barge.z[m]");
+  REQUIRE(std::min(eta, z) > 0);
+  // (40 .. 300 s, after the ramp) => variances and the correlation of heave and elevation
+  double n = 0, se = 0, sz = 0;
+  for (const auto& r : csv.rows)
+    if (r[t] >= 40.0) n += 1, se += r[eta], sz += r[z];
+  const double me = se / n, mz = sz / n;
+  double vee = 0, vzz = 0, vez = 0;
+  for (const auto& r : csv.rows)
+    if (r[t] >= 40.0) {
+      vee += (r[eta] - me) * (r[eta] - me) / n;
+      vzz += (r[z] - mz) * (r[z] - mz) / n;
+      vez += (r[eta] - me) * (r[z] - mz) / n;
+    }
+  const double ratio = std::sqrt(vzz / vee), correlation = vez / std::sqrt(vee * vzz);
+  INFO("elevation variance " << vee << " m^2 against " << kept * m0 << " m^2; heave/elevation "
+                             << ratio << ", correlation " << correlation);
+  CHECK(vee == Approx(kept * m0).epsilon(0.15));
+  CHECK(ratio > 0.85);
+  CHECK(ratio < 1.35);
+  CHECK(correlation > 0.9);
 }

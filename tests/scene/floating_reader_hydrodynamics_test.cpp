@@ -380,6 +380,7 @@ TEST_CASE("rankine_td is built by the method registered for it") {
        },
        {},
        {},
+       {},
        {}});
   const auto r = scene::loadScene(
       dir.write("s.yaml", sceneYaml("    hd: {body: barge, method: rankine_td, hull: "
@@ -416,6 +417,7 @@ TEST_CASE("a hydrodynamics block in an included file sees the scene root's water
              name, model, body, std::make_shared<const ImpulseResponse>(testSolve(r)), sea);
        },
        probe,
+       {},
        {},
        {}});
   dir.write("barge.yaml", R"(schema_version: 1

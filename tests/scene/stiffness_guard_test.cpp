@@ -1,10 +1,17 @@
 // The stiffness guard: the verdict against each method's stability limit, and what a scene gets
 // for warn, refuse and off (a warning, an error at the integrator block with a suggestion that
-// works, nothing); a step longer than the run and a zero step are refused before the run.
+// works, nothing); a step longer than the run and a zero step are refused before the run; a marched
+// free surface's panel step (rankine_td) against its emp limit, beside the mechanics step.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "forces/geometry/mesh_io.hpp"
+#include "forces/geometry/primitive_meshes.hpp"
+#include "scene/mechanical_systems.hpp"
 
 #include "scene/scene_loader.hpp"
 #include "scene/stiffness_guard.hpp"
@@ -104,4 +111,119 @@ TEST_CASE("a step longer than the whole run, and a zero step, are refused before
   const auto zero = scene::loadScene(dir.write("b.yaml", replaced(base, "dt: 0.001", "dt: 0")));
   CHECK_FALSE(zero.scene);
   CHECK_THAT(zero.diagnostics.report(), Catch::Contains("integrator.dt") && Catch::Contains("positive"));
+}
+
+namespace {
+// (integrator step, panel_step or "" for the default, stiffness_check) => the box barge 20 x 8 m
+// of tests/scene/floating_reader_hydrodynamics_test.cpp, its hull marched by rankine_td on a
+// coarse free surface (8 panels around, out to 60 m)
+std::string markedBarge(const std::string& dt, const std::string& panelStep,
+                        const std::string& check = "warn") {
+  return "schema_version: 1\nintegrator: {method: rk4, dt: " + dt + ", stiffness_check: " + check + R"(}
+mechanics:
+  water: {density: 1025}
+  bodies:
+    barge:
+      parent: world
+      joint: {type: free, q0: {xyz: [0, 0, 0.5]}}
+      mass: 246000
+      inertia: [1.64e6, 8.53e6, 9.51e6]
+  hydrostatics:
+    hull: {body: barge, mesh: meshes/barge.stl}
+  hydrodynamics:
+    hd: {body: barge, method: rankine_td, hull: meshes/barge.stl, dt: 0.05,
+         settings: {truncation_radius: 60, first_spacing: 1.5, max_spacing: 4, longest_period: 4)" +
+         (panelStep.empty() ? std::string() : ", panel_step: " + panelStep) + "}}\n";
+}
+std::string threeDigits(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+std::string exact(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+}  // namespace
+
+TEST_CASE("the guard judges a marched free surface's panel step against its emp limit") {
+  testing::SceneDir dir;
+  std::filesystem::create_directories(dir.path() / "meshes");
+  forces::writeStl(forces::boxMesh(dynamics::Vector3(20, 8, 4), 2, 2, 1), dir.file("meshes/barge.stl"));
+  // (the panel step at the mechanics step, far below the limit) => no report; the figures
+  const auto fine = scene::loadScene(dir.write("fine.yaml", markedBarge("0.05", "")));
+  INFO(fine.diagnostics.report());
+  REQUIRE(fine.scene);
+  CHECK(fine.diagnostics.all().empty());
+  const auto& hydro = fine.scene->systems.at(0)->spec.hydrodynamics.at(0);
+  REQUIRE(hydro.marchingStep);
+  const forces::hydro::MarchingStep m = hydro.marchingStep();
+  INFO("emp limit " << m.limit << " s, lambda_max " << m.lambdaMax << " 1/m");
+  CHECK(m.scheme == "emp");
+  CHECK(m.step == 0.05);
+  // (the limit is g lambda_max dt^2 = 4) => stability number 4 at the limit
+  CHECK(9.80665 * m.lambdaMax * m.limit * m.limit == Approx(4.0).epsilon(1e-12));
+  CHECK(m.stabilityNumber() == Approx(4.0 * std::pow(0.05 / m.limit, 2)).epsilon(1e-12));
+  // (panels of 1.5 m and more: lambda_max h ~ 3, dt <= 1.15 sqrt(h / g) ~ 0.45 s)
+  CHECK(m.limit > 0.2);
+  CHECK(m.limit < 1.5);
+  auto warnings = [](const scene::LoadResult& r) {
+    std::vector<const models::Diagnostic*> out;
+    for (const auto& d : r.diagnostics.all())
+      if (d.keyPath == "mechanics.hydrodynamics.hd") out.push_back(&d);
+    return out;
+  };
+  SECTION("within 10 % of the limit: a warning at the entry with both numbers and the mechanics step") {
+    // (dt a quarter of 0.95 of the limit, the panel step four of them) => a whole multiple
+    const double dt = std::floor(0.95 * m.limit / 4.0 * 1e4) / 1e4, step = 4.0 * dt;
+    const auto r = scene::loadScene(dir.write("near.yaml", markedBarge(exact(dt), exact(step))));
+    INFO(r.diagnostics.report());
+    REQUIRE(r.scene);
+    const auto found = warnings(r);
+    REQUIRE(found.size() == 1);
+    const models::Diagnostic& d = *found[0];
+    CHECK(d.severity == models::Diagnostic::Severity::Warning);
+    CHECK(d.where.line == 14);
+    CHECK(d.element == "hd");
+    CHECK(d.value == Approx(step / m.limit));
+    CHECK_THAT(d.message, Catch::Contains("panel step " + threeDigits(step) + " s") &&
+                              Catch::Contains("emp limit " + threeDigits(m.limit) + " s") &&
+                              Catch::Contains("lambda_max " + threeDigits(m.lambdaMax)) &&
+                              Catch::Contains("rk4 at dt = " + threeDigits(dt)) &&
+                              Catch::Contains("omega_max dt =") && Catch::Contains("2.83"));
+    const auto refused = scene::loadScene(dir.write("near_refuse.yaml", markedBarge(exact(dt), exact(step), "refuse")));
+    CHECK_FALSE(refused.scene);
+    CHECK_THAT(refused.diagnostics.report(), Catch::Contains("emp limit") && Catch::Contains("stiffness_check: refuse"));
+    const auto off = scene::loadScene(dir.write("near_off.yaml", markedBarge(exact(dt), exact(step), "off")));
+    CHECK(off.scene);
+    CHECK(off.diagnostics.all().empty());
+  }
+  SECTION("at 0.85 of the limit nothing is reported") {
+    const double dt = std::floor(0.85 * m.limit / 4.0 * 1e4) / 1e4;
+    const auto r = scene::loadScene(dir.write("below.yaml", markedBarge(exact(dt), exact(4.0 * dt))));
+    INFO(r.diagnostics.report());
+    CHECK(r.scene);
+    CHECK(r.diagnostics.all().empty());
+  }
+  SECTION("a panel step that is not a whole multiple of the mechanics step") {
+    const auto r = scene::loadScene(dir.write("odd.yaml", markedBarge("0.05", "0.07")));
+    INFO(r.diagnostics.report());
+    const auto found = warnings(r);
+    REQUIRE(found.size() == 1);
+    CHECK_THAT(found[0]->message, Catch::Contains("panel step 0.07 s is not a whole multiple of the mechanics step 0.05 s") &&
+                                      Catch::Contains("panel_step 0.05 s"));
+  }
+  SECTION("above the limit: refused at the entry with the numbers") {
+    const double step = 1.05 * m.limit;
+    const auto r = scene::loadScene(dir.write("above.yaml", markedBarge(exact(step), exact(step))));
+    CHECK_FALSE(r.scene);
+    const auto found = warnings(r);
+    REQUIRE_FALSE(found.empty());
+    CHECK(found[0]->severity == models::Diagnostic::Severity::Error);
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%.4g", m.limit);
+    CHECK_THAT(found[0]->message, Catch::Contains("above the emp limit " + std::string(limit) + " s") &&
+                                      Catch::Contains("lambda_max"));
+  }
 }

@@ -2,9 +2,11 @@
 // sampled in time has that variance and, by its periodogram (FFT), the target spectrum's energy
 // in each of six equal-energy bands; the same seed gives the same sea bit for bit and another
 // seed another sea; the sea does not repeat within a three-hour run (its autocorrelation stays
-// low, where equally spaced frequencies come back to one); the spread directions follow cos-2s.
+// low, where equally spaced frequencies come back to one); the spread directions follow cos-2s; a
+// cutoff keeps the spectrum's energy below it.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -12,6 +14,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "forces/hydro/irregular_sea.hpp"
+#include "forces/hydro/wave_spectrum.hpp"
 
 using namespace yardsim::forces;
 using namespace yardsim::forces::hydro;
@@ -137,4 +140,44 @@ TEST_CASE("bad irregular seas are refused") {
   s = jonswap();
   s.hs = -1;
   CHECK_THROWS_WITH(irregularWaves(s), Catch::Contains("hs"));
+}
+
+TEST_CASE("a cutoff keeps the components below it with the spectrum's energy there") {
+  // (JONSWAP Hs 2.5 m, Tp 8 s cut at 1.5 rad/s) => every component at or below 1.5 rad/s, their
+  // variance the spectrum's energy from the 0.1 % quantile to 1.5 rad/s (trapezoid of S, 1e-5 rad/s
+  // steps) over 0.998; a cut above the 99.9 % quantile is no cut, bit for bit
+  IrregularSea s = jonswap();
+  s.cutoff = 1.5;
+  const auto waves = irregularWaves(s);
+  const WaveSpectrum spectrum(s.spectrum, s.hs, s.tp, s.gamma);
+  double variance = 0, highest = 0;
+  for (const auto& w : waves) {
+    variance += w.height * w.height / 8;
+    highest = std::max(highest, 2 * M_PI / w.period);
+  }
+  const double low = spectrum.quantile(0.001), m0 = s.hs * s.hs / 16;
+  double below = 0;
+  for (double w = low; w < s.cutoff; w += 1e-5)
+    below += 0.5 * (spectrum.density(w) + spectrum.density(std::min(w + 1e-5, s.cutoff))) *
+             (std::min(w + 1e-5, s.cutoff) - w);
+  INFO("variance " << variance << " m^2 of m0 " << m0 << " m^2; highest " << highest << " rad/s");
+  CHECK(highest <= 1.5);
+  CHECK(highest > 1.4);
+  CHECK(variance == Approx(below / 0.998).epsilon(1e-4));
+  CHECK(variance == Approx(keptEnergy(s) * m0).epsilon(1e-12));
+  CHECK(keptEnergy(s) < 0.97);  // (the cut leaves out a few per cent of a Tp = 8 s sea)
+  IrregularSea high = jonswap();
+  high.cutoff = 50.0;
+  const auto same = irregularWaves(high), none = irregularWaves(jonswap());
+  REQUIRE(same.size() == none.size());
+  for (std::size_t i = 0; i < same.size(); ++i) {
+    CHECK(same[i].height == none[i].height);
+    CHECK(same[i].period == none[i].period);
+    CHECK(same[i].phase == none[i].phase);
+  }
+  CHECK(keptEnergy(high) == 1.0);
+  s.cutoff = 0.3;  // (below the 0.1 % quantile)
+  CHECK_THROWS_WITH(irregularWaves(s), Catch::Contains("cutoff") && Catch::Contains("no wave is left"));
+  s.cutoff = -1;
+  CHECK_THROWS_WITH(irregularWaves(s), Catch::Contains("cutoff"));
 }

@@ -3,7 +3,9 @@
 // (3) a floating hemisphere (mass rho (2/3) pi a^3, A_inf on the left-hand side, a linear
 // hydrostatic spring C33 = rho g pi a^2) released 5 cm high decays with the damping ratio
 // B / (2 (M + A) w) and the period of the solver's own A(w), B(w) at the natural frequency
-// (forced oscillation of the same panel model); without the provider it does not decay.
+// (forced oscillation of the same panel model); without the provider it does not decay; (4) in a
+// two-component sea its marched excitation is the sum of the single-component runs, and in an
+// irregular sea it agrees with the convolution of the same panels' excitation response.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/hydro/forced_oscillation.hpp"
 #include "forces/hydro/impulse_response_force.hpp"
+#include "forces/hydro/irregular_sea.hpp"
 #include "forces/hydro/rankine_td_provider.hpp"
 #include "forces/hydro/td_impulse_response.hpp"
 #include "td_fixtures.hpp"
@@ -260,4 +263,114 @@ TEST_CASE("a barge heaving in a regular beam wave moves alike on both paths", "[
   // (measured: amplitudes 0.0772 and 0.0805 m, 4.3 % apart, difference 7.9 % of the amplitude)
   CHECK(other == Approx(amplitude).epsilon(0.06));
   CHECK(worst < 0.12 * amplitude);
+}
+
+namespace {
+// (provider, model of one body on a joint, panel step h, steps) => the force it adds, naval order
+// in the body frame, at the start of each step of h with the body held at its mean pose (the
+// excitation alone: no radiation)
+std::vector<Vector6> heldAtRest(const forces::ForceProvider& p, const dynamics::Model& model,
+                                double h, int steps) {
+  dynamics::Data d(model);
+  auto scratch = p.makeScratch();
+  const Eigen::VectorXd q = Eigen::VectorXd::Zero(model.nq), v = Eigen::VectorXd::Zero(model.nv);
+  dynamics::forwardKinematics(model, d, q, v);
+  std::vector<Vector6> out;
+  for (int n = 0; n < steps; ++n) {
+    const double t = n * h;
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(model.nv);
+    dynamics::ExternalForces f(model);
+    p.evaluate(forces::Stage{t, model, d, q, v, scratch.get(), t}, f, tau);
+    const dynamics::Force F = f.bodyFrame(1);  // [moment; force]
+    out.push_back((Vector6() << F.tail<3>(), F.head<3>()).finished());
+  }
+  return out;
+}
+
+// (water, components) => the sea, shared
+std::shared_ptr<const forces::AiryWaves> seaOf(const forces::WaterProperties& water,
+                                               std::vector<forces::WaveComponent> c) {
+  return std::make_shared<const forces::AiryWaves>(water, std::move(c));
+}
+}  // namespace
+
+TEST_CASE("the marched excitation in a two-component sea is the sum of its single-component runs") {
+  // (the hemisphere held at rest, Froude-Krylov + diffraction marched every 0.1 s for 12 s) =>
+  // the force of two components from different directions equals the sum of each alone to
+  // round-off: the provider's incident tables and the march are linear in the sea
+  const auto pm = panels();
+  const dynamics::Model model = heaveBody(pm->aInf());
+  forces::WaterProperties water;
+  water.density = kRho;
+  water.gravity = kG;
+  water.ramp = 3.0;
+  const forces::WaveComponent a{0.2, 3.0, 0.0, 0.3}, b{0.15, 2.2, 2.0, 1.1};
+  const double h = 0.1;
+  const int steps = 120;
+  auto run = [&](std::vector<forces::WaveComponent> c) {
+    const RankineTdProvider p("excitation", model, 1, pm, h, seaOf(water, std::move(c)), true);
+    return heldAtRest(p, model, h, steps);
+  };
+  const auto both = run({a, b}), first = run({a}), second = run({b});
+  double largest = 0.0, largestSecond = 0.0, worst = 0.0;
+  for (int n = 0; n < steps; ++n) {
+    largest = std::max(largest, both[n].cwiseAbs().maxCoeff());
+    largestSecond = std::max(largestSecond, second[n].cwiseAbs().maxCoeff());
+    worst = std::max(worst, (both[n] - first[n] - second[n]).cwiseAbs().maxCoeff());
+  }
+  INFO("largest force " << largest << " N, second component alone " << largestSecond
+                        << " N; largest difference from the sum " << worst << " N");
+  CHECK(largestSecond > 0.2 * largest);  // (both components matter)
+  CHECK(worst < 1e-10 * largest);
+}
+
+TEST_CASE("in an irregular sea the marched excitation agrees with the convolution of its response",
+          "[long]") {
+  // (the hemisphere held at rest in a long-crested JONSWAP sea, Hs 0.3 m, peaking at half the
+  // frequency the free surface resolves, cut at 0.8 of it) => the provider's marched Froude-Krylov +
+  // diffraction force against ImpulseResponseForce's convolution of the excitation response of the
+  // same panel model with the same elevation, after the 4 s ramp and the start's transient
+  const auto pm = panels();
+  const dynamics::Model model = heaveBody(pm->aInf());
+  const double h = 0.05, wc = resolvedFrequency(*pm);
+  // (a swell peaking at half the resolved frequency, cut at 0.8 of it: irregular_sea.hpp)
+  forces::hydro::IrregularSea irregular;
+  irregular.hs = 0.3;
+  irregular.tp = 2.0 * std::numbers::pi / (0.5 * wc);
+  irregular.cutoff = 0.8 * wc;
+  irregular.seed = 16;
+  irregular.components = 40;
+  const std::vector<forces::WaveComponent> kept = irregularWaves(irregular);
+  REQUIRE(kept.size() == 40);
+  forces::WaterProperties water;
+  water.density = kRho;
+  water.gravity = kG;
+  water.ramp = 4.0;
+  const auto sea = seaOf(water, kept);
+  const int steps = static_cast<int>(std::lround(30.0 / h));
+  const RankineTdProvider marchedProvider("marched", model, 1, pm, h, sea, true);
+  const auto marched = heldAtRest(marchedProvider, model, h, steps);
+  ImpulseResponseSettings s;
+  s.solver = pm->settings();
+  s.dt = h;
+  s.memory = 10.0;
+  s.headings = {0.0};
+  s.cutoff = wc;
+  s.froudeKrylov = true;
+  const auto response = std::make_shared<const ImpulseResponse>(computeImpulseResponse(*pm, s));
+  const ImpulseResponseForce convolvedProvider("convolved", model, 1, response, sea);
+  const auto convolved = heldAtRest(convolvedProvider, model, h, steps);
+  // (after 10 s) => per force row surge, heave and pitch: the largest difference against the range
+  for (const int i : {0, 2, 4}) {
+    double lo = 0.0, hi = 0.0, worst = 0.0;
+    for (int n = static_cast<int>(std::lround(10.0 / h)); n < steps; ++n) {
+      lo = std::min(lo, marched[n][i]);
+      hi = std::max(hi, marched[n][i]);
+      worst = std::max(worst, std::abs(marched[n][i] - convolved[n][i]));
+    }
+    INFO("resolved " << wc << " rad/s; row " << i << ": range " << hi - lo << ", largest difference " << worst << " ("
+                << 100.0 * worst / (hi - lo) << " % of the range)");
+    CHECK(hi - lo > 0.0);
+    CHECK(worst < 0.04 * (hi - lo));
+  }
 }

@@ -65,7 +65,7 @@ mechanics:
   CHECK(m["scheme"].as<std::string>() == "emp");
   CHECK(m["step"].as<double>() == 0.1);
   const double limit = m["limit"].as<double>(), lambda = m["lambda_max"].as<double>();
-  CHECK(9.80665 * lambda * limit * limit == Approx(4.0).epsilon(1e-9));
+  CHECK(9.81 * lambda * limit * limit == Approx(4.0).epsilon(1e-9));
   CHECK(limit > 0.1);
   // (a scene without a marched provider) => no `marching` key
   const YAML::Node barge = summaryOf(std::string(YARDSIM_SOURCE_DIR) + "/examples/floating_barge/scene.yaml");

@@ -163,7 +163,7 @@ TEST_CASE("rope with EI: the stiffness guard sees the bending mode, which rises 
   }
 }
 
-TEST_CASE("rope with EI: 0 is the rope without the key; problems at their nodes") {
+TEST_CASE("rope with EI: 0 is the rope without the key, and problems are at their nodes") {
   // (EI: 0) => the same run, bit for bit, as without the key
   testing::SceneDir dir;
   const auto plain = simulate(dir, span(10.0, 9.99, 5, "", "v0: 0.5", 2e-4), 0.2);

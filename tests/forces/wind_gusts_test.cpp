@@ -125,7 +125,11 @@ TEST_CASE("the sampled gust has the band's variance and the spectrum by its peri
       if (k * df >= edges[b] && k * df < edges[b + 1]) energy += 2 * std::norm(X[static_cast<std::size_t>(k)]) / (double(n) * n);
     const double expected = integral([&](double f) { return S.density(f); }, edges[b], edges[b + 1]);
     INFO("band " << edges[b] << " to " << edges[b + 1] << " Hz: " << expected / target << " of the energy");
-    CHECK(energy == Approx(expected).epsilon(0.05));
+    // (below 0.005 Hz the components lie about 1.5e-5 Hz apart, the record's resolution: their
+    // beats do not average out over 18 h, and a band's sampled energy scatters by some 5 % from
+    // seed to seed, where the components themselves carry the target to 1.3 %) => 8 % there, 4 %
+    // above
+    CHECK(energy == Approx(expected).epsilon(edges[b] < 0.005 ? 0.08 : 0.04));
   }
 }
 

@@ -18,8 +18,10 @@ GustSpectrumKind gustSpectrumKind(const std::string& name) {
 }
 
 NpdGustSpectrum::NpdGustSpectrum(double u0, double z) {
-  if (!(u0 > 0) || !std::isfinite(u0)) throw std::invalid_argument("speed: the gusts need a 1-hour mean U0 > 0 m/s");
-  if (!(z > 0) || !std::isfinite(z)) throw std::invalid_argument("height: the spectrum's height must be > 0 m");
+  if (!(u0 > 0) || !std::isfinite(u0))
+    throw std::invalid_argument("speed: the gusts need a 1-hour mean U0 > 0 m/s");
+  if (!(z > 0) || !std::isfinite(z))
+    throw std::invalid_argument("height: the spectrum's height must be > 0 m");
   scale_ = 320.0 * std::pow(u0 / 10.0, 2) * std::pow(z / 10.0, 0.45);
   fScale_ = 172.0 * std::pow(z / 10.0, 2.0 / 3.0) * std::pow(u0 / 10.0, -0.75);
 }
@@ -32,10 +34,12 @@ double NpdGustSpectrum::density(double f) const {
 WindGusts::WindGusts(const GustProperties& p, double u0) : p_(p) {
   if (p_.components < 1 || p_.components > 100000)
     throw std::invalid_argument("components: the number of gust components must be in [1, 100000]");
-  if (!(p_.fMin > 0) || !std::isfinite(p_.fMin)) throw std::invalid_argument("f_min: must be > 0 Hz");
+  if (!(p_.fMin > 0) || !std::isfinite(p_.fMin))
+    throw std::invalid_argument("f_min: must be > 0 Hz");
   if (!(p_.fMax > p_.fMin) || !std::isfinite(p_.fMax))
     throw std::invalid_argument("f_max: must be finite and > f_min");
-  if (!(p_.ramp >= 0) || !std::isfinite(p_.ramp)) throw std::invalid_argument("ramp: must be >= 0 s");
+  if (!(p_.ramp >= 0) || !std::isfinite(p_.ramp))
+    throw std::invalid_argument("ramp: must be >= 0 s");
   if (!std::isfinite(p_.start)) throw std::invalid_argument("start: must be finite");
   const NpdGustSpectrum spectrum(u0, p_.height);
   // (S on a grid in x = ln f) => the cumulative by the trapezoid rule on S(f) f dx
@@ -61,7 +65,8 @@ WindGusts::WindGusts(const GustProperties& p, double u0) : p_(p) {
   for (std::size_t i = 0; i < n; ++i) {
     const double target = equalEnergyFraction(i, n, u.next(), 0.0) * variance_;
     const auto it = std::upper_bound(cum.begin(), cum.end(), target);
-    const std::size_t k = std::clamp<std::size_t>(static_cast<std::size_t>(it - cum.begin()), 1, kTable);
+    const std::size_t k =
+        std::clamp<std::size_t>(static_cast<std::size_t>(it - cum.begin()), 1, kTable);
     const double span = cum[k] - cum[k - 1];
     const double w = span > 0 ? (target - cum[k - 1]) / span : 0.0;
     omega_.push_back(2.0 * M_PI * std::exp(x[k - 1] + w * h));
@@ -69,7 +74,9 @@ WindGusts::WindGusts(const GustProperties& p, double u0) : p_(p) {
   }
 }
 
-double WindGusts::frequency(std::size_t i) const { return omega_[i] / (2.0 * M_PI); }
+double WindGusts::frequency(std::size_t i) const {
+  return omega_[i] / (2.0 * M_PI);
+}
 
 double WindGusts::ramp(double t) const {
   const double tau = t - p_.start;
@@ -82,7 +89,8 @@ double WindGusts::speed(double t) const {
   const double r = ramp(t);
   if (r == 0.0) return 0.0;
   double sum = 0.0;
-  for (std::size_t i = 0; i < omega_.size(); ++i) sum += amplitude_[i] * std::cos(omega_[i] * t + phase_[i]);
+  for (std::size_t i = 0; i < omega_.size(); ++i)
+    sum += amplitude_[i] * std::cos(omega_[i] * t + phase_[i]);
   return r * sum;
 }
 

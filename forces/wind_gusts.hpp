@@ -41,8 +41,8 @@ class NpdGustSpectrum {
   double density(double f) const;
 
  private:
-  double scale_;  // 320 (U0/10)^2 (z/10)^0.45, m^2/s^2 per Hz
-  double fScale_; // 172 (z/10)^(2/3) (U0/10)^-0.75, s
+  double scale_;   // 320 (U0/10)^2 (z/10)^0.45, m^2/s^2 per Hz
+  double fScale_;  // 172 (z/10)^(2/3) (U0/10)^-0.75, s
 };
 
 struct GustProperties {
@@ -72,7 +72,7 @@ class WindGusts {
   // the integral of S over [f_min, f_max] (the table's), m^2/s^2: the variance sum a^2/2
   double variance() const { return variance_; }
   std::size_t size() const { return omega_.size(); }
-  double frequency(std::size_t i) const;  // Hz
+  double frequency(std::size_t i) const;                           // Hz
   double amplitude(std::size_t i) const { return amplitude_[i]; }  // m/s
   double phase(std::size_t i) const { return phase_[i]; }          // rad
 

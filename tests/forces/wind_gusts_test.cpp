@@ -67,8 +67,9 @@ TEST_CASE("NPD spectrum: a hand value and the integral of the closed form") {
   const double fs = 172 * std::pow(z / 10, 2.0 / 3.0) * std::pow(kU0 / 10, -0.75);
   const double beta = std::tgamma(1 / n) * std::tgamma(2 / (3 * n)) / std::tgamma(5 / (3 * n));
   const double closed = scale / fs * beta / n;
-  const double quadrature = integral([&](double f) { return high.density(f); }, 1e-12, 1e12, 400000) +
-                            high.density(0.0) * 1e-12;
+  const double quadrature =
+      integral([&](double f) { return high.density(f); }, 1e-12, 1e12, 400000) +
+      high.density(0.0) * 1e-12;
   CHECK(quadrature == Approx(closed).epsilon(1e-6));
   // (the turbulence intensity over the hour's band, U0 = 15 m/s) => near NPD's I_u = 0.099
   const double band = integral([&](double f) { return S.density(f); }, 1.0 / 3600, 1.0);
@@ -87,7 +88,8 @@ TEST_CASE("the components carry the integral of the spectrum over the band") {
       CHECK(g.frequency(i) <= 0.8);
     }
     CHECK(variance == Approx(g.variance()).epsilon(1e-12));
-    CHECK(g.variance() == Approx(integral([&](double f) { return S.density(f); }, 1.0 / 3600, 0.8)).epsilon(2e-6));
+    CHECK(g.variance() ==
+          Approx(integral([&](double f) { return S.density(f); }, 1.0 / 3600, 0.8)).epsilon(2e-6));
   }
   // (the spectrum at another height) => the variance of that height's spectrum
   GustProperties p = gusty();
@@ -122,9 +124,12 @@ TEST_CASE("the sampled gust has the band's variance and the spectrum by its peri
   for (int b = 0; b + 1 < 9; ++b) {
     double energy = 0;
     for (int k = 1; k < n / 2; ++k)
-      if (k * df >= edges[b] && k * df < edges[b + 1]) energy += 2 * std::norm(X[static_cast<std::size_t>(k)]) / (double(n) * n);
-    const double expected = integral([&](double f) { return S.density(f); }, edges[b], edges[b + 1]);
-    INFO("band " << edges[b] << " to " << edges[b + 1] << " Hz: " << expected / target << " of the energy");
+      if (k * df >= edges[b] && k * df < edges[b + 1])
+        energy += 2 * std::norm(X[static_cast<std::size_t>(k)]) / (double(n) * n);
+    const double expected =
+        integral([&](double f) { return S.density(f); }, edges[b], edges[b + 1]);
+    INFO("band " << edges[b] << " to " << edges[b + 1] << " Hz: " << expected / target
+                 << " of the energy");
     // (below 0.005 Hz the components lie about 1.5e-5 Hz apart, the record's resolution: their
     // beats do not average out over 18 h, and a band's sampled energy scatters by some 5 % from
     // seed to seed, where the components themselves carry the target to 1.3 %) => 8 % there, 4 %
@@ -174,14 +179,16 @@ TEST_CASE("same seed same gust and another seed another") {
 TEST_CASE("the gust does not repeat within a three-hour run") {
   const WindGusts g(gusty(200), kU0);
   double worst = 0;
-  for (double lag = 60.0; lag <= 3 * 3600.0; lag += 0.5) worst = std::max(worst, std::abs(autocorrelation(g, lag)));
+  for (double lag = 60.0; lag <= 3 * 3600.0; lag += 0.5)
+    worst = std::max(worst, std::abs(autocorrelation(g, lag)));
   CHECK(worst < 0.3);
   // (the check can fail) => the same amplitudes at equally spaced frequencies repeat after 1/df
   // (the autocorrelation of a sum with frequencies k df at lag 1/df is 1): a grid's sum comes
   // back where the gust's does not
   const double df = 1.0 / 1800;
   double num = 0;
-  for (std::size_t i = 0; i < g.size(); ++i) num += std::cos(2 * M_PI * static_cast<double>(i + 1) * df * (1 / df));
+  for (std::size_t i = 0; i < g.size(); ++i)
+    num += std::cos(2 * M_PI * static_cast<double>(i + 1) * df * (1 / df));
   CHECK(num / static_cast<double>(g.size()) == Approx(1.0).epsilon(1e-9));
   CHECK(std::abs(autocorrelation(g, 1 / df)) < 0.3);
 }

@@ -23,7 +23,8 @@ std::string sceneYaml(const std::string& wind) {
 integrator: {method: rk4, dt: 0.05}
 mechanics:
   gravity: [0, 0, 0]
-)" + wind + R"(  bodies:
+)" + wind +
+         R"(  bodies:
     box:
       parent: world
       joint: {type: free, q0: {xyz: [0, 0, 20]}}
@@ -38,7 +39,8 @@ mechanics:
 const models::Channel* ending(const std::vector<models::Channel>& all, const std::string& tail) {
   const models::Channel* found = nullptr;
   for (const auto& c : all)
-    if (c.name.size() >= tail.size() && c.name.compare(c.name.size() - tail.size(), tail.size(), tail) == 0) {
+    if (c.name.size() >= tail.size() &&
+        c.name.compare(c.name.size() - tail.size(), tail.size(), tail) == 0) {
       if (found) FAIL("two channels end with " << tail);
       found = &c;
     }
@@ -56,9 +58,11 @@ const models::Diagnostic* find(const scene::LoadResult& r, const std::string& ke
 TEST_CASE("gusts from YAML: the library's series, shown by the wind_speed channel") {
   testing::SceneDir dir;
   const auto r = scene::loadScene(dir.write(
-      "s.yaml", sceneYaml("  wind: {speed: 15, direction_deg: -90, profile: npd,\n"
-                          "         gusts: {spectrum: npd, seed: 11, components: 120, f_min: 0.0005, f_max: 0.5,\n"
-                          "                 height: 20, start: 1, ramp: 2}}\n")));
+      "s.yaml",
+      sceneYaml(
+          "  wind: {speed: 15, direction_deg: -90, profile: npd,\n"
+          "         gusts: {spectrum: npd, seed: 11, components: 120, f_min: 0.0005, f_max: 0.5,\n"
+          "                 height: 20, start: 1, ramp: 2}}\n")));
   INFO(r.diagnostics.report());
   REQUIRE(r.scene);
   const auto& wind = r.scene->systems.at(0)->spec.wind;
@@ -67,7 +71,8 @@ TEST_CASE("gusts from YAML: the library's series, shown by the wind_speed channe
   CHECK(wind->averagingTime == 3600.0);
   // (the same keys through the library) => the same series, bit for bit
   forces::GustProperties g;
-  g.seed = 11, g.components = 120, g.fMin = 0.0005, g.fMax = 0.5, g.height = 20, g.start = 1, g.ramp = 2;
+  g.seed = 11, g.components = 120, g.fMin = 0.0005, g.fMax = 0.5, g.height = 20, g.start = 1,
+  g.ramp = 2;
   const forces::WindGusts expected(g, 15.0);
   const forces::WindField field(*wind);
   for (double t : {0.5, 2.0, 7.3, 100.0}) CHECK(field.gust(t) == expected.speed(t));
@@ -83,7 +88,8 @@ TEST_CASE("gusts from YAML: the library's series, shown by the wind_speed channe
   CHECK(speed->read() == Approx(15.0 + expected.speed(10.0)).epsilon(1e-12));
   CHECK(std::abs(expected.speed(10.0)) > 1e-3);
   // (a steady wind) => no wind_speed channel
-  const auto steady = scene::loadScene(dir.write("t.yaml", sceneYaml("  wind: {speed: 15, profile: npd}\n")));
+  const auto steady =
+      scene::loadScene(dir.write("t.yaml", sceneYaml("  wind: {speed: 15, profile: npd}\n")));
   REQUIRE(steady.scene);
   CHECK_FALSE(steady.scene->systems.at(0)->spec.wind->gusts);
   auto root2 = scene::assemble(*steady.scene);
@@ -92,23 +98,29 @@ TEST_CASE("gusts from YAML: the library's series, shown by the wind_speed channe
 
 TEST_CASE("bad gusts are refused at their line with the key path") {
   testing::SceneDir dir;
-  auto load = [&](const std::string& wind) { return scene::loadScene(dir.write("s.yaml", sceneYaml(wind))); };
+  auto load = [&](const std::string& wind) {
+    return scene::loadScene(dir.write("s.yaml", sceneYaml(wind)));
+  };
   SECTION("an unknown spectrum, a misspelt key") {
-    const auto r = load("  wind:\n    speed: 15\n    profile: npd\n    gusts: {spectrum: npdd, seeds: 3}\n");
+    const auto r =
+        load("  wind:\n    speed: 15\n    profile: npd\n    gusts: {spectrum: npdd, seeds: 3}\n");
     INFO(r.diagnostics.report());
     const auto* s = find(r, "mechanics.wind.gusts.seeds");
     REQUIRE(s);
     CHECK(s->where.line == 8);
     CHECK_THAT(s->message + s->hint, Contains("did you mean 'seed'?"));
-    const auto again = load("  wind:\n    speed: 15\n    profile: npd\n    gusts: {spectrum: npdd}\n");
+    const auto again =
+        load("  wind:\n    speed: 15\n    profile: npd\n    gusts: {spectrum: npdd}\n");
     const auto* k = find(again, "mechanics.wind.gusts.spectrum");
     REQUIRE(k);
     CHECK(k->where.line == 8);
     CHECK_THAT(k->message + k->hint, Contains("did you mean 'npd'?"));
   }
   SECTION("no components, a NaN band edge, f_max below f_min, a negative ramp, no spectrum") {
-    const auto r = load("  wind:\n    speed: 15\n    profile: npd\n    gusts:\n      spectrum: npd\n      components: 0\n"
-                        "      f_min: .nan\n      ramp: -3\n");
+    const auto r = load(
+        "  wind:\n    speed: 15\n    profile: npd\n    gusts:\n      spectrum: npd\n      "
+        "components: 0\n"
+        "      f_min: .nan\n      ramp: -3\n");
     INFO(r.diagnostics.report());
     const auto* n = find(r, "mechanics.wind.gusts.components");
     REQUIRE(n);
@@ -121,7 +133,8 @@ TEST_CASE("bad gusts are refused at their line with the key path") {
     const auto* ramp = find(r, "mechanics.wind.gusts.ramp");
     REQUIRE(ramp);
     CHECK(ramp->where.line == 12);
-    const auto band = load("  wind: {speed: 15, profile: npd, gusts: {spectrum: npd, f_min: 0.1, f_max: 0.05}}\n");
+    const auto band = load(
+        "  wind: {speed: 15, profile: npd, gusts: {spectrum: npd, f_min: 0.1, f_max: 0.05}}\n");
     const auto* hi = find(band, "mechanics.wind.gusts.f_max");
     REQUIRE(hi);
     CHECK(hi->where.line == 5);
@@ -138,7 +151,9 @@ TEST_CASE("bad gusts are refused at their line with the key path") {
     REQUIRE(p);
     CHECK(p->where.line == 7);
     CHECK_THAT(p->message, Contains("profile: npd"));
-    const auto a = load("  wind:\n    speed: 15\n    profile: npd\n    averaging_time: 60\n    gusts: {spectrum: npd}\n");
+    const auto a = load(
+        "  wind:\n    speed: 15\n    profile: npd\n    averaging_time: 60\n    gusts: {spectrum: "
+        "npd}\n");
     INFO(a.diagnostics.report());
     const auto* t = find(a, "mechanics.wind.averaging_time");
     REQUIRE(t);

@@ -17,8 +17,8 @@ WindLoad::WindLoad(std::string name, const dynamics::Model& model, int body, con
                checked(field, name).properties().density),
       field_(std::move(field)) {}
 
-dynamics::Vector3 WindLoad::flowVelocity(const dynamics::Vector3& p_W, double /*t*/) const {
-  return field_->velocity(p_W);
+dynamics::Vector3 WindLoad::flowVelocity(const dynamics::Vector3& p_W, double t) const {
+  return field_->velocity(p_W, t);
 }
 
 }  // namespace yardsim::forces

@@ -23,6 +23,15 @@ WindField::WindField(const WindProperties& p) : p_(p) {
     throw std::invalid_argument("wind: the averaging time must be in (0, 3600] s");
   if (p_.profile == WindProfileKind::Npd && std::abs(p_.referenceHeight - 10.0) > 1e-12)
     throw std::invalid_argument("wind: the NPD profile takes the 1-hour mean speed at 10 m (reference height 10)");
+  if (!p_.gusts) return;
+  // (gusts) => on the NPD profile's 1-hour mean only: a shorter averaging time's gust factor
+  // already holds the fluctuations the gusts add
+  if (p_.profile != WindProfileKind::Npd)
+    throw std::invalid_argument("wind: gusts go with profile: npd (the NPD spectrum takes U0, the 1-hour mean at 10 m)");
+  if (p_.averagingTime != 3600.0)
+    throw std::invalid_argument("wind: with gusts the profile gives the 1-hour mean: averaging_time must be 3600 s "
+                                "(a shorter one's gust factor would count the gusts twice)");
+  gusts_.emplace(*p_.gusts, p_.speed);
 }
 
 double WindField::speedAt(double height) const {
@@ -42,8 +51,9 @@ double WindField::speedAt(double height) const {
   return 0.0;
 }
 
-dynamics::Vector3 WindField::velocity(const dynamics::Vector3& p_W) const {
-  const double u = speedAt(p_W.z() - p_.level);
+dynamics::Vector3 WindField::velocity(const dynamics::Vector3& p_W, double t) const {
+  const double mean = speedAt(p_W.z() - p_.level);
+  const double u = gusts_ ? mean + gusts_->speed(t) : mean;
   return {u * std::cos(p_.direction), u * std::sin(p_.direction), 0.0};
 }
 

@@ -12,6 +12,7 @@
 #include "forces/hydro/impulse_response_force.hpp"
 #include "forces/hydro/irregular_sea.hpp"
 #include "scene/spec_reader.hpp"
+#include "scene/wind_reader.hpp"
 
 namespace yardsim::scene {
 
@@ -21,14 +22,10 @@ using models::didYouMean;
 namespace {
 
 using dynamics::Vector3;
+using spec::angle;
 using spec::kDeg;
 using spec::Reader;
-
-// (node, key, `name_deg` or `name`) => an angle in rad (0 when neither is there)
-double angle(const Reader& r, const YAML::Node& n, const std::string& key, const std::string& name) {
-  if (n[name + "_deg"]) return kDeg * r.number(n[name + "_deg"], key + "." + name + "_deg", 0.0);
-  return r.number(n[name], key + "." + name, 0.0);
-}
+using spec::wholeNumber;
 
 // (body name) => reported when unknown (globally resolved later in a scene's fragments)
 void body(const Reader& r, const YAML::Node& n, const std::string& key, const std::set<std::string>& bodies,
@@ -45,17 +42,6 @@ void body(const Reader& r, const YAML::Node& n, const std::string& key, const st
     const std::string hint = didYouMean(out, known);
     r.fail(n["body"], key + ".body", "unknown body '" + out + "'" + (hint.empty() ? "" : " (" + hint + ")"));
   }
-}
-
-// (node, key) => a whole number in [lo, hi] (fallback when absent), reported otherwise
-long wholeNumber(const Reader& r, const YAML::Node& n, const std::string& key, long fallback, long lo, long hi) {
-  if (!n) return fallback;
-  const double v = r.number(n, key, static_cast<double>(fallback));
-  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
-    r.fail(n, key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return fallback;
-  }
-  return static_cast<long>(v);
 }
 
 // ({spectrum, hs, tp, gamma, direction_deg, spreading_s, seed, components, cutoff}) => the sea's
@@ -167,35 +153,6 @@ void water(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
     } catch (const std::invalid_argument& e) {
       r.fail(c, "current", e.what());
     }
-  }
-}
-
-void wind(const Reader& r, const YAML::Node& n, MechanicsSpec& spec) {
-  if (!r.keys(n, {"speed", "direction", "direction_deg", "reference_height", "profile", "exponent",
-                  "averaging_time", "air_density", "min_height"}, ""))
-    return;
-  forces::WindProperties w;
-  w.speed = r.number(n["speed"], "speed", 0.0, true);
-  w.direction = angle(r, n, "", "direction");
-  w.referenceHeight = r.number(n["reference_height"], "reference_height", w.referenceHeight);
-  w.exponent = r.number(n["exponent"], "exponent", w.exponent);
-  w.averagingTime = r.number(n["averaging_time"], "averaging_time", w.averagingTime);
-  w.density = r.number(n["air_density"], "air_density", w.density);
-  w.minHeight = r.number(n["min_height"], "min_height", w.minHeight);
-  w.level = spec.water.level;
-  if (const YAML::Node pr = n["profile"]) {
-    try {
-      w.profile = forces::windProfileKind(pr.IsScalar() ? pr.Scalar() : "");
-    } catch (const std::invalid_argument& e) {
-      r.fail(pr, "profile", std::string(e.what()) + " " + didYouMean(pr.IsScalar() ? pr.Scalar() : "", {"uniform", "power_law", "npd"}));
-      return;
-    }
-  }
-  try {
-    forces::WindField check(w);
-    spec.wind = w;
-  } catch (const std::invalid_argument& e) {
-    r.fail(n, "", e.what());
   }
 }
 
@@ -468,7 +425,7 @@ void parseFloating(const Params& p, const MechanicsReport& report, const std::se
                    MechanicsSpec& spec) {
   auto defined = [&](const char* key) { return p.has(key) && p.node(key).IsDefined() && !p.node(key).IsNull(); };
   if (defined("water")) water(Reader{report, "water"}, p.node("water"), spec);
-  if (defined("wind")) wind(Reader{report, "wind"}, p.node("wind"), spec);
+  if (defined("wind")) readWind(Reader{report, "wind"}, p.node("wind"), spec);
   // (named providers) => a mapping of them, each read
   auto named = [&](const char* key, auto&& read) {
     if (!defined(key)) return;

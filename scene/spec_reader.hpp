@@ -130,5 +130,21 @@ struct Reader {
   }
 };
 
+// (node, key, `name_deg` or `name`) => an angle in rad (0 when neither is there)
+inline double angle(const Reader& r, const YAML::Node& n, const std::string& key, const std::string& name) {
+  if (n[name + "_deg"]) return kDeg * r.number(n[name + "_deg"], key + "." + name + "_deg", 0.0);
+  return r.number(n[name], key + "." + name, 0.0);
+}
+
+// (node, key) => a whole number in [lo, hi] (fallback when absent), reported otherwise
+inline long wholeNumber(const Reader& r, const YAML::Node& n, const std::string& key, long fallback, long lo, long hi) {
+  if (!n) return fallback;
+  const double v = r.number(n, key, static_cast<double>(fallback));
+  if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
+    r.fail(n, key, "expected a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return fallback;
+  }
+  return static_cast<long>(v);
+}
 
 }  // namespace yardsim::scene::spec

@@ -57,8 +57,7 @@ std::vector<WaveComponent> irregularWaves(const IrregularSea& sea) {
   std::vector<WaveComponent> out;
   out.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const double fraction =
-        kTail + span * (static_cast<double>(i) + u.next()) / static_cast<double>(n);
+    const double fraction = equalEnergyFraction(i, n, u.next(), kTail, span);
     const double omega = spectrum.quantile(fraction);
     const double v = u.next();
     double direction = sea.direction;

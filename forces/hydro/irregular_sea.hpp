@@ -4,24 +4,26 @@
 // excitation and the wave elevation channels all see the same sea (docs/hydrodynamics.md,
 // "Irregular seas"). Units: m, s, rad; directions from +x towards +y, the way the waves travel.
 //
-// Discretisation (equal energy, random frequencies): the spectrum between its 0.1 % and 99.9 %
-// energy quantiles is cut into N bins of equal energy; component i takes the frequency at the
-// energy fraction 0.001 + 0.998 (i + u_i)/N (u_i uniform in [0, 1): a random frequency within its
-// bin), the amplitude a = sqrt(2 m0 / N) (the variance sum a^2/2 is Hs^2/16 exactly) and a
-// uniform random phase. With a cutoff w_c below the upper quantile the bins span the energy from
-// the 0.1 % quantile to F(w_c) instead, each component keeping the spectrum's density (a^2/2 =
-// m0 (F(w_c) - 0.001) / (0.998 N)): the variance is Hs^2/16 times the kept fraction. Random frequencies have no common period: the sea does not repeat within
+// Discretisation (equal energy, random frequencies, forces/spectral_sampling.hpp, shared with the
+// wind's gusts): the spectrum between its 0.1 % and 99.9 % energy quantiles is cut into N bins of
+// equal energy; component i takes the frequency at the energy fraction 0.001 + 0.998 (i + u_i)/N
+// (u_i uniform in [0, 1): a random frequency within its bin), the amplitude a = sqrt(2 m0 / N)
+// (the variance sum a^2/2 is Hs^2/16 exactly) and a uniform random phase. With a cutoff w_c below
+// the upper quantile the bins span the energy from the 0.1 % quantile to F(w_c) instead, each
+// component keeping the spectrum's density (a^2/2 = m0 (F(w_c) - 0.001) / (0.998 N)): the variance
+// is Hs^2/16 times the kept fraction. Random frequencies have no common period: the sea does not
+// repeat within
 // any run (equally spaced frequencies d omega would repeat after 2 pi / d omega).
 // Spreading (cos-2s, optional): each component one direction, b0 plus the cos-2s quantile of a
 // stratified fraction (p_i + v_i)/N, p a random permutation, so that directions and frequencies
 // are independent. The random numbers come from std::mt19937_64 (fully specified by the C++
 // standard) seeded with `seed`: the same seed gives the same sea on every platform.
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include "forces/airy_waves.hpp"
 #include "forces/hydro/wave_spectrum.hpp"
+#include "forces/spectral_sampling.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -45,14 +47,7 @@ struct IrregularSea {
 double keptEnergy(const IrregularSea& sea);
 std::vector<WaveComponent> irregularWaves(const IrregularSea& sea);
 
-// (seed) => a uniform number in [0, 1) from the top 53 bits of each mt19937_64 draw
-class UniformStream {
- public:
-  explicit UniformStream(std::uint64_t seed) : engine_(seed) {}
-  double next() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-
- private:
-  std::mt19937_64 engine_;
-};
+// (seed) => uniform numbers in [0, 1) (forces/spectral_sampling.hpp, shared with the gusts)
+using forces::UniformStream;
 
 }  // namespace yardsim::forces::hydro

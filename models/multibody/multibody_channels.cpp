@@ -6,6 +6,7 @@
 #include "dynamics/loop_constraints.hpp"
 #include "dynamics/rotation.hpp"
 #include "forces/provider_outputs.hpp"
+#include "forces/wind_load.hpp"
 #include "models/multibody/multibody_model.hpp"
 
 namespace yardsim::models {
@@ -86,6 +87,16 @@ void MultibodyModel::channels(std::vector<Channel>& out) const {
   out.push_back({own + "energy", "J", [this] { return energy(); }});
   out.push_back({own + "work", "J", [this] { return state().x.work; }});
   out.push_back({own + "energy_balance", "J", [this] { return energy() - state().x.work; }});
+  // (a wind with gusts) => its speed at the reference height, mean plus gust, m/s (one series
+  // per scene; a steady wind has no such channel: its speed is the `speed` key)
+  for (const auto& fp : system_.flows())
+    if (const auto* w = dynamic_cast<const forces::WindLoad*>(fp.get()); w && w->field().gusts()) {
+      const forces::WindField* field = &w->field();
+      out.push_back({own + "wind_speed", "m/s", [this, field] {
+                       return field->speedAt(field->properties().referenceHeight) + field->gust(state().tx);
+                     }});
+      break;
+    }
   if (m.nc > 0)
     out.push_back({own + "loop_residual", "m", [this] {
                      return dynamics::loopResidualNorm(system_.model(), ws_.data.view, state().x.q);

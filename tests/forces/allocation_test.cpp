@@ -87,7 +87,7 @@ TEST_CASE("gravity and wire rope and equalizer and body load do not allocate at 
   CHECK(std::isfinite(sink));
 }
 
-TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a stage") {
+TEST_CASE("hydrostatics, damping, wind (steady and gusty) and current loads do not allocate at a stage") {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
@@ -107,12 +107,15 @@ TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a st
   WindLoad wind("wind", m, 1, Vector3(0, 0, 8), {50, 200, 20},
                 FlowCoefficients({0, M_PI / 2, M_PI}, {-1, 0, 1}, {0, -1, 0}, {0, 0.1, 0}),
                 std::make_shared<const WindField>(wp));
+  wp.gusts = GustProperties{};  // (time-varying gusts) => 200 components summed at the stage's t
+  WindLoad gusty("gusty", m, 1, Vector3(0, 0, 8), {50, 200, 20}, FlowCoefficients(),
+                 std::make_shared<const WindField>(wp));
   CurrentProperties cp;
   cp.speed = 1.0;
   cp.profile = {{-10.0, 0.5}, {0.0, 1.0}};
   CurrentLoad current("current", m, 1, Vector3(0, 0, -1), {30, 80, 20}, FlowCoefficients(),
                       std::make_shared<const CurrentField>(cp));
-  Rig r(m, {&calm, &waves, &damping, &wind, &current});
+  Rig r(m, {&calm, &waves, &damping, &wind, &gusty, &current});
   r.q << 0.0, 0.0, 0.5, std::cos(0.1), std::sin(0.1), 0.0, 0.0;
   r.v.setConstant(0.1);
   r.t = 3.0;
@@ -120,7 +123,7 @@ TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a st
   const Stage s = r.stage();
   dynamics::ExternalForces f(m);
   Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
-  const std::initializer_list<ForceProvider*> providers{&calm, &waves, &damping, &wind, &current};
+  const std::initializer_list<ForceProvider*> providers{&calm, &waves, &damping, &wind, &gusty, &current};
   std::vector<std::unique_ptr<ProviderScratch>> scratch;  // the caller's, made once
   for (ForceProvider* fp : providers) scratch.push_back(fp->makeScratch());
   Stage calmStage = s, waveStage = s;
@@ -136,7 +139,7 @@ TEST_CASE("hydrostatics, damping, wind and current loads do not allocate at a st
     sink += fp->potentialEnergy(own) + fp->power(own);
   }
   sink += calm.report(calmStage).draft + waves.report(waveStage).gmTransverse + wind.load(s).speed +
-          current.load(s).speed;
+          gusty.load(s).speed + current.load(s).speed;
   const double volume = waves.report(waveStage).submerged.volume;
   sink += damping.load(s)[0] + volume;
   CHECK(allocationCount() == before);

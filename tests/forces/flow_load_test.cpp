@@ -1,6 +1,6 @@
 // OCIMF-style flow loads: the coefficient table (mirrored and full), the force and yaw moment of
 // a beam and a head flow in the body's heading axes, the relative velocity (a body drifting with
-// the flow feels nothing), and the power.
+// the flow feels nothing), the power, and a gusty wind's drag following its instantaneous speed.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -74,7 +74,7 @@ TEST_CASE("wind on a ship heading 30 deg: force in the heading axes, yaw moment,
   const Vector3 p_W = R * Vector3(5, 0, 12);
   CHECK((f.worldFrame(1).head<3>() - (p_W.cross(s.force) + Vector3(0, 0, s.yawMoment))).norm() < 1e-6);
   // (the ship drifting with the wind) => no relative flow, no force
-  r.v.tail<3>() = R.transpose() * wind->velocity(p_W);
+  r.v.tail<3>() = R.transpose() * wind->velocity(p_W, 0.0);
   CHECK(load.load(r.stage()).force.norm() < 1e-9);
   // (the ship moving against a calm) => power F . v < 0, and the balance closes
   WindProperties still = wp;
@@ -86,6 +86,35 @@ TEST_CASE("wind on a ship heading 30 deg: force in the heading axes, yaw moment,
   CHECK(drag.power(d.stage()) < 0.0);
   const Rig::Balance b = d.energyBalance(0.01, 400);
   CHECK(b.maxError < 1e-6 * b.maxWork);
+}
+
+TEST_CASE("a gusty wind's drag follows the instantaneous speed squared") {
+  const dynamics::Model model = freeBody();
+  WindProperties wp;
+  wp.speed = 15.0;
+  wp.profile = WindProfileKind::Npd;
+  wp.direction = -90 * kDeg;  // towards -y: a beam wind from port on a ship heading +x
+  wp.gusts = GustProperties{};
+  auto wind = std::make_shared<const WindField>(wp);
+  const FlowAreas areas{400.0, 1500.0, 100.0};
+  WindLoad load("wind", model, 1, Vector3(5, 0, 12), areas, FlowCoefficients(), wind);
+  Rig r(model, {&load});
+  r.q << 0, 0, 0, 1, 0, 0, 0;
+  double lo = 1e300, hi = 0;
+  for (double t = 0; t < 600; t += 7.3) {
+    r.t = t;
+    const FlowLoadState s = load.load(r.stage());
+    // (the speed at the point's 12 m: the mean there plus the gust at t) => F_y = -1/2 rho V^2 A_lat C_y
+    const double V = wind->speedAt(12.0) + wind->gust(t);
+    CHECK(s.speed == Approx(V).epsilon(1e-12));
+    CHECK(s.force.y() == Approx(-0.5 * 1.226 * V * V * 1500.0).epsilon(1e-12));
+    CHECK(std::abs(s.force.x()) < 1e-9 * std::abs(s.force.y()));
+    lo = std::min(lo, -s.force.y());
+    hi = std::max(hi, -s.force.y());
+  }
+  // (the gust) => the force swings by more than a fifth of its mean level over ten minutes
+  const double mean = 0.5 * 1.226 * std::pow(wind->speedAt(12.0), 2) * 1500.0;
+  CHECK(hi - lo > 0.2 * mean);
 }
 
 TEST_CASE("current load: water density, speed at the point's depth") {

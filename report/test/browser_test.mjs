@@ -10,6 +10,7 @@ import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import puppeteer from 'puppeteer-core';
+import { groupSeries, maxAbs } from '../src/units.js';
 
 const args = process.argv.slice(2);
 const flag = name => { const i = args.indexOf(name); return i >= 0 ? args.splice(i, 2)[1] : undefined; };
@@ -172,7 +173,17 @@ async function checkReport(page) {
     groups.map(g => `${g.title}: ${g.ylabel}`).join('; '));
   // (forces, masses, energies) => an engineering unit that keeps the numbers between 1 and 1000
   const ladder = { N: ['N', 'kN', 'MN'], kg: ['kg', 't'], J: ['J', 'kJ', 'MJ'], W: ['W', 'kW', 'MW'] };
-  const scaled = groups.filter(g => ladder[g.si]);
+  // (every recorded channel of a plot's group, plotted or not: the header's table and the plots
+  // share its unit) => the group's largest magnitude in the unit shown
+  const recordedGroups = groupSeries(data.series.map(x => {
+    const b = Buffer.from(x.data || '', 'base64');
+    return { ...x, values: new Float32Array(b.buffer, b.byteOffset, Math.floor(b.byteLength / 4)) };
+  }));
+  const recordedMax = g => {
+    const r = recordedGroups.find(x => x.title === g.title && x.si === g.si);
+    return r ? Math.max(g.max, ...r.list.map(x => maxAbs(x.values) * g.factor)) : g.max;
+  };
+  const scaled = groups.filter(g => ladder[g.si]).map(g => ({ ...g, max: recordedMax(g) }));
   check('forces in kN or MN (masses in t, ...) chosen by magnitude', scaled.every(g => ladder[g.si].includes(g.unit) &&
     (g.max < 1000 || g.unit === ladder[g.si].at(-1)) && (g.max >= 1 || g.unit === g.si || g.max === 0)),
   scaled.map(g => `${g.title} [${g.unit}] max ${g.max.toPrecision(3)}`).join('; '));

@@ -6,14 +6,7 @@ namespace yardsim::models {
 
 std::string format(const Diagnostic& d) {
   std::string out = d.where.file;
-  // (appended piece by piece: GCC 12 reports a false -Wstringop-overflow for "x" + std::string&&
-  // here once <string> comes from the precompiled header)
-  if (d.where.line > 0) {
-    out += ':';
-    out += std::to_string(d.where.line);
-    out += ':';
-    out += std::to_string(d.where.column);
-  }
+  if (d.where.line > 0) out += ":" + std::to_string(d.where.line) + ":" + std::to_string(d.where.column);
   out += d.severity == Diagnostic::Severity::Error ? ": error: " : ": warning: ";
   if (!d.keyPath.empty()) out += d.keyPath + ": ";
   out += d.message;

@@ -8,8 +8,8 @@ target_compile_options(yardsim_flags INTERFACE
   # GCC 12 reports false -Wrestrict positives inside std::string concatenation at -O3 (GCC bug 105329)
   $<BUILD_INTERFACE:$<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>>
   # Through a precompiled header GCC 12 no longer treats libstdc++'s inlined string code as a
-  # system header's and reports its known false -Warray-bounds / -Wstringop-overflow (GCC bugs
-  # 105329, 106199) in about 15 files; clang's -Warray-bounds and ASan (CI's fuzz build) remain
+  # system header's and reports its known false -Warray-bounds / -Wstringop-overflow inside
+  # std::string in about 15 files; clang's -Warray-bounds and ASan (CI's fuzz build) remain
   $<BUILD_INTERFACE:$<$<AND:$<CXX_COMPILER_ID:GNU>,$<BOOL:${YARDSIM_PCH}>>:-Wno-array-bounds;-Wno-stringop-overflow>>)
 if(YARDSIM_NATIVE)
   target_compile_options(yardsim_flags INTERFACE -march=native)
@@ -32,8 +32,8 @@ endif()
 install(TARGETS yardsim_flags EXPORT yardsimTargets)
 
 # The standard headers most translation units include, precompiled with Eigen per layer and with
-# Catch2 for the tests (YARDSIM_PCH): parsing them again in every file was about a third of a
-# build's time on 2 cores. Only headers whose meaning no macro of ours changes belong here.
+# Catch2 for the tests (YARDSIM_PCH): parsing was most of a test file's time (docs/robustness.md
+# "CI time"). Only headers whose meaning no macro of ours changes belong here.
 set(YARDSIM_PCH_STD_HEADERS <algorithm> <array> <cmath> <cstddef> <functional> <map> <memory>
   <optional> <sstream> <stdexcept> <string> <utility> <vector>)
 

@@ -16,12 +16,17 @@ GeneralizedAlphaParameters chungHulbert(double rho) {
   return p;
 }
 
-GeneralizedAlpha::GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
-                                   double newtonTol, int maxNewton)
-    : model_(model), p_(p), name_(name), newtonTol_(newtonTol), maxNewton_(maxNewton), explicitStep_(model) {
+GeneralizedAlpha::GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p,
+                                   std::string_view name, double newtonTol, int maxNewton)
+    : model_(model),
+      p_(p),
+      name_(name),
+      newtonTol_(newtonTol),
+      maxNewton_(maxNewton),
+      explicitStep_(model) {
   const int n = model.nv;
-  for (Eigen::VectorXd* x : {&bias_, &aAlg_, &ddq_, &ddqOld_, &aNew_, &delta_, &vNew_, &f_, &fp_, &r_, &dx_, &vLast_,
-                             &vp_, &deltaP_})
+  for (Eigen::VectorXd* x : {&bias_, &aAlg_, &ddq_, &ddqOld_, &aNew_, &delta_, &vNew_, &f_, &fp_,
+                             &r_, &dx_, &vLast_, &vp_, &deltaP_})
     x->setZero(n);
   for (Eigen::VectorXd* x : {&qNew_, &qLast_, &qp_}) x->setZero(model.nq);
   Fq_.setZero(n, n);
@@ -43,23 +48,25 @@ void GeneralizedAlpha::resize(int nc) {
   luS_.setThreshold(1e-10);
 }
 
-void GeneralizedAlpha::start(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                             double h) {
+void GeneralizedAlpha::start(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+                             const Eigen::VectorXd& v, double h) {
   // (t, q, v) => ddq_0 (with the loops' forces); a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0, the
   // perturbed starting value of Arnold & Bruls, dddq_0 by a forward difference along (v, ddq_0)
   evaluate(system, t, q, v, ddqOld_);
   aAlg_ = ddqOld_;
   const double shift = (p_.alphaM - p_.alphaF) * h;
   if (shift != 0.0) {
-    const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) /
-                       std::max(1.0, std::max(v.lpNorm<Eigen::Infinity>(), ddqOld_.lpNorm<Eigen::Infinity>()));
+    const double eps =
+        std::sqrt(std::numeric_limits<double>::epsilon()) /
+        std::max(1.0, std::max(v.lpNorm<Eigen::Infinity>(), ddqOld_.lpNorm<Eigen::Infinity>()));
     integrate(model_, q, v, eps, qp_);
     vp_ = v + eps * ddqOld_;
     evaluate(system, t + eps, qp_, vp_, aNew_);
     // (correction) => dropped when larger than ddq_0 itself: the difference then straddles a force
     // that jumps (a damped rope going taut), not a smooth dddq
     aNew_ = (shift / eps) * (aNew_ - ddqOld_);
-    if (aNew_.lpNorm<Eigen::Infinity>() <= std::max(1.0, ddqOld_.lpNorm<Eigen::Infinity>())) aAlg_ += aNew_;
+    if (aNew_.lpNorm<Eigen::Infinity>() <= std::max(1.0, ddqOld_.lpNorm<Eigen::Infinity>()))
+      aAlg_ += aNew_;
   }
   lambda_.setZero();
   started_ = true;
@@ -80,14 +87,17 @@ void GeneralizedAlpha::chartBias(const Eigen::VectorXd& v) {
 void GeneralizedAlpha::update(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h) {
   // (ddq_{n+1}, a_n, ddq_n) => a_{n+1}; (q_n, v_n) => q_{n+1}, v_{n+1}
   aNew_ = ((1.0 - p_.alphaF) * ddq_ + p_.alphaF * ddqOld_ - p_.alphaM * aAlg_) / (1.0 - p_.alphaM);
-  delta_ = h * v + (0.5 * h * h) * bias_ + (h * h * (0.5 - p_.beta)) * aAlg_ + (h * h * p_.beta) * aNew_;
+  delta_ =
+      h * v + (0.5 * h * h) * bias_ + (h * h * (0.5 - p_.beta)) * aAlg_ + (h * h * p_.beta) * aNew_;
   integrate(model_, q, delta_, 1.0, qNew_);
   vNew_ = v + (h * (1.0 - p_.gamma)) * aAlg_ + (h * p_.gamma) * aNew_;
 }
 
-void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q, double h) {
-  // (q_{n+1}, v_{n+1} of the predictor) => f, then f_q (through the chart at q_n) and f_v column by column
-  // (with loops, the constraint force M^-1 J^T lambda is part of f here: quadratic convergence)
+void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+                                double h) {
+  // (q_{n+1}, v_{n+1} of the predictor) => f, then f_q (through the chart at q_n) and f_v column by
+  // column (with loops, the constraint force M^-1 J^T lambda is part of f here: quadratic
+  // convergence)
   ++stats_.jac_evals;
   ++stats_.f_evals;
   system.unconstrainedAcceleration(t + h, qNew_, vNew_, f_);
@@ -161,7 +171,8 @@ void GeneralizedAlpha::factorise(double h) {
 
 bool GeneralizedAlpha::refreshBlocks(AccelerationSource& system, double t) {
   if (!sparseActive_ || !sparse_->hasBlocks()) return false;
-  const std::uint64_t signature = system.blockJacobian(t, qNew_, vNew_, sparse_->blockDq(), sparse_->blockDv());
+  const std::uint64_t signature =
+      system.blockJacobian(t, qNew_, vNew_, sparse_->blockDq(), sparse_->blockDv());
   return sparse_->applyBlocks(signature);
 }
 
@@ -172,8 +183,8 @@ void GeneralizedAlpha::solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) cons
     x = luA_.solve(b);
 }
 
-bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                             double h, bool fromPredictor) {
+bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+                             const Eigen::VectorXd& v, double h, bool fromPredictor) {
   const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
   const double scale = std::max(p_.beta * s * h * h, p_.gamma * s * h);
   if (fromPredictor) ddq_ = ddqOld_;
@@ -190,8 +201,10 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
       r_.noalias() -= MinvJt_ * lambda_;
       rc_ = g_ / (p_.beta * s * h * h);
     }
-    // (a line's segment went slack or taut, a node touched the bed) => its blocks here
-    if (refreshBlocks(system, t + h)) factorise(h);
+    // (a line's segment went slack or taut, a node touched the bed) => its blocks here, the
+    // matrix refactorised with them; at every iterate after the first when the band solver
+    // makes that cheap (a semi-smooth Newton on the line rows)
+    if (refreshBlocks(system, t + h) || (it > 0 && cheapBlocks())) factorise(h);
     // (r, r_c) => corrections: S dlambda = -r_c + J A^-1 r, dx = A^-1 (-r + M^-1 J^T dlambda)
     solveA(r_, dx_);
     if (nc_ > 0) {
@@ -206,10 +219,13 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
     // (correction) => converged when it moves q_{n+1} and v_{n+1} less than the tolerance, relative
     // to the terms of the update when they exceed 1 (their round-off bounds what can be reached)
     const double err = scale * dx_.lpNorm<Eigen::Infinity>();
-    const double motion = std::max(1.0, h * v.lpNorm<Eigen::Infinity>() +
-                                            h * h * (aAlg_.lpNorm<Eigen::Infinity>() + aNew_.lpNorm<Eigen::Infinity>()));
+    const double motion = std::max(
+        1.0, h * v.lpNorm<Eigen::Infinity>() +
+                 h * h * (aAlg_.lpNorm<Eigen::Infinity>() + aNew_.lpNorm<Eigen::Infinity>()));
     if (err <= newtonTol_ * motion) {
-      if (it + 1 >= maxNewton_ - 2) stale_ = true;  // slow: a new iteration matrix for the next step
+      // (slow: a new iteration matrix for the next step; with line blocks, which are fresh at
+      // every iterate, only when slower still)
+      if (it + 1 >= maxNewton_ - (lineBlocks() ? 1 : 2)) stale_ = true;
       update(q, v, h);
       return true;
     }
@@ -219,7 +235,8 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
   return false;
 }
 
-void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) {
+void GeneralizedAlpha::step(AccelerationSource& system, double& t, Eigen::VectorXd& q,
+                            Eigen::VectorXd& v, double h) {
   resize(system.constraintRows());
   // (t, q, v) => restart unless this step continues the previous one
   const double tol = 1e-9 * std::max(1.0, std::abs(t));
@@ -249,8 +266,15 @@ bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen
   lambdaStart_ = lambda_;
   if (solve(system, t, q, v, h, true)) return true;
   ++stats_.err_fails;
-  // (failed with an old matrix) => once more with a fresh one at the predictor
-  if (!fresh_) {
+  // (line blocks: the first correction from the predictor crossed a segment's slack/taut corner
+  // and the next one came back; the blocks are current, a fresh matrix from the predictor would
+  // repeat it) => Newton continued from the last iterate with the current matrix
+  if (lineBlocks() && ddq_.allFinite()) {
+    if (solve(system, t, q, v, h, false)) return true;
+    ++stats_.err_fails;
+  }
+  // (failed with an old matrix, no line blocks) => once more with a fresh one at the predictor
+  if (!fresh_ && !lineBlocks()) {
     lambda_ = lambdaStart_;
     ddq_ = ddqOld_;
     update(q, v, h);
@@ -269,8 +293,8 @@ bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen
   return false;
 }
 
-void GeneralizedAlpha::subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
-                                double h) {
+void GeneralizedAlpha::subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q,
+                                Eigen::VectorXd& v, double h) {
   // (step of h) => kSwitchSteps equal sub-steps, the regime read after each; resolving_ while
   // the regime changed at any of them (the next step is sub-stepped at once), false once a whole
   // step kept it
@@ -284,8 +308,8 @@ void GeneralizedAlpha::subSteps(AccelerationSource& system, double& t, Eigen::Ve
   resolving_ = changed;
 }
 
-void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
-                               double h, int depth) {
+void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::VectorXd& q,
+                               Eigen::VectorXd& v, double h, int depth) {
   if (resolving_ && depth < kSubStep && system.switches()) {
     subSteps(system, t, q, v, h);
     return;

@@ -17,11 +17,15 @@
 // with one at the last iterate (a rope going taut inside the step), then as two half steps, down
 // (the blocks a system gives in closed form, a lumped line's nodes, are re-evaluated at every
 // iterate, and the matrix refactorised when a segment went slack or taut or a node touched the
-// bed: a semi-smooth Newton on those rows; the other entries stay as formed)
+// bed, at every iterate when its bordered band factorisation makes that cheap: a semi-smooth
+// Newton on those rows; the other entries stay as formed. With such blocks a failed solve is
+// first continued from its last iterate with the current matrix, the fresh matrix at the
+// predictor is skipped, and only a solve slower still marks the matrix stale: docs/lines.md)
 // to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
-// is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0
-// ~ ddq(t_0 + (alpha_m - alpha_f) h), which keeps second order for alpha_m != alpha_f (Arnold &
-// Bruls 2007); dddq_0 comes from one extra evaluation (a forward difference along (v, ddq)).
+// is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration
+// starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0 ~ ddq(t_0 + (alpha_m - alpha_f) h), which
+// keeps second order for alpha_m != alpha_f (Arnold & Bruls 2007); dddq_0 comes from one extra
+// evaluation (a forward difference along (v, ddq)).
 
 #include <Eigen/LU>
 #include <memory>
@@ -45,7 +49,8 @@ class GeneralizedAlpha final : public Integrator {
  public:
   GeneralizedAlpha(const Model& model, const GeneralizedAlphaParameters& p, std::string_view name,
                    double newtonTol = 1e-8, int maxNewton = 8);
-  void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h) override;
+  void step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+            double h) override;
   std::string_view name() const override { return name_; }
   void reset() override {
     started_ = false;
@@ -58,7 +63,8 @@ class GeneralizedAlpha final : public Integrator {
 
  private:
   void resize(int nc);
-  void start(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
+  void start(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+             const Eigen::VectorXd& v, double h);
   // (ddq) => a_{n+1}, qNew_, vNew_ from the state at the start of the step
   void update(const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
   // (v_n) => bias_, the chart's own second derivative at q_n
@@ -69,15 +75,20 @@ class GeneralizedAlpha final : public Integrator {
   // (system with closed-form blocks, the iterate (qNew_, vNew_) at t) => the blocks written into
   // the sparse matrix; true when a force law switched since they were last written
   bool refreshBlocks(AccelerationSource& system, double t);
+  // the sparse matrix has blocks in closed form (lumped lines), and they are cheap to refactorise
+  bool lineBlocks() const { return sparseActive_ && sparse_->hasBlocks(); }
+  bool cheapBlocks() const { return lineBlocks() && sparse_->banded(); }
   // (x) => A^-1 x by the dense or the sparse LU, whichever the last jacobian() formed
   void solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   // (step of h) => Newton with the current matrix, then with a fresh one; false if both fail
-  bool attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h);
+  bool attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+               const Eigen::VectorXd& v, double h);
   // (step of h) => state advanced, in halves (down to h/16) where Newton fails
-  void advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h, int depth);
+  void advance(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+               double h, int depth);
   // one Newton solve from the predictor (or from the current ddq_); false when it does not converge
-  bool solve(AccelerationSource& system, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v, double h,
-             bool fromPredictor);
+  bool solve(AccelerationSource& system, double t, const Eigen::VectorXd& q,
+             const Eigen::VectorXd& v, double h, bool fromPredictor);
 
   const Model& model_;
   GeneralizedAlphaParameters p_;
@@ -90,14 +101,16 @@ class GeneralizedAlpha final : public Integrator {
   std::uint64_t regime_ = 0;  // the source's regime at the start of the next (sub-)step
   bool resolving_ = false;    // the last step's regime changed in its sub-steps
   // (step of h) => kSwitchSteps sub-steps; resolving_ set when the regime changed in them
-  void subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v, double h);
+  void subSteps(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                double h);
   double newtonTol_;
   int maxNewton_;
   Rk4 explicitStep_;  // crosses a force jump where Newton has no solution
   bool started_ = false, fresh_ = false, stale_ = true;
   int nc_ = -1;
   double hFactor_ = 0.0, tLast_ = 0.0;
-  Eigen::VectorXd bias_, aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_, qLast_, vLast_;
+  Eigen::VectorXd bias_, aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_,
+      qLast_, vLast_;
   Eigen::VectorXd qp_, vp_, deltaP_;
   Eigen::MatrixXd Fq_, Fv_, A_;
   Eigen::PartialPivLU<Eigen::MatrixXd> luA_;

@@ -7,7 +7,7 @@
 namespace yardsim::dynamics {
 
 SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern,
-                                       const JacobianBlocks* blocks)
+                                       const JacobianBlocks* blocks, bool band)
     : model_(model) {
   // (pattern) => A's compressed columns: the pattern's rows and the diagonal
   const int n = model.nv;
@@ -79,7 +79,10 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
   qp_.setZero(model.nq);
   y_.setZero(n);
   work_.setZero(n);
-  lu_.analyzePattern(A_);
+  // (A a band matrix but for a few rows and columns, as lines on rigid bodies) => the band
+  // solver, linear in the nodes; else SparseLU
+  banded_ = band && band_.analyse(A_);
+  if (!banded_) lu_.analyzePattern(A_);
 }
 
 void SparseNewtonMatrix::scatter(const std::vector<int>& cols, const Eigen::VectorXd& f,
@@ -111,6 +114,10 @@ bool SparseNewtonMatrix::factorise(double cq, double cv) {
   Eigen::Map<Eigen::VectorXd> a(A_.valuePtr(), A_.nonZeros());
   a = -cq * fq_ - cv * fv_;
   for (int k : diagonal_) a[k] += 1.0;
+  if (banded_) {
+    ok_ = band_.factorise(A_);
+    return ok_;
+  }
   lu_.factorize(A_);
   ok_ = lu_.info() == Eigen::Success;
   return ok_;
@@ -154,6 +161,10 @@ void SparseNewtonMatrix::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) con
     x.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
+  if (banded_) {
+    band_.solve(b, x);
+    return;
+  }
   const auto& pr = lu_.rowsPermutation().indices();
   const auto& pc = lu_.colsPermutation().indices();
   for (Eigen::Index i = 0; i < b.size(); ++i) y_[pr[i]] = b[i];
@@ -166,6 +177,15 @@ void SparseNewtonMatrix::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) con
 void SparseNewtonMatrix::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
   if (!ok_) {
     X.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  if (banded_) {
+    X.resize(B.rows(), B.cols());
+    for (Eigen::Index c = 0; c < B.cols(); ++c) {
+      y_ = B.col(c);
+      band_.solve(y_, work_);
+      X.col(c) = work_;
+    }
     return;
   }
   X = lu_.solve(B);

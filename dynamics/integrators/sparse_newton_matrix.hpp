@@ -3,9 +3,10 @@
 // system whose Jacobian has structure (column_colouring.hpp; a lumped-mass line couples each node
 // to its neighbours only): F_q (through the chart at q_n) and F_v by finite differences with one
 // evaluation per colour for q and one for v instead of one per dof, stored on the pattern
-// (compressed columns), and factorised by Eigen's SparseLU with the COLAMD ordering analysed once
-// at construction. The factorisation then costs about what the fill of the pattern does: linear
-// in the nodes of banded lines, where a dense LU is cubic (docs/performance.md).
+// (compressed columns), and factorised as a band matrix with a border (bordered_band_lu.hpp:
+// lines hanging from a few rigid bodies have that shape; linear in the nodes, where a dense LU
+// is cubic) or, for any other pattern, by Eigen's SparseLU with the COLAMD ordering analysed once
+// at construction (docs/performance.md).
 // The blocks a system gives in closed form (JacobianBlocks: a lumped line's nodes among
 // themselves) are written from the system's blockJacobian instead, and a column all of whose
 // entries lie in such blocks is left out of the colours: the differences are then needed only for
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "dynamics/configuration.hpp"
+#include "dynamics/integrators/bordered_band_lu.hpp"
 #include "dynamics/integrators/column_colouring.hpp"
 #include "dynamics/model.hpp"
 
@@ -30,9 +32,10 @@ class SparseNewtonMatrix {
  public:
   // (model, pattern of F_q and F_v, blocks given in closed form or null) => the colouring of the
   // columns the blocks do not cover, A's structure (the pattern and the diagonal) and its
-  // ordering; throws std::invalid_argument when the pattern is not nv x nv or a block leaves it
+  // ordering; throws std::invalid_argument when the pattern is not nv x nv or a block leaves it.
+  // band: false keeps SparseLU even for a bordered band pattern (tests)
   SparseNewtonMatrix(const Model& model, const JacobianPattern& pattern,
-                     const JacobianBlocks* blocks = nullptr);
+                     const JacobianBlocks* blocks = nullptr, bool band = true);
 
   const ColumnColouring& colouring() const { return colouring_; }
   int nonZeros() const { return static_cast<int>(A_.nonZeros()); }
@@ -74,11 +77,14 @@ class SparseNewtonMatrix {
   // differs from the one last written (a segment went slack or taut, a node touched the bed)
   bool applyBlocks(std::uint64_t signature);
 
-  // (c_q, c_v) => LU of A = I - c_q F_q - c_v F_v; false when SparseLU finds it singular
+  // (c_q, c_v) => LU of A = I - c_q F_q - c_v F_v; false when it is singular
+  // (bordered band: bordered_band_lu.hpp; else SparseLU)
   bool factorise(double cq, double cv);
   // (b) => x = A^-1 b (NaN when the last factorisation failed: Newton then gives up)
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
+  // true when A is factorised as a bordered band matrix (bordered_band_lu.hpp), false: SparseLU
+  bool banded() const { return banded_; }
 
   // F_q and F_v as dense matrices (tests)
   Eigen::MatrixXd denseFq() const;
@@ -100,6 +106,8 @@ class SparseNewtonMatrix {
   std::uint64_t signature_ = 0;
   bool applied_ = false;
   bool ok_ = false;
+  BorderedBandLu band_;  // when A is a band matrix but for a few rows and columns
+  bool banded_ = false;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
 };
 

@@ -179,7 +179,7 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
     return r;
   };
   // (with bending stiffness on these chains lying on the bed, EI 1e8 N m^2, both the dense and
-  // the sparse path fail Newton often (106 and 68 failed solves in 2 s) and end 3.5 cm apart:
+  // the sparse path fail Newton often (106 and 71 failed solves in 2 s) and end 3.5 cm apart:
   // not yet understood, docs/lines.md "Bending stiffness", so only EI = 0 here)
   for (const std::string keys : {""}) {
   INFO("line keys '" << keys << "'");

@@ -29,10 +29,6 @@ GeneralizedAlpha::GeneralizedAlpha(const Model& model, const GeneralizedAlphaPar
                              &r_, &dx_, &vLast_, &vp_, &deltaP_})
     x->setZero(n);
   for (Eigen::VectorXd* x : {&qNew_, &qLast_, &qp_}) x->setZero(model.nq);
-  Fq_.setZero(n, n);
-  Fv_.setZero(n, n);
-  A_.setZero(n, n);
-  luA_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   resize(0);
 }
 
@@ -122,6 +118,14 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
         },
         q, delta_, qNew_, vNew_, f_);
     refreshBlocks(system, t + h);
+  } else if (Fq_.rows() != model_.nv) {
+    // (the dense path's first matrix) => its storage, made here and not at construction: a
+    // system with a pattern (lumped lines, thousands of dofs) never needs the n x n matrices
+    const int n = model_.nv;
+    Fq_.setZero(n, n);
+    Fv_.setZero(n, n);
+    A_.setZero(n, n);
+    luA_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
   }
   for (int i = 0; i < model_.nv && !sparseActive_; ++i) {
     const double dqi = eps * std::max(1.0, std::abs(delta_[i]));

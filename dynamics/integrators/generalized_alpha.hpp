@@ -112,7 +112,7 @@ class GeneralizedAlpha final : public Integrator {
   Eigen::VectorXd bias_, aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_,
       qLast_, vLast_;
   Eigen::VectorXd qp_, vp_, deltaP_;
-  Eigen::MatrixXd Fq_, Fv_, A_;
+  Eigen::MatrixXd Fq_, Fv_, A_;  // the dense path only: sized at its first jacobian()
   Eigen::PartialPivLU<Eigen::MatrixXd> luA_;
   // the sparse path: made at the first jacobian() of a system with a pattern
   std::unique_ptr<SparseNewtonMatrix> sparse_;

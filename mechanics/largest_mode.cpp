@@ -65,10 +65,20 @@ LargestMode largestMode(dynamics::MultibodySystem& kernel, const dynamics::Model
   const int nv = model.nv, n = 2 * nv;
   Sparse Aq, Av;
   linearise(kernel, model, q0, v0, pattern, step, Aq, Av);
-  // (x) => J x = [x_v; A_q x_q + A_v x_v]
+  // (J, with omega^2 as large as the diagonal of A_q) => J_s = D J D^-1, D = diag(s I, I), s the
+  // square root of that diagonal's largest modulus: the same eigenvalues, but for the stiff modes
+  // a nearly normal matrix ([0 s; -omega^2/s 0] for one of them), where J's companion form is far
+  // from normal and a small Ritz residual can leave the Ritz value several per cent off (seen:
+  // 23,592 rad/s with a real part of 1,624 against the eigenvalue's 22,467, residual 2.4e-5)
+  double diag = 1.0;
+  for (int k = 0; k < Aq.outerSize(); ++k)
+    for (Sparse::InnerIterator it(Aq, k); it; ++it)
+      if (it.row() == it.col()) diag = std::max(diag, std::abs(it.value()));
+  const double s = std::sqrt(diag);
+  // (x) => J_s x = [s x_v; A_q x_q / s + A_v x_v]
   auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
-    y.head(nv) = x.tail(nv);
-    y.tail(nv) = Aq * x.head(nv) + Av * x.tail(nv);
+    y.head(nv) = s * x.tail(nv);
+    y.tail(nv) = (Aq * x.head(nv)) / s + Av * x.tail(nv);
   };
   // (a fixed pseudo-random start: no mode is missed by symmetry) => x
   Eigen::VectorXd x(n);

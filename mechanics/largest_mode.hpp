@@ -4,7 +4,9 @@
 // d(dv/dt)/dq, A_v = d(dv/dt)/dv (1/s^2 and 1/s per m or rad, m/s or rad/s) formed on the
 // system's Jacobian pattern by central differences, one pair of stage evaluations per column
 // colour (dynamics/integrators/column_colouring.hpp) instead of one per dof, and the eigenvalue of
-// largest modulus found by Arnoldi's method with explicit restarts on products with the sparse J.
+// largest modulus found by Arnoldi's method with explicit restarts on products with the sparse J
+// (scaled as D J D^-1, D = diag(s I, I), s^2 the largest diagonal entry of A_q: the same
+// eigenvalues, the stiff modes nearly normal, so that a small Ritz residual means a good value).
 // Cost: O(colours + Krylov size) stage evaluations and sparse products, each linear in the nodes,
 // where the dense path (stiffness_estimate.cpp) costs 4 nv evaluations and an O(nv^3) eigen-solve.
 #include <complex>

@@ -1,9 +1,11 @@
 #include "forces/lines/lumped_line_statics.hpp"
 
 #include <cmath>
+#include <vector>
 
-#include <Eigen/LU>
+#include <Eigen/SparseCore>
 
+#include "dynamics/integrators/bordered_band_lu.hpp"
 #include "forces/lines/lumped_line_bending.hpp"
 
 namespace yardsim::forces {
@@ -23,12 +25,18 @@ Eigen::VectorXd residual(const LumpedLine& line, const Eigen::Matrix3Xd& r, Eige
 }
 
 // (line, r) => K = -d(residual)/d(inner positions): the segments' tangent stiffness, the
-// bending's and the bed's
-Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
+// bending's and the bed's; a band matrix (3x3 blocks within one node, two with bending)
+Eigen::SparseMatrix<double> stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
   const LumpedLineProperties& p = line.properties();
   const int n = p.segments, inner = n - 1;
   const double l = line.segmentLength();
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * inner, 3 * inner);
+  std::vector<Eigen::Triplet<double>> t;
+  auto add = [&t](int bi, int bj, const Matrix3& k) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) t.emplace_back(3 * bi + a, 3 * bj + b, k(a, b));
+  };
+  // (every node) => its diagonal block present, so that the regularisation below reaches it
+  for (int i = 0; i < inner; ++i) add(i, i, Matrix3::Zero());
   for (int s = 0; s < n; ++s) {
     // (taut segment from node s to s + 1) => EA/l u u^T + T/|d| (I - u u^T)
     // (a slack segment) => 1e-3 of the axial stiffness along it: Newton's matrix stays regular
@@ -42,23 +50,25 @@ Eigen::MatrixXd stiffness(const LumpedLine& line, const Eigen::Matrix3Xd& r) {
         strain > 0.0 ? Matrix3(p.ea / l * uu + p.ea * strain / len * (Matrix3::Identity() - uu))
                      : Matrix3(1e-3 * p.ea / l * uu);
     const int a = s - 1, b = s;  // inner indices of nodes s and s + 1 (-1 or inner: held)
-    if (a >= 0) K.block<3, 3>(3 * a, 3 * a) += k;
-    if (b < inner) K.block<3, 3>(3 * b, 3 * b) += k;
+    if (a >= 0) add(a, a, k);
+    if (b < inner) add(b, b, k);
     if (a >= 0 && b < inner) {
-      K.block<3, 3>(3 * a, 3 * b) -= k;
-      K.block<3, 3>(3 * b, 3 * a) -= k;
+      add(a, b, -k);
+      add(b, a, -k);
     }
   }
   // (EI > 0) => minus the bending forces' Jacobian among the inner nodes
   if (p.ei > 0.0)
     bendingJacobian(r, p.ei / l, [&](int i, int j, const Matrix3& k) {
-      if (i >= 1 && i <= inner && j >= 1 && j <= inner)
-        K.block<3, 3>(3 * (i - 1), 3 * (j - 1)) -= k;
+      if (i >= 1 && i <= inner && j >= 1 && j <= inner) add(i - 1, j - 1, -k);
     });
   if (p.seabed)
     for (int i = 0; i < inner; ++i)
       if (r(2, i + 1) < p.seabedZ)
-        K(3 * i + 2, 3 * i + 2) += p.bedStiffness * p.diameter * line.nodeLength(i + 1);
+        t.emplace_back(3 * i + 2, 3 * i + 2, p.bedStiffness * p.diameter * line.nodeLength(i + 1));
+  Eigen::SparseMatrix<double> K(3 * inner, 3 * inner);
+  K.setFromTriplets(t.begin(), t.end());
+  K.makeCompressed();
   return K;
 }
 
@@ -74,9 +84,14 @@ bool lumpedLineStatics(const LumpedLine& line, Eigen::Matrix3Xd& r) {
   for (int it = 0; it < 100; ++it) {
     if (res.lpNorm<Eigen::Infinity>() <= tol) return true;
     // (K dx = residual) => a step that lowers the residual, halved up to 30 times
-    Eigen::MatrixXd K = stiffness(line, r);
-    K.diagonal().array() += 1e-9 * K.diagonal().cwiseAbs().maxCoeff() + 1e-12;
-    const Eigen::VectorXd dx = K.partialPivLu().solve(res);
+    // (K, a band matrix) => factorised in O(nodes) (dynamics/integrators/bordered_band_lu.hpp)
+    Eigen::SparseMatrix<double> K = stiffness(line, r);
+    const double shift = 1e-9 * K.diagonal().cwiseAbs().maxCoeff() + 1e-12;
+    for (int i = 0; i < K.rows(); ++i) K.coeffRef(i, i) += shift;
+    dynamics::BorderedBandLu lu;
+    if (!lu.analyse(K) || !lu.factorise(K)) return false;
+    Eigen::VectorXd dx;
+    lu.solve(res, dx);
     if (!dx.allFinite()) return false;
     double scale = 1.0;
     const double before = res.norm();

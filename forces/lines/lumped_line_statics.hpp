@@ -4,9 +4,11 @@
 // springs, the bending: LumpedLine::conservativeForces) vanish, by Newton's method on the
 // 3 (N - 1) positions with the analytic stiffness of the segments (EA/l along a taut segment, T/|d|
 // across it), of the bending and of the bed, from a guess (the catenary's points), each step
-// halved while it does not reduce the residual. A line placed on the continuous catenary is not at rest as a chain of straight
-// segments (its chords are shorter than its arcs by l dtheta^2 / 24, more than the elastic
-// stretch of a stiff chain), so lumped lines start from this equilibrium. World frame, SI units.
+// halved while it does not reduce the residual; the stiffness is a band matrix, factorised in
+// O(nodes) (dynamics/integrators/bordered_band_lu.hpp; a dense LU was O(nodes^3)). A line placed on
+// the continuous catenary is not at rest as a chain of straight segments (its chords are shorter
+// than its arcs by l dtheta^2 / 24, more than the elastic stretch of a stiff chain), so lumped
+// lines start from this equilibrium. World frame, SI units.
 #include <Eigen/Core>
 
 #include "forces/lines/lumped_line.hpp"

@@ -2,7 +2,8 @@
 // scene's implicit integrator at >= 20x real time at a 0.05 s step; the cost per step against the
 // number of nodes): a 200 t buoy on a surge-sway slider at the fairlead height, moored by 8 chain
 // lines of n segments in still water and released at 0.5 m/s in surge, run as a scene (scene
-// loader, assembler, runner; one channel recorded every 10 s) for 20 s of simulated time.
+// loader, assembler, runner; one channel recorded every 10 s) for 20 s of simulated time, and
+// again for 10 s: the difference is the second half, after the release's transient ("_late").
 // Counters: real-time factor and wall time per step and per inner node (wall time: on a shared
 // machine compare the CPU column too); and the integrator's work per step (stage evaluations,
 // Jacobians, Newton iterations) with its failed Newton solves, the factors of the cost besides
@@ -62,7 +63,19 @@ const dynamics::IntegratorStats* integratorStats(const devs::Model& m) {
   return nullptr;
 }
 
-// (state.range(0): segments; method) => one whole run per iteration
+// (scene, until) => wall time of one whole run and its integrator's work
+double runOnce(const scene::Scene& loaded, const fs::path& out, double until,
+               dynamics::IntegratorStats& work) {
+  auto root = scene::assemble(loaded);
+  const auto t0 = std::chrono::steady_clock::now();
+  run::runScene(loaded, *root, {out, until, {}, {}, 0.1});
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (const auto* s = integratorStats(*root)) work = *s;
+  return wall;
+}
+
+// (state.range(0): segments; method) => per iteration one whole run, and one to half its length:
+// their difference is the second half, after the buoy's release (the "_late" counters)
 void runLines(benchmark::State& state, const std::string& method) {
   const int segments = static_cast<int>(state.range(0));
   const fs::path dir =
@@ -70,14 +83,11 @@ void runLines(benchmark::State& state, const std::string& method) {
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << scene(segments, method);
   auto loaded = scene::loadSceneOrThrow(dir / "s.yaml");
-  double wall = 0.0;
-  dynamics::IntegratorStats work;
+  double wall = 0.0, wallHalf = 0.0;
+  dynamics::IntegratorStats work, half;
   for (auto _ : state) {
-    auto root = scene::assemble(*loaded);
-    const auto t0 = std::chrono::steady_clock::now();
-    run::runScene(*loaded, *root, {dir / "out", kUntil, {}, {}, 0.1});
-    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (const auto* s = integratorStats(*root)) work = *s;
+    wall += runOnce(*loaded, dir / "out", kUntil, work);
+    wallHalf += runOnce(*loaded, dir / "out", 0.5 * kUntil, half);
   }
   const double runs = static_cast<double>(state.iterations()), steps = kUntil / kStep;
   const double nodes = 8.0 * (segments - 1);
@@ -90,6 +100,13 @@ void runLines(benchmark::State& state, const std::string& method) {
   state.counters["jacobians_per_step"] = static_cast<double>(work.jac_evals) / steps;
   state.counters["newton_per_step"] = static_cast<double>(work.newton_its) / steps;
   state.counters["failed_solves"] = static_cast<double>(work.err_fails);
+  // (whole run - half run) => the same for the second half alone
+  const double late = 0.5 * steps;
+  state.counters["us_per_step_late"] = 1e6 * (wall - wallHalf) / runs / late;
+  state.counters["f_evals_per_step_late"] = static_cast<double>(work.f_evals - half.f_evals) / late;
+  state.counters["newton_per_step_late"] =
+      static_cast<double>(work.newton_its - half.newton_its) / late;
+  state.counters["failed_solves_late"] = static_cast<double>(work.err_fails - half.err_fails);
   fs::remove_all(dir);
 }
 

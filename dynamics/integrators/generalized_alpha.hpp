@@ -80,7 +80,8 @@ class GeneralizedAlpha final : public Integrator {
   bool cheapBlocks() const { return lineBlocks() && sparse_->banded(); }
   // (x) => A^-1 x by the dense or the sparse LU, whichever the last jacobian() formed
   void solveA(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
-  // (step of h) => Newton with the current matrix, then with a fresh one; false if both fail
+  // (step of h) => Newton with the current matrix, then with a fresh one (line blocks: continued
+  // from the last iterate instead); false if both fail
   bool attempt(AccelerationSource& system, double t, const Eigen::VectorXd& q,
                const Eigen::VectorXd& v, double h);
   // (step of h) => state advanced, in halves (down to h/16) where Newton fails

@@ -70,13 +70,13 @@ function(yardsim_layer name)
 endfunction()
 
 # yardsim_test_flags(TARGET) — what every test translation unit is compiled with: the tests'
-# folder on the include path, the source and build folders, and -O1 in a Release build (the test
+# folder on the include path, the source and build folders (yardsim_test_paths: compiled into
+# one library, not into each test file's flags, so that the files compile to the same objects in
+# any checkout and .ci/run's compiler cache serves them), and -O1 in a Release build (the test
 # code asserts; the layers it drives stay at -O3: about a third less compile time per test file)
 function(yardsim_test_flags name)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
-  target_compile_definitions(${name} PRIVATE
-    YARDSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}" YARDSIM_BINARY_DIR="${PROJECT_BINARY_DIR}"
-    YARDSIM_PYTHON3="${YARDSIM_PYTHON3}")
+  target_link_libraries(${name} PRIVATE yardsim_test_paths)
   target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1>)
 endfunction()
 

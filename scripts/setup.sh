@@ -16,6 +16,7 @@ packages=(
   python3-yaml  # the mutation harness (tests/fuzz/mutate.py) reads the examples' YAML node trees
   libboost-filesystem1.74-dev libboost-system1.74-dev  # only to configure Pinocchio for bench/peers
   clang-14 libclang-rt-14-dev  # the CI fuzzer (YARDSIM_FUZZ, tests/fuzz): libFuzzer and the sanitizers' runtimes
+  ccache  # .ci/run's compiler cache: a machine that built this tree before rebuilds only what changed
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -21,6 +21,7 @@
 
 #include "support/scene_files.hpp"
 #include "support/shell_command.hpp"
+#include "support/test_paths.hpp"
 
 extern char** environ;
 

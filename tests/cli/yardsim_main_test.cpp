@@ -8,6 +8,7 @@
 #include "support/csv_file.hpp"
 #include "support/scene_files.hpp"
 #include "support/shell_command.hpp"
+#include "support/test_paths.hpp"
 
 namespace {
 

@@ -10,6 +10,7 @@
 #include "models/multibody/multibody_model.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/record_collector.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

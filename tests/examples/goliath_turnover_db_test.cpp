@@ -9,6 +9,7 @@
 
 #include "support/scene_files.hpp"
 #include "support/shell_command.hpp"
+#include "support/test_paths.hpp"
 
 using Catch::Matchers::Contains;
 using yardsim::testing::shell;

@@ -17,6 +17,7 @@
 #include "scene/scene_loader.hpp"
 #include "support/channel_reader.hpp"
 #include "support/record_collector.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

@@ -20,6 +20,7 @@
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/channel_reader.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

@@ -18,6 +18,7 @@
 #include "support/csv_file.hpp"
 #include "support/record_collector.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

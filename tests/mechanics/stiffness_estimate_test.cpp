@@ -12,6 +12,7 @@
 #include "mechanics/stiffness_estimate.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

@@ -4,6 +4,7 @@
 
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

@@ -6,6 +6,7 @@
 
 #include "output/hdf5_file.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using yardsim::output::Hdf5File;
 

@@ -5,6 +5,7 @@
 
 #include "output/timeseries_hdf5.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 TEST_CASE("timeseries.h5 holds every column of timeseries.csv with its unit, read by h5py") {
   yardsim::testing::SceneDir dir;

@@ -12,6 +12,7 @@
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 namespace fs = std::filesystem;

@@ -6,6 +6,7 @@
 #include "models/library/gpt.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

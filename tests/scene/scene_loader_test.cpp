@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 using models::Diagnostic;

@@ -16,6 +16,7 @@
 #include "scene/scene_loader.hpp"
 #include "scene/stiffness_guard.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

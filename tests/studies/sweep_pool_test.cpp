@@ -6,6 +6,7 @@
 
 #include "studies/sweep_pool.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim::studies;
 

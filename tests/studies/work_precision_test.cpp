@@ -7,6 +7,7 @@
 
 #include "scene/scene_loader.hpp"
 #include "support/scene_files.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim;
 

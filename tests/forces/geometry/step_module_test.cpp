@@ -12,6 +12,7 @@
 #include "forces/geometry/primitive_meshes.hpp"
 #include "forces/geometry/step_module.hpp"
 #include "forces/geometry/step_reader.hpp"
+#include "support/test_paths.hpp"
 
 using namespace yardsim::forces;
 using Catch::Matchers::Contains;

@@ -23,19 +23,19 @@ void ChromeTraceSink::begin(std::string_view phase, std::string_view name, Time 
                             const AtomicBase& m) {
   ev_.assign(first_ ? "" : ",\n");
   first_ = false;
-  ev_ += "{\"ph\":";
-  appendJsonString(ev_, phase);
-  ev_ += ",\"name\":";
+  ev_ += "{\"ph\":\"";
+  ev_ += phase;  // X, i or M: no escapes
+  ev_ += "\",\"name\":";
   appendJsonString(ev_, name);
   ev_ += ",\"pid\":1,\"tid\":";
-  ev_ += std::to_string(m.simIndex() + 1);
+  appendJsonInteger(ev_, static_cast<std::uint64_t>(m.simIndex()) + 1);
   ev_ += ",\"ts\":";
   appendJsonNumber(ev_, t * kMicro);
 }
 
 void ChromeTraceSink::finish() {
   ev_ += '}';
-  stream_.out() << ev_;
+  stream_.out().rdbuf()->sputn(ev_.data(), static_cast<std::streamsize>(ev_.size()));
 }
 
 void ChromeTraceSink::onStart(Time /*t*/, std::span<AtomicBase* const> atomics) {

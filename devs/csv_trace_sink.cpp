@@ -24,7 +24,7 @@ void CsvTraceSink::write(const TraceRecord& r) {
   line_.clear();
   appendJsonNumber(line_, r.t);
   line_ += ',';
-  line_ += std::to_string(r.seq);
+  appendJsonInteger(line_, r.seq);
   line_ += ',';
   appendCsvField(line_, r.model);
   line_ += ',';
@@ -34,7 +34,7 @@ void CsvTraceSink::write(const TraceRecord& r) {
   line_ += ',';
   appendCsvField(line_, r.value);
   line_ += '\n';
-  out() << line_;
+  emit(line_);
 }
 
 }  // namespace yardsim::devs

@@ -6,11 +6,19 @@ void JsonlTraceSink::write(const TraceRecord& r) {
   line_.assign("{\"t\":");
   appendJsonNumber(line_, r.t);
   line_ += ",\"seq\":";
-  line_ += std::to_string(r.seq);
+  appendJsonInteger(line_, r.seq);
   line_ += ",\"model\":";
-  appendJsonString(line_, r.model);
-  line_ += ",\"kind\":";
-  appendJsonString(line_, r.kind);
+  // (model path) => its JSON string, escaped once per run of records from one model
+  if (r.model != modelPath_) {
+    modelPath_.assign(r.model);
+    modelJson_.clear();
+    appendJsonString(modelJson_, r.model);
+  }
+  line_ += modelJson_;
+  // (kind: out, in, int, ext, conf or state) => quoted as it is, none needs an escape
+  line_ += ",\"kind\":\"";
+  line_ += r.kind;
+  line_ += '"';
   if (!r.port.empty()) {
     line_ += ",\"port\":";
     appendJsonString(line_, r.port);
@@ -20,7 +28,7 @@ void JsonlTraceSink::write(const TraceRecord& r) {
     line_ += r.value;
   }
   line_ += "}\n";
-  out() << line_;
+  emit(line_);
 }
 
 }  // namespace yardsim::devs

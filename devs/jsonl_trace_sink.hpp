@@ -16,6 +16,7 @@ class JsonlTraceSink final : public RecordSink {
 
  private:
   std::string line_;
+  std::string modelPath_, modelJson_;  // the last model's path and its JSON string
 };
 
 }  // namespace yardsim::devs

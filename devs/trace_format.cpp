@@ -49,13 +49,15 @@ namespace {
 // The last few numbers written and their text: a trace writes one time several times in a row
 // (a transition's record, the state's record and the time inside the state), and the shortest
 // round-trip conversion costs some 550 instructions. Keyed by the bits, so -0.0 and 0.0 (equal
-// as doubles, written "-0" and "0") stay apart; one cache per thread.
+// as doubles, written "-0" and "0") stay apart; the least recently used entry is replaced, so
+// that a number written at every step (a fixed step's duration) stays; one cache per thread.
 struct NumberCache {
   static constexpr std::size_t kSize = 4;
   std::uint64_t bits[kSize] = {};
   char text[kSize][32] = {};
   unsigned char length[kSize] = {};  // 0: empty
-  std::size_t next = 0;              // the entry replaced next (round robin)
+  std::uint64_t used[kSize] = {};    // when each entry was last written or hit (0: never)
+  std::uint64_t clock = 0;
 };
 thread_local NumberCache tCache;
 
@@ -68,21 +70,31 @@ void appendJsonNumber(std::string& out, double value) {
   }
   const auto bits = std::bit_cast<std::uint64_t>(value);
   NumberCache& c = tCache;
-  for (std::size_t i = 0; i < NumberCache::kSize; ++i)
+  std::size_t oldest = 0;
+  for (std::size_t i = 0; i < NumberCache::kSize; ++i) {
     if (c.length[i] != 0 && c.bits[i] == bits) {
+      c.used[i] = ++c.clock;
       out.append(c.text[i], c.length[i]);
       return;
     }
-  // (value) => its shortest round-trip form, kept in the cache
+    if (c.used[i] < c.used[oldest]) oldest = i;
+  }
+  // (value) => its shortest round-trip form, kept in the cache in place of the oldest entry
   char buf[32];
   auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
   const auto n = static_cast<std::size_t>(ec == std::errc() ? end - buf : 0);
   out.append(buf, n);
   if (n == 0) return;
-  std::memcpy(c.text[c.next], buf, n);
-  c.bits[c.next] = bits;
-  c.length[c.next] = static_cast<unsigned char>(n);
-  c.next = (c.next + 1) % NumberCache::kSize;
+  std::memcpy(c.text[oldest], buf, n);
+  c.bits[oldest] = bits;
+  c.length[oldest] = static_cast<unsigned char>(n);
+  c.used[oldest] = ++c.clock;
+}
+
+void appendJsonInteger(std::string& out, std::uint64_t value) {
+  char buf[24];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, value);
+  out.append(buf, r.ptr);
 }
 
 }  // namespace yardsim::devs

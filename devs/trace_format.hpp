@@ -5,6 +5,7 @@
 // TraceFormat<T> for a richer JSON form.
 #include <cmath>
 #include <concepts>
+#include <cstdint>
 #include <cstdio>
 #include <ostream>
 #include <sstream>
@@ -18,6 +19,8 @@ namespace yardsim::devs {
 void appendJsonString(std::string& out, std::string_view text);
 // (number) => JSON number appended to out (non-finite values as null, since JSON has none)
 void appendJsonNumber(std::string& out, double value);
+// (count) => its decimal digits appended to out
+void appendJsonInteger(std::string& out, std::uint64_t value);
 
 template <class T>
 concept Streamable = requires(std::ostream& os, const T& v) { os << v; };

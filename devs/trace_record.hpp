@@ -54,6 +54,10 @@ class RecordSink : public Listener {
  protected:
   virtual void write(const TraceRecord& r) = 0;
   std::ostream& out() { return stream_.out(); }
+  // (text) => appended to the stream through its buffer (no sentry per record)
+  void emit(const std::string& text) {
+    stream_.out().rdbuf()->sputn(text.data(), static_cast<std::streamsize>(text.size()));
+  }
 
  private:
   void messages(Time t, const AtomicBase& m, const PortBase& port, std::string_view kind);

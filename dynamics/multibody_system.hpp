@@ -80,6 +80,9 @@ class MultibodySystem final : public AccelerationSource {
 
   const Model& model() const { return model_; }
   Data& data() { return data_; }
+  /// The external forces of the last stage evaluated (acceleration() or
+  /// unconstrainedAcceleration()): nullptr when it had none. Valid until the next evaluation.
+  const ExternalForces* stageExternalForces() const { return forces_.empty() ? nullptr : &forces_; }
   Eigen::VectorXd& tau() { return tau_; }  ///< constant joint forces used when no callback is set
 
  private:

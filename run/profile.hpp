@@ -4,6 +4,7 @@
 #include <chrono>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "devs/listener.hpp"
 
@@ -34,38 +35,40 @@ class Stopwatch {
 /// s"
 std::string formatProfile(const PhaseTimes& p);
 
-/// Forwards every hook to `inner` and adds the time it took to `seconds` (the sink's output time).
+/// Forwards every hook to each of `inner` in turn and adds the time they took to `seconds` (the
+/// sinks' output time): one pair of clock reads per hook, however many sinks there are.
 class TimedListener final : public devs::Listener {
  public:
-  TimedListener(devs::Listener& inner, double& seconds) : inner_(inner), seconds_(seconds) {}
+  TimedListener(std::vector<devs::Listener*> inner, double& seconds)
+      : inner_(std::move(inner)), seconds_(seconds) {}
   void onStart(devs::Time t, std::span<devs::AtomicBase* const> a) override {
-    timed([&] { inner_.onStart(t, a); });
+    timed([&](devs::Listener& l) { l.onStart(t, a); });
   }
   void onOutput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& p) override {
-    timed([&] { inner_.onOutput(t, m, p); });
+    timed([&](devs::Listener& l) { l.onOutput(t, m, p); });
   }
   void onInput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& p) override {
-    timed([&] { inner_.onInput(t, m, p); });
+    timed([&](devs::Listener& l) { l.onInput(t, m, p); });
   }
   void onTransition(devs::Time t, const devs::AtomicBase& m, devs::Transition k,
                     devs::Time e) override {
-    timed([&] { inner_.onTransition(t, m, k, e); });
+    timed([&](devs::Listener& l) { l.onTransition(t, m, k, e); });
   }
   void onState(devs::Time t, const devs::AtomicBase& m) override {
-    timed([&] { inner_.onState(t, m); });
+    timed([&](devs::Listener& l) { l.onState(t, m); });
   }
   void onEnd(devs::Time t) override {
-    timed([&] { inner_.onEnd(t); });
+    timed([&](devs::Listener& l) { l.onEnd(t); });
   }
 
  private:
   template <class F>
   void timed(F&& f) {
     const Stopwatch w;
-    f();
+    for (devs::Listener* l : inner_) f(*l);
     seconds_ += w.seconds();
   }
-  devs::Listener& inner_;
+  std::vector<devs::Listener*> inner_;
   double& seconds_;
 };
 

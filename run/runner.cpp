@@ -159,7 +159,8 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
                                     "(docs/extending.md, checkpoints)");
     // (trace names) => sinks, only those asked for; record sinks go on at their sequence number
     // (events and jsonl both asked) => the full trace alone: it holds the outputs too
-    std::vector<std::unique_ptr<devs::Listener>> sinks, timed, filters;
+    std::vector<std::unique_ptr<devs::Listener>> sinks, filters;
+    std::vector<devs::Listener*> profiled;
     std::vector<devs::RecordSink*> records;
     const bool full = std::find(opt.trace.begin(), opt.trace.end(), "jsonl") != opt.trace.end();
     for (const auto& name : opt.trace) {
@@ -179,10 +180,13 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       if (name == "events")
         listener = filters.emplace_back(std::make_unique<OutputsOnly>(*listener)).get();
       if (opt.profile)
-        listener =
-            timed.emplace_back(std::make_unique<TimedListener>(*listener, outputSeconds)).get();
-      sim.addListener(*listener);
+        profiled.push_back(listener);
+      else
+        sim.addListener(*listener);
     }
+    // (profile) => the sinks behind one timer, in their order
+    std::optional<TimedListener> timed;
+    if (!profiled.empty()) sim.addListener(timed.emplace(std::move(profiled), outputSeconds));
     sim.addListener(alarms);
     // (watches) => the worst value of each crossing, read after every step
     WatchExtremes extremes(root, alarms);

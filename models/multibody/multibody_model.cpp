@@ -371,35 +371,46 @@ const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) cons
 const Eigen::VectorXd& MultibodyModel::acceleration() const {
   // (committed state, set-points in force) => accelerations, cached by time
   const auto& s = state();
-  if (ws_.accelTime != s.tx || ws_.accel.size() != s.x.v.size()) {
-    ws_.accel.resize(s.x.v.size());
-    ws_.data.setPoints = &s.x.setPoints;
-    ws_.data.kernel.acceleration(s.tx, s.x.q, s.x.v, ws_.accel);
-    ws_.accelTime = s.tx;
-  }
+  if (ws_.accelTime != s.tx || ws_.accel.size() != s.x.v.size()) evaluateCommitted();
   return ws_.accel;
 }
 
+void MultibodyModel::evaluateCommitted() const {
+  // (committed state, set-points in force) => the kernel's stage: accelerations, and the forces
+  // of that stage kept in the kernel until its next evaluation
+  const auto& s = state();
+  ws_.accel.resize(s.x.v.size());
+  ws_.data.setPoints = &s.x.setPoints;
+  ws_.data.kernel.acceleration(s.tx, s.x.q, s.x.v, ws_.accel);
+  ws_.accelTime = s.tx;
+}
+
 const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
-  // (committed state, its accelerations, every force) => RNEA's joint forces, cached by time
+  // (committed state, its accelerations, every force) => RNEA's joint forces, cached by time. The
+  // stage is evaluated here, not taken from acceleration()'s cache, so that the kernel's forces
+  // are this stage's: RNEA reuses them instead of evaluating the providers a second time
   const auto& s = state();
   auto& d = ws_.data;
   if (ws_.reactionTime != s.tx) {
-    const Eigen::VectorXd& a = acceleration();
-    d.setPoints = &s.x.setPoints;
-    d.spForces.clear();
-    d.spTau.setZero();
-    dynamics::forwardKinematics(system_.model(), d.scratch, s.x.q, s.x.v);
-    mechanics::stageForces(system_, d, s.tx, s.x.q, s.x.v, d.scratch, d.spForces, d.spTau);
-    dynamics::rnea(system_.model(), d.reaction, s.x.q, s.x.v, a, &d.spForces);
+    evaluateCommitted();
+    dynamics::rnea(system_.model(), d.reaction, s.x.q, s.x.v, ws_.accel, d.kernel.stageExternalForces());
     ws_.reactionTime = s.tx;
   }
   return d.reaction.F_W;
 }
 
 double MultibodyModel::energy() const {
+  // (committed state) => its energy, cached by time, q and v (the energy and energy_balance
+  // channels of one row read it twice)
   const auto& s = state();
-  return mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
+  if (ws_.energyTime != s.tx || ws_.energyQ.size() != s.x.q.size() || ws_.energyQ != s.x.q ||
+      ws_.energyV.size() != s.x.v.size() || ws_.energyV != s.x.v) {
+    ws_.energy = mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
+    ws_.energyTime = s.tx;
+    ws_.energyQ = s.x.q;
+    ws_.energyV = s.x.v;
+  }
+  return ws_.energy;
 }
 
 forces::Stage MultibodyModel::committedStage(const forces::ForceProvider* p) const {
@@ -446,7 +457,7 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
     devs::load(r, carried);
     if (scratch) scratch->restoreCarried(carried);
   }
-  ws_.accelTime = ws_.viewTime = ws_.reactionTime = -1.0;
+  ws_.accelTime = ws_.viewTime = ws_.reactionTime = ws_.energyTime = -1.0;
   ws_.viewState = nullptr;
   ws_.integrator->reset();
 }

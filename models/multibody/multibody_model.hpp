@@ -102,6 +102,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void settle();
   // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
   void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
+  // (committed state) => the kernel's stage there: ws_.accel, and its forces in the kernel
+  void evaluateCommitted() const;
   // (committed state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (committed state, the provider to read, if it needs its scratch) => the stage it sees there
@@ -126,7 +128,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     mechanics::Data data;
     std::unique_ptr<dynamics::Integrator> integrator;
     Eigen::VectorXd accel;  // accelerations of the committed state, for channels
-    double accelTime = -1.0, viewTime = -1.0, reactionTime = -1.0;
+    double accelTime = -1.0, viewTime = -1.0, reactionTime = -1.0, energyTime = -1.0;
+    double energy = 0.0;               // the committed state's energy, at energyTime
+    Eigen::VectorXd energyQ, energyV;  // ... and at these q and v
     const MultibodyState* viewState = nullptr;
     // the power at the end of the last step, reused at the start of the next one
     const MultibodyState* powerState = nullptr;

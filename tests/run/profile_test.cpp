@@ -2,15 +2,20 @@
 
 #include <catch2/catch.hpp>
 #include <thread>
+#include <vector>
 
 using namespace yardsim;
 
 namespace {
 // Counts the hooks it receives and spends 1 ms in each.
 struct SlowCounter : devs::Listener {
+  SlowCounter(int n, std::vector<int>& calls_log) : id(n), log(calls_log) {}
+  int id;
+  std::vector<int>& log;  // the ids of the listeners called, in order
   int calls = 0;
   void hook() {
     ++calls;
+    log.push_back(id);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   void onStart(devs::Time, std::span<devs::AtomicBase* const>) override { hook(); }
@@ -18,16 +23,19 @@ struct SlowCounter : devs::Listener {
 };
 }  // namespace
 
-TEST_CASE("a timed listener forwards each hook and books the time spent in it") {
-  SlowCounter inner;
+TEST_CASE("a timed listener forwards each hook to every sink in order and books the time spent in them") {
+  std::vector<int> log;
+  SlowCounter first(1, log), second(2, log);
   double seconds = 0.0;
-  run::TimedListener timed(inner, seconds);
+  run::TimedListener timed({&first, &second}, seconds);
   devs::Listener& l = timed;
   l.onStart(0.0, {});
   l.onEnd(1.0);
   l.onEnd(2.0);
-  CHECK(inner.calls == 3);
-  CHECK(seconds >= 0.003);
+  CHECK(first.calls == 3);
+  CHECK(second.calls == 3);
+  CHECK(log == std::vector<int>{1, 2, 1, 2, 1, 2});
+  CHECK(seconds >= 0.006);
   CHECK(seconds < 1.0);
 }
 

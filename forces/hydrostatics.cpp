@@ -48,27 +48,31 @@ std::unique_ptr<ProviderScratch> Hydrostatics::makeScratch() const {
   return std::make_unique<Scratch>(hull_);
 }
 
-SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& surface) const {
+SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& surface,
+                                            SubmergedIntegrals which) const {
   static_assert(sizeof(dynamics::Transform) == 12 * sizeof(double), "a pose is 12 doubles");
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& scratch = scratchOf<Scratch>(s, temporary);
   const dynamics::Transform& X = s.data.X_WB[body_];
   Scratch::Last& last = scratch.last[&surface == &calm_ ? 1 : 0];
-  // (the same surface, time and pose, bit for bit) => the same clipping
+  // (the same surface, time and pose, bit for bit, and the integrals asked for) => the same
+  // clipping
+  const bool all = which == SubmergedIntegrals::All;
   if (last.sea == &surface && std::memcmp(&last.t, &s.t, sizeof(double)) == 0 &&
-      std::memcmp(&last.X_WB, &X, sizeof X) == 0)
+      std::memcmp(&last.X_WB, &X, sizeof X) == 0 && (last.all || !all))
     return last.p;
   last.sea = &surface;
   last.t = s.t;
   last.X_WB = X;
-  last.p = integrateSubmerged(hull_, X, surface, s.t, scratch.ws);
+  last.p = integrateSubmerged(hull_, X, surface, s.t, scratch.ws, false, which);
+  last.all = all;
   return last.p;
 }
 
 void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
                               Eigen::VectorXd& /*tau*/) const {
   // (X_WB, sea, t) => clipped hull, pressure force and moment about the world origin
-  const SubmergedProperties p = submerged(s, surface());
+  const SubmergedProperties p = submerged(s, surface(), SubmergedIntegrals::Force);
   dynamics::Force F_W;
   F_W << p.moment, p.force;
   f.addWorldFrame(body_, F_W);
@@ -82,8 +86,8 @@ double Hydrostatics::doPotentialEnergy(const Stage& s) const {
 
 double Hydrostatics::doPower(const Stage& s) const {
   if (sea_->calm() || !incident_) return 0.0;
-  const SubmergedProperties c = submerged(s, calm_);
-  const SubmergedProperties w = submerged(s, *sea_);
+  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::Force);
+  const SubmergedProperties w = submerged(s, *sea_, SubmergedIntegrals::Force);
   const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
   return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());
 }

@@ -63,6 +63,7 @@ class Hydrostatics final : public ForceProvider {
       double t = 0.0;
       dynamics::Transform X_WB;
       SubmergedProperties p;
+      bool all = false;  // p holds every integral, not the force and moment alone
     };
     Last last[2];  // [0] the sea, [1] calm water
   };
@@ -86,9 +87,12 @@ class Hydrostatics final : public ForceProvider {
   bool incident_ = true;      // clipped at the incident surface with its pressure
   // (the surface the hull is clipped at) => the sea, or the calm water in the linear form
   const AiryWaves& surface() const { return incident_ ? *sea_ : calm_; }
-  // (stage, surface: *sea_ or calm_) => integrateSubmerged at the stage's pose and time, or the
-  // scratch's copy when it was for the same time and pose (bit for bit)
-  SubmergedProperties submerged(const Stage& s, const AiryWaves& surface) const;
+  // (stage, surface: *sea_ or calm_, the integrals needed) => integrateSubmerged at the stage's
+  // pose and time, or the scratch's copy when it was for the same time and pose (bit for bit) and
+  // holds those integrals. The forces (evaluate, power) need the force and moment alone; the
+  // potential energy and the report every integral.
+  SubmergedProperties submerged(const Stage& s, const AiryWaves& surface,
+                                SubmergedIntegrals which = SubmergedIntegrals::All) const;
 };
 
 }  // namespace yardsim::forces

@@ -31,9 +31,13 @@ SubmergedWorkspace::SubmergedWorkspace(const TriangleMesh& mesh)
   edgeStamp.assign(static_cast<std::size_t>(n + 1), 0U);
 }
 
-SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
-                                       const AiryWaves& sea, double t, SubmergedWorkspace& ws,
-                                       bool keepWet) {
+namespace {
+
+// (as integrateSubmerged; kAll false: the force and moment alone) => submerged properties
+template <bool kAll>
+SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
+                              const AiryWaves& sea, double t, SubmergedWorkspace& ws,
+                              bool keepWet) {
   // (X_WB, surface) => corners in the world and their depth below the surface
   const std::size_t nv = mesh.vertices.size();
   for (std::size_t i = 0; i < nv; ++i) {
@@ -44,7 +48,7 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
   // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
   // where the waterplane's own tetrahedra vanish)
   const Vector3 o(X_WB.p.x(), X_WB.p.y(),
-                  sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
+                  !kAll || sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
   // (a new call) => every cached edge pressure stale
   if (++ws.call == 0) {
     std::fill(ws.edgeStamp.begin(), ws.edgeStamp.end(), 0U);
@@ -94,28 +98,35 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
       const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
       const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
       const int from[3] = {0, k, k + 1}, to[3] = {k, k + 1, 0};
-      const Vector3 ao = a - o, bo = b - o, co = c - o;
-      const double d6 = ao.dot(bo.cross(co));
-      vol6 += d6;
-      first += d6 * (ao + bo + co);  // / 24 later
-      // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
+      if constexpr (kAll) {
+        const Vector3 ao = a - o, bo = b - o, co = c - o;
+        const double d6 = ao.dot(bo.cross(co));
+        vol6 += d6;
+        first += d6 * (ao + bo + co);  // / 24 later
+      }
       for (int side = 0; side < 3; ++side) {
         const Vector3& q = m[side];
-        const double w = -S.z() / 3.0;
-        wpA += w;
-        wpX += w * q.x();
-        wpY += w * q.y();
-        wpXX += w * q.x() * q.x();
-        wpYY += w * q.y() * q.y();
-        wpXY += w * q.x() * q.y();
+        // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
+        if constexpr (kAll) {
+          const double w = -S.z() / 3.0;
+          wpA += w;
+          wpX += w * q.x();
+          wpY += w * q.y();
+          wpXX += w * q.x() * q.x();
+          wpYY += w * q.y() * q.y();
+          wpXY += w * q.x() * q.y();
+        }
         const double p = pressureAt(q, from[side], to[side]);
         F -= p / 3.0 * S;
         M -= p / 3.0 * q.cross(S);
       }
-      r.wettedArea += S.norm();
+      if constexpr (kAll) r.wettedArea += S.norm();
       if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
     }
   }
+  r.force = F;
+  r.moment = M;
+  if constexpr (!kAll) return r;
   r.volume = vol6 / 6.0;
   r.centreOfBuoyancy = r.volume > 0.0 ? Vector3(o + first / (4.0 * vol6)) : o;
   r.waterplaneArea = wpA;
@@ -126,9 +137,16 @@ SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics:
   } else {
     r.waterplaneCentroid = o.head<2>();
   }
-  r.force = F;
-  r.moment = M;
   return r;
+}
+
+}  // namespace
+
+SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
+                                       const AiryWaves& sea, double t, SubmergedWorkspace& ws,
+                                       bool keepWet, SubmergedIntegrals which) {
+  return which == SubmergedIntegrals::All ? integrate<true>(mesh, X_WB, sea, t, ws, keepWet)
+                                          : integrate<false>(mesh, X_WB, sea, t, ws, keepWet);
 }
 
 }  // namespace yardsim::forces

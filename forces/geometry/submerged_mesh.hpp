@@ -48,10 +48,15 @@ struct SubmergedWorkspace {
   unsigned call = 0;
 };
 
-// (mesh in the body frame, X_WB, sea, t, workspace built for this mesh, keep the wetted pieces)
-// => submerged properties and the pressure force of the sea on the wetted surface
+// Which integrals integrateSubmerged computes: all of them, or the pressure force and moment
+// alone (the same doubles as with All, by the same operations; the other fields stay zero)
+enum class SubmergedIntegrals { All, Force };
+
+// (mesh in the body frame, X_WB, sea, t, workspace built for this mesh, keep the wetted pieces,
+// which integrals) => submerged properties and the pressure force of the sea on the wetted surface
 SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
                                        const AiryWaves& sea, double t, SubmergedWorkspace& ws,
-                                       bool keepWet = false);
+                                       bool keepWet = false,
+                                       SubmergedIntegrals which = SubmergedIntegrals::All);
 
 }  // namespace yardsim::forces

@@ -251,6 +251,10 @@ TEST_CASE("the scratch's last clipping is given again only for the same time and
     CHECK(F == force(fresh));
     CHECK(hydro.power(cached) == hydro.power(fresh));
     CHECK(hydro.potentialEnergy(cached) == hydro.potentialEnergy(fresh));
+    // (the forces' clipping holds the force and moment alone) => the report's volume clipped anew
+    CHECK(force(cached) == F);
+    CHECK(hydro.report(cached).submerged.volume == hydro.report(fresh).submerged.volume);
+    CHECK(hydro.report(cached).submerged.volume > 0.0);
     CHECK(force(cached) == F);  // asked twice at once
     seen.push_back(F);
   }

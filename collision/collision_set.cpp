@@ -46,6 +46,7 @@ CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> worl
     w->contacts(out);
   };
   contact_ = std::make_unique<forces::ContactForce>(name, source, std::move(materials));
+  unowned_ = contact_->makeScratch();
   if (options_.contact) addContactOutputs(reactionBodies);
   const auto& watches = world_->spec().watches;
   for (std::size_t w = 0; w < watches.size(); ++w) {
@@ -75,20 +76,17 @@ CollisionSet::CollisionSet(std::string name, std::shared_ptr<BodyCollision> worl
 void CollisionSet::addContactOutputs(
     const std::vector<std::pair<std::string, int>>& reactionBodies) {
   outputs_.push_back({"points", "-", [this](const forces::Stage& s) {
-                        std::unique_ptr<forces::ProviderScratch> t;
-                        return static_cast<double>(collected(s, t).points.size());
+                        return static_cast<double>(collected(s).points.size());
                       }});
   outputs_.push_back({"normal_force", "N", [this](const forces::Stage& s) {
-                        std::unique_ptr<forces::ProviderScratch> t;
                         double sum = 0.0;
-                        for (const auto& r : collected(s, t).responses) sum += r.normalForce;
+                        for (const auto& r : collected(s).responses) sum += r.normalForce;
                         return sum;
                       }});
   for (const auto& [bodyName, body] : reactionBodies) {
     // (stage) => the world z component of the contact forces on the body, N
     outputs_.push_back({bodyName + ".fz", "N", [this, b = body](const forces::Stage& s) {
-                          std::unique_ptr<forces::ProviderScratch> t;
-                          const auto& got = collected(s, t);
+                          const auto& got = collected(s);
                           double fz = 0.0;
                           for (std::size_t k = 0; k < got.points.size(); ++k) {
                             const auto& p = got.points[k];
@@ -103,8 +101,7 @@ void CollisionSet::addContactOutputs(
     for (int axis = 0; axis < 3; ++axis)
       outputs_.push_back(
           {bodyName + ".p" + "xyz"[axis], "m", [this, b = body, axis](const forces::Stage& s) {
-             std::unique_ptr<forces::ProviderScratch> t;
-             return applicationPoint(collected(s, t), b)[axis];
+             return applicationPoint(collected(s), b)[axis];
            }});
   }
   events_.push_back({this->name(), "contact", "release",
@@ -112,13 +109,8 @@ void CollisionSet::addContactOutputs(
                      [this](const forces::Stage& s) { return penetration(s); }, nullptr});
 }
 
-const forces::ContactForce::Scratch& CollisionSet::collected(
-    const forces::Stage& s, std::unique_ptr<forces::ProviderScratch>& temporary) const {
-  forces::ProviderScratch* scratch = s.scratch;
-  if (scratch == nullptr) {
-    temporary = contact_->makeScratch();
-    scratch = temporary.get();
-  }
+const forces::ContactForce::Scratch& CollisionSet::collected(const forces::Stage& s) const {
+  forces::ProviderScratch* scratch = s.scratch != nullptr ? s.scratch : unowned_.get();
   const forces::Stage with{s.t, s.model, s.data, s.q, s.v, scratch, s.stepStart};
   contact_->potentialEnergy(with);  // collects the points and the law's responses
   return static_cast<const forces::ContactForce::Scratch&>(*scratch);
@@ -127,8 +119,7 @@ const forces::ContactForce::Scratch& CollisionSet::collected(
 double CollisionSet::penetration(const forces::Stage& s) const {
   world_->update(s.data);
   const double ground = world_->groundPenetration();
-  std::unique_ptr<forces::ProviderScratch> t;
-  const auto& got = collected(s, t);
+  const auto& got = collected(s);
   double deepest = -std::numeric_limits<double>::infinity();
   for (const auto& p : got.points) deepest = std::max(deepest, p.depth);
   const double out = got.points.empty() ? (std::isfinite(ground) ? std::min(ground, -1e-9) : -1.0)

@@ -78,10 +78,9 @@ class CollisionSet final : public forces::ForceProvider,
   std::uint64_t doRegime(const forces::Stage& s) const override { return contact_->regime(s); }
 
  private:
-  // (stage) => the contact points and the law's responses at it, in the stage's scratch or a
-  // temporary
-  const forces::ContactForce::Scratch& collected(
-      const forces::Stage& s, std::unique_ptr<forces::ProviderScratch>& temporary) const;
+  // (stage) => the contact points and the law's responses at it, in the stage's scratch or, for
+  // a stage without one (the event function, a one-off read), in unowned_
+  const forces::ContactForce::Scratch& collected(const forces::Stage& s) const;
   // (bodies whose fz is a channel) => points, normal_force, <body>.fz, contact/release
   void addContactOutputs(const std::vector<std::pair<std::string, int>>& reactionBodies);
   // (stage) => the deepest penetration of the set, > 0 in contact
@@ -89,6 +88,9 @@ class CollisionSet final : public forces::ForceProvider,
 
   std::shared_ptr<BodyCollision> world_;
   std::unique_ptr<forces::ContactForce> contact_;
+  // the scratch of the reads given none, made once: rewritten by every such read, so that the
+  // event function evaluated at every step allocates nothing (not thread-safe, as world_)
+  std::unique_ptr<forces::ProviderScratch> unowned_;
   std::vector<forces::ProviderOutput> outputs_;
   std::vector<forces::ProviderEvent> events_;
   Options options_;

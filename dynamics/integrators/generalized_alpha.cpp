@@ -7,6 +7,28 @@
 
 namespace yardsim::dynamics {
 
+namespace {
+
+// (full-pivoting LU of a square S, b; a work vector c sized like b) => x = S^-1 b by the steps
+// and operations of FullPivLU::solve (Eigen 3.4's _solve_impl: the same doubles), without the
+// temporary it allocates at every call: c = P b, L and then U (its rank's corner) solved in
+// place, x = Q c with the unknowns beyond the rank zero
+void solveFullPivot(const Eigen::FullPivLU<Eigen::MatrixXd>& lu, const Eigen::VectorXd& b,
+                    Eigen::VectorXd& c, Eigen::VectorXd& x) {
+  const Eigen::Index rank = lu.rank();
+  if (rank == 0) {
+    x.setZero();
+    return;
+  }
+  c.noalias() = lu.permutationP() * b;
+  lu.matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(c);
+  lu.matrixLU().topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solveInPlace(c.head(rank));
+  const auto& q = lu.permutationQ().indices();
+  for (Eigen::Index i = 0; i < lu.cols(); ++i) x[q[i]] = i < rank ? c[i] : 0.0;
+}
+
+}  // namespace
+
 GeneralizedAlphaParameters chungHulbert(double rho) {
   GeneralizedAlphaParameters p;
   p.alphaM = (2.0 * rho - 1.0) / (rho + 1.0);
@@ -36,7 +58,8 @@ void GeneralizedAlpha::resize(int nc) {
   if (nc == nc_) return;
   nc_ = nc;
   const int n = model_.nv;
-  for (Eigen::VectorXd* x : {&g_, &lambda_, &lambdaStart_, &dlambda_, &rc_}) x->setZero(nc);
+  for (Eigen::VectorXd* x : {&g_, &lambda_, &lambdaStart_, &dlambda_, &rc_, &pivoted_})
+    x->setZero(nc);
   for (Eigen::MatrixXd* x : {&J_, &Jf_}) x->setZero(nc, n);
   for (Eigen::MatrixXd* x : {&MinvJt_, &MinvJtf_, &AinvMinvJt_}) x->setZero(n, nc);
   S_.setZero(nc, nc);
@@ -213,7 +236,7 @@ bool GeneralizedAlpha::solve(AccelerationSource& system, double t, const Eigen::
     solveA(r_, dx_);
     if (nc_ > 0) {
       rc_.noalias() -= Jf_ * dx_;
-      dlambda_ = luS_.solve(rc_);
+      solveFullPivot(luS_, rc_, pivoted_, dlambda_);
       dlambda_ = -dlambda_;
       dx_.noalias() -= AinvMinvJt_ * dlambda_;
       lambda_ += dlambda_;

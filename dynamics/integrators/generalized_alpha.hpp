@@ -120,7 +120,7 @@ class GeneralizedAlpha final : public Integrator {
   const JacobianPattern* sparseFor_ = nullptr;  // the pattern sparse_ was made for
   bool sparseActive_ = false;
   // loops
-  Eigen::VectorXd g_, lambda_, lambdaStart_, dlambda_, rc_;
+  Eigen::VectorXd g_, lambda_, lambdaStart_, dlambda_, rc_, pivoted_;  // pivoted_: S's solve
   Eigen::MatrixXd J_, MinvJt_, Jf_, MinvJtf_, AinvMinvJt_, S_;
   Eigen::FullPivLU<Eigen::MatrixXd> luS_;
 };

@@ -42,7 +42,9 @@ class MixedProblem {
   MixedProblem& operator=(const MixedProblem&) = delete;
 
   /// (phi_n on the body, Nb x m; phi on the free surface, Nf x m) => u = [phi_b; phi_n,f], N x m,
-  /// written into out through rhs (N x m scratch). Allocation-free for preallocated rhs and out.
+  /// written into out through rhs (N x m scratch). For preallocated rhs and out nothing is
+  /// allocated but Eigen's packing blocks of the triangular solves, from the heap when larger than
+  /// EIGEN_STACK_ALLOCATION_LIMIT (docs/performance.md, "Allocation-free steady state").
   void solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
              const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
              Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const;

@@ -1,13 +1,19 @@
-// After warm-up the step loop's own queries allocate nothing through operator new: setPose,
+// After warm-up the step loop's own queries allocate nothing (every heap block counted): setPose,
 // setSegment, candidatePairs, a clearance watch of a rope over primitive blocks and the rope-box
 // distance. What FCL allocates inside is counted and reported: update() when FCL rebuilds its
 // tree top-down (balanceTopdown collects the leaves in a vector), a rope against a mesh block
-// (FCL's mesh-shape distance allocates the capsule's bound vertices), and contacts.
+// (FCL's mesh-shape distance allocates the capsule's bound vertices), and contacts. A collision
+// set of blocks on the ground (its own ground contacts, no FCL narrow phase) allocates nothing as
+// a force provider, nor in its channels and event function.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
+#include "collision/collision_set.hpp"
 #include "collision/collision_world.hpp"
+#include "dynamics/configuration.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/model_builder.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
 #include "support/allocation_counter.hpp"
 
@@ -93,17 +99,17 @@ TEST_CASE("collision: moving, the broad phase, watches and rope distances do not
     CHECK(within);
     CHECK(d > 0.0);
   }
-  INFO("update() " << n[1] << " operator new calls in 45 steps");
+  INFO("update() " << n[1] << " heap blocks in 45 steps");
   CHECK(n[0] == 0);
   CHECK(n[2] == 0);
   CHECK(n[3] == 0);
   CHECK(n[4] == 0);
   CHECK(n[1] < 45 * 20);  // FCL's occasional top-down rebuild, not one per moved object
-  WARN("update(): " << n[1] << " operator new calls in 45 steps (FCL's top-down rebuilds)");
+  WARN("update(): " << n[1] << " heap blocks in 45 steps (FCL's top-down rebuilds)");
   // FCL's mesh-capsule distance allocates: reported, not ours to fix
   const std::size_t c = allocationCount();
   CHECK(s.world.clearance(s.meshWatch).withinMargin);
-  WARN("a rope against two mesh blocks: " << allocationCount() - c << " operator new calls");
+  WARN("a rope against two mesh blocks: " << allocationCount() - c << " heap blocks");
 }
 
 TEST_CASE("collision: contacts after warm-up (the figure FCL's narrow phase costs)") {
@@ -119,6 +125,58 @@ TEST_CASE("collision: contacts after warm-up (the figure FCL's narrow phase cost
     contacts += s.world.contacts(4).size();
   }
   const std::size_t perStep = (allocationCount() - before) / 10;
-  WARN("contacts: " << contacts / 10 << " per step, operator new calls per step: " << perStep);
+  WARN("contacts: " << contacts / 10 << " per step, heap blocks per step: " << perStep);
   CHECK(contacts >= 10 * 60);  // every block touches the ground
+}
+
+TEST_CASE("collision set: blocks on the ground, forces, channels and events do not allocate") {
+  // (two 2 x 2 x 1 m blocks on free joints resting tilted on the ground, which the set computes
+  // itself: its points at every box vertex below it) => at moving stages the contact forces,
+  // energy, power and regime with the set's scratch, its channels (points, normal force, each
+  // block's fz and point of application) with it, and its contact event function without one,
+  // as mechanics/events.cpp calls it
+  using namespace yardsim;
+  dynamics::ModelBuilder b;
+  for (const char* name : {"a", "b"})
+    b.addBody(name, "world", dynamics::Joint::free(), {},
+              dynamics::boxInertia(1e3, Vector3(2, 2, 1)));
+  const dynamics::Model m = b.build();
+  BodyCollisionSpec spec;
+  spec.bodyCount = 3;
+  spec.shapes.push_back({1, "a", Shape::box(Vector3(2, 2, 1))});
+  spec.shapes.push_back({2, "b", Shape::box(Vector3(2, 2, 1))});
+  spec.pairLaw = {0};
+  spec.ground = true;
+  Eigen::VectorXd q = dynamics::neutralConfiguration(m);
+  q.segment<7>(0) << 0.0, 0.0, 0.49, std::cos(0.002), std::sin(0.002), 0.0, 0.0;
+  q.segment<7>(7) << 5.0, 0.0, 0.495, std::cos(0.002), 0.0, std::sin(0.002), 0.0;
+  const Eigen::VectorXd v = Eigen::VectorXd::Constant(m.nv, 0.1);
+  dynamics::Data kin(m);
+  dynamics::forwardKinematics(m, kin, q, v);
+  const forces::ContactMaterial steel{{forces::NormalLawKind::kHuntCrossley, 1e8, 1e8, 1.5, 0.0},
+                                      {0.3, 1e-3, forces::FrictionForm::kTanh}};
+  const CollisionSet set("contacts", std::make_shared<BodyCollision>(spec, kin), {steel},
+                         {{"a", 1}, {"b", 2}});
+  const auto scratch = set.makeScratch();
+  dynamics::ExternalForces f(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  double sink = 0.0;
+  std::size_t before = 0;
+  for (int k = 0; k <= 11; ++k) {
+    // (after two rounds of set-up: the first move grows the world's lists of moved objects)
+    if (k == 2) before = allocationCount();
+    q[2] = 0.49 - 1e-4 * k;  // (a sinks, b stays)
+    dynamics::forwardKinematics(m, kin, q, v);
+    const forces::Stage s{0.01 * k, m, kin, q, v, scratch.get()};
+    set.evaluate(s, f, tau);
+    sink += set.potentialEnergy(s) + set.power(s) + static_cast<double>(set.regime(s));
+    for (const forces::ProviderOutput& o : set.outputs()) sink += o.read(s);
+    const forces::Stage alone{0.01 * k, m, kin, q, v};
+    for (const forces::ProviderEvent& e : set.events()) sink += e.g(alone);
+  }
+  CHECK(allocationCount() == before);
+  CHECK(static_cast<const forces::ContactForce::Scratch&>(*scratch).points.size() == 8);
+  CHECK(f.worldFrame(1)[5] > 0.0);
+  CHECK(f.worldFrame(2)[5] > 0.0);
+  CHECK(std::isfinite(sink));
 }

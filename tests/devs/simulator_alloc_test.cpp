@@ -1,5 +1,5 @@
 // The steady state of a run allocates nothing: bags keep their capacity, the event queue and
-// the scratch lists are sized once. Every global operator new is counted here.
+// the scratch lists are sized once. Every heap allocation is counted here.
 #include <catch2/catch.hpp>
 
 #include "support/allocation_counter.hpp"

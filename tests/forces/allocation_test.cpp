@@ -1,5 +1,6 @@
 // The providers allocate nothing once built: evaluate(), potentialEnergy(), power() and the
-// reports of every provider in this folder, with every global operator new counted.
+// reports of every provider in this folder, with every heap allocation counted (those of
+// forces/lines and forces/hydro: lines/allocation_test.cpp and hydro/allocation_test.cpp).
 #include <catch2/catch.hpp>
 
 #include "support/allocation_counter.hpp"
@@ -8,23 +9,17 @@
 
 #include "force_rig.hpp"
 #include "forces/body_load.hpp"
-#include "forces/rope.hpp"
-#include "forces/gravity.hpp"
-#include "forces/rope.hpp"
+#include "forces/bushing.hpp"
+#include "forces/contact.hpp"
 #include "forces/current_load.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
+#include "forces/gravity.hpp"
 #include "forces/hydrostatics.hpp"
-#include "forces/hydro/impulse_response_force.hpp"
-#include "forces/hydro/irregular_sea.hpp"
 #include "forces/linear_quadratic_damping.hpp"
-#include "forces/wind_load.hpp"
-#include "forces/bushing.hpp"
-#include "forces/lines/catenary_line.hpp"
-#include "forces/lines/lumped_line.hpp"
+#include "forces/rope.hpp"
 #include "forces/rotational_spring_damper.hpp"
 #include "forces/spring_damper.hpp"
-#include "forces/hydro/hull_shapes.hpp"
-#include "forces/hydro/rankine_td_provider.hpp"
+#include "forces/wind_load.hpp"
 
 using yardsim::testing::allocationCount;
 
@@ -191,147 +186,42 @@ TEST_CASE("spring-dampers, joint springs and bushings do not allocate at a stage
   CHECK(sink != 0.0);
 }
 
-TEST_CASE("catenary lines do not allocate at a stage") {
+TEST_CASE("contact with friction on a block's corners does not allocate at a stage") {
+  // (a 2 x 2 x 1 m block tilted on its four bottom corners, sliding: Hunt-Crossley and
+  // regularised friction at each, from a source that reads the corners off the stage's pose) =>
+  // evaluate, the energy, the power and the regime (the implicit methods' switch test)
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
-  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
-            dynamics::boxInertia(2e6, Vector3(40, 12, 5)));
+  b.addBody("block", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
+            dynamics::boxInertia(1e3, Vector3(2, 2, 1)));
   const dynamics::Model m = b.build();
-  CatenaryLine taut("taut", m, {0, Vector3(-420, 0, -150)}, {1, Vector3(-20, 0, 0)},
-                    {500.0, 7.5e8, 1020.0, true, 0.0});
-  CatenaryLine friction("friction", m, {0, Vector3(420, 0, -150)}, {1, Vector3(20, 0, 0)},
-                        {500.0, 7.5e8, 1020.0, true, 1.0});
-  Rig r(m, {&taut, &friction});
-  r.q << 0.5, 0.2, 0.1, 1.0, 0.0, 0.0, 0.0;
+  const ContactSource corners = [](const Stage& s, std::vector<ContactPoint>& out) {
+    for (double x : {-1.0, 1.0})
+      for (double y : {-1.0, 1.0}) {
+        const Vector3 p = s.data.X_WB[1].actPoint(Vector3(x, y, -0.5));
+        if (p.z() < 0.0) out.push_back({0, 1, p, Vector3::UnitZ(), -p.z(), 0});
+      }
+  };
+  ContactForce contact("ground", corners, {NormalLawKind::kHuntCrossley, 1e8, 1e8, 1.5, 0.0},
+                       {0.3, 1e-3, FrictionForm::kTanh}, 4);
+  Rig r(m, {&contact});
+  r.q << 0.1, 0.2, 0.49, std::cos(0.002), std::sin(0.002), 0.0, 0.0;
   r.v.setConstant(0.1);
-  r.step(1e-2);
-  const Stage s = r.stage();
+  r.step(1e-4);
+  const auto scratch = contact.makeScratch();
+  Stage s = r.stage();
+  s.scratch = scratch.get();
   dynamics::ExternalForces f(m);
   Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
-  const std::size_t before = allocationCount();
   double sink = 0.0;
-  for (ForceProvider* fp : std::initializer_list<ForceProvider*>{&taut, &friction}) {
-    fp->evaluate(s, f, tau);
-    sink += fp->potentialEnergy(s) + fp->power(s);
+  const std::size_t before = allocationCount();
+  for (int k = 0; k < 10; ++k) {
+    s.t = 1e-3 * k;
+    contact.evaluate(s, f, tau);
+    sink += contact.potentialEnergy(s) + contact.power(s) + static_cast<double>(contact.regime(s));
   }
-  sink += taut.fairleadStiffness(s).norm() + friction.state(s).solution.laidLength;
   CHECK(allocationCount() == before);
+  CHECK(static_cast<const ContactForce::Scratch&>(*scratch).points.size() == 4);
+  CHECK(f.worldFrame(1)[5] > 0.0);  // (pushed up)
   CHECK(std::isfinite(sink));
-}
-
-TEST_CASE("a lumped line's node forces and masses do not allocate") {
-  LumpedLineProperties p;
-  p.length = 100.0;
-  p.segments = 10;
-  p.diameter = 0.1;
-  p.massPerLength = 80.0;
-  p.ea = 5e8;
-  p.damping = -0.5;
-  p.cdn = 1.2;
-  p.cdt = 0.4;
-  p.can = 1.0;
-  p.cat = 0.1;
-  p.seabed = true;
-  p.seabedZ = -60.0;
-  p.bedStiffness = 1e6;
-  p.bedFriction = 0.5;
-  WaterProperties water;
-  water.depth = 60.0;
-  const AiryWaves waves(water, {{2.0, 8.0, 0.0, 0.0}});
-  CurrentProperties cp;
-  cp.speed = 0.5;
-  const CurrentField current(cp);
-  const LumpedLine line(p, "line", &waves, &current);
-  Eigen::Matrix3Xd r(3, 11), v(3, 11), f(3, 11);
-  for (int i = 0; i <= 10; ++i) r.col(i) = Vector3(9.0 * i, 0.0, -60.0 + 5.0 * i);
-  v.setConstant(0.1);
-  Eigen::VectorXd tension(10);
-  std::vector<dynamics::Matrix3> m(11);
-  const std::size_t before = allocationCount();
-  line.nodeForces(r, v, 1.0, f, tension);
-  line.nodeMass(r, m);
-  const double e = line.potentialEnergy(r);
-  CHECK(allocationCount() == before);
-  CHECK(std::isfinite(e + f.sum() + tension.sum() + m[3].sum()));
-}
-
-TEST_CASE("the rankine_td provider does not allocate at a stage or a panel step") {
-  dynamics::ModelBuilder b;
-  b.setGravity(Vector3::Zero());
-  b.addBody("float", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
-            dynamics::boxInertia(2e3, Vector3(2, 2, 1)));
-  const dynamics::Model m = b.build();
-  hydro::RankineTdSettings settings;
-  settings.freeSurface.truncationRadius = 8.0;
-  settings.freeSurface.firstSpacing = 0.3;
-  settings.freeSurface.maxSpacing = 1.0;
-  settings.freeSurface.dampingWidth = 3.0;
-  settings.freeSurface.dampingStrength = 1.0;
-  const auto panels = std::make_shared<const hydro::RankineTdModel>(
-      hydro::cubeSphere(1.0, 4), dynamics::Transform{}, settings);
-  const hydro::RankineTdProvider radiation("radiation", m, 1, panels, 0.1);
-  Rig r(m, {});
-  r.v[2] = 0.3;  // moving, so that the march has something to do
-  const Stage s = r.stage();
-  dynamics::ExternalForces f(m);
-  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
-  auto scratch = radiation.makeScratch();
-  double sink = 0.0;
-  const std::size_t before = allocationCount();
-  for (int n = 0; n < 6; ++n) {
-    // (a step's first stage at t = n dt / 2: a panel step every other one) => evaluate and power
-    Stage own = s;
-    own.t = own.stepStart = 0.05 * n;
-    own.scratch = scratch.get();
-    radiation.evaluate(own, f, tau);
-    own.t += 0.025;
-    radiation.evaluate(own, f, tau);
-    sink += radiation.power(own);
-  }
-  CHECK(allocationCount() == before);
-  CHECK(sink != 0.0);
-}
-
-TEST_CASE("the impulse-response force does not allocate at a stage") {
-  dynamics::ModelBuilder b;
-  b.setGravity(Vector3::Zero());
-  b.addBody("barge", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
-            dynamics::boxInertia(3e5, Vector3(20, 8, 4)));
-  const dynamics::Model m = b.build();
-  // (60 s of memory at 0.05 s, one heading, a sea of 50 components)
-  auto ir = std::make_shared<hydro::ImpulseResponse>();
-  ir->dt = 0.05;
-  ir->radiation.assign(1200, hydro::ImpulseResponse::Matrix6::Identity());
-  ir->headings = {0.0};
-  ir->excitationStart = -2.0;
-  ir->excitation.assign(1, std::vector<hydro::ImpulseResponse::Vector6>(80, hydro::ImpulseResponse::Vector6::Ones()));
-  hydro::IrregularSea spec;
-  spec.hs = 2.0, spec.tp = 8.0, spec.components = 50;
-  const auto sea = std::make_shared<const AiryWaves>(WaterProperties{}, hydro::irregularWaves(spec));
-  const hydro::ImpulseResponseForce p("radiation", m, 1, ir, sea);
-  auto scratch = p.makeScratch();
-  dynamics::Data data(m);
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(m.nq), v = Eigen::VectorXd::Constant(m.nv, 0.1);
-  q[3] = 1.0;
-  dynamics::forwardKinematics(m, data, q, v);
-  dynamics::ExternalForces f(m);
-  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
-  p.evaluate(Stage{0.0, m, data, q, v, scratch.get(), 0.0}, f, tau);  // (the first commit)
-  std::vector<double> carried;  // (a checkpoint's buffer, the caller's)
-  carried.reserve(20000);
-  const std::size_t before = allocationCount();
-  double sink = 0.0;
-  for (int i = 1; i < 50; ++i) {  // (commits at the steps' starts, stages between, a step again)
-    const double t = 0.04 * i;
-    p.evaluate(Stage{t, m, data, q, v, scratch.get(), t}, f, tau);
-    p.evaluate(Stage{t + 0.02, m, data, q, v, scratch.get(), t}, f, tau);
-    sink += p.power(Stage{t + 0.04, m, data, q, v, scratch.get(), t});
-  }
-  p.evaluate(Stage{1.0, m, data, q, v, scratch.get(), 1.0}, f, tau);
-  scratch->carried(carried);
-  scratch->restoreCarried(carried);
-  CHECK(allocationCount() == before);
-  CHECK(carried.size() > 7200);
-  CHECK(std::isfinite(sink));
-  CHECK(sink != 0.0);
 }

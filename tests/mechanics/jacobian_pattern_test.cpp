@@ -12,61 +12,14 @@
 #include <string>
 
 #include "dynamics/integrators/factory.hpp"
-#include "mechanics/build.hpp"
-#include "mechanics/data.hpp"
-#include "mechanics/stage.hpp"
-#include "scene/mechanical_systems.hpp"
-#include "scene/scene_loader.hpp"
-#include "support/scene_files.hpp"
+#include "tests/mechanics/mechanics_fixture.hpp"
 
 using namespace yardsim;
+using testing::buildFromScene;
+using testing::mooredBuoyScene;
+using testing::StagedSystem;
 
 namespace {
-
-// (extra lines of the mechanics block, extra keys of every line) => a 200 t buoy on a surge-sway
-// slider at the fairlead height, moored by 4 lumped chain lines of 8 segments in still water,
-// released at 0.5 m/s
-std::string buoyScene(const std::string& extra = "", const std::string& lineKeys = "") {
-  std::string s = R"(schema_version: 1
-integrator: {method: hht, dt: 0.05, stiffness_check: off}
-mechanics:
-  bodies:
-    slide_x: {parent: world, joint: {type: prismatic, axis: [1, 0, 0], v0: 0.5}, mass: 1.0,
-              inertia: [1, 1, 1]}
-    buoy: {parent: slide_x, joint: {type: prismatic, axis: [0, 1, 0]},
-           placement: {xyz: [0, 0, 39]}, mass: 2.0e5, inertia: [1, 1, 1]}
-  mooring:
-)";
-  for (int k = 0; k < 4; ++k) {
-    const double a = k * M_PI / 2.0 + 0.3;
-    s += "    line" + std::to_string(k) + ": {model: lumped, anchor: [" +
-         std::to_string(290.0 * std::cos(a)) + ", " + std::to_string(290.0 * std::sin(a)) +
-         ", 0], fairlead: {body: buoy}, length: 314, EA: 1.2e9, mass: 282.21, diameter: 0.216, "
-         "segments: 8" +
-         lineKeys + "}\n";
-  }
-  return s + extra + "until: 1\n";
-}
-
-struct Built {
-  testing::SceneDir dir;
-  std::unique_ptr<mechanics::System> system;
-  std::unique_ptr<mechanics::Data> data;
-  mechanics::SetPoints sp;
-  explicit Built(const std::string& yaml) {
-    auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", yaml).string());
-    REQUIRE(scene->systems.size() == 1);
-    system = std::make_unique<mechanics::System>(mechanics::buildMechanics(scene->systems[0]->spec),
-                                                 mechanics::ServoSettings{}, "test");
-    data = std::make_unique<mechanics::Data>(*system);
-    mechanics::connectStage(*system, *data);
-    const auto n = static_cast<std::size_t>(system->model().nbodies);
-    sp = {std::vector<mechanics::JointDrive>(n), std::vector<mechanics::ActorLoad>(n),
-          std::vector<mechanics::WinchJob>(system->ropes().size())};
-    data->setPoints = &sp;
-  }
-  const dynamics::Model& model() const { return system->model(); }
-};
 
 bool inPattern(const dynamics::JacobianPattern& p, int i, int j) {
   const auto& rows = p.rows[static_cast<std::size_t>(j)];
@@ -80,9 +33,9 @@ TEST_CASE("the pattern of a moored buoy holds and its colouring needs few colour
   // the nodes two away and the two nodes nearest the buoy to the rigid dofs)
   for (const std::string keys : {"", ", EI: 1.0e10"}) {
     INFO("line keys '" << keys << "'");
-    Built b(buoyScene("", keys));
+    StagedSystem b(buildFromScene(mooredBuoyScene("", keys)));
     const auto& m = b.model();
-    const dynamics::JacobianPattern* p = b.data->kernel.jacobianPattern();
+    const dynamics::JacobianPattern* p = b.data.kernel.jacobianPattern();
     REQUIRE(p != nullptr);
     REQUIRE(p->n == m.nv);
     REQUIRE(m.nv == 2 + 4 * 7 * 3);
@@ -94,7 +47,7 @@ TEST_CASE("the pattern of a moored buoy holds and its colouring needs few colour
     CHECK(c.count() <= (keys.empty() ? 23 : 41));
     // (a moving state off equilibrium) => central differences of the stage's accelerations: every
     // entry the pattern leaves out is zero, and the chains' inner entries are not all zero
-    Eigen::VectorXd q = b.system->description().q0, v = Eigen::VectorXd::Zero(m.nv);
+    Eigen::VectorXd q = b.system.description().q0, v = Eigen::VectorXd::Zero(m.nv);
     for (int i = 0; i < m.nv; ++i) v[i] = 0.3 * std::sin(1.0 + i);
     for (int i = 2; i < m.nv; ++i) q[i] += 0.5 * std::cos(2.0 * i);
     Eigen::VectorXd ap(m.nv), am(m.nv);
@@ -104,8 +57,8 @@ TEST_CASE("the pattern of a moored buoy holds and its colouring needs few colour
         Eigen::VectorXd qp = q, qm = q, vp = v, vm = v;
         (which == 0 ? qp : vp)[j] += 1e-4;
         (which == 0 ? qm : vm)[j] -= 1e-4;
-        b.data->kernel.acceleration(0.0, qp, vp, ap);
-        b.data->kernel.acceleration(0.0, qm, vm, am);
+        b.data.kernel.acceleration(0.0, qp, vp, ap);
+        b.data.kernel.acceleration(0.0, qm, vm, am);
         for (int i = 0; i < m.nv; ++i) {
           if (inPattern(*p, i, j))
             inside += ap[i] != am[i];
@@ -128,19 +81,19 @@ TEST_CASE("the pattern of a moored buoy holds and its colouring needs few colour
       Eigen::VectorXd qp = q, qm = q;
       qp[node3] += 1e-4;
       qm[node3] -= 1e-4;
-      b.data->kernel.acceleration(0.0, qp, v, ap);
-      b.data->kernel.acceleration(0.0, qm, v, am);
+      b.data.kernel.acceleration(0.0, qp, v, ap);
+      b.data.kernel.acceleration(0.0, qm, v, am);
       CHECK(std::abs(ap[node1] - am[node1]) > 0.0);
     }
   }
 }
 
 TEST_CASE("a spring on the buoy keeps the nodes sparse - a system without lines has no pattern") {
-  Built b(buoyScene(R"(  springs:
+  StagedSystem b(buildFromScene(mooredBuoyScene(R"(  springs:
     tug: {between: [{body: buoy}, {point: [0, 0, 60]}], k: 1.0e3, free_length: 1}
-)"));
+)")));
   const auto& m = b.model();
-  const dynamics::JacobianPattern* p = b.data->kernel.jacobianPattern();
+  const dynamics::JacobianPattern* p = b.data.kernel.jacobianPattern();
   REQUIRE(p != nullptr);
   const int node1 = m.idxV[static_cast<std::size_t>(m.bodyIndex("line0.node1"))];
   const int node7 = m.idxV[static_cast<std::size_t>(m.bodyIndex("line0.node7"))];
@@ -149,15 +102,15 @@ TEST_CASE("a spring on the buoy keeps the nodes sparse - a system without lines 
   CHECK(inPattern(*p, node7, 1));
   CHECK(!inPattern(*p, 0, node1));
   CHECK(!inPattern(*p, node1, node7));
-  Built plain(R"(schema_version: 1
+  StagedSystem plain(buildFromScene(R"(schema_version: 1
 integrator: {method: hht, dt: 0.05}
 mechanics:
   bodies:
     bob: {parent: world, joint: {type: revolute, axis: [0, 1, 0], q0: 0.1}, mass: 2.0,
           com: [0, 0, -4.0], inertia: [1, 1, 1]}
 until: 1
-)");
-  CHECK(plain.data->kernel.jacobianPattern() == nullptr);
+)"));
+  CHECK(plain.data.kernel.jacobianPattern() == nullptr);
 }
 
 TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton matrix") {
@@ -166,15 +119,15 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
     dynamics::IntegratorStats stats;
   };
   auto run = [](bool sparse, const std::string& keys) {
-    Built b(buoyScene("", keys));
-    if (!sparse) b.data->kernel.setJacobianPattern(nullptr);
+    StagedSystem b(buildFromScene(mooredBuoyScene("", keys)));
+    if (!sparse) b.data.kernel.setJacobianPattern(nullptr);
     dynamics::IntegratorSpec spec;
     spec.method = "hht";
     spec.dt = 0.05;
     auto integrator = dynamics::makeIntegrator(spec, b.model());
-    Run r{b.system->description().q0, b.system->description().v0, {}};
+    Run r{b.system.description().q0, b.system.description().v0, {}};
     double t = 0.0;
-    for (int k = 0; k < 40; ++k) integrator->step(b.data->kernel, t, r.q, r.v, 0.05);
+    for (int k = 0; k < 40; ++k) integrator->step(b.data.kernel, t, r.q, r.v, 0.05);
     r.stats = integrator->stats();
     return r;
   };
@@ -182,7 +135,7 @@ TEST_CASE("HHT moves the moored buoy alike with the sparse and the dense Newton 
   // the sparse path fail Newton often (106 and 71 failed solves in 2 s) and end 3.5 cm apart:
   // not yet understood, docs/lines.md "Bending stiffness", so only EI = 0 here)
   for (const std::string keys : {""}) {
-  INFO("line keys '" << keys << "'");
+    INFO("line keys '" << keys << "'");
     const Run dense = run(false, keys), sparse = run(true, keys);
     INFO("dense: " << dense.stats.f_evals << " evaluations, " << dense.stats.jac_evals
                    << " matrices; sparse: " << sparse.stats.f_evals << ", "

@@ -13,14 +13,7 @@
 
 using namespace yardsim;
 
-namespace {
-// (system) => empty set-points of its size
-mechanics::SetPoints noSetPoints(const mechanics::System& s) {
-  const auto n = static_cast<std::size_t>(s.model().nbodies);
-  return {std::vector<mechanics::JointDrive>(n), std::vector<mechanics::ActorLoad>(n),
-          std::vector<mechanics::WinchJob>(s.ropes().size())};
-}
-}  // namespace
+using testing::noSetPoints;
 
 TEST_CASE("the stage adds every provider once, each with its scratch, then ABA") {
   const mechanics::System sys(testing::buildFromYaml(testing::kHoistAndEqualizer), {}, "test");

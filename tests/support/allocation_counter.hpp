@@ -1,12 +1,14 @@
 #pragma once
-// Test support: every global operator new of the test executable is counted (link
-// tests/support/allocation_counter.cpp into it). The sanitizers forbid replacing operator new,
-// so such tests run in the plain build only.
+// Test support: every heap allocation of the test executable is counted: operator new, and the
+// malloc that Eigen's dynamic-size temporaries and the C libraries (SUNDIALS, FCL) call past it.
+// Link tests/support/allocation_counter.cpp and tests/support/malloc_counter.cpp (glibc only)
+// into it. The sanitizers forbid replacing the allocators, so such tests run in the plain build
+// only.
 #include <cstddef>
 
 namespace yardsim::testing {
 
-// () => how many times any global operator new has run so far
+// () => how many heap blocks any allocator has handed out so far
 std::size_t allocationCount();
 
 }  // namespace yardsim::testing

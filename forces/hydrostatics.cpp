@@ -86,7 +86,8 @@ double Hydrostatics::doPotentialEnergy(const Stage& s) const {
 
 double Hydrostatics::doPower(const Stage& s) const {
   if (sea_->calm() || !incident_) return 0.0;
-  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::Force);
+  // (calm water: every integral, since the energy at the step's end asks for the same clipping)
+  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::All);
   const SubmergedProperties w = submerged(s, *sea_, SubmergedIntegrals::Force);
   const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
   return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());

@@ -89,8 +89,8 @@ class Hydrostatics final : public ForceProvider {
   const AiryWaves& surface() const { return incident_ ? *sea_ : calm_; }
   // (stage, surface: *sea_ or calm_, the integrals needed) => integrateSubmerged at the stage's
   // pose and time, or the scratch's copy when it was for the same time and pose (bit for bit) and
-  // holds those integrals. The forces (evaluate, power) need the force and moment alone; the
-  // potential energy and the report every integral.
+  // holds those integrals. The forces (evaluate, power in waves) need the force and moment alone;
+  // the potential energy and the report every integral.
   SubmergedProperties submerged(const Stage& s, const AiryWaves& surface,
                                 SubmergedIntegrals which = SubmergedIntegrals::All) const;
 };

@@ -47,8 +47,9 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   }
   // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
   // where the waterplane's own tetrahedra vanish)
-  const Vector3 o(X_WB.p.x(), X_WB.p.y(),
-                  !kAll || sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
+  const Vector3 o(
+      X_WB.p.x(), X_WB.p.y(),
+      !kAll || sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
   // (a new call) => every cached edge pressure stale
   if (++ws.call == 0) {
     std::fill(ws.edgeStamp.begin(), ws.edgeStamp.end(), 0U);

@@ -23,7 +23,8 @@ struct SlowCounter : devs::Listener {
 };
 }  // namespace
 
-TEST_CASE("a timed listener forwards each hook to every sink in order and books the time spent in them") {
+TEST_CASE(
+    "a timed listener forwards each hook to every sink in order and books the time spent in them") {
   std::vector<int> log;
   SlowCounter first(1, log), second(2, log);
   double seconds = 0.0;

@@ -204,18 +204,21 @@ TEST_CASE("a small submerged box feels the Froude-Krylov force rho V (g z + du/d
   CHECK(biggest > 50.0);  // the horizontal wave force is there to be checked (N)
 }
 
-TEST_CASE("the force-only integrals give the same force and moment, bit for bit, and nothing else") {
+TEST_CASE(
+    "the force-only integrals give the same force and moment, bit for bit, and nothing else") {
   // (a heeled, trimmed box in a wave, at several times) => SubmergedIntegrals::Force's force and
   // moment equal All's exactly; its volume, waterplane and wetted area are left zero
   const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 40.0, 0.0}, {{1.5, 7.0, 1.2, 0.3}});
   const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
   SubmergedWorkspace ws(hull);
   Transform X = Transform::translation(Vector3(1.0, -2.0, 0.5));
-  X.R = (Eigen::AngleAxisd(0.2, Vector3::UnitX()) * Eigen::AngleAxisd(-0.05, Vector3::UnitY())).toRotationMatrix();
+  X.R = (Eigen::AngleAxisd(0.2, Vector3::UnitX()) * Eigen::AngleAxisd(-0.05, Vector3::UnitY()))
+            .toRotationMatrix();
   for (double t : {0.0, 1.7, 4.2}) {
     INFO("t = " << t);
     const SubmergedProperties all = integrateSubmerged(hull, X, sea, t, ws);
-    const SubmergedProperties f = integrateSubmerged(hull, X, sea, t, ws, false, SubmergedIntegrals::Force);
+    const SubmergedProperties f =
+        integrateSubmerged(hull, X, sea, t, ws, false, SubmergedIntegrals::Force);
     CHECK(all.volume > 0.0);
     CHECK(f.force == all.force);
     CHECK(f.moment == all.moment);

@@ -54,8 +54,9 @@ AiryWaves::AiryWaves(const WaterProperties& water, std::vector<WaveComponent> co
     if (steepness > 1.0 / 7.0)
       throw std::invalid_argument(which + "H/L = " + std::to_string(steepness) +
                                   " is above the breaking limit 1/7; lower the height or lengthen the period");
-    const double coshScale = std::isfinite(water_.depth) ? 1.0 / (1.0 + std::exp(-2.0 * k * water_.depth)) : 1.0;
-    waves_.push_back({c, 0.5 * c.height, k, omega, std::cos(c.direction), std::sin(c.direction), coshScale});
+    const double floorDecay = std::isfinite(water_.depth) ? std::exp(-2.0 * k * water_.depth) : 0.0;
+    waves_.push_back({c, 0.5 * c.height, k, omega, std::cos(c.direction), std::sin(c.direction),
+                      1.0 / (1.0 + floorDecay), floorDecay});
   }
 }
 
@@ -140,6 +141,25 @@ double AiryWaves::dynamicPressureBelow(const Vector3& p, double t, double eta) c
   return water_.density * water_.gravity * ramp(t) * pd;
 }
 
+template <class AmplitudeCos>
+double AiryWaves::pressureWith(const Vector3& p, double r, AmplitudeCos c) const {
+  // (a_i cos th_i) => the surface above p; p above it: dry
+  double sum = 0.0;
+  for (std::size_t i = 0; i < waves_.size(); ++i) sum += c(i);
+  const double eta = water_.level + r * sum;
+  if (p.z() > eta) return 0.0;
+  // (stretched height z') => rho g (level - z) + r sum a_i cos th_i cosh k(z'+h) / cosh kh, with
+  // e^{kz'} (1 + e^{-2k(z'+h)}) = e^{kz'} + e^{-2kh} / e^{kz'}: one exponential a component
+  const double zs = stretchedOf(water_, p.z(), eta);
+  double pd = 0.0;
+  for (std::size_t i = 0; i < waves_.size(); ++i) {
+    const Wave& w = waves_[i];
+    const double e = std::exp(w.k * zs);
+    pd += c(i) * (w.floorDecay > 0.0 && e > 0.0 ? (e + w.floorDecay / e) * w.coshScale : e);
+  }
+  return water_.density * water_.gravity * (water_.level - p.z() + r * pd);
+}
+
 double AiryWaves::pressure(const Vector3& p, double t) const {
   const double rg = water_.density * water_.gravity;
   // (calm water, or the waves not started: eta = level and r p_dyn = 0 exactly) => hydrostatic
@@ -153,22 +173,41 @@ double AiryWaves::pressure(const Vector3& p, double t) const {
     return p.z() > eta ? 0.0 : rg * (water_.level - p.z()) + dynamicPressureBelow(p, t, eta);
   }
   double c[kCached];
-  double sum = 0.0;
   for (std::size_t i = 0; i < waves_.size(); ++i) {
     const Wave& w = waves_[i];
     c[i] = w.a * std::cos(w.k * (p.x() * w.cosb + p.y() * w.sinb) - w.omega * t + w.c.phase);
-    sum += c[i];
   }
-  const double eta = water_.level + r * sum;
-  if (p.z() > eta) return 0.0;
-  const double zs = stretchedOf(water_, p.z(), eta), h = water_.depth;
-  double pd = 0.0;
+  return pressureWith(p, r, [&c](std::size_t i) { return c[i]; });
+}
+
+void AiryWaves::halfPhases(double x, double y, double t, double* h) const {
+  // (x, y, t) => sincos of half of each phase
   for (std::size_t i = 0; i < waves_.size(); ++i) {
     const Wave& w = waves_[i];
-    const double e = std::exp(w.k * zs);
-    pd += c[i] * (std::isfinite(h) ? e * (1.0 + std::exp(-2.0 * w.k * (zs + h))) * w.coshScale : e);
+    const double half = 0.5 * (w.k * (x * w.cosb + y * w.sinb) - w.omega * t + w.c.phase);
+    h[2 * i] = std::cos(half);
+    h[2 * i + 1] = std::sin(half);
   }
-  return rg * (water_.level - p.z() + r * pd);
+}
+
+double AiryWaves::elevation(const double* h, double t) const {
+  // (half phases) => level + r sum a_i cos th_i, cos th = cos^2(th/2) - sin^2(th/2)
+  const double r = rampOf(water_, t);
+  if (r == 0.0) return water_.level;
+  double eta = 0.0;
+  for (std::size_t i = 0; i < waves_.size(); ++i)
+    eta += waves_[i].a * (h[2 * i] * h[2 * i] - h[2 * i + 1] * h[2 * i + 1]);
+  return water_.level + r * eta;
+}
+
+double AiryWaves::pressureBetween(const Vector3& p, const double* ha, const double* hb,
+                                  double t) const {
+  const double r = rampOf(water_, t);
+  if (waves_.empty() || r == 0.0) return pressure(p, t);
+  // (half phases at a and b) => a_i cos((th_a + th_b) / 2), the phase at their midpoint p
+  return pressureWith(p, r, [this, ha, hb](std::size_t i) {
+    return waves_[i].a * (ha[2 * i] * hb[2 * i] - ha[2 * i + 1] * hb[2 * i + 1]);
+  });
 }
 
 }  // namespace yardsim::forces

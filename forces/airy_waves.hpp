@@ -56,12 +56,29 @@ class AiryWaves {
   // (t) => the factor in [0, 1] every amplitude is multiplied by at t (water.start, water.ramp)
   double ramp(double t) const;
 
+  // Half phases, for many points of one surface (a hull's corners and its edges' midpoints): the
+  // phase of component i at a point is th_i = k_i (x cos b_i + y sin b_i) - w_i t + phase_i, linear
+  // in x and y, so at the midpoint of a and b, cos th_i = cos(th_a/2) cos(th_b/2) - sin(th_a/2)
+  // sin(th_b/2): one sincos per corner and component instead of one cosine per point.
+  // (x, y, t) => h[2 i] = cos(th_i / 2), h[2 i + 1] = sin(th_i / 2), for the size() components
+  void halfPhases(double x, double y, double t, double* h) const;
+  // (half phases at (x, y), t) => z of the free surface there, m (elevation(x, y, t) to round-off)
+  double elevation(const double* h, double t) const;
+  // (p_W the midpoint of a and b, their half phases, t) => pressure(p, t) to round-off, Pa
+  double pressureBetween(const dynamics::Vector3& p, const double* ha, const double* hb,
+                         double t) const;
+
  private:
   struct Wave {
     WaveComponent c;
     double a, k, omega, cosb, sinb;
     double coshScale;  // 1 / (1 + e^{-2kh}): cosh k(z'+h) / cosh kh = e^{kz'} (1 + e^{-2k(z'+h)}) coshScale
+    double floorDecay;  // e^{-2kh} (0 in deep water): e^{kz'} (1 + e^{-2k(z'+h)}) = e^{kz'} +
+                        // e^{-2kh} / e^{kz'}
   };
+  // (p, t, r = ramp(t) > 0, c(i) = a_i cos th_i at p) => pressure(p, t), Pa
+  template <class AmplitudeCos>
+  double pressureWith(const dynamics::Vector3& p, double r, AmplitudeCos c) const;
   // (p at or below the surface eta, t) => p_dyn, Pa
   double dynamicPressureBelow(const dynamics::Vector3& p, double t, double eta) const;
   // (p, t, eta) => the stretched height below the level, z' <= 0, for depth decay factors

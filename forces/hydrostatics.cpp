@@ -45,7 +45,7 @@ Hydrostatics::Hydrostatics(std::string name, const dynamics::Model& model, int b
 }
 
 std::unique_ptr<ProviderScratch> Hydrostatics::makeScratch() const {
-  return std::make_unique<Scratch>(hull_);
+  return std::make_unique<Scratch>(hull_, sea_->size());
 }
 
 SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& surface,

@@ -56,7 +56,7 @@ class Hydrostatics final : public ForceProvider {
   // sea, calm water) with the time and pose it was for, given again when asked for the same ones
   // (the power at a step's end is asked again at the next step's start and first stage)
   struct Scratch final : ProviderScratch {
-    explicit Scratch(const TriangleMesh& hull) : ws(hull) {}
+    Scratch(const TriangleMesh& hull, std::size_t components) : ws(hull, components) {}
     SubmergedWorkspace ws;
     struct Last {
       const AiryWaves* sea = nullptr;  // nullptr: nothing yet

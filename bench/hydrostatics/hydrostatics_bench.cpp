@@ -1,6 +1,7 @@
 // Hydrostatics per evaluation: a UV sphere hull (the inscribed polyhedron, radius 10 m) heeled by
 // 20 deg and half immersed, meshed with ~1 k (960), ~10 k (9 800) and ~100 k (101 760) triangles;
-// Hydrostatics::evaluate in calm water and in one regular Airy wave, and integrateSubmerged alone.
+// Hydrostatics::evaluate in calm water, in one regular Airy wave and in a sea of 20 components,
+// and integrateSubmerged alone.
 // Run: bench_hydrostatics (see docs/performance.md for the recorded figures).
 #include <benchmark/benchmark.h>
 
@@ -26,13 +27,19 @@ TriangleMesh hull(int64_t n) {
   return sphereMesh(10.0, bands[n], 2 * bands[n]);
 }
 
-std::shared_ptr<const AiryWaves> sea(bool waves) {
+// (components: 0 calm, 1 a regular wave, more: an irregular sea of small components) => the sea
+std::shared_ptr<const AiryWaves> sea(int components) {
   const WaterProperties water{1025.0, 9.81, 0.0, 50.0, 0.0, 0.0};
-  if (!waves) return std::make_shared<const AiryWaves>(water);
-  return std::make_shared<const AiryWaves>(water, std::vector<WaveComponent>{{3.0, 9.0, 0.5, 0.0}});
+  if (components == 1)
+    return std::make_shared<const AiryWaves>(water,
+                                             std::vector<WaveComponent>{{3.0, 9.0, 0.5, 0.0}});
+  std::vector<WaveComponent> waves;
+  for (int i = 0; i < components; ++i)
+    waves.push_back({0.3, 6.0 + 0.4 * i, 0.5 + 0.05 * i, 0.9 * i});
+  return std::make_shared<const AiryWaves>(water, waves);
 }
 
-void evaluate(benchmark::State& st, bool waves) {
+void evaluate(benchmark::State& st, int waves) {
   dynamics::ModelBuilder b;
   b.setGravity(Vector3::Zero());
   b.addBody("buoy", "world", dynamics::Joint::free(), dynamics::Transform::identity(),
@@ -59,13 +66,20 @@ void evaluate(benchmark::State& st, bool waves) {
   st.counters["wet_volume"] = hydro.report(forces::Stage{t, model, data, q, v, scratch.get()}).submerged.volume;
 }
 
-void Calm(benchmark::State& st) { evaluate(st, false); }
-void Waves(benchmark::State& st) { evaluate(st, true); }
+void Calm(benchmark::State& st) {
+  evaluate(st, 0);
+}
+void Waves(benchmark::State& st) {
+  evaluate(st, 1);
+}
+void Irregular(benchmark::State& st) {
+  evaluate(st, 20);
+}
 
 void ClipOnly(benchmark::State& st) {
   const TriangleMesh mesh = hull(st.range(0));
   SubmergedWorkspace ws(mesh);
-  const auto water = sea(false);
+  const auto water = sea(0);
   const dynamics::Transform X{dynamics::axisRotation(Vector3::UnitX(), 20.0 * M_PI / 180), Vector3(0, 0, 0.3)};
   for (auto _ : st) benchmark::DoNotOptimize(integrateSubmerged(mesh, X, *water, 0.0, ws).volume);
   st.counters["triangles"] = static_cast<double>(mesh.triangles.size());
@@ -75,5 +89,6 @@ void ClipOnly(benchmark::State& st) {
 
 BENCHMARK(Calm)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(Waves)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Irregular)->DenseRange(0, 1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(ClipOnly)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

@@ -7,11 +7,12 @@ namespace yardsim::forces {
 
 using dynamics::Vector3;
 
-SubmergedWorkspace::SubmergedWorkspace(const TriangleMesh& mesh)
+SubmergedWorkspace::SubmergedWorkspace(const TriangleMesh& mesh, std::size_t components)
     : vertices(mesh.vertices.size()),
       depth(mesh.vertices.size()),
       wet(2 * mesh.triangles.size()),
-      edge(3 * mesh.triangles.size()) {
+      edge(3 * mesh.triangles.size()),
+      halfPhase(2 * components * mesh.vertices.size()) {
   // (triangles) => one number per unordered pair of corners: sort the 3 T (pair, slot) and number
   // the runs of equal pairs
   std::vector<std::pair<std::pair<int, int>, std::size_t>> ends;
@@ -38,12 +39,22 @@ template <bool kAll>
 SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
                               const AiryWaves& sea, double t, SubmergedWorkspace& ws,
                               bool keepWet) {
-  // (X_WB, surface) => corners in the world and their depth below the surface
+  // (X_WB, surface) => corners in the world and their depth below the surface; in waves, each
+  // corner's half phases first (the surface there from them, and later its edges' midpoints)
   const std::size_t nv = mesh.vertices.size();
+  const std::size_t m2 = 2 * sea.size();
+  const bool waves = !sea.calm() && sea.ramp(t) > 0.0;
+  if (waves && ws.halfPhase.size() < m2 * nv) ws.halfPhase.resize(m2 * nv);
   for (std::size_t i = 0; i < nv; ++i) {
     const Vector3 p = X_WB.actPoint(mesh.vertices[i]);
     ws.vertices[i] = p;
-    ws.depth[i] = (sea.calm() ? sea.water().level : sea.elevation(p.x(), p.y(), t)) - p.z();
+    if (waves) {
+      double* h = ws.halfPhase.data() + m2 * i;
+      sea.halfPhases(p.x(), p.y(), t, h);
+      ws.depth[i] = sea.elevation(h, t) - p.z();
+    } else {
+      ws.depth[i] = sea.water().level - p.z();
+    }
   }
   // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
   // where the waterplane's own tetrahedra vanish)
@@ -80,13 +91,18 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     }
     // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure;
     // a side between two of the triangle's own corners is a mesh edge: its midpoint 0.5 (a + b)
-    // is the same double vector in every triangle sharing it, so its pressure is computed once
+    // is the same double vector in every triangle sharing it, so its pressure is computed once,
+    // in waves from its corners' half phases
     const auto pressureAt = [&](const Vector3& q, int u, int w) {
       if (corner[u] < 0 || corner[w] < 0) return sea.pressure(q, t);
       const int e = (corner[u] + 1) % 3 == corner[w] ? corner[u] : corner[w];
       const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
       if (ws.edgeStamp[k] != ws.call) {
-        ws.edgePressure[k] = sea.pressure(q, t);
+        const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
+        const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
+        ws.edgePressure[k] = waves ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                         ws.halfPhase.data() + m2 * b, t)
+                                   : sea.pressure(q, t);
         ws.edgeStamp[k] = ws.call;
       }
       return ws.edgePressure[k];

@@ -33,8 +33,8 @@ struct SubmergedProperties {
 // Buffers sized for one mesh: its vertices in the world, their depths, the wetted pieces, and the
 // mesh's edges with the pressure at their midpoints (built once, here).
 struct SubmergedWorkspace {
-  // (mesh) => buffers and the edge numbering of its triangles
-  explicit SubmergedWorkspace(const TriangleMesh& mesh);
+  // (mesh, the sea's wave components) => buffers and the edge numbering of its triangles
+  explicit SubmergedWorkspace(const TriangleMesh& mesh, std::size_t components = 0);
   std::vector<dynamics::Vector3> vertices;  // world, m
   std::vector<double> depth;                // eta(x, y, t) - z, m (> 0: wet)
   std::vector<std::array<dynamics::Vector3, 3>> wet;  // wetted pieces, world, outward (first wetTriangles)
@@ -46,6 +46,10 @@ struct SubmergedWorkspace {
   std::vector<double> edgePressure;
   std::vector<unsigned> edgeStamp;
   unsigned call = 0;
+  // halfPhase[2 m i ...]: the sea's m components' half phases at corner i (AiryWaves::halfPhases),
+  // sized for `components` (or at the first call in a sea of more): a mesh edge's midpoint
+  // pressure comes from its two corners'
+  std::vector<double> halfPhase;
 };
 
 // Which integrals integrateSubmerged computes: all of them, or the pressure force and moment

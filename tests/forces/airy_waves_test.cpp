@@ -120,3 +120,67 @@ TEST_CASE("before the waves start the sea is calm water exactly") {
   CHECK(sea.pressure(Vector3(3.0, -7.0, -0.25), 61.0) !=
         calm.pressure(Vector3(3.0, -7.0, -0.25), 61.0));
 }
+
+TEST_CASE("half phases give the surface at a point and the pressure at a midpoint to round-off") {
+  // (deep, finite and shallow seas, one and 200 components, points far apart and close, late
+  // times, the ramp under way) => elevation(h) and pressureBetween agree with the direct forms;
+  // before the waves start both are the calm values bit for bit
+  std::vector<WaveComponent> many;
+  for (int i = 0; i < 200; ++i) many.push_back({0.02, 5.0 + 0.037 * i, 0.01 * i, 0.7 * i});
+  struct Case {
+    WaterProperties water;
+    std::vector<WaveComponent> waves;
+  };
+  const std::vector<Case> cases = {
+      {{1025.0, 9.81, 0.5, INFINITY, 0.0}, {{1.5, 7.0, -M_PI / 2, 0.4}}},
+      {{1025.0, 9.81, 0.5, 30.0, 20.0, 10.0}, {{1.5, 7.0, 0.3, 0.4}, {0.8, 4.0, 2.0, 1.1}}},
+      {{1025.0, 9.81, -1.0, 3.0, 0.0}, {{0.3, 12.0, 1.0, 0.0}}},
+      {{1025.0, 9.81, 0.5, 40.0, 0.0}, many}};
+  const std::vector<std::pair<Vector3, Vector3>> ends = {
+      {Vector3(3, -2, -1.5), Vector3(-7, 4, -10)},
+      {Vector3(1, 1, 0.2), Vector3(1.3, 0.9, -0.4)},
+      {Vector3(40, -25, -0.8), Vector3(-60, 30, -2.5)}};
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const AiryWaves sea(cases[c].water, cases[c].waves);
+    std::vector<double> ha(2 * sea.size()), hb(2 * sea.size());
+    double amplitude = 0.0;
+    for (std::size_t i = 0; i < sea.size(); ++i) amplitude += 0.5 * sea.component(i).height;
+    const double rg = 1025.0 * 9.81;
+    for (const auto& [a, b] : ends)
+      for (double t : {0.0, 15.0, 3600.0}) {
+        INFO("case " << c << " t = " << t << " a = " << a.transpose() << " b = " << b.transpose());
+        sea.halfPhases(a.x(), a.y(), t, ha.data());
+        sea.halfPhases(b.x(), b.y(), t, hb.data());
+        CHECK(sea.elevation(ha.data(), t) ==
+              Approx(sea.elevation(a.x(), a.y(), t)).margin(1e-12 * amplitude));
+        CHECK(sea.elevation(hb.data(), t) ==
+              Approx(sea.elevation(b.x(), b.y(), t)).margin(1e-12 * amplitude));
+        const Vector3 q = 0.5 * (a + b);
+        const double p = sea.pressure(q, t);
+        CHECK(sea.pressureBetween(q, ha.data(), hb.data(), t) ==
+              Approx(p).epsilon(1e-12).margin(1e-9 * rg));
+        if (sea.ramp(t) == 0.0) CHECK(sea.pressureBetween(q, ha.data(), hb.data(), t) == p);
+      }
+  }
+}
+
+TEST_CASE(
+    "the finite-depth pressure with one exponential equals the hydrostatic plus dynamic pressure") {
+  // (a shallow and an intermediate sea, points from the surface to near the bed) => pressure(p)
+  // = rho g (level - z) + dynamicPressure(p) below the surface, 0 above it, the latter with cosh
+  // k(z'+h) / cosh kh as e^{kz'} (1 + e^{-2k(z'+h)}) / (1 + e^{-2kh})
+  for (double h : {2.0, 25.0}) {
+    const WaterProperties water{1025.0, 9.81, 0.0, h, 0.0};
+    const AiryWaves sea(water, {{0.2, 6.0, 0.5, 0.2}});
+    for (double z : {-0.05, -0.5 * h, -0.99 * h})
+      for (double t : {0.0, 1.1, 2.9}) {
+        const Vector3 p(2.0, 1.0, z);
+        INFO("h = " << h << " z = " << z << " t = " << t);
+        const bool dry = z > sea.elevation(p.x(), p.y(), t);
+        CHECK(sea.pressure(p, t) ==
+              Approx(dry ? 0.0 : 1025.0 * 9.81 * (0.0 - z) + sea.dynamicPressure(p, t))
+                  .epsilon(1e-13)
+                  .margin(1e-10));
+      }
+  }
+}

@@ -227,3 +227,38 @@ TEST_CASE(
     CHECK(f.wettedArea == 0.0);
   }
 }
+
+TEST_CASE(
+    "in a short wave the midpoints' pressure from the corners equals the pressure evaluated "
+    "there") {
+  // (a heeled box, deep and partly wet, in a wave about as long as the box, so the phase changes
+  // by up to 0.8 rad along an edge) => the pressure force and moment of integrateSubmerged equal
+  // the same edge-midpoint rule summed here with AiryWaves::pressure at each midpoint, to round-off
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 50.0, 0.0},
+                      {{1.0, 4.0, 0.7, 0.3}, {0.4, 6.0, -1.0, 2.0}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
+  SubmergedWorkspace ws(hull);
+  for (double z : {-6.0, 0.5}) {
+    Transform X = Transform::translation(Vector3(1.0, -2.0, z));
+    X.R = Eigen::AngleAxisd(0.1, Vector3::UnitX()).toRotationMatrix();
+    for (double t : {0.0, 1.3}) {
+      INFO("z = " << z << " t = " << t);
+      const SubmergedProperties got = integrateSubmerged(hull, X, sea, t, ws, true);
+      // (the wetted pieces it kept) => sum over each piece's sides of -p(midpoint) / 3 S
+      Vector3 F = Vector3::Zero(), M = Vector3::Zero();
+      for (int i = 0; i < got.wetTriangles; ++i) {
+        const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
+        const Vector3 S = 0.5 * (b - a).cross(c - a);
+        for (const Vector3& q :
+             {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
+          const double p = sea.pressure(q, t);
+          F -= p / 3.0 * S;
+          M -= p / 3.0 * q.cross(S);
+        }
+      }
+      CHECK(got.wetTriangles > 0);
+      CHECK((got.force - F).norm() < 1e-10 * F.norm());
+      CHECK((got.moment - M).norm() < 1e-10 * (M.norm() + 20.0 * F.norm()));
+    }
+  }
+}

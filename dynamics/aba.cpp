@@ -39,7 +39,7 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
 // fixed-size products (column by column, the first a product), and IA_W[p] + IA - (D^-1 U) U^T in
 // one pass over the parent's: the same doubles as the separate products and updates, without
 // reading IA and the parent's twice (Data's stores may alias them, so the compiler does not)
-inline void abaRevoluteBackward(Data& d, int i, int p, int iv, double tau) {
+inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
   const Motion s = d.S_W.col(iv);
   const Motion& c = d.C_W[i];
   const Matrix6& IA = d.IA_W[i];
@@ -128,7 +128,7 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
     const int iv = m.idxV[i];
     const Motion& c = d.C_W[i];
     if (nv == 1) {
-      abaRevoluteBackward(d, i, p, iv, tau[iv]);
+      abaOneDofBackward(d, i, p, iv, tau[iv]);
     } else if (nv == 6) {
       abaJointBackward<6>(d, i, p, iv, tau);
     } else if (nv == 3) {

@@ -33,6 +33,34 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
   d.IA_W[p].noalias() -= U * Dinv * U.transpose();
 }
 
+// (body i with a 1-dof joint, IA_W[i], PA_W[i], c = C_W[i], tau_i) => U = IA s, D^-1 = 1 / s^T U,
+// u = tau_i - s^T PA, and pa = PA + Ia c + U D^-1 u, Ia = IA - U D^-1 U^T added to the parent p
+// (p = 0: none). The products IA s and IA c in one pass over IA's columns, in the order of Eigen's
+// fixed-size products (column by column, the first a product), and IA_W[p] + IA - (D^-1 U) U^T in
+// one pass over the parent's: the same doubles as the separate products and updates, without
+// reading IA and the parent's twice (Data's stores may alias them, so the compiler does not)
+inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
+  const Motion s = d.S_W.col(iv);
+  const Motion& c = d.C_W[i];
+  const Matrix6& IA = d.IA_W[i];
+  Vector6 U = IA.col(0) * s[0];
+  Vector6 IAc = IA.col(0) * c[0];
+  for (int k = 1; k < 6; ++k) {
+    U += IA.col(k) * s[k];
+    IAc += IA.col(k) * c[k];
+  }
+  const double Dinv = 1.0 / s.dot(U);
+  const double ui = tau - s.dot(d.PA_W[i]);
+  d.U[i].col(0) = U;
+  d.Dinv[i](0, 0) = Dinv;
+  d.u[i][0] = ui;
+  if (p == 0) return;
+  d.PA_W[p] += d.PA_W[i] + IAc + U * (Dinv * (ui - U.dot(c)));
+  const Vector6 DU = Dinv * U;
+  Matrix6& IAp = d.IA_W[p];
+  for (int k = 0; k < 6; ++k) IAp.col(k) = (IAp.col(k) + IA.col(k)) - DU * U[k];
+}
+
 // (body i with an NV-dof joint, a = A_W[parent] + C_W[i]) => ddq of the joint, A_W[i]
 template <int NV>
 inline void abaJointForward(Data& d, int i, int iv, const Motion& a) {
@@ -53,7 +81,8 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
                                                  const Eigen::VectorXd& v,
                                                  const Eigen::VectorXd& tau,
                                                  const ExternalForces* fext) {
-  // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W - F_ext_W
+  // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W -
+  // F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
     const int p = m.parent[i];
     if constexpr (!kPlaced) {
@@ -99,18 +128,7 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
     const int iv = m.idxV[i];
     const Motion& c = d.C_W[i];
     if (nv == 1) {
-      const Motion s = d.S_W.col(iv);
-      const Vector6 U = d.IA_W[i] * s;
-      const double Dinv = 1.0 / s.dot(U);
-      const double ui = tau[iv] - s.dot(d.PA_W[i]);
-      d.U[i].col(0) = U;
-      d.Dinv[i](0, 0) = Dinv;
-      d.u[i][0] = ui;
-      if (p == 0) continue;
-      // pa = PA + Ia c + U D^-1 u with Ia = IA - U D^-1 U^T
-      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + U * (Dinv * (ui - U.dot(c)));
-      d.IA_W[p] += d.IA_W[i];
-      d.IA_W[p].noalias() -= (Dinv * U) * U.transpose();
+      abaOneDofBackward(d, i, p, iv, tau[iv]);
     } else if (nv == 6) {
       abaJointBackward<6>(d, i, p, iv, tau);
     } else if (nv == 3) {
@@ -123,7 +141,8 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.Dinv[i] = (S.transpose() * d.U[i]).inverse();
       d.u[i].noalias() = tau.segment(iv, nv) - S.transpose() * d.PA_W[i];
       if (p == 0) continue;
-      const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * c);
+      const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w =
+          d.Dinv[i] * (d.u[i] - d.U[i].transpose() * c);
       d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + d.U[i] * w;
       d.IA_W[p] += d.IA_W[i];
       d.IA_W[p].noalias() -= d.U[i] * d.Dinv[i] * d.U[i].transpose();
@@ -163,8 +182,9 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
 
 }  // namespace
 
-const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& tau, const ExternalForces* fext) {
+const Eigen::VectorXd& aba(const Model& m, Data& d, const Eigen::VectorXd& q,
+                           const Eigen::VectorXd& v, const Eigen::VectorXd& tau,
+                           const ExternalForces* fext) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &tau, "aba");
   return abaPasses<false>(m, d, q, v, tau, fext);
 }

@@ -37,7 +37,8 @@ TEST_CASE("reserve keeps the elements and takes no block while they fit") {
   for (int i = 0; i < 100; ++i) CHECK(v[static_cast<std::uint32_t>(i)] == i + 1);
 }
 
-TEST_CASE("the inline elements share their bytes with the heap pointer; clear keeps the block") {
+TEST_CASE(
+    "the inline elements share their bytes with the heap pointer, and clear keeps the block") {
   CHECK(sizeof(SmallVector<void*, 1>) == 16);
   CHECK(sizeof(SmallVector<void*, 2>) == 24);
   SmallVector<int, 2> v;

@@ -1,5 +1,7 @@
 #include "devs/coupled.hpp"
 
+#include <cstring>
+
 #include "devs/type_name.hpp"
 
 namespace yardsim::devs {
@@ -13,11 +15,35 @@ std::string describe(const PortBase& p) {
 }  // namespace
 
 namespace {
-// (name) => its 64-bit FNV-1a hash
+// (name) => a 64-bit hash, eight bytes at a time (names are short: one or two words)
 std::uint64_t nameHash(std::string_view name) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (const char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
-  return h;
+  constexpr std::uint64_t k = 0x9e3779b97f4a7c15ull;
+  std::uint64_t h = k ^ name.size();
+  const char* p = name.data();
+  std::size_t n = name.size();
+  for (; n >= 8; n -= 8, p += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, p, 8);
+    h = (h ^ w) * k;
+    h ^= h >> 32;
+  }
+  if (n > 0) {
+    std::uint64_t w = 0;
+    std::memcpy(&w, p, n);
+    h = (h ^ w) * k;
+  }
+  h ^= h >> 29;
+  h *= 0xbf58476d1ce4e5b9ull;
+  return h ^ (h >> 32);
+}
+
+// (name index, position i, its name's hash) => i in the first free slot from the hash on
+void place(std::vector<std::uint32_t>& index, std::uint32_t i, std::uint64_t hash) {
+  const std::size_t mask = index.size() / 2 - 1;
+  std::size_t s = hash & mask;
+  while (index[2 * s] != 0) s = (s + 1) & mask;
+  index[2 * s] = i + 1;
+  index[2 * s + 1] = static_cast<std::uint32_t>(hash);
 }
 }  // namespace
 
@@ -37,33 +63,41 @@ Model& Coupled::addComponent(std::unique_ptr<Model> model) {
   return *components_.back();
 }
 
+// index_ holds slots of two entries: the component's position + 1 (0: an empty slot) and the low
+// 32 bits of its name's hash, so a probe compares names only when the hashes agree and a
+// rebuilt table re-inserts without hashing the names again.
 Model* Coupled::find(std::string_view name, std::uint64_t hash) const {
   if (index_.empty()) {
     for (const auto& c : components_)
       if (c->name() == name) return c.get();
     return nullptr;
   }
-  const std::size_t mask = index_.size() - 1;
+  const std::size_t mask = index_.size() / 2 - 1;
+  const auto low = static_cast<std::uint32_t>(hash);
   for (std::size_t s = hash & mask;; s = (s + 1) & mask) {
-    const std::uint32_t k = index_[s];
+    const std::uint32_t k = index_[2 * s];
     if (k == 0) return nullptr;
+    if (index_[2 * s + 1] != low) continue;
     Model* m = components_[k - 1].get();
     if (m->name() == name) return m;
   }
 }
 
 void Coupled::index(std::uint32_t i, std::uint64_t hash) {
-  // (components) => a table at most half full; all of them re-inserted when it grows
-  if (2 * components_.size() > index_.size()) {
-    std::size_t size = 4 * kLinearNames;
-    while (size < 4 * components_.size()) size *= 2;
-    index_.assign(size, 0);
-    for (std::uint32_t j = 0; j < i; ++j) index(j, nameHash(components_[j]->name()));
+  // (components) => a table at most half full, at least a quarter; rebuilt when it grows
+  if (2 * components_.size() > index_.size() / 2) {
+    std::size_t slots = 4 * kLinearNames;
+    while (slots < 2 * components_.size()) slots *= 2;
+    std::vector<std::uint32_t> old(std::move(index_));
+    index_.assign(2 * slots, 0);
+    if (old.empty()) {
+      for (std::uint32_t j = 0; j < i; ++j) place(index_, j, nameHash(components_[j]->name()));
+    } else {
+      for (std::size_t s = 0; s < old.size(); s += 2)
+        if (old[s] != 0) place(index_, old[s] - 1, old[s + 1]);
+    }
   }
-  const std::size_t mask = index_.size() - 1;
-  std::size_t s = hash & mask;
-  while (index_[s] != 0) s = (s + 1) & mask;
-  index_[s] = i + 1;
+  place(index_, i, hash);
 }
 
 Model* Coupled::findComponent(std::string_view name) const {

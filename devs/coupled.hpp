@@ -47,8 +47,9 @@ class Coupled : public Model {
 
   std::vector<std::unique_ptr<Model>> components_;
   // Name index over components_, built once there are more than kLinearNames of them: open
-  // addressing, a power-of-two table of (position + 1), 0 for an empty slot. One array, so
-  // adding a component takes no heap block of its own.
+  // addressing, a power-of-two number of slots of two entries: (position + 1, 0 for an empty
+  // slot) and the low 32 bits of the name's hash. One array, so adding a component takes no heap
+  // block of its own.
   static constexpr std::size_t kLinearNames = 8;
   std::vector<std::uint32_t> index_;
   std::size_t couplings_ = 0;

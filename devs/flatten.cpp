@@ -6,8 +6,28 @@ namespace yardsim::devs {
 
 FlatModel flatten(Model& root) {
   FlatModel flat;
-  // (hierarchy) => atomics in depth-first order
+  // (hierarchy) => how many atomics and atomic output ports: every list below takes one block of
+  // its final size (a list that doubles its way up touches twice its size in fresh pages)
+  std::size_t atomics = 0, outPorts = 0;
   std::vector<Model*> stack{&root};
+  while (!stack.empty()) {
+    Model* m = stack.back();
+    stack.pop_back();
+    if (m->isAtomic()) {
+      ++atomics;
+      outPorts += m->outPorts().size();
+    } else {
+      for (const auto& child : static_cast<Coupled*>(m)->components()) stack.push_back(child.get());
+    }
+  }
+  flat.atomics.reserve(atomics);
+  flat.outBegin.reserve(atomics + 1);
+  flat.outPorts.reserve(outPorts);
+  flat.destBegin.reserve(outPorts + 1);
+  flat.dests.reserve(outPorts);  // a guess: one destination per output port
+
+  // (hierarchy) => atomics in depth-first order
+  stack.push_back(&root);
   while (!stack.empty()) {
     Model* m = stack.back();
     stack.pop_back();
@@ -22,7 +42,6 @@ FlatModel flatten(Model& root) {
 
   // (atomic output ports, couplings) => atomic input ports reached through any depth
   std::vector<PortBase*> frontier;
-  flat.outBegin.reserve(flat.atomics.size() + 1);
   for (AtomicBase* a : flat.atomics) {
     flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
     for (PortBase* out : a->outPorts()) {

@@ -1,6 +1,9 @@
 #include "devs/model.hpp"
 
+#include <array>
+
 #include "devs/coupled.hpp"
+#include "devs/model_arena.hpp"
 
 namespace yardsim::devs {
 
@@ -9,28 +12,45 @@ namespace {
 constexpr bool forbidden(unsigned char c) {
   return c == '.' || c == ' ' || c == '\t' || c == '\n' || c == '"';
 }
-// The same as one 64-bit mask over the bytes below 64 (all the forbidden ones are).
-constexpr std::uint64_t kForbiddenMask = [] {
-  std::uint64_t m = 0;
-  for (unsigned c = 0; c < 64; ++c)
-    if (forbidden(static_cast<unsigned char>(c))) m |= std::uint64_t{1} << c;
-  return m;
+// The same as a table over every byte value.
+constexpr auto kForbidden = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (unsigned c = 0; c < 256; ++c) t[c] = forbidden(static_cast<unsigned char>(c)) ? 1 : 0;
+  return t;
 }();
+
+// (a name checkName refuses) => the ModelError saying why; kept out of checkName, whose loop
+// then stays a few instructions per byte
+[[noreturn, gnu::noinline, gnu::cold]] void refuseName(std::string_view name,
+                                                       std::string_view what) {
+  if (name.empty()) throw ModelError(std::string(what) + " name must not be empty");
+  char bad = name.front();
+  for (const char c : name)
+    if (forbidden(static_cast<unsigned char>(c))) {
+      bad = c;
+      break;
+    }
+  throw ModelError(std::string(what) + " name '" + std::string(name) + "' contains '" +
+                   std::string(1, bad) + "'; names may not contain dots, quotes or white space");
+}
 }  // namespace
 
 void checkName(std::string_view name, std::string_view what) {
-  if (name.empty()) throw ModelError(std::string(what) + " name must not be empty");
-  for (char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 64 && ((kForbiddenMask >> u) & 1)) {
-      throw ModelError(std::string(what) + " name '" + std::string(name) + "' contains '" +
-                       std::string(1, c) + "'; names may not contain dots, quotes or white space");
-    }
-  }
+  if (name.empty()) refuseName(name, what);
+  for (const char c : name)
+    if (kForbidden[static_cast<unsigned char>(c)]) refuseName(name, what);
 }
 
 std::string PortBase::path() const {
   return owner_->path() + "." + name_;
+}
+
+void* Model::operator new(std::size_t size) {
+  return ModelArena::allocate(size);
+}
+
+void Model::operator delete(void* block, std::size_t size) noexcept {
+  ModelArena::release(block, size);
 }
 
 Model::Model(std::string name) : name_(std::move(name)) {

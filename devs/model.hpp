@@ -29,6 +29,19 @@ class Model {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
+  // Models live in slabs (devs/model_arena.hpp): (size) => a block for a model of that size;
+  // (block, the same size) => freed. Over-aligned model types go to the global heap.
+  static void* operator new(std::size_t size);
+  static void operator delete(void* block, std::size_t size) noexcept;
+  static void* operator new(std::size_t size, std::align_val_t align) {
+    return ::operator new(size, align);
+  }
+  static void operator delete(void* block, std::size_t size, std::align_val_t align) noexcept {
+    ::operator delete(block, size, align);
+  }
+  static void* operator new(std::size_t, void* at) noexcept { return at; }
+  static void operator delete(void*, void*) noexcept {}
+
   const std::string& name() const { return name_; }
   // () => full dot-separated path from the root, e.g. "gpt.ef.genr" (cached); a root whose
   // name is hidden (a scene) does not appear in its descendants' paths: "ef.genr"
@@ -71,9 +84,9 @@ class Model {
     ports_.reserve(ports_.size() + 1);
     const std::size_t from = (portStoreUsed_ + alignof(P) - 1) / alignof(P) * alignof(P);
     P* port;
-    if (alignof(P) <= alignof(std::max_align_t) && from + sizeof(P) <= kPortStoreBytes) {
+    if (alignof(P) <= alignof(PortBase*) && from + sizeof(P) <= kPortStoreBytes) {
       port = ::new (static_cast<void*>(portStore_ + from)) P(*this, std::move(name));
-      portStoreUsed_ = static_cast<std::uint32_t>(from + sizeof(P));
+      portStoreUsed_ = static_cast<std::uint16_t>(from + sizeof(P));
     } else {
       port = new P(*this, std::move(name));
     }
@@ -97,12 +110,12 @@ class Model {
   mutable std::unique_ptr<PathCache> path_;  // made when a path is first asked for
   Coupled* parent_ = nullptr;
   bool hidden_ = false;
-  std::uint32_t portStoreUsed_ = 0;  // bytes of portStore_ taken
+  std::uint16_t portStoreUsed_ = 0;  // bytes of portStore_ taken
   std::uint32_t nIn_ = 0;            // ports_[0, nIn_) are inputs, the rest outputs
   SmallVector<PortBase*, 2> ports_;
   // Room for two ports of small value types (an atomic's in and out) inside the model.
-  static constexpr std::size_t kPortStoreBytes = 224;
-  alignas(std::max_align_t) std::byte portStore_[kPortStoreBytes];
+  static constexpr std::size_t kPortStoreBytes = 2 * sizeof(InPort<double>);
+  alignas(PortBase*) std::byte portStore_[kPortStoreBytes];
 };
 
 // (name) => throws ModelError unless it is a valid model or port name (non-empty, no '.')

@@ -4,8 +4,11 @@
 // steady state a message costs a copy and no heap allocation (bags keep their capacity).
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
@@ -20,8 +23,8 @@ class Coupled;
 
 class PortBase {
  public:
-  PortBase(Model& owner, std::string&& name, bool isInput, const std::type_info& type)
-      : isInput_(isInput), owner_(&owner), name_(std::move(name)), type_(&type) {}
+  PortBase(Model& owner, std::string&& name, bool isInput)
+      : isInput_(isInput), owner_(&owner), name_(std::move(name)) {}
   virtual ~PortBase() = default;
   PortBase(const PortBase&) = delete;
   PortBase& operator=(const PortBase&) = delete;
@@ -29,7 +32,7 @@ class PortBase {
   const std::string& name() const { return name_; }
   Model& owner() const { return *owner_; }
   bool isInput() const { return isInput_; }
-  const std::type_info& type() const { return *type_; }
+  virtual const std::type_info& type() const = 0;
   // () => "<owner path>.<port name>"
   std::string path() const;
 
@@ -46,44 +49,111 @@ class PortBase {
   std::span<PortBase* const> links() const { return links_.span(); }
 
  protected:
-  std::uint32_t count_ = 0;  // messages in the bag
+  std::uint32_t count_ = 0;             // messages in the bag
+  std::uint32_t bagCapacity_ : 31 = 0;  // an inline bag's capacity (Port<T>)
+  std::uint32_t isInput_ : 1;
 
  private:
   friend class Coupled;
-  bool isInput_;  // packed with count_
   Model* owner_;
   std::string name_;
-  const std::type_info* type_;
   SmallVector<PortBase*, 1> links_;  // most atomic ports have at most one coupling
+};
+
+// Whether a port's bag of T keeps its first messages inside the port, in the bytes of the heap
+// pointer it has once it grows (small trivially copyable values: a port's first message then
+// takes no heap block); other value types keep their bag in a std::vector.
+template <class T>
+constexpr bool inlineBag() {
+  if (sizeof(T) > sizeof(T*) || alignof(T) > alignof(T*)) return false;
+  if (!std::is_trivially_copyable_v<T>) return false;
+  return std::is_trivially_default_constructible_v<T>;
+}
+template <class T>
+inline constexpr bool kInlineBag = inlineBag<T>();
+
+template <class T, bool = kInlineBag<T>>
+struct BagStorage {
+  std::vector<T> values;
+};
+template <class T>
+struct BagStorage<T, true> {
+  static constexpr std::uint32_t kInline = sizeof(T*) / sizeof(T);
+  union {
+    T inside[kInline]{};  // while the capacity is kInline
+    T* heap;              // once it is larger
+  };
 };
 
 template <class T>
 class Port : public PortBase {
  public:
   using value_type = T;
-  Port(Model& owner, std::string&& name, bool isInput)
-      : PortBase(owner, std::move(name), isInput, typeid(T)) {}
+  Port(Model& owner, std::string&& name, bool isInput) : PortBase(owner, std::move(name), isInput) {
+    if constexpr (kInlineBag<T>) bagCapacity_ = BagStorage<T>::kInline;
+  }
+  ~Port() override {
+    if constexpr (kInlineBag<T>)
+      if (onHeap()) std::allocator<T>().deallocate(bag_.heap, bagCapacity_);
+  }
 
-  const std::vector<T>& values() const { return bag_; }
+  const std::type_info& type() const final { return typeid(T); }
+  // () => the messages of this event time
+  std::span<const T> values() const { return {data(), count_}; }
 
   void clear() final {
-    bag_.clear();
+    if constexpr (!kInlineBag<T>) bag_.values.clear();
     count_ = 0;
   }
   void appendTo(PortBase& dst) const final {
     auto& to = static_cast<Port<T>&>(dst);  // flatten checked the types
-    if (bag_.size() == 1)
-      to.bag_.push_back(bag_.front());  // the common case, without a range insert's memmove
-    else
-      to.bag_.insert(to.bag_.end(), bag_.begin(), bag_.end());
-    to.count_ = static_cast<std::uint32_t>(to.bag_.size());
+    if constexpr (kInlineBag<T>) {
+      const T* from = data();
+      for (std::uint32_t i = 0; i < count_; ++i) to.push(from[i]);
+    } else {
+      if (count_ == 1)
+        to.bag_.values.push_back(bag_.values.front());  // without a range insert's memmove
+      else
+        to.bag_.values.insert(to.bag_.values.end(), bag_.values.begin(), bag_.values.end());
+      to.count_ = static_cast<std::uint32_t>(to.bag_.values.size());
+    }
   }
   void writeValue(std::string& out, std::size_t i) const final {
-    TraceFormat<T>::write(out, bag_[i]);
+    TraceFormat<T>::write(out, data()[i]);
   }
 
  protected:
-  std::vector<T> bag_;
+  // (value) => appended to the bag
+  template <class V>
+  void push(V&& value) {
+    if constexpr (kInlineBag<T>) {
+      if (count_ == bagCapacity_) grow();
+      (onHeap() ? bag_.heap : bag_.inside)[count_++] = value;
+    } else {
+      bag_.values.push_back(std::forward<V>(value));
+      ++count_;
+    }
+  }
+
+ private:
+  bool onHeap() const { return bagCapacity_ > BagStorage<T>::kInline; }
+  const T* data() const {
+    if constexpr (kInlineBag<T>)
+      return onHeap() ? bag_.heap : bag_.inside;
+    else
+      return bag_.values.data();
+  }
+  // (full inline bag) => its messages moved to a heap block of twice the capacity
+  void grow() {
+    const std::uint32_t cap = 2 * bagCapacity_;
+    T* fresh = std::allocator<T>().allocate(cap);
+    std::memcpy(static_cast<void*>(fresh), data(), count_ * sizeof(T));
+    if (onHeap()) std::allocator<T>().deallocate(bag_.heap, bagCapacity_);
+    bag_.heap = fresh;
+    bagCapacity_ = cap & 0x7fffffffu;
+  }
+
+  BagStorage<T> bag_;
 };
 
 template <class T>
@@ -97,14 +167,8 @@ class OutPort final : public Port<T> {
  public:
   OutPort(Model& owner, std::string&& name) : Port<T>(owner, std::move(name), false) {}
   // (value) => appended to this event time's output bag; call only from an output function
-  void add(const T& value) {
-    this->bag_.push_back(value);
-    ++this->count_;
-  }
-  void add(T&& value) {
-    this->bag_.push_back(std::move(value));
-    ++this->count_;
-  }
+  void add(const T& value) { this->push(value); }
+  void add(T&& value) { this->push(std::move(value)); }
 };
 
 }  // namespace yardsim::devs

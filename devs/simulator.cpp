@@ -22,14 +22,16 @@ Simulator::Simulator(Model& root, Time t0) : flat_(flatten(root)), t_(t0) {
   }
 }
 
-void Simulator::addListener(Listener& listener) { listeners_.push_back(&listener); }
+void Simulator::addListener(Listener& listener) {
+  listeners_.push_back(&listener);
+}
 
 void Simulator::reschedule(std::uint32_t i, Time t) {
   const Time tn = flat_.atomics[i]->nextEventTime(t);
   if (!(tn >= t)) {
     throw SimulationError("model '" + flat_.atomics[i]->path() + "' scheduled its next event at " +
-                          std::to_string(tn) + " s, before the current time " +
-                          std::to_string(t) + " s; a time advance must be >= 0 (or infinity)");
+                          std::to_string(tn) + " s, before the current time " + std::to_string(t) +
+                          " s; a time advance must be >= 0 (or infinity)");
   }
   tl_[i] = t;
   queue_.schedule(i, tn);
@@ -62,10 +64,11 @@ void Simulator::countInstant(Time t, std::size_t transitions) {
     if (named++ >= 5) break;
     who += (who.empty() ? "'" : ", '") + flat_.atomics[r]->path() + "'";
   }
-  throw SimulationError("more than " + std::to_string(instantLimit_) + " transitions at t = " + std::to_string(t) +
-                        " s without time advancing: the models " + who +
-                        " keep scheduling events at the same time (a zero time advance in a loop); "
-                        "suggestion: give them a time advance > 0, or raise --max-transitions-per-instant");
+  throw SimulationError(
+      "more than " + std::to_string(instantLimit_) + " transitions at t = " + std::to_string(t) +
+      " s without time advancing: the models " + who +
+      " keep scheduling events at the same time (a zero time advance in a loop); "
+      "suggestion: give them a time advance > 0, or raise --max-transitions-per-instant");
 }
 
 bool Simulator::step() {
@@ -96,7 +99,7 @@ bool Simulator::step() {
         for (Listener* l : listeners_) l->onOutput(t, *a, *out);
       for (std::uint32_t k = flat_.destBegin[j]; k < flat_.destBegin[j + 1]; ++k) {
         const FlatModel::Destination& d = flat_.dests[k];
-        if (d.port->empty()) filled_.push_back(d.port);
+        if (traced && d.port->empty()) filled_.push_back(d.port);
         out->appendTo(*d.port);
         stats_.messages += out->size();
         if (!(flags_[d.atomic] & kHasInput)) {
@@ -108,16 +111,19 @@ bool Simulator::step() {
   }
   if (traced)
     for (PortBase* p : filled_)
-      for (Listener* l : listeners_)
-        l->onInput(t, static_cast<const AtomicBase&>(p->owner()), *p);
+      for (Listener* l : listeners_) l->onInput(t, static_cast<const AtomicBase&>(p->owner()), *p);
 
-  // (inputs, states) => internal, confluent and external transitions
+  // (inputs, states) => internal, confluent and external transitions; each atomic's bags
+  // cleared and the atomic rescheduled right after its own transition (imminent ones first,
+  // then receivers, each in order: the queue sees the same operations in the same order as
+  // when all transitions come first), so an atomic is visited once here
   if (instantLimit_ > 0) countInstant(t, imminent_.size() + receivers_.size());
   for (const std::uint32_t i : imminent_) {
     AtomicBase* a = flat_.atomics[i];
     const Time e = t - tl_[i];
     Transition kind;
-    if (flags_[i] & kHasInput) {
+    const bool input = flags_[i] & kHasInput;
+    if (input) {
       a->deltaConf(e);
       kind = Transition::Confluent;
       ++stats_.confluent;
@@ -131,6 +137,11 @@ bool Simulator::step() {
         l->onTransition(t, *a, kind, e);
         l->onState(t, *a);
       }
+    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
+      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
+    if (input) clearInputs(*a);
+    flags_[i] = 0;
+    reschedule(i, t);
   }
   for (const std::uint32_t r : receivers_) {
     AtomicBase* a = flat_.atomics[r];
@@ -142,22 +153,17 @@ bool Simulator::step() {
         l->onTransition(t, *a, Transition::External, e);
         l->onState(t, *a);
       }
-  }
-
-  // (transitioned atomics) => bags cleared, flags reset, rescheduled
-  for (const std::uint32_t i : imminent_) {
-    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
-      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
-    flags_[i] = 0;
-    reschedule(i, t);
-  }
-  for (const std::uint32_t r : receivers_) {
+    clearInputs(*a);
     flags_[r] = 0;
     reschedule(r, t);
   }
-  for (PortBase* p : filled_) p->clear();
   ++stats_.eventTimes;
   return true;
+}
+
+void Simulator::clearInputs(AtomicBase& a) {
+  for (PortBase* p : a.inPorts())
+    if (!p->empty()) p->clear();
 }
 
 const AtomicBase* Simulator::firstUncheckpointable() const {

@@ -73,6 +73,8 @@ class Simulator {
  private:
   void start();  // start hooks, once
   void reschedule(std::uint32_t i, Time t);
+  // (atomic after its transition) => its input bags empty
+  static void clearInputs(AtomicBase& a);
   void notifyEnd();
 
   FlatModel flat_;
@@ -81,7 +83,7 @@ class Simulator {
   std::vector<std::uint8_t> flags_;       // kImminent | kHasInput per atomic
   std::vector<std::uint32_t> imminent_;   // scratch, reused every step
   std::vector<std::uint32_t> receivers_;  // non-imminent atomics that got input
-  std::vector<PortBase*> filled_;         // input ports holding messages this step
+  std::vector<PortBase*> filled_;         // traced runs: input ports filled this step
   std::vector<Listener*> listeners_;
   SimulatorStats stats_;
   Time t_;

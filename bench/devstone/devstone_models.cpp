@@ -1,7 +1,10 @@
 #include "devstone_models.hpp"
 
+#include <charconv>
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "devs/atomic.hpp"
@@ -49,9 +52,21 @@ class Seeder final : public devs::Atomic<bool> {
   void externalTransition(bool&, Time) const override {}
 };
 
+// (prefix, numbers) => "prefix1_2": built in place, one string (no to_string temporaries)
+std::string numbered(std::string_view prefix, int a, int b = -1) {
+  char buf[64];
+  std::memcpy(buf, prefix.data(), prefix.size());
+  char* end = std::to_chars(buf + prefix.size(), buf + sizeof buf, a).ptr;
+  if (b >= 0) {
+    *end++ = '_';
+    end = std::to_chars(end, buf + sizeof buf, b).ptr;
+  }
+  return std::string(buf, end);
+}
+
 // (variant, depth, width) => one level of the DEVStone structure, recursively
 std::unique_ptr<devs::Coupled> level(Variant v, int depth, int width) {
-  auto c = std::make_unique<devs::Coupled>("coupled_" + std::to_string(depth));
+  auto c = std::make_unique<devs::Coupled>(numbered("coupled_", depth));
   const bool ho = v == Variant::HO || v == Variant::HOmod;
   auto& in = c->addInPort<int>("in");
   auto* in2 = ho ? &c->addInPort<int>("in2") : nullptr;
@@ -69,13 +84,13 @@ std::unique_ptr<devs::Coupled> level(Variant v, int depth, int width) {
   c->couple(*sub.findPort("out"), out);
   if (v == Variant::HO) c->couple(in, *sub.findPort("in2"));
 
-  auto atomic = [&](const std::string& name) -> DevstoneAtomic& {
-    return c->add<DevstoneAtomic>(name);
+  auto atomic = [&](std::string name) -> DevstoneAtomic& {
+    return c->add<DevstoneAtomic>(std::move(name));
   };
   if (v != Variant::HOmod) {
     DevstoneAtomic* prev = nullptr;
     for (int i = 1; i < width; ++i) {
-      auto& a = atomic("atomic_" + std::to_string(i));
+      auto& a = atomic(numbered("atomic_", i));
       c->couple(v == Variant::HO ? *in2 : in, a.in);
       if (v == Variant::HO) c->couple(a.out, *out2);
       if (prev && v != Variant::LI) c->couple(prev->out, a.in);
@@ -89,13 +104,13 @@ std::unique_ptr<devs::Coupled> level(Variant v, int depth, int width) {
   auto& subIn2 = *sub.findPort("in2");
   std::vector<DevstoneAtomic*> prev, cur;
   for (int i = 1; i < width; ++i) {
-    auto& a = atomic("atomic_1_" + std::to_string(i));
+    auto& a = atomic(numbered("atomic_1_", i));
     c->couple(*in2, a.in);
     c->couple(a.out, subIn2);
     prev.push_back(&a);
   }
   for (int i = 1; i < width; ++i) {
-    auto& a = atomic("atomic_2_" + std::to_string(i));
+    auto& a = atomic(numbered("atomic_2_", i));
     if (i == 1) c->couple(*in2, a.in);
     for (DevstoneAtomic* p : prev) c->couple(a.out, p->in);
     cur.push_back(&a);
@@ -104,7 +119,7 @@ std::unique_ptr<devs::Coupled> level(Variant v, int depth, int width) {
     prev.swap(cur);
     cur.clear();
     for (std::size_t i = 1; i < prev.size(); ++i) {
-      auto& a = atomic("atomic_" + std::to_string(row) + "_" + std::to_string(i));
+      auto& a = atomic(numbered("atomic_", row, static_cast<int>(i)));
       if (i == 1) c->couple(*in2, a.in);
       c->couple(a.out, prev[i]->in);
       cur.push_back(&a);

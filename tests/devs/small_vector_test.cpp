@@ -36,3 +36,23 @@ TEST_CASE("reserve keeps the elements and takes no block while they fit") {
   CHECK(v.data() == grown);
   for (int i = 0; i < 100; ++i) CHECK(v[static_cast<std::uint32_t>(i)] == i + 1);
 }
+
+TEST_CASE(
+    "the inline elements share their bytes with the heap pointer, and clear keeps the block") {
+  CHECK(sizeof(SmallVector<void*, 1>) == 16);
+  CHECK(sizeof(SmallVector<void*, 2>) == 24);
+  SmallVector<int, 2> v;
+  v.push_back(1);
+  v.push_back(2);
+  CHECK(v.capacity() == 2);
+  v.push_back(3);  // moved to a block of 4
+  CHECK(v.capacity() == 4);
+  const int* block = v.data();
+  v.clear();
+  CHECK(v.empty());
+  for (int i = 0; i < 4; ++i) v.push_back(10 + i);
+  CHECK(v.data() == block);
+  v.insert(0, 9);
+  REQUIRE(v.size() == 5);
+  for (std::uint32_t i = 0; i < 5; ++i) CHECK(v[i] == static_cast<int>(9 + i));
+}

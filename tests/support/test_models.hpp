@@ -73,13 +73,13 @@ class Collector final : public devs::Atomic<CollectorState> {
   void externalTransition(CollectorState& s, Time e) const override {
     s.clock += e;
     s.sigma -= e;
-    s.bags.push_back({s.clock, in.values()});
+    s.bags.push_back({s.clock, {in.values().begin(), in.values().end()}});
     ++s.external;
   }
   void confluentTransition(CollectorState& s, Time e) const override {
     s.clock += e;
     s.sigma = period_;
-    s.bags.push_back({s.clock, in.values()});
+    s.bags.push_back({s.clock, {in.values().begin(), in.values().end()}});
     ++s.confluent;
     s.lastConfluentE = e;
   }

@@ -1,0 +1,116 @@
+#include "devs/model_arena.hpp"
+
+#include <sys/mman.h>
+
+#include <atomic>
+#include <cstdint>
+#include <new>
+
+namespace yardsim::devs {
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSlabs = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSlabs = false;
+#else
+constexpr bool kSlabs = true;
+#endif
+#else
+constexpr bool kSlabs = true;
+#endif
+
+// A slab's first bytes. balance = blocks credited by the owning thread when it moved on, minus
+// blocks released: it reaches 0 exactly once, after the move and the last release, in whichever
+// of the two comes last, and that one unmaps the slab. While the slab is current the owner
+// counts its blocks in a plain integer (no atomic operation per model).
+struct alignas(ModelArena::kAlign) Slab {
+  std::atomic<std::int64_t> balance{0};
+};
+constexpr std::size_t kHeader = (sizeof(Slab) + ModelArena::kAlign - 1) & ~(ModelArena::kAlign - 1);
+
+std::atomic<std::size_t> heldSlabs{0};
+
+// () => a fresh slab aligned to its size, one huge page where the kernel grants it
+Slab* mapSlab() {
+  constexpr std::size_t n = ModelArena::kSlabBytes;
+  void* raw = mmap(nullptr, 2 * n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  // (2n bytes) => the n-aligned n bytes inside kept, the rest unmapped
+  const auto at = reinterpret_cast<std::uintptr_t>(raw);
+  const std::uintptr_t start = (at + n - 1) & ~(n - 1);
+  if (start > at) munmap(raw, start - at);
+  if (start + n < at + 2 * n) munmap(reinterpret_cast<void*>(start + n), at + 2 * n - start - n);
+  void* slab = reinterpret_cast<void*>(start);
+#ifdef MADV_HUGEPAGE
+  madvise(slab, n, MADV_HUGEPAGE);
+#endif
+  heldSlabs.fetch_add(1, std::memory_order_relaxed);
+  return ::new (slab) Slab;
+}
+
+void unmapSlab(Slab* slab) {
+  slab->~Slab();
+  munmap(slab, ModelArena::kSlabBytes);
+  heldSlabs.fetch_sub(1, std::memory_order_relaxed);
+}
+
+// (slab, blocks it handed out) => the owner's credit; unmapped when they are all released
+void retire(Slab* slab, std::int64_t blocks) {
+  if (slab->balance.fetch_add(blocks, std::memory_order_acq_rel) + blocks == 0) unmapSlab(slab);
+}
+
+// The calling thread's current slab.
+struct Current {
+  Slab* slab = nullptr;
+  std::size_t used = 0;     // bytes taken, header included
+  std::int64_t blocks = 0;  // blocks handed out
+  ~Current() {
+    if (slab) retire(slab, blocks);
+    slab = nullptr;
+  }
+};
+// initial-exec: the library is linked, not opened with dlopen, so the slab is found without a
+// call to __tls_get_addr per model
+[[gnu::tls_model("initial-exec")]] thread_local Current current;
+
+}  // namespace
+
+void* ModelArena::allocate(std::size_t size) {
+  size = (size + kAlign - 1) & ~(kAlign - 1);
+  if (!kSlabs || size > kLargest) return ::operator new(size);
+  Current& c = current;
+  if (!c.slab || c.used + size > kSlabBytes) {
+    Slab* fresh = mapSlab();
+    if (c.slab) retire(c.slab, c.blocks);
+    c.slab = fresh;
+    c.used = kHeader;
+    c.blocks = 0;
+  }
+  void* block = reinterpret_cast<std::byte*>(c.slab) + c.used;
+  c.used += size;
+  ++c.blocks;
+  return block;
+}
+
+void ModelArena::release(void* block, std::size_t size) noexcept {
+  if (!block) return;
+  size = (size + kAlign - 1) & ~(kAlign - 1);
+  if (!kSlabs || size > kLargest) {
+    ::operator delete(block, size);
+    return;
+  }
+  auto* slab = reinterpret_cast<Slab*>(reinterpret_cast<std::uintptr_t>(block) & ~(kSlabBytes - 1));
+  if (slab->balance.fetch_sub(1, std::memory_order_acq_rel) == 1) unmapSlab(slab);
+}
+
+std::size_t ModelArena::slabsHeld() {
+  return heldSlabs.load(std::memory_order_relaxed);
+}
+
+bool ModelArena::usesSlabs() {
+  return kSlabs;
+}
+
+}  // namespace yardsim::devs

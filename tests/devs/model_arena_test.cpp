@@ -1,0 +1,90 @@
+#include "devs/model_arena.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "devs/coupled.hpp"
+#include "support/test_models.hpp"
+
+using yardsim::devs::ModelArena;
+
+namespace {
+// (block) => its slab, as the arena finds it
+std::uintptr_t slabOf(const void* p) {
+  return reinterpret_cast<std::uintptr_t>(p) & ~(ModelArena::kSlabBytes - 1);
+}
+}  // namespace
+
+TEST_CASE("arena blocks are aligned, apart, and side by side in one slab") {
+  std::vector<std::byte*> blocks;
+  for (std::size_t size : {1, 24, 296, 17, 304, 1000}) {
+    auto* p = static_cast<std::byte*>(ModelArena::allocate(size));
+    CHECK(reinterpret_cast<std::uintptr_t>(p) % ModelArena::kAlign == 0);
+    std::memset(p, 0xab, size);
+    blocks.push_back(p);
+  }
+  if (ModelArena::usesSlabs()) {
+    // (consecutive blocks) => the next one starts where the previous one's rounded size ends,
+    // unless the slab was full and the next one opened a new slab
+    const std::size_t sizes[] = {16, 32, 304, 32, 304};
+    for (std::size_t i = 0; i + 1 < blocks.size(); ++i)
+      if (slabOf(blocks[i]) == slabOf(blocks[i + 1]))
+        CHECK(blocks[i + 1] - blocks[i] == static_cast<std::ptrdiff_t>(sizes[i]));
+  }
+  const std::size_t sizes[] = {1, 24, 296, 17, 304, 1000};
+  for (std::size_t i = 0; i < blocks.size(); ++i) ModelArena::release(blocks[i], sizes[i]);
+}
+
+TEST_CASE("a slab goes back to the system after the thread moved on and its blocks are freed") {
+  if (!ModelArena::usesSlabs()) return;
+  const std::size_t before = ModelArena::slabsHeld();
+  // (blocks filling three slabs) => at least two more slabs held while they live
+  constexpr std::size_t size = 4096;
+  std::vector<void*> blocks;
+  for (std::size_t i = 0; i < 3 * ModelArena::kSlabBytes / size; ++i)
+    blocks.push_back(ModelArena::allocate(size));
+  CHECK(ModelArena::slabsHeld() >= before + 2);
+  CHECK(slabOf(blocks.front()) != slabOf(blocks.back()));
+  for (void* p : blocks) ModelArena::release(p, size);
+  // the current slab stays with this thread; every slab it left is unmapped
+  CHECK(ModelArena::slabsHeld() <= before + 1);
+}
+
+TEST_CASE("blocks freed by another thread, and a thread's slab released when it ends") {
+  if (!ModelArena::usesSlabs()) return;
+  const std::size_t before = ModelArena::slabsHeld();
+  std::vector<void*> blocks;
+  std::thread maker([&] {
+    for (int i = 0; i < 100; ++i) blocks.push_back(ModelArena::allocate(200));
+  });
+  maker.join();
+  CHECK(ModelArena::slabsHeld() == before + 1);  // the ended thread's slab, still in use
+  for (void* p : blocks) ModelArena::release(p, 200);
+  CHECK(ModelArena::slabsHeld() == before);
+}
+
+TEST_CASE("large blocks come from the global heap") {
+  void* small = ModelArena::allocate(16);
+  const std::size_t before = ModelArena::slabsHeld();
+  void* large = ModelArena::allocate(ModelArena::kLargest + 1);
+  CHECK(ModelArena::slabsHeld() == before);  // no slab opened for it
+  if (ModelArena::usesSlabs()) CHECK(slabOf(large) != slabOf(small));
+  ModelArena::release(large, ModelArena::kLargest + 1);
+  ModelArena::release(small, 16);
+}
+
+TEST_CASE("models are built in the arena and freed with it") {
+  if (!ModelArena::usesSlabs()) return;
+  auto root = std::make_unique<yardsim::devs::Coupled>("root");
+  auto& a = root->add<yardsim::testing::Emitter>("a", std::vector<yardsim::devs::Time>{1.0});
+  auto& b = root->add<yardsim::testing::Emitter>("b", std::vector<yardsim::devs::Time>{2.0});
+  // (two models added one after the other) => in one slab, b right after a
+  CHECK(slabOf(&a) == slabOf(&b));
+  CHECK(reinterpret_cast<std::byte*>(&b) - reinterpret_cast<std::byte*>(&a) ==
+        static_cast<std::ptrdiff_t>((sizeof(a) + 15) / 16 * 16));
+  root.reset();  // every model released, no crash
+}

@@ -36,8 +36,8 @@ class Model {
   static void* operator new(std::size_t size, std::align_val_t align) {
     return ::operator new(size, align);
   }
-  static void operator delete(void* block, std::size_t size, std::align_val_t align) noexcept {
-    ::operator delete(block, size, align);
+  static void operator delete(void* block, std::size_t, std::align_val_t align) noexcept {
+    ::operator delete(block, align);  // unsized: clang has no sized deallocation by default
   }
   static void* operator new(std::size_t, void* at) noexcept { return at; }
   static void operator delete(void*, void*) noexcept {}

@@ -98,7 +98,7 @@ void ModelArena::release(void* block, std::size_t size) noexcept {
   if (!block) return;
   size = (size + kAlign - 1) & ~(kAlign - 1);
   if (!kSlabs || size > kLargest) {
-    ::operator delete(block, size);
+    ::operator delete(block);  // unsized: clang has no sized deallocation by default
     return;
   }
   auto* slab = reinterpret_cast<Slab*>(reinterpret_cast<std::uintptr_t>(block) & ~(kSlabBytes - 1));

@@ -30,6 +30,8 @@
 
 namespace yardsim::forces {
 
+class Winch;
+
 // A provider's scratch: what it writes while it is evaluated. Owned by the caller.
 class ProviderScratch {
  public:
@@ -87,6 +89,10 @@ class ForceProvider {
   virtual bool switches() const { return false; }
   // (stage) => a signature of the branches in force at the stage (equal: the same branches)
   std::uint64_t regime(const Stage& s) const { return doRegime(s); }
+  // () => the winch that sets this provider's unstretched length (a crane rope with mass), which
+  // takes payout set-points between steps (never during one); null by default. The massless
+  // ropes' winches are forces::Rope::winch().
+  virtual Winch* payoutWinch() { return nullptr; }
 
  protected:
   virtual void doEvaluate(const Stage& s, dynamics::ExternalForces& f,

@@ -4,7 +4,8 @@
 // model makes one channel `<provider>.<output>` of each, read at the committed state with the
 // provider's own scratch. ObservedProvider gives outputs to a provider that has none of its own
 // (the physics of forces/ stays free of channel concerns): it owns the provider, forwards every
-// call to it unchanged (the stage, the scratch, the energy and the power) and adds the outputs.
+// call to it unchanged (the stage, the scratch, the energy and the power, the winch) and adds the
+// outputs.
 #include <functional>
 #include <memory>
 #include <string>
@@ -44,6 +45,7 @@ class ObservedProvider final : public ForceProvider, public ProviderOutputs {
   const P& inner() const { return *inner_; }
   const std::vector<ProviderOutput>& outputs() const override { return outputs_; }
   std::unique_ptr<ProviderScratch> makeScratch() const override { return inner_->makeScratch(); }
+  Winch* payoutWinch() override { return inner_->payoutWinch(); }
 
  protected:
   // (stage with the inner provider's scratch) => its forces, unchanged

@@ -179,6 +179,9 @@ struct MechanicsSpec {
     // true: when the fragments are merged, every body with a geometry becomes an attachment
     // (the scene-level `collision:`: bodies need not be listed)
     bool everyBodyWithGeometry = false;
+    // true: the provider has a winch (ForceProvider::payoutWinch()) that a wire actor naming it
+    // drives, like a rope's (a crane rope with mass)
+    bool winch = false;
   };
   dynamics::Vector3 gravity{0.0, 0.0, -9.81};
   Settings settings;

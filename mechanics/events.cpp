@@ -96,11 +96,10 @@ EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
 
 void reportTimeEvents(const System& s, const SetPoints& sp, const Eigen::VectorXd&, double t,
                       std::vector<EventReport>& out) {
-  const auto& ropes = s.ropes();
+  const auto& winches = s.winches();
   for (std::size_t k = 0; k < sp.winches.size(); ++k)
     if (sp.winches[k].active && sp.winches[k].tEnd <= t)
-      out.push_back(
-          {ropes[k]->name(), sp.winches[k].actor, "done", ropes[k]->unstretchedLength(t)});
+      out.push_back({winches[k].name, sp.winches[k].actor, "done", winches[k].winch->length(t)});
   for (int i = 1; i < s.model().nbodies; ++i) {
     const JointDrive& j = sp.drives[static_cast<std::size_t>(i)];
     if (j.active && j.prescribed && !j.reported && j.tEnd() <= t)
@@ -113,7 +112,7 @@ double nextTimeEvent(const System& s, const SetPoints& sp, double t) {
   double next = std::numeric_limits<double>::infinity();
   for (std::size_t r = 0; r < sp.winches.size(); ++r)  // (a job's end, and its profile's breaks)
     if (const WinchJob& w = sp.winches[r]; w.active && w.tEnd > t)
-      next = std::min({next, w.tEnd, s.ropes()[r]->winch().nextBreak(t)});
+      next = std::min({next, w.tEnd, s.winches()[r].winch->nextBreak(t)});
   for (const auto& d : sp.drives)
     if (d.active && d.prescribed && !d.reported && d.tEnd() > t) next = std::min(next, d.tEnd());
   for (const auto& l : s.bodyLoads()) next = std::min(next, l->nextBreak(t));  // kinks and jumps

@@ -12,9 +12,9 @@ double startDrive(SetPoints& sp, int body, double q, double v, double target, do
   return (target >= q ? 1.0 : -1.0) * std::abs(speed) - v;
 }
 
-double startWinch(SetPoints& sp, int rope, forces::Winch& winch, double t, double amount,
+double startWinch(SetPoints& sp, int index, forces::Winch& winch, double t, double amount,
                   const forces::WinchDrive& drive, const std::string& actor) {
-  WinchJob& job = sp.winches[static_cast<std::size_t>(rope)];
+  WinchJob& job = sp.winches[static_cast<std::size_t>(index)];
   winch.dropPlannedAfter(t);
   job.active = true;
   job.tEnd = winch.setPayoutProfile(t, forces::winchProfile(amount, drive));

@@ -44,7 +44,7 @@ struct ActorLoad {
 struct SetPoints {
   std::vector<JointDrive> drives;  // per body index (its joint)
   std::vector<ActorLoad> loads;    // per body index
-  std::vector<WinchJob> winches;   // per rope
+  std::vector<WinchJob> winches;   // per winch (System::winches(): the ropes', then the others)
 };
 
 // (a drive request at t for the 1-dof joint of body i, now at q with velocity v: target, speed,
@@ -53,11 +53,11 @@ struct SetPoints {
 double startDrive(SetPoints& sp, int body, double q, double v, double target, double speed,
                   double t, const std::string& actor, bool prescribed);
 
-// (a winch request at t on rope r with its winch: change of unstretched length `amount` m
+// (a winch request at t on winch r (System::winches()): change of unstretched length `amount` m
 // (< 0 hoists) by the drive (speed, and accel/jerk limits or none)) => the profile planned on the
 // winch (replacing what was planned after t), the job in sp with its pieces; returns the time
 // the job ends, s
-double startWinch(SetPoints& sp, int rope, forces::Winch& winch, double t, double amount,
+double startWinch(SetPoints& sp, int index, forces::Winch& winch, double t, double amount,
                   const forces::WinchDrive& drive, const std::string& actor);
 
 }  // namespace yardsim::mechanics

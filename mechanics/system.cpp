@@ -91,6 +91,10 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (auto& b : bodyLoads_) providers_.push_back(b.get());
   for (auto& a : draftAddedMass_) providers_.push_back(a.get());
   for (auto& c : contributed_) providers_.push_back(c.get());
+  // (ropes, then contributed providers with a winch) => the winches actors drive, by name
+  for (auto& r : ropes_) winches_.push_back({r->name(), &r->winch()});
+  for (auto& c : contributed_)
+    if (forces::Winch* w = c->payoutWinch()) winches_.push_back({c->name(), w});
   // (contributed providers with events) => their event functions, in order
   for (auto& c : contributed_)
     if (const auto* e = dynamic_cast<const forces::ProviderEvents*>(c.get()))
@@ -106,6 +110,12 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
 int System::jointBody(const std::string& joint) const {
   for (std::size_t i = 1; i < mech_.jointNames.size(); ++i)
     if (mech_.jointNames[i] == joint) return static_cast<int>(i);
+  return -1;
+}
+
+int System::winchIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < winches_.size(); ++i)
+    if (winches_[i].name == name) return static_cast<int>(i);
   return -1;
 }
 

@@ -7,8 +7,8 @@
 // watched quantities and the joint servos' settings. Built once; the stage function (stage.hpp),
 // the energy balance (energy.hpp), the event table (events.hpp), the blow-up checks (blowup.hpp)
 // and the stiffness estimate all iterate the same list. Providers are const while they are
-// evaluated (their scratch is in mechanics::Data); the ropes' winches take payout set-points
-// between steps, so a System serves one run at a time.
+// evaluated (their scratch is in mechanics::Data); the winches (the ropes', and those of crane
+// ropes with mass) take payout set-points between steps, so a System serves one run at a time.
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +37,14 @@ struct ServoSettings {
 struct WatchRef {
   enum class Kind { Q, V, Position, Angle, Tension, Length } kind;
   int index, axis;
+};
+
+// A winch actors drive (a wire actor's payout), by the name of the rope it belongs to: a massless
+// rope's (forces::Rope::winch()) or a provider's (ForceProvider::payoutWinch(): a crane rope with
+// mass). The winch is mutable between steps, like the rope's set-points.
+struct WinchRef {
+  std::string name;
+  forces::Winch* winch;
 };
 
 class System {
@@ -78,9 +86,14 @@ class System {
   // per body: the joint-space inertia of its 1-dof joint at q0 (kg m^2 or kg), for servo gains
   const std::vector<double>& servoInertia() const { return servoInertia_; }
 
-  // (joint name) => body index, or -1; (rope name) => rope index, or -1
+  // the winches: every rope's (index r of ropes() is winch r), then the providers' with one
+  const std::vector<WinchRef>& winches() const { return winches_; }
+
+  // (joint name) => body index, or -1; (rope name) => rope index, or -1; (rope name) => winch
+  // index, or -1
   int jointBody(const std::string& joint) const;
   int ropeIndex(const std::string& rope) const;
+  int winchIndex(const std::string& rope) const;
 
  private:
   BuiltMechanics mech_;
@@ -95,6 +108,7 @@ class System {
   std::vector<forces::ForceProvider*> providers_;
   std::vector<WatchRef> watchRefs_;
   std::vector<const forces::ProviderEvent*> providerEvents_;
+  std::vector<WinchRef> winches_;
   std::vector<double> servoInertia_;
 };
 

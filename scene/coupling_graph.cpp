@@ -150,15 +150,20 @@ void checkElementReferences(Scene& scene, Diagnostics& diags) {
             }
         const std::string full = resolveName(from, ref.name, names);
         if (full.empty() && ref.kind == "rope") {
-          // (a rope with model: lumped, a provider of kind ropes) => it has no winch yet
+          // (a rope with model: lumped over a sheave, a provider of kind ropes without a
+          // winch) => refused: its rope flows over the sheave within one segment only
           std::vector<std::string> lumped;
           for (const auto& s : scene.systems)
             for (const auto& e : systemElements(*s))
               if (e.kind == "ropes") lumped.push_back(e.name);
           if (!resolveName(from, ref.name, lumped).empty()) {
-            diags.error(a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
-                        "rope '" + ref.name + "' has model: lumped, which has no winch yet; pay "
-                        "out a massless rope (docs/lines.md, crane ropes with mass)");
+            diags.error(
+                a->params.mark(ref.param), a->keyPath + ".params." + ref.param,
+                "rope '" + ref.name +
+                    "' has model: lumped over a sheave, which has no "
+                    "winch (its rope flows over the sheave within one segment only); pay out "
+                    "a lumped rope between two points or a massless rope (docs/lines.md, "
+                    "crane ropes with mass)");
             continue;
           }
         }

@@ -179,7 +179,10 @@ std::vector<ElementRef> systemElements(const MechanicalSystem& s) {
   for (const auto& c : s.spec.currentLoads) out.push_back({"current_load", c.name, ""});
   for (const auto& d : s.spec.dampers) out.push_back({"damping", d.name, ""});
   for (const auto& h : s.spec.hydrodynamics) out.push_back({"hydrodynamics", h.name, ""});
-  for (const auto& c : s.spec.providers) out.push_back({c.kind, c.name, ""});
+  for (const auto& c : s.spec.providers) {
+    out.push_back({c.kind, c.name, ""});
+    if (c.winch) out.push_back({"rope", c.name, ""});  // (a crane rope with mass) => wire actors'
+  }
   return out;
 }
 

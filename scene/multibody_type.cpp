@@ -157,6 +157,8 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
             out.push_back({"joint", b.jointName.empty() ? b.name + "_joint" : b.jointName, ""});
           }
           for (const auto& r : spec.ropes) out.push_back({"rope", r.name, ""});
+          for (const auto& c : spec.providers)  // (crane ropes with mass) => wire actors' too
+            if (c.winch) out.push_back({"rope", c.name, ""});
           for (const auto& e : spec.equalizers) out.push_back({"equalizer", e.name, ""});
           for (const auto& w : spec.watches) out.push_back({"watch", w.name, ""});
           for (const auto& h : spec.hulls) out.push_back({"hydrostatics", h.name, ""});

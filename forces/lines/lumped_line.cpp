@@ -37,8 +37,16 @@ const LumpedLineProperties& checked(const LumpedLineProperties& p, const std::st
 }  // namespace
 
 LumpedLine::LumpedLine(const LumpedLineProperties& p, std::string name, const AiryWaves* waves,
-                       const CurrentField* current)
-    : p_(checked(p, name)), name_(std::move(name)), waves_(waves), current_(current) {
+                       const CurrentField* current, std::shared_ptr<const Winch> winch)
+    : p_(checked(p, name)),
+      name_(std::move(name)),
+      waves_(waves),
+      current_(current),
+      winch_(std::move(winch)) {
+  if (winch_ && winch_->history().front().l0 != p_.length)
+    throw std::invalid_argument("lumped line '" + name_ + "': its winch starts at " +
+                                std::to_string(winch_->history().front().l0) +
+                                " m, not at the line's length " + std::to_string(p_.length) + " m");
   l_ = p_.length / p_.segments;
   area_ = 0.25 * std::numbers::pi * p_.diameter * p_.diameter;
   w_ = (p_.massPerLength - p_.waterDensity * area_) * p_.gravity;
@@ -57,16 +65,18 @@ void LumpedLine::nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v
                             Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const {
   const int n = p_.segments;
   const double rho = p_.waterDensity;
+  const double l = segmentLength(t), lr = segmentLengthRate(t);
   // (segments) => tension-only Kelvin-Voigt forces, +T u on node i, -T u on node i + 1
   f.setZero();
   for (int i = 0; i < n; ++i) {
     const Vector3 d = r.col(i + 1) - r.col(i);
     const double len = d.norm();
-    const double strain = len / l_ - 1.0;
+    const double strain = len / l - 1.0;
     double T = 0.0;
     if (strain > 0.0) {
       const Vector3 u = d / len;
-      const double rate = u.dot(v.col(i + 1) - v.col(i)) / l_;
+      double rate = u.dot(v.col(i + 1) - v.col(i)) / l;
+      if (lr != 0.0) rate -= len * lr / (l * l);  // (a winch) => e' = u.dv / l - |d| l' / l^2
       T = std::max(0.0, p_.ea * strain + c_ * rate);
       f.col(i) += T * u;
       f.col(i + 1) -= T * u;
@@ -74,11 +84,11 @@ void LumpedLine::nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v
     tension[i] = T;
   }
   // (EI > 0) => the bending's node forces
-  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l_, f);
+  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l, f);
   // (nodes) => weight, Morison drag and fluid inertia, sea bed
   for (int i = 0; i <= n; ++i) {
     const Vector3 p = r.col(i), vi = v.col(i);
-    const double ln = nodeLength(i);
+    const double ln = nodeLength(i, l);
     const double ls = 0.5 * ((i > 0 ? (r.col(i) - r.col(i - 1)).norm() : 0.0) +
                              (i < n ? (r.col(i + 1) - r.col(i)).norm() : 0.0));
     Vector3 fi(0.0, 0.0, -w_ * ln);
@@ -120,15 +130,16 @@ void LumpedLine::nodeMass(const Eigen::Matrix3Xd& r, std::vector<Matrix3>& m) co
   }
 }
 
-double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r) const {
+double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r, double t) const {
+  const double l = segmentLength(t);
   double e = 0.0;
   for (int i = 0; i < p_.segments; ++i) {
-    const double strain = (r.col(i + 1) - r.col(i)).norm() / l_ - 1.0;
-    if (strain > 0.0) e += 0.5 * p_.ea * l_ * strain * strain;
+    const double strain = (r.col(i + 1) - r.col(i)).norm() / l - 1.0;
+    if (strain > 0.0) e += 0.5 * p_.ea * l * strain * strain;
   }
-  if (p_.ei > 0.0) e += bendingEnergy(r, p_.ei / l_);
+  if (p_.ei > 0.0) e += bendingEnergy(r, p_.ei / l);
   for (int i = 0; i <= p_.segments; ++i) {
-    const double ln = nodeLength(i), z = r(2, i);
+    const double ln = nodeLength(i, l), z = r(2, i);
     e += w_ * ln * z;
     if (p_.seabed && z < p_.seabedZ)
       e += 0.5 * p_.bedStiffness * p_.diameter * ln * (p_.seabedZ - z) * (p_.seabedZ - z);
@@ -136,23 +147,47 @@ double LumpedLine::potentialEnergy(const Eigen::Matrix3Xd& r) const {
   return e;
 }
 
-void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const {
+double LumpedLine::potentialEnergyRate(const Eigen::Matrix3Xd& r, double t) const {
+  const double lr = segmentLengthRate(t);
+  if (lr == 0.0) return 0.0;
+  // (V = sum EA l e^2 / 2 + EI/l B + sum w l_n z + sum kb d l_n (z_bed - z)^2 / 2, e = |d|/l - 1,
+  // l_n proportional to l) => dV/dl = sum -EA e (1 + e/2) - EI/l B / l + (the l_n terms) / l
+  const double l = segmentLength(t);
+  double dVdl = 0.0;
+  for (int i = 0; i < p_.segments; ++i) {
+    const double strain = (r.col(i + 1) - r.col(i)).norm() / l - 1.0;
+    if (strain > 0.0) dVdl -= p_.ea * strain * (1.0 + 0.5 * strain);
+  }
+  if (p_.ei > 0.0) dVdl -= bendingEnergy(r, p_.ei / l) / l;
+  for (int i = 0; i <= p_.segments; ++i) {
+    const double ln = nodeLength(i, l), z = r(2, i);
+    double e = w_ * ln * z;
+    if (p_.seabed && z < p_.seabedZ)
+      e += 0.5 * p_.bedStiffness * p_.diameter * ln * (p_.seabedZ - z) * (p_.seabedZ - z);
+    dVdl += e / l;
+  }
+  return dVdl * lr;
+}
+
+void LumpedLine::conservativeForces(const Eigen::Matrix3Xd& r, double t,
+                                    Eigen::Matrix3Xd& f) const {
   // (segments, weight, bed springs) => -dV/dr, the elastic parts of nodeForces without rates
   const int n = p_.segments;
+  const double l = segmentLength(t);
   f.setZero();
   for (int i = 0; i < n; ++i) {
     const Vector3 d = r.col(i + 1) - r.col(i);
     const double len = d.norm();
-    const double strain = len / l_ - 1.0;
+    const double strain = len / l - 1.0;
     if (strain > 0.0) {
       const Vector3 pull = p_.ea * strain / len * d;
       f.col(i) += pull;
       f.col(i + 1) -= pull;
     }
   }
-  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l_, f);
+  if (p_.ei > 0.0) addBendingForces(r, p_.ei / l, f);
   for (int i = 0; i <= n; ++i) {
-    const double ln = nodeLength(i), z = r(2, i);
+    const double ln = nodeLength(i, l), z = r(2, i);
     f(2, i) -= w_ * ln;
     if (p_.seabed && z < p_.seabedZ)
       f(2, i) += (p_.seabedZ - z) * p_.bedStiffness * p_.diameter * ln;
@@ -172,6 +207,7 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
                                         std::vector<Matrix3>& dfdv) const {
   const int n = p_.segments;
   const double rho = p_.waterDensity;
+  const double l = segmentLength(t), lr = segmentLengthRate(t);
   for (std::size_t k = 0; k < dfdr.size(); ++k) {
     dfdr[k].setZero();
     dfdv[k].setZero();
@@ -183,20 +219,22 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
     return static_cast<std::size_t>((2 * b + 1) * node + other - node + b);
   };
   // (taut segment, d = r_(i+1) - r_i, u = d/|d|, P = I - u u^T) => d(T u)/dd = EA/l u u^T
-  // + T/|d| P + c/(l |d|) u (P dv)^T and d(T u)/d(dv) = c/l u u^T; T u acts on i, -T u on i + 1
+  // + T/|d| P + c/(l |d|) u (P dv)^T (- c l'/l^2 u u^T under a winch) and d(T u)/d(dv) =
+  // c/l u u^T; T u acts on i, -T u on i + 1
   for (int i = 0; i < n; ++i) {
     const Vector3 d = r.col(i + 1) - r.col(i);
     const double len = d.norm();
     bool taut = false;
-    if (len > l_) {
+    if (len > l) {
       const Vector3 u = d / len, dv = v.col(i + 1) - v.col(i);
-      const double T = p_.ea * (len / l_ - 1.0) + c_ * u.dot(dv) / l_;
+      double T = p_.ea * (len / l - 1.0) + c_ * u.dot(dv) / l;
+      if (lr != 0.0) T -= c_ * len * lr / (l * l);
       if (T > 0.0) {
         taut = true;
         const Matrix3 uu = u * u.transpose(), P = Matrix3::Identity() - uu;
-        const Matrix3 K =
-            (p_.ea / l_) * uu + (T / len) * P + (c_ / (l_ * len)) * u * (P * dv).transpose();
-        const Matrix3 C = (c_ / l_) * uu;
+        Matrix3 K = (p_.ea / l) * uu + (T / len) * P + (c_ / (l * len)) * u * (P * dv).transpose();
+        if (lr != 0.0) K -= (c_ * lr / (l * l)) * uu;
+        const Matrix3 C = (c_ / l) * uu;
         dfdr[at(i, i + 1)] += K;
         dfdr[at(i, i)] -= K;
         dfdr[at(i + 1, i + 1)] -= K;
@@ -211,7 +249,7 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
   }
   // (EI > 0) => the bending energy's Hessian, blocks within two nodes
   if (p_.ei > 0.0)
-    bendingJacobian(r, p_.ei / l_, [&](int i, int j, const Matrix3& K) { dfdr[at(i, j)] += K; });
+    bendingJacobian(r, p_.ei / l, [&](int i, int j, const Matrix3& K) { dfdr[at(i, j)] += K; });
   // (nodes) => drag on the relative velocity vr = u_f - v: -(kn G(vn) (I - q q^T) + kt G(vt) q q^T)
   for (int i = 0; i <= n; ++i) {
     const Vector3 p = r.col(i), vi = v.col(i);
@@ -234,7 +272,7 @@ std::uint64_t LumpedLine::forceJacobian(const Eigen::Matrix3Xd& r, const Eigen::
     // with g = min(1, s/s0)/s on the horizontal velocity vh, s = |vh|
     bool onBed = false, sliding = false;
     if (p_.seabed && p.z() < p_.seabedZ) {
-      const double dl = p_.diameter * nodeLength(i);
+      const double dl = p_.diameter * nodeLength(i, l);
       const double normal =
           (p_.seabedZ - p.z()) * p_.bedStiffness * dl - vi.z() * p_.bedDamping * dl;
       if (normal > 0.0) {

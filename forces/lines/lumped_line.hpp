@@ -14,11 +14,18 @@
 // Optional bending stiffness EI (lumped_line_bending.hpp): an energy EI/l (1 - cos theta) at every
 // inner node, theta the angle between its two segments, with its exact gradient as node forces;
 // the ends pinned (no moment). EI = 0 (the default) leaves every result as without it.
+// Under a winch (a crane rope's, forces/winch.hpp) the unstretched length L(t) is the winch's and
+// every segment's is l(t) = L(t)/N: the strain e = |d| / l(t) - 1, its rate u.dv / l - |d| l' / l^2
+// (the damping acts on the rope's elongation beyond what the winch pays out, as the massless
+// rope's), the net weight, bending, bed and fluid terms on l_n(t); the node masses stay those of
+// the start (nodeMass(), the bodies' masses are fixed). potentialEnergyRate() is dV/dl l' at fixed
+// positions, the winch's power.
 // All world frame, SI units. This is the node-force evaluation as a pure function of node
 // positions and velocities; lumped_line_provider.hpp makes the inner nodes bodies of the
 // multibody tree (their states integrated with the rest); the end nodes' forces are what the
 // attached bodies (anchor, fairlead) feel, their own weight share included.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +34,7 @@
 #include "dynamics/spatial.hpp"
 #include "forces/airy_waves.hpp"
 #include "forces/current_profile.hpp"
+#include "forces/winch.hpp"
 
 namespace yardsim::forces {
 
@@ -53,20 +61,28 @@ struct LumpedLineProperties {
 
 class LumpedLine {
  public:
-  // (properties, name, waves and current or null: still water) => the line; throws
-  // std::invalid_argument naming it for a parameter out of range. waves and current must
-  // outlive it.
+  // (properties, name, waves and current or null: still water, the winch that sets its
+  // unstretched length or null: p.length throughout) => the line; throws std::invalid_argument
+  // naming it for a parameter out of range or a winch that does not start at p.length. waves and
+  // current must outlive it.
   LumpedLine(const LumpedLineProperties& p, std::string name, const AiryWaves* waves = nullptr,
-             const CurrentField* current = nullptr);
+             const CurrentField* current = nullptr, std::shared_ptr<const Winch> winch = nullptr);
 
   const std::string& name() const { return name_; }
   const LumpedLineProperties& properties() const { return p_; }
   int nodes() const { return p_.segments + 1; }
-  double segmentLength() const { return l_; }       // l, m
+  double segmentLength() const { return l_; }  // l at the start, m
+  // (t) => l(t) = L(t) / N under the winch (l without one), m; its rate l'(t), m/s
+  double segmentLength(double t) const { return winch_ ? winch_->length(t) / p_.segments : l_; }
+  double segmentLengthRate(double t) const { return winch_ ? winch_->rate(t) / p_.segments : 0.0; }
+  // the winch, or null
+  const Winch* winch() const { return winch_.get(); }
   double weightPerLength() const { return w_; }     // w, N/m (< 0: buoyant)
   double dampingCoefficient() const { return c_; }  // c, N s
-  // (node) => its unstretched length l_n (l/2 at the ends, l inside), m
-  double nodeLength(int i) const { return i == 0 || i == p_.segments ? 0.5 * l_ : l_; }
+  // (node) => its unstretched length l_n (l/2 at the ends, l inside) at the start, m
+  double nodeLength(int i) const { return nodeLength(i, l_); }
+  // (node, segment length l) => l/2 at the ends, l inside, m
+  double nodeLength(int i, double l) const { return i == 0 || i == p_.segments ? 0.5 * l : l; }
   // b: a node's force depends on the nodes i - b .. i + b (1 without bending, 2 with EI > 0)
   int jacobianBandwidth() const { return p_.ei > 0.0 ? 2 : 1; }
 
@@ -75,15 +91,19 @@ class LumpedLine {
   // must be sized 3 x nodes() and segments. Allocation-free.
   void nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v, double t,
                   Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const;
-  // (r) => every node's 3x3 mass, structural plus added, kg; m sized nodes(). Allocation-free.
+  // (r) => every node's 3x3 mass, structural plus added, at the start's segment length, kg; m
+  // sized nodes(). Allocation-free.
   void nodeMass(const Eigen::Matrix3Xd& r, std::vector<dynamics::Matrix3>& m) const;
-  // (r) => strain energy of the taut segments + bending + net weight w l_n z + bed springs, J
-  double potentialEnergy(const Eigen::Matrix3Xd& r) const;
-  // (r) => f = -dV/dr, the conservative part of nodeForces (the segments' EA e, bending, the net
+  // (r, t) => strain energy of the taut segments + bending + net weight w l_n z + bed springs, J
+  double potentialEnergy(const Eigen::Matrix3Xd& r, double t) const;
+  // (r, t) => dV/dt at fixed r: dV/dl l'(t), the power the winch puts into the line, W (0 without
+  // a winch or while it stands)
+  double potentialEnergyRate(const Eigen::Matrix3Xd& r, double t) const;
+  // (r, t) => f = -dV/dr, the conservative part of nodeForces (the segments' EA e, bending, the net
   // weight, the bed springs), N, sized 3 x nodes(); nodeForces minus it is what dissipates or
   // comes from the flow (internal and bed damping, friction, drag, fluid inertia).
   // Allocation-free.
-  void conservativeForces(const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) const;
+  void conservativeForces(const Eigen::Matrix3Xd& r, double t, Eigen::Matrix3Xd& f) const;
   // (r, v, t) => per node i the 3x3 blocks df_i/dr_j (N/m) and df_i/dv_j (N s/m) of nodeForces
   // for j = i - b .. i + b at [(2 b + 1) i + j - i + b] (zero past the ends), b =
   // jacobianBandwidth() (1: [3 i + j - i + 1]), both sized (2 b + 1) nodes(): the taut segments'
@@ -106,6 +126,7 @@ class LumpedLine {
   std::string name_;
   const AiryWaves* waves_;
   const CurrentField* current_;
+  std::shared_ptr<const Winch> winch_;
   double l_ = 0.0, w_ = 0.0, c_ = 0.0, area_ = 0.0;
 };
 

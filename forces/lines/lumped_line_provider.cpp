@@ -58,15 +58,18 @@ std::vector<LumpedNodeBody> lumpedLineNodes(const LumpedLine& line, const std::s
 
 LumpedLineProvider::LumpedLineProvider(std::string name, const dynamics::Model& model,
                                        const Attachment& anchor, const Attachment& fairlead,
-                                       std::shared_ptr<const LumpedLine> line)
+                                       std::shared_ptr<const LumpedLine> line,
+                                       std::shared_ptr<Winch> winch)
     : ForceProvider(std::move(name)),
       anchor_(anchor),
       fairlead_(fairlead),
       line_(std::move(line)),
+      winch_(std::move(winch)),
       gravity_(model.gravity) {
   auto bad = [&](const std::string& what) {
     throw std::invalid_argument("lumped line '" + this->name() + "': " + what);
   };
+  if (winch_.get() != line_->winch()) bad("the winch given is not the line's own");
   for (const Attachment* a : {&anchor_, &fairlead_})
     if (a->body < 0 || a->body >= model.nbodies || !a->p_B.allFinite())
       bad("an end is on a body outside the model or not finite");
@@ -138,18 +141,19 @@ double LumpedLineProvider::doPotentialEnergy(const Stage& s) const {
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& w = scratchOf<Scratch>(s, temporary);
   gather(s, w);
-  double e = line_->potentialEnergy(w.r);
+  double e = line_->potentialEnergy(w.r, s.t);
   for (int i = 1; i < line_->properties().segments; ++i)
     e += masses_[static_cast<std::size_t>(i)] * gravity_.dot(w.r.col(i));
   return e;
 }
 
 double LumpedLineProvider::doPower(const Stage& s) const {
-  // (node forces, their conservative part) => sum (f - f_c) . v
+  // (node forces, their conservative part) => sum (f - f_c) . v, plus the winch's dV/dt
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& w = evaluated(s, temporary);
-  line_->conservativeForces(w.r, w.fc);
-  return ((w.f - w.fc).cwiseProduct(w.v)).sum();
+  line_->conservativeForces(w.r, s.t, w.fc);
+  const double power = ((w.f - w.fc).cwiseProduct(w.v)).sum();
+  return winch_ ? power + line_->potentialEnergyRate(w.r, s.t) : power;
 }
 
 double LumpedLineProvider::fairleadTension(const Stage& s) const {
@@ -170,8 +174,9 @@ double LumpedLineProvider::laidLength(const Stage& s) const {
   gather(s, w);
   // (a node within its diameter of the bed) => its unstretched length lies on it
   double laid = 0.0;
+  const double l = line_->segmentLength(s.t);
   for (int i = 0; i <= p.segments; ++i)
-    if (w.r(2, i) <= p.seabedZ + p.diameter) laid += line_->nodeLength(i);
+    if (w.r(2, i) <= p.seabedZ + p.diameter) laid += line_->nodeLength(i, l);
   return laid;
 }
 

@@ -17,7 +17,9 @@
 // mass; docs/lines.md). Potential energy: the line's (strain, bending, net weight, bed springs)
 // plus sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes.
 // Power: the part of the node forces that is not -dV/dr (internal and bed damping, friction,
-// drag, the flow's inertia force) times the node velocities. World frame, SI units.
+// drag, the flow's inertia force) times the node velocities, plus dV/dt, the power of the line's
+// winch when it has one (a crane rope's: payoutWinch() takes its set-points between steps, the
+// line's unstretched length follows it, lumped_line.hpp). World frame, SI units.
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,8 +53,12 @@ class LumpedLineProvider final : public ForceProvider {
   // (name, model holding the bodies lumpedNodeName(name, 1 .. N-1) on translation joints from the
   // world with the identity joint placement, anchor, fairlead, the line) => the provider; throws
   // std::invalid_argument naming it for a missing or wrong node body or a point outside the model
+  // A winch, when given, must be the line's own (line->winch()): the provider hands it out.
   LumpedLineProvider(std::string name, const dynamics::Model& model, const Attachment& anchor,
-                     const Attachment& fairlead, std::shared_ptr<const LumpedLine> line);
+                     const Attachment& fairlead, std::shared_ptr<const LumpedLine> line,
+                     std::shared_ptr<Winch> winch = nullptr);
+  // () => the line's winch, for set-points between steps; null without one
+  Winch* payoutWinch() override { return winch_.get(); }
 
   // the scratch: node positions, velocities and forces (3 x (N+1)), segment tensions (N)
   struct Scratch final : ProviderScratch {
@@ -95,6 +101,7 @@ class LumpedLineProvider final : public ForceProvider {
 
   Attachment anchor_, fairlead_;
   std::shared_ptr<const LumpedLine> line_;
+  std::shared_ptr<Winch> winch_;
   dynamics::Vector3 gravity_;  // the model's, m/s^2
   std::vector<int> bodies_;    // per node: its body (inner nodes), -1 at the ends
   std::vector<int> idxQ_, idxV_;

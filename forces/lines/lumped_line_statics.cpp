@@ -1,6 +1,7 @@
 #include "forces/lines/lumped_line_statics.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -15,9 +16,10 @@ using dynamics::Vector3;
 
 namespace {
 
-// (line, r) => the conservative forces on the inner nodes, stacked (3 (N - 1))
+// (line, r) => the conservative forces on the inner nodes at the start's segment length (a
+// winch's before its first set-point), stacked (3 (N - 1))
 Eigen::VectorXd residual(const LumpedLine& line, const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) {
-  line.conservativeForces(r, f);
+  line.conservativeForces(r, -std::numeric_limits<double>::infinity(), f);
   const int inner = line.nodes() - 2;
   Eigen::VectorXd out(3 * inner);
   for (int i = 0; i < inner; ++i) out.segment<3>(3 * i) = f.col(i + 1);

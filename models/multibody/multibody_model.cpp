@@ -125,10 +125,12 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   // not converge at t = 0) is a numerical failure of the run (exit 2), not an internal error
   try {
     if (opt_.equilibrium) settle();
-    // (initial state) => each rope's winch as it starts; the rope tensions are the first peaks
+    // (initial state) => each winch as it starts (the ropes', then those of ropes with mass); the
+    // rope tensions are the first peaks
     MultibodyState& x0 = mutableState().x;
-    for (std::size_t r = 0; r < system_.ropes().size(); ++r)
-      x0.setPoints.winches[r].pieces = system_.ropes()[r]->winch().history();
+    x0.setPoints.winches.resize(system_.winches().size());
+    for (std::size_t r = 0; r < system_.winches().size(); ++r)
+      x0.setPoints.winches[r].pieces = system_.winches()[r].winch->history();
     dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
     const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
     for (std::size_t r = 0; r < system_.ropes().size(); ++r)
@@ -275,26 +277,26 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
         break;
       }
       case SetPoint::Kind::WinchPayout: {
-        const int r = system_.ropeIndex(s.element);
+        const int r = system_.winchIndex(s.element);
         if (r < 0 || !(s.speed > 0))
           throw devs::SimulationError("multibody '" + path() + "': winch set-point from '" +
                                       s.actor + "' names '" + s.element +
                                       "', which is not a rope here, or has no positive speed");
-        forces::Rope& rope = *system_.ropes()[static_cast<std::size_t>(r)];
-        mechanics::startWinch(sp, r, rope.winch(), t, s.amount, {s.speed, s.accel, s.jerk}, s.actor);
+        forces::Winch& winch = *system_.winches()[static_cast<std::size_t>(r)].winch;
+        mechanics::startWinch(sp, r, winch, t, s.amount, {s.speed, s.accel, s.jerk}, s.actor);
         break;
       }
       case SetPoint::Kind::WinchStop: {  // (an actor stopped) => the winch at rest from t on
-        const int r = system_.ropeIndex(s.element);
+        const int r = system_.winchIndex(s.element);
         if (r < 0)
           throw devs::SimulationError("multibody '" + path() + "': winch stop from '" + s.actor +
                                       "' names '" + s.element + "', which is not a rope here");
-        forces::Rope& rope = *system_.ropes()[static_cast<std::size_t>(r)];
-        rope.winch().dropPlannedAfter(t);
-        rope.setPayoutRate(t, 0.0);
+        forces::Winch& winch = *system_.winches()[static_cast<std::size_t>(r)].winch;
+        winch.dropPlannedAfter(t);
+        winch.setPayoutRate(t, 0.0);
         auto& job = sp.winches[static_cast<std::size_t>(r)];
         job.active = false;
-        job.pieces = rope.winch().history();
+        job.pieces = winch.history();
         break;
       }
     }
@@ -325,9 +327,10 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
   auto& winches = x.setPoints.winches;
   for (std::size_t r = 0; r < winches.size(); ++r)
     if (winches[r].active && winches[r].tEnd <= t) {
-      system_.ropes()[r]->setPayoutRate(t, 0.0);
+      forces::Winch& winch = *system_.winches()[r].winch;
+      winch.setPayoutRate(t, 0.0);
       winches[r].active = false;
-      winches[r].pieces = system_.ropes()[r]->winch().history();
+      winches[r].pieces = winch.history();
     }
 }
 
@@ -439,13 +442,13 @@ void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
 
 void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   r.section("multibody");
-  // (restored state) => every rope's winch as the state has it
+  // (restored state) => every winch as the state has it
   const MultibodyState& x = state().x;
-  if (x.setPoints.winches.size() != system_.ropes().size())
+  if (x.setPoints.winches.size() != system_.winches().size())
     throw devs::CheckpointError("multibody '" + path() +
-                                "': the checkpoint has another number of ropes");
-  for (std::size_t k = 0; k < system_.ropes().size(); ++k)
-    system_.ropes()[k]->winch().restoreHistory(x.setPoints.winches[k].pieces);
+                                "': the checkpoint has another number of winches");
+  for (std::size_t k = 0; k < system_.winches().size(); ++k)
+    system_.winches()[k].winch->restoreHistory(x.setPoints.winches[k].pieces);
   // (caches of the run that wrote it) => the same reuse of the power at the next step
   ws_.powerState = r.boolean() ? &state().xNext : nullptr;
   ws_.powerTime = r.f64();

@@ -4,7 +4,9 @@
 // (forces/lines/lumped_rope_over_sheave.hpp); in still air: its weight with the air's buoyancy,
 // no drag, no added mass, no sea bed. Channels: the force on each end's body, the largest segment
 // tension, the stretched length, over a sheave the tension there; the inner nodes are bodies
-// (their positions are their channels, their spheres are drawn in the replay).
+// (their positions are their channels, their spheres are drawn in the replay). Between two
+// points the rope has a winch (a wire actor pays it out or hauls it in: every segment's
+// unstretched length follows L(t) / n), with the unstretched length as a channel.
 #include "scene/providers/lumped_rope_reader.hpp"
 
 #include <algorithm>
@@ -47,9 +49,15 @@ double chordLength(const LumpedLineProvider::Scratch& w) {
 }
 
 // (rope) => its channels: the force on the first and last end's body (N: the end segment's
-// tension with the half segment's weight), the largest segment tension (N), the length (m)
+// tension with the half segment's weight), the largest segment tension (N), the length (m), the
+// unstretched length its winch has paid out to (m)
 std::vector<ProviderOutput> lumpedRopeOutputs(const LumpedLineProvider& l) {
   return {
+      {"unstretched_length", "m",
+       [&l](const Stage& s) {
+         const forces::Winch* w = l.line().winch();
+         return w ? w->length(s.t) : l.line().properties().length;
+       }},
       {"first_tension", "N", [&l](const Stage& s) { return evaluated(l, s).f.col(0).norm(); }},
       {"last_tension", "N",
        [&l](const Stage& s) {
@@ -177,10 +185,11 @@ std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumped(
   if (n["parts"] && !(n["parts"].IsScalar() && n["parts"].Scalar() == "1"))
     fail(n["parts"], key + ".parts",
          "a lumped rope is one part (reeve multi-part hoists massless)");
-  for (const char* k : {"mbl", "min_length"})
-    if (n[k])
-      fail(n[k], key + "." + k,
-           std::string("'") + k + "' is a key of the massless rope, not of model: lumped");
+  if (n["mbl"])
+    fail(n["mbl"], key + ".mbl", "'mbl' is a key of the massless rope, not of model: lumped");
+  if (n["min_length"] && path.size() == 3)
+    fail(n["min_length"], key + ".min_length",
+         "a lumped rope over a sheave has no winch, so no minimum length");
   if (gravity.head<2>().norm() > 0.0 || !(gravity.z() < 0.0))
     fail(n["model"], key + ".model",
          "a lumped rope hangs under the block's gravity, which must point down -z");
@@ -218,6 +227,11 @@ std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumped(
   p.waterDensity = kAirDensity;
   p.gravity = gravity.z() < 0.0 ? -gravity.z() : 9.81;
   p.seabed = false;
+  // (m: the shortest unstretched length its winch hauls in to, as the massless rope's)
+  const double minLength = r.number(n["min_length"], key + ".min_length", 0.01);
+  if (!(minLength > 0.0 && minLength <= p.length))
+    fail(n["min_length"] ? n["min_length"] : n, key + ".min_length",
+         "min_length must be > 0 and <= L0 (m)");
   if (refused) return std::nullopt;
   try {
     forces::LumpedLine check(p, key);
@@ -233,13 +247,17 @@ std::optional<mechanics::MechanicsSpec::ProviderSpec> readLumped(
     return out;
   }
   out.bodies = lumpedLineBodies(p);
-  // (full name, the system's model, the ends placed) => the provider, its weight under the
-  // system's gravity (the root's, which an included fragment's may not state)
-  out.build = [p](const std::string& name, const dynamics::Model& model,
-                  const std::vector<forces::Attachment>& at) {
-    auto line = std::make_shared<const forces::LumpedLine>(underGravity(p, model, name), name);
+  out.winch = true;
+  // (full name, the system's model, the ends placed) => the provider with its winch at L0, its
+  // weight under the system's gravity (the root's, which an included fragment's may not state)
+  out.build = [p, minLength](const std::string& name, const dynamics::Model& model,
+                             const std::vector<forces::Attachment>& at) {
+    auto winch = std::make_shared<forces::Winch>(p.length, minLength);
+    auto line = std::make_shared<const forces::LumpedLine>(underGravity(p, model, name), name,
+                                                           nullptr, nullptr, winch);
     return forces::withOutputs<LumpedLineProvider>(
-        std::make_unique<LumpedLineProvider>(name, model, at.at(0), at.at(1), std::move(line)),
+        std::make_unique<LumpedLineProvider>(name, model, at.at(0), at.at(1), std::move(line),
+                                             std::move(winch)),
         lumpedRopeOutputs);
   };
   return out;

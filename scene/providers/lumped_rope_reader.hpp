@@ -19,7 +19,8 @@ namespace yardsim::scene::providers {
 // a massless rope (no `model`, or `model: massless`; another value is reported at its node);
 // true for `model: lumped`, the rope then added to spec.providers as a provider of kind `ropes`
 // with its node bodies and channels ({path: 2 or 3 points, EA, L0, mass_per_length, diameter,
-// segments, damping | damping_ratio}), or its problems reported at their nodes
+// segments, damping | damping_ratio, EI, min_length (2 points: its winch's)}), or its problems
+// reported at their nodes
 bool readLumpedRope(const spec::Reader& r, const YAML::Node& n, const std::string& key,
                     mechanics::MechanicsSpec& spec);
 

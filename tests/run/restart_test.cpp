@@ -1,7 +1,8 @@
 // Restarts (run/runner.cpp with --restart): a run continued from a checkpoint, its rows and its
 // trace appended to those of the run that wrote it up to the checkpoint's time, equals that run
 // bit for bit. On the goliath turnover (in the middle of the turnover, winches running), the
-// floating barge (hydrostatics, waves, wind) and the barge under CVODE (adaptive, with a history).
+// floating barge (hydrostatics, waves, wind), the barge under CVODE (adaptive, with a history), a
+// buoy on lumped lines and a block hoisted on a rope with mass (its winch in the state).
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <iterator>
@@ -170,4 +171,30 @@ until: 20
   const Output restarted = runScene(scene, dir.path() / "restarted", 0.0,
                                     dir.path() / "whole/checkpoints/t000010.000.ckpt");
   checkConcatenation(whole, restarted, 10.0);
+}
+
+TEST_CASE(
+    "a block hoisted on a rope with mass restarted mid-hoist equals the whole run (its winch)") {
+  // (a lumped crane rope whose winch hauls in: the winch's pieces are in the multibody state after
+  // the ropes', and a restarted run takes them back; without them it would hang at rest)
+  testing::SceneDir dir;
+  const fs::path scene = dir.write("hoist.yaml", R"(schema_version: 1
+integrator: {method: rk4, dt: 0.0005}
+components:
+  up: {type: wire_actor, params: {rope: hoist, payout: -3, speed: 1, accel: 0.5, start_at: 0.5}}
+mechanics:
+  bodies:
+    top: {parent: world, joint: {type: fixed}, placement: {xyz: [0, 0, 30]}, mass: 1000, inertia: [1, 1, 1]}
+    block: {parent: world, joint: {name: lift, type: prismatic, axis: [0, 0, 1], q0: 9.99},
+            mass: 2000, inertia: [100, 100, 100]}
+  ropes:
+    hoist: {model: lumped, path: [{body: top}, {body: block}], L0: 20, segments: 8, EA: 5.0e7,
+            mass_per_length: 10, diameter: 0.04}
+record: {interval: 0.01, channels: ["hoist.*", "lift.q", "mechanics.energy_balance"]}
+until: 4
+)");
+  const Output whole = runScene(scene, dir.path() / "whole", 1.0);
+  const Output restarted = runScene(scene, dir.path() / "restarted", 0.0,
+                                    dir.path() / "whole/checkpoints/t000002.000.ckpt");
+  checkConcatenation(whole, restarted, 2.0);
 }

@@ -99,7 +99,7 @@ TEST_CASE("bending: the node forces are minus the gradient of the energy, for an
   const Eigen::Matrix3Xd r = bent(8);
   Eigen::Matrix3Xd f(3, 8), g(3, 8);
   Eigen::VectorXd tension(7);
-  line.conservativeForces(r, f);
+  line.conservativeForces(r, 0.0, f);
   line.nodeForces(r, Eigen::Matrix3Xd::Zero(3, 8), 0.0, g, tension);
   CHECK((f - g).norm() <= 1e-12 * f.norm());
   const double h = 1e-6;
@@ -109,7 +109,7 @@ TEST_CASE("bending: the node forces are minus the gradient of the energy, for an
       Eigen::Matrix3Xd rp = r, rm = r;
       rp(k, i) += h;
       rm(k, i) -= h;
-      const double dv = (line.potentialEnergy(rp) - line.potentialEnergy(rm)) / (2 * h);
+      const double dv = (line.potentialEnergy(rp, 0.0) - line.potentialEnergy(rm, 0.0)) / (2 * h);
       worst = std::max(worst, std::abs(f(k, i) + dv));
       // (the bending alone) => its own gradient
       const double db = (bendingEnergy(rp, p.ei / line.segmentLength()) -
@@ -248,7 +248,7 @@ TEST_CASE("bending: RK4 conserves the energy of a swinging stiff line, drift at 
       return a;
     };
     auto energy = [&](const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& u) {
-      return line.potentialEnergy(x) + 0.5 * m * u.squaredNorm();
+      return line.potentialEnergy(x, 0.0) + 0.5 * m * u.squaredNorm();
     };
     const double e0 = energy(r, v);
     double drift = 0.0, bendingSwing = 0.0;

@@ -170,12 +170,12 @@ TEST_CASE("energy: conserved without dissipation, only lost with damping and dra
   const CatenarySolution s = solveCatenary(cp, 400.0, 200.0);
   Eigen::Matrix3Xd r = startShape(line, cp, s, 400.0, 5.0);  // swings back through its plane
   Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, line.nodes());
-  const double e0 = line.potentialEnergy(r);
+  const double e0 = line.potentialEnergy(r, 0.0);
   double maxKinetic = 0.0, maxDrift = 0.0;
   for (int k = 0; k < 5000; ++k) {  // 10 s
     rk4(line, r, v, 2e-3);
     maxKinetic = std::max(maxKinetic, kinetic(line, v));
-    maxDrift = std::max(maxDrift, std::abs(kinetic(line, v) + line.potentialEnergy(r) - e0));
+    maxDrift = std::max(maxDrift, std::abs(kinetic(line, v) + line.potentialEnergy(r, 0.0) - e0));
   }
   CHECK(maxKinetic > 1e4);
   CHECK(maxDrift < 1e-6 * maxKinetic);
@@ -186,12 +186,12 @@ TEST_CASE("energy: conserved without dissipation, only lost with damping and dra
   const LumpedLine lossy(p, "chain");
   r = startShape(lossy, cp, s, 400.0, 5.0);
   v.setZero();
-  const double start = lossy.potentialEnergy(r);
+  const double start = lossy.potentialEnergy(r, 0.0);
   double previous = start, lost = 0.0;
   bool grew = false;
   for (int k = 0; k < 5000; ++k) {
     rk4(lossy, r, v, 2e-3);
-    const double e = kinetic(lossy, v) + lossy.potentialEnergy(r);
+    const double e = kinetic(lossy, v) + lossy.potentialEnergy(r, 0.0);
     grew = grew || e > previous + 1e-9 * std::abs(e0);
     lost = start - e;
     previous = e;
@@ -291,7 +291,7 @@ TEST_CASE("Morison drag in a current, fluid inertia in waves, added mass, the se
     const Vector3 expected = Vector3(0, 0, normal - line.weightPerLength() * 5.0) -
                              0.6 * normal * Vector3(0.3, -0.4, 0.0) / 0.5;
     CHECK((f.col(1) - expected).norm() < 1e-9 * normal);
-    CHECK(line.potentialEnergy(r) ==
+    CHECK(line.potentialEnergy(r, 0.0) ==
           Approx(2 * 0.5 * 1e6 * d * 5.0 * 1e-4 + line.weightPerLength() * 5.0 * (-50.0 - 50.0)));
   }
   LumpedLineProperties bad = p;

@@ -213,6 +213,56 @@ TEST_CASE("lumped rope: the energy balance closes - undamped and with internal d
   CHECK(damped[0] < 5e-3 * damped[2]);
 }
 
+TEST_CASE("lumped rope: a wire actor hoists a block - static levels, damping, energy balance") {
+  // (2 t block on 20 m of rope, 10 segments, hauled in 6 m at 1 m/s with an S-curve drive:
+  // 0.5 m/s^2, 0.25 m/s^3, so 4 s up to speed (2 m), 2 s at speed, 4 s down; from t = 0.5 s)
+  const double M = 2000.0, L = 20.0, w = weight();
+  std::string text = hanging(M, L, 10, 0.0);
+  text.insert(text.find("mechanics:"),
+              "components:\n  up: {type: wire_actor, params: {rope: hoist, payout: -6, speed: 1, "
+              "accel: 0.5, jerk: 0.25, start_at: 0.5}}\n");
+  testing::SceneDir dir;
+  const auto csv = simulate(dir, text, 12.5);
+  const int top = col(csv, "hoist.first_tension[N]"),
+            length = col(csv, "hoist.unstretched_length[m]"), z = col(csv, "lift.q[m]"),
+            balance = col(csv, "mechanics.energy_balance[J]"), work = col(csv, "mechanics.work[J]");
+  // (rows in [a, b]) => the mean of a column, and of (M g + w L(t)), the quasi-static top force
+  auto mean = [&](double a, double b, int k) {
+    double sum = 0.0, quasi = 0.0;
+    int rows = 0;
+    for (const auto& r : csv.rows)
+      if (r[0] >= a && r[0] <= b) {
+        sum += r[k];
+        quasi += M * kG + w * r[length];
+        ++rows;
+      }
+    REQUIRE(rows > 50);
+    return std::array<double, 2>{sum / rows, quasi / rows};
+  };
+  const double L1 = L - 6.0;
+  CHECK(csv.rows.back()[length] == Approx(L1).epsilon(1e-12));
+  // (at rest after the hoist, over about 6 bounce periods) => the top force (M + m' L1) g and the
+  // block at 30 m less the stretched rope
+  const auto rest = mean(11.5, 12.5, top), height = mean(11.5, 12.5, z);
+  INFO("top " << rest[0] << " N against " << rest[1] << " N");
+  CHECK(rest[0] == Approx(M * kG + w * L1).epsilon(1e-4));
+  CHECK(height[0] == Approx(30.0 - L1 - (M * kG * L1 + 0.5 * w * L1 * L1) / kEA).margin(2e-5));
+  // (at the drive's speed) => the damping acts on the elongation beyond the payout: the top force
+  // stays quasi-static (hauling in at 1 m/s would otherwise take c l'/l, about 6 %, off it)
+  const auto cruise = mean(5.0, 6.4, top);
+  INFO("cruising: top " << cruise[0] << " N against " << cruise[1] << " N");
+  CHECK(cruise[0] == Approx(cruise[1]).epsilon(5e-3));
+  // (the winch's work: the block's rise M g 6 m, less the weight of the rope it takes in, which
+  // leaves the model at its height) => the balance closes
+  double drift = 0.0;
+  for (const auto& r : csv.rows)
+    drift = std::max(drift, std::abs(r[balance] - csv.rows[0][balance]));
+  const double done = std::abs(csv.rows.back()[work] - csv.rows[0][work]);
+  INFO("balance drift " << drift << " J, work " << done << " J");
+  CHECK(done > 0.8 * M * kG * 6.0);
+  CHECK(drift < 1e-5 * done);
+}
+
 TEST_CASE(
     "lumped rope: over a sheave at rest the ends differ from the sheave by the rope between") {
   // (anchor 20 m below a sheave, the rope up over it and down to a 2 t block on a slider with a
@@ -277,7 +327,7 @@ TEST_CASE("lumped rope: problems at their nodes") {
   std::string text = hanging(2000.0, 20.0, 10, 0.0);
   text +=
       R"(    a: {model: lumped, path: [{body: top}, {body: block}], L0: 20, EA: 5e7, diameter: 0.04, mass_per_lenght: 10}
-    b: {model: lumped, path: [{body: top}, {body: block}], L0: 20, EA: 5e7, diameter: 0.04, mass_per_length: 10, segments: 2.5, parts: 2, mbl: 1e6}
+    b: {model: lumped, path: [{body: top}, {body: block}], L0: 20, EA: 5e7, diameter: 0.04, mass_per_length: 10, segments: 2.5, parts: 2, mbl: 1e6, min_length: 50}
     c: {model: lumped, path: [{body: top}, {body: block}], L0: -1, EA: 5e7, diameter: 0.04, mass_per_length: 10, damping: 1, damping_ratio: 0.2}
     d: {model: heavy, path: [{body: top}, {body: block}], L0: 20, EA: 5e7}
 )";
@@ -294,6 +344,7 @@ TEST_CASE("lumped rope: problems at their nodes") {
                          Contains("mass_per_length") && Contains("whole number of segments") &&
                          Contains("one part") && Contains("'mbl' is a key of the massless rope") &&
                          Contains("L0 must be > 0") && Contains("either damping") &&
+                         Contains("min_length must be > 0 and <= L0") &&
                          Contains("expected massless (the default) or lumped, got 'heavy'"));
   // (a body that is not there) => found when the fragments are merged, with did you mean
   const auto typo = scene::loadScene(dir.write("typo.yaml", R"(schema_version: 1
@@ -305,15 +356,18 @@ mechanics:
     e: {model: lumped, path: [{body: top}, {body: blok}], L0: 20, EA: 5e7, diameter: 0.04, mass_per_length: 10}
 )"));
   CHECK_FALSE(typo.scene);
-  // (a wire actor on a lumped rope) => refused at the door: a lumped rope has no winch yet
+  // (a wire actor on a lumped rope over a sheave) => refused at the door: no winch there
   std::string winch = hanging(2000.0, 20.0, 10, 0.0);
+  const std::string first = "{body: top, point: [0, 0, 0]}";
+  winch.replace(winch.find(first), first.size(), "{body: top, point: [-1, 0, 0]}, " + first);
   winch.insert(winch.find("mechanics:"),
                "components:\n  lower: {type: wire_actor, params: {rope: "
                "hoist, payout: 1, speed: 0.1, start_at: 0}}\n");
   const auto wired = scene::loadScene(dir.write("winch.yaml", winch));
   CHECK_FALSE(wired.scene);
   CHECK_THAT(wired.diagnostics.report(),
-             Contains("winch.yaml:") && Contains("has model: lumped, which has no winch yet"));
+             Contains("winch.yaml:") && Contains("has model: lumped over a sheave, which has no "
+                                                 "winch"));
   CHECK_THAT(typo.diagnostics.report(), Contains("typo.yaml:7:") &&
                                             Contains("unknown body 'blok'") &&
                                             Contains("did you mean 'block'"));

@@ -50,13 +50,16 @@ bool AdaptiveIntegrator::makeChartSolver(bool kinematicImplicit) {
   return true;
 }
 
-int AdaptiveIntegrator::linearSystem(double t, N_Vector y, N_Vector fy, bool jok, int* jcur, double gamma) {
+int AdaptiveIntegrator::linearSystem(double t, N_Vector y, N_Vector fy, bool jok, int* jcur,
+                                     double gamma) {
   try {
     // (the source's pattern) => the chart Newton system for it, made again when it changed
     const JacobianPattern* pattern = source_->jacobianPattern();
-    if (pattern == nullptr) throw IntegrationError(std::string(name()) + ": the system lost its Jacobian pattern");
+    if (pattern == nullptr)
+      throw IntegrationError(std::string(name()) + ": the system lost its Jacobian pattern");
     if (newtonFor_ != pattern) {
-      newton_ = std::make_unique<ChartNewtonSystem>(model_, *pattern, source_->jacobianBlocks(), kinematicImplicit_);
+      newton_ = std::make_unique<ChartNewtonSystem>(model_, *pattern, source_->jacobianBlocks(),
+                                                    kinematicImplicit_);
       newtonFor_ = pattern;
       jok = false;
     }

@@ -14,10 +14,11 @@ int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
 int roots(double t, N_Vector y, double* g, void* self) {
   return static_cast<AdaptiveIntegrator*>(self)->rootFunctions(t, y, g);
 }
-int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, SUNMatrix, booleantype jok, booleantype* jcur,
-                 double gamma, void* self, N_Vector, N_Vector, N_Vector) {
+int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, SUNMatrix, booleantype jok,
+           booleantype* jcur, double gamma, void* self, N_Vector, N_Vector, N_Vector) {
   int current = 0;
-  const int flag = static_cast<AdaptiveIntegrator*>(self)->linearSystem(t, y, fy, jok != 0, &current, gamma);
+  const int flag =
+      static_cast<AdaptiveIntegrator*>(self)->linearSystem(t, y, fy, jok != 0, &current, gamma);
   *jcur = current != 0 ? SUNTRUE : SUNFALSE;
   return flag;
 }

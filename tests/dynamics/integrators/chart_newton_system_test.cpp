@@ -29,7 +29,7 @@ Model floatingTree() {
              makeInertia(3.0, Vector3(0.1, 0.0, 0.0), Vector3(1.0, 2.0, 3.0).asDiagonal()));
   mb.addBody("pendulum", "block", Joint::spherical(),
              Transform::translation(Vector3(0.5, 0.2, 0.0)),
-             makeInertia(1.0, Vector3(0.0, 0.0, -0.8), Vector3(0.1, 0.2, 0.05).asDiagonal()));
+             makeInertia(1.0, Vector3(0.0, 0.0, -0.8), Vector3(0.1, 0.2, 0.15).asDiagonal()));
   mb.addBody("slider", "block", Joint::prismatic(Vector3::UnitX()),
              Transform::translation(Vector3(0, 0.3, 0.1)),
              makeInertia(0.5, Vector3::Zero(), Vector3(0.1, 0.1, 0.1).asDiagonal()));

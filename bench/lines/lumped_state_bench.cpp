@@ -155,11 +155,7 @@ BENCHMARK(BM_LumpedLinesCvode)
 void BM_LumpedLinesCvodeDense(benchmark::State& state) {
   runLines(state, "cvode_bdf", true);
 }
-BENCHMARK(BM_LumpedLinesCvodeDense)
-    ->Arg(10)
-    ->Arg(20)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+BENCHMARK(BM_LumpedLinesCvodeDense)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

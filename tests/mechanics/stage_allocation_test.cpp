@@ -90,6 +90,9 @@ TEST_CASE("every integrator steps a buoy moored by lumped lines without allocati
     INFO(blocks << " heap blocks in 10 steps, " << integrator->stats().jac_evals - jacobians
                 << " Jacobians among them");
     CHECK(blocks == 0);
+    // (SUNDIALS' implicit methods) => Jacobians were formed in those steps: the dense path
+    // allocated at each (support/step_allocations.hpp), this one does not
+    if (method.adaptive && method.implicit) CHECK(integrator->stats().jac_evals > jacobians);
     CHECK(q[0] > 0.07);  // (the buoy moved: 0.15 s at about 0.5 m/s)
   }
 }

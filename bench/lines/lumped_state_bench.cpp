@@ -15,8 +15,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
+#include "dynamics/integrators/adaptive_integrator.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "run/runner.hpp"
 #include "scene/assembler.hpp"
@@ -53,20 +55,35 @@ std::string scene(int segments, const std::string& method) {
          std::to_string(kUntil) + "\n";
 }
 
-// (model tree) => the integrator's work of its (first) multibody model, or nullptr
-const dynamics::IntegratorStats* integratorStats(const devs::Model& m) {
-  if (const auto* mb = dynamic_cast<const models::MultibodyModel*>(&m))
-    return &mb->integratorStats();
+// (model tree) => its (first) multibody model, or nullptr
+const models::MultibodyModel* multibody(const devs::Model& m) {
+  if (const auto* mb = dynamic_cast<const models::MultibodyModel*>(&m)) return mb;
   if (m.isAtomic()) return nullptr;
   for (const auto& c : static_cast<const devs::Coupled&>(m).components())
-    if (const auto* s = integratorStats(*c)) return s;
+    if (const auto* s = multibody(*c)) return s;
   return nullptr;
 }
 
-// (scene, until) => wall time of one whole run and its integrator's work
+// (model tree) => the integrator's work of its (first) multibody model, or nullptr
+const dynamics::IntegratorStats* integratorStats(const devs::Model& m) {
+  const auto* mb = multibody(m);
+  return mb ? &mb->integratorStats() : nullptr;
+}
+
+// (scene, until, SUNDIALS' dense Newton instead of the chart Newton system) => wall time of one
+// whole run and its integrator's work
 double runOnce(const scene::Scene& loaded, const fs::path& out, double until,
-               dynamics::IntegratorStats& work) {
+               dynamics::IntegratorStats& work, bool dense = false) {
   auto root = scene::assemble(loaded);
+  if (dense) {
+    // (the model's adaptive integrator, before its first step) => the dense path (the bench's
+    // "before"; the model hands out its integrator const only)
+    const auto* mb = multibody(*root);
+    const auto* adaptive =
+        mb ? dynamic_cast<const dynamics::AdaptiveIntegrator*>(&mb->integrator()) : nullptr;
+    if (adaptive == nullptr) throw std::runtime_error("no adaptive integrator to make dense");
+    const_cast<dynamics::AdaptiveIntegrator*>(adaptive)->useDenseNewton(true);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   run::runScene(loaded, *root, {out, until, {}, {}, 0.1});
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -76,7 +93,7 @@ double runOnce(const scene::Scene& loaded, const fs::path& out, double until,
 
 // (state.range(0): segments; method) => per iteration one whole run, and one to half its length:
 // their difference is the second half, after the buoy's release (the "_late" counters)
-void runLines(benchmark::State& state, const std::string& method) {
+void runLines(benchmark::State& state, const std::string& method, bool dense = false) {
   const int segments = static_cast<int>(state.range(0));
   const fs::path dir =
       fs::temp_directory_path() / ("yardsim-bench-lines-" + method + std::to_string(segments));
@@ -86,8 +103,8 @@ void runLines(benchmark::State& state, const std::string& method) {
   double wall = 0.0, wallHalf = 0.0;
   dynamics::IntegratorStats work, half;
   for (auto _ : state) {
-    wall += runOnce(*loaded, dir / "out", kUntil, work);
-    wallHalf += runOnce(*loaded, dir / "out", 0.5 * kUntil, half);
+    wall += runOnce(*loaded, dir / "out", kUntil, work, dense);
+    wallHalf += runOnce(*loaded, dir / "out", 0.5 * kUntil, half, dense);
   }
   const double runs = static_cast<double>(state.iterations()), steps = kUntil / kStep;
   const double nodes = 8.0 * (segments - 1);
@@ -122,10 +139,23 @@ BENCHMARK(BM_LumpedLinesHht)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
+// CVODE BDF with the chart Newton system (sparse, the default with lumped lines), and with
+// SUNDIALS' dense difference-quotient Jacobian and dense LU (the path before 2026-11-29)
 void BM_LumpedLinesCvode(benchmark::State& state) {
   runLines(state, "cvode_bdf");
 }
-BENCHMARK(BM_LumpedLinesCvode)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_LumpedLinesCvode)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(80)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_LumpedLinesCvodeDense(benchmark::State& state) {
+  runLines(state, "cvode_bdf", true);
+}
+BENCHMARK(BM_LumpedLinesCvodeDense)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

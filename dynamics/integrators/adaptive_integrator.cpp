@@ -6,6 +6,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "dynamics/integrators/sundials_chart_solver.hpp"
+
 namespace yardsim::dynamics {
 
 AdaptiveIntegrator::AdaptiveIntegrator(const Model& model, const IntegratorSpec& spec)
@@ -37,6 +39,48 @@ void AdaptiveIntegrator::makeLinearSolver() {
   if (A_ != nullptr) return;
   A_ = SUNDenseMatrix(chart_.size(), chart_.size(), ctx_);
   LS_ = SUNLinSol_Dense(y_, A_, ctx_);
+}
+
+bool AdaptiveIntegrator::makeChartSolver(bool kinematicImplicit) {
+  if (denseNewton_ || source_ == nullptr || source_->jacobianPattern() == nullptr) return false;
+  if (A_ != nullptr) return true;
+  kinematicImplicit_ = kinematicImplicit;
+  A_ = makeChartMatrix(ctx_);
+  LS_ = makeChartLinearSolver(ctx_, &newton_);
+  return true;
+}
+
+int AdaptiveIntegrator::linearSystem(double t, N_Vector y, N_Vector fy, bool jok, int* jcur,
+                                     double gamma) {
+  try {
+    // (the source's pattern) => the chart Newton system for it, made again when it changed
+    const JacobianPattern* pattern = source_->jacobianPattern();
+    if (pattern == nullptr)
+      throw IntegrationError(std::string(name()) + ": the system lost its Jacobian pattern");
+    if (newtonFor_ != pattern) {
+      newton_ = std::make_unique<ChartNewtonSystem>(model_, *pattern, source_->jacobianBlocks(),
+                                                    kinematicImplicit_);
+      newtonFor_ = pattern;
+      jok = false;
+    }
+    // (y) => q, v; (jok) => the blocks there, else F_q, F_v, K, G formed at (t, y, fy)
+    const double* yv = N_VGetArrayPointer(y);
+    chart_.scatter(yv, q_, v_);
+    if (jok) {
+      newton_->refreshBlocks(*source_, t, q_, v_);
+      *jcur = 0;
+    } else {
+      a_ = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(fy) + model_.nv, model_.nv);
+      stats_.f_evals += newton_->form(*source_, t, chart_.origin(), yv, q_, a_);
+      *jcur = 1;
+    }
+    // (gamma) => the reduced matrix's LU (a singular one fails the solver's setup, recoverably)
+    newton_->factorise(gamma);
+    return 0;
+  } catch (...) {
+    thrown_ = std::current_exception();
+    return -1;
+  }
 }
 
 void AdaptiveIntegrator::solverError(const char* module, const char* function, const char* message) {

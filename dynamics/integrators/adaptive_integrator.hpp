@@ -9,6 +9,7 @@
 // Tolerances: atol (m, rad, m/s, rad/s) and rtol act on positions and velocities; see atol_.
 
 #include <exception>
+#include <memory>
 #include <string>
 
 #include <nvector/nvector_serial.h>
@@ -16,6 +17,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include "dynamics/integrators/chart_newton_system.hpp"
 #include "dynamics/integrators/chart_state.hpp"
 #include "dynamics/integrators/factory.hpp"
 #include "dynamics/integrators/integrator.hpp"
@@ -33,6 +35,11 @@ class AdaptiveIntegrator : public Integrator {
   void reset() final { initialised_ = false; }
   bool carriesHistory() const override { return true; }
 
+  /// (on) => keep SUNDIALS' dense Newton (difference-quotient Jacobian, dense LU) even for a
+  /// system with a Jacobian pattern (lumped lines), which otherwise gets the chart Newton system
+  /// (chart_newton_system.hpp); before the first step (comparisons in tests and benches)
+  void useDenseNewton(bool on) { denseNewton_ = on; }
+
   /// Which part of dy/dt a right-hand side returns (IMEX splits kinematics from dynamics).
   enum class Part { All, Kinematic, Dynamic };
   /// (t, y) => ydot (the part asked for); 0, or -1 after the source threw (kept for rethrow).
@@ -41,6 +48,11 @@ class AdaptiveIntegrator : public Integrator {
   int rootFunctions(double t, N_Vector y, double* g);
   /// The last error message of the solver (its error handler).
   void solverError(const char* module, const char* function, const char* message);
+  /// (t, y, fy = f(t, y), whether the solver lets the Jacobian be reused, gamma) => the chart
+  /// Newton system formed (jok false: F_q, F_v by colours, *jcur true) or its closed-form blocks
+  /// refreshed, and factorised for gamma; 0, or -1 after the source threw (the solvers' linear
+  /// system function, with makeChartSolver()'s solver)
+  int linearSystem(double t, N_Vector y, N_Vector fy, bool jok, int* jcur, double gamma);
 
  protected:
   AdaptiveIntegrator(const Model& model, const IntegratorSpec& spec);
@@ -55,6 +67,11 @@ class AdaptiveIntegrator : public Integrator {
   virtual void counters(IntegratorStats& s) = 0;
   /// A dense matrix and linear solver for y_, made on first use.
   void makeLinearSolver();
+  /// (whether theta' = G v is in the implicit part) => for a source with a Jacobian pattern
+  /// (lumped lines) and without useDenseNewton(true), the chart Newton system's stand-in matrix and
+  /// solver in A_, LS_ (sundials_chart_solver.hpp; made on first use) and true: the caller then
+  /// sets linearSystem() as the solver's linear system function; else false (the dense path)
+  bool makeChartSolver(bool kinematicImplicit);
 
   const Model& model_;
   IntegratorSpec spec_;
@@ -78,6 +95,11 @@ class AdaptiveIntegrator : public Integrator {
   Eigen::VectorXd q_, v_, a_, qLast_, vLast_, qOut_, vOut_;
   std::vector<int> found_;
   std::vector<double> g_;
+  // the sparse path: the chart Newton system, made at the first linearSystem() for the pattern
+  std::unique_ptr<ChartNewtonSystem> newton_;
+  const JacobianPattern* newtonFor_ = nullptr;
+  bool kinematicImplicit_ = true;
+  bool denseNewton_ = false;
 };
 
 }  // namespace yardsim::dynamics

@@ -1,6 +1,7 @@
 #include "dynamics/integrators/arkode.hpp"
 
 #include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_ls.h>
 
 namespace yardsim::dynamics {
 
@@ -12,6 +13,14 @@ int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
 }
 int roots(double t, N_Vector y, double* g, void* self) {
   return static_cast<AdaptiveIntegrator*>(self)->rootFunctions(t, y, g);
+}
+int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, SUNMatrix, booleantype jok,
+           booleantype* jcur, double gamma, void* self, N_Vector, N_Vector, N_Vector) {
+  int current = 0;
+  const int flag =
+      static_cast<AdaptiveIntegrator*>(self)->linearSystem(t, y, fy, jok != 0, &current, gamma);
+  *jcur = current != 0 ? SUNTRUE : SUNFALSE;
+  return flag;
 }
 void onError(int, const char* module, const char* function, char* message, void* self) {
   static_cast<AdaptiveIntegrator*>(self)->solverError(module, function, message);
@@ -50,15 +59,19 @@ void Arkode::init(double t, int nroots) {
       fi = rhs<Part::Dynamic>;
       break;
   }
-  // (y at t) => ARKStep created once (tolerances, order 4, dense Newton when implicit), then re-initialised
+  // (y at t) => ARKStep created once (tolerances, order 4, Newton when implicit: with lumped lines
+  // the chart Newton system, its kinematic half implicit for DIRK and explicit for IMEX; else
+  // dense), then re-initialised
   if (mem_ == nullptr) {
     mem_ = ARKStepCreate(fe, fi, t, y_, ctx_);
     ARKStepSetUserData(mem_, this);
     ARKStepSetErrHandlerFn(mem_, onError, this);
     ARKStepSetOrder(mem_, 4);
     if (kind_ != Kind::Erk) {
-      makeLinearSolver();
+      const bool sparse = makeChartSolver(kind_ == Kind::Dirk);
+      if (!sparse) makeLinearSolver();
       ARKStepSetLinearSolver(mem_, LS_, A_);
+      if (sparse) ARKStepSetLinSysFn(mem_, linSys);
     }
     if (spec_.maxStep > 0) ARKStepSetMaxStep(mem_, spec_.maxStep);
     ARKStepSetMaxNumSteps(mem_, 1000000);

@@ -1,6 +1,7 @@
 #include "dynamics/integrators/cvode.hpp"
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 
 namespace yardsim::dynamics {
 
@@ -10,6 +11,14 @@ int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
 }
 int roots(double t, N_Vector y, double* g, void* self) {
   return static_cast<AdaptiveIntegrator*>(self)->rootFunctions(t, y, g);
+}
+int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, booleantype jok, booleantype* jcur,
+           double gamma, void* self, N_Vector, N_Vector, N_Vector) {
+  int current = 0;
+  const int flag =
+      static_cast<AdaptiveIntegrator*>(self)->linearSystem(t, y, fy, jok != 0, &current, gamma);
+  *jcur = current != 0 ? SUNTRUE : SUNFALSE;
+  return flag;
 }
 void onError(int, const char* module, const char* function, char* message, void* self) {
   static_cast<AdaptiveIntegrator*>(self)->solverError(module, function, message);
@@ -24,14 +33,18 @@ Cvode::~Cvode() {
 }
 
 void Cvode::init(double t, int nroots) {
-  // (y at t) => CVODE created once (tolerances, dense Newton, order, step bound), then re-initialised
+  // (y at t) => CVODE created once (tolerances, Newton's linear solver, order, step bound), then
+  // re-initialised. The linear solver: with lumped lines (a Jacobian pattern) the chart Newton
+  // system (sparse, chart_newton_system.hpp) through a linear system function, else dense
   if (mem_ == nullptr) {
     mem_ = CVodeCreate(bdf_ ? CV_BDF : CV_ADAMS, ctx_);
     CVodeInit(mem_, rhs, t, y_);
     CVodeSetUserData(mem_, this);
     CVodeSetErrHandlerFn(mem_, onError, this);
-    makeLinearSolver();
+    const bool sparse = makeChartSolver(true);
+    if (!sparse) makeLinearSolver();
     CVodeSetLinearSolver(mem_, LS_, A_);
+    if (sparse) CVodeSetLinSysFn(mem_, linSys);
     if (spec_.maxOrder > 0) CVodeSetMaxOrd(mem_, spec_.maxOrder);
     if (spec_.maxStep > 0) CVodeSetMaxStep(mem_, spec_.maxStep);
     CVodeSetMaxNumSteps(mem_, 1000000);

@@ -75,6 +75,7 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
   }
   fq_.setZero(A_.nonZeros());
   fv_.setZero(A_.nonZeros());
+  fqm_.setZero(A_.nonZeros());
   for (Eigen::VectorXd* x : {&step_, &deltaP_, &vp_, &fp_}) x->setZero(n);
   qp_.setZero(model.nq);
   y_.setZero(n);
@@ -114,6 +115,56 @@ bool SparseNewtonMatrix::factorise(double cq, double cv) {
   Eigen::Map<Eigen::VectorXd> a(A_.valuePtr(), A_.nonZeros());
   a = -cq * fq_ - cv * fv_;
   for (int k : diagonal_) a[k] += 1.0;
+  return factoriseValues();
+}
+
+bool SparseNewtonMatrix::groupColumns(int first, int k) {
+  // (columns first .. first + k - 1) => kept when their row lists in A are equal
+  if (first < 0 || k < 1 || k > 6 || first + k > A_.cols()) return false;
+  const int* outer = A_.outerIndexPtr();
+  const int count = outer[first + 1] - outer[first];
+  for (int c = first + 1; c < first + k; ++c) {
+    if (outer[c + 1] - outer[c] != count) return false;
+    for (int e = 0; e < count; ++e)
+      if (A_.innerIndexPtr()[outer[c] + e] != A_.innerIndexPtr()[outer[first] + e]) return false;
+  }
+  groups_.push_back({first, k});
+  return true;
+}
+
+bool SparseNewtonMatrix::factorise(double cq, double cv,
+                                   const std::vector<Eigen::Matrix<double, 6, 6>>& maps) {
+  // (F_q, maps) => F_q M: in each group's rows, the row of its k columns times M_g
+  fqm_ = fq_;
+  const int* outer = A_.outerIndexPtr();
+  for (std::size_t g = 0; g < groups_.size() && g < maps.size(); ++g) {
+    const auto [first, k] = groups_[g];
+    const int count = outer[first + 1] - outer[first];
+    for (int e = 0; e < count; ++e)
+      for (int b = 0; b < k; ++b) {
+        double sum = 0.0;
+        for (int c = 0; c < k; ++c) sum += fq_[outer[first + c] + e] * maps[g](c, b);
+        fqm_[outer[first + b] + e] = sum;
+      }
+  }
+  // (F_q M, F_v) => A's values, its LU
+  Eigen::Map<Eigen::VectorXd> a(A_.valuePtr(), A_.nonZeros());
+  a = -cq * fqm_ - cv * fv_;
+  for (int k : diagonal_) a[k] += 1.0;
+  return factoriseValues();
+}
+
+void SparseNewtonMatrix::addFq(double c, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  // (F_q on A's compressed columns) => y += c F_q x, column by column
+  for (Eigen::Index j = 0; j < A_.cols(); ++j) {
+    const double cx = c * x[j];
+    if (cx == 0.0) continue;
+    for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
+      y[A_.innerIndexPtr()[k]] += cx * fq_[k];
+  }
+}
+
+bool SparseNewtonMatrix::factoriseValues() {
   if (banded_) {
     ok_ = band_.factorise(A_);
     return ok_;

@@ -80,6 +80,16 @@ class SparseNewtonMatrix {
   // (c_q, c_v) => LU of A = I - c_q F_q - c_v F_v; false when it is singular
   // (bordered band: bordered_band_lu.hpp; else SparseLU)
   bool factorise(double cq, double cv);
+
+  // Column groups for factorise(c_q, c_v, maps): the k <= 6 dofs of a joint from `first`
+  // (CVODE's chart kinematics, chart_newton_system.hpp). (first, k) => true when those columns
+  // have the same rows in A (then F_q M keeps A's structure); false and nothing kept otherwise
+  bool groupColumns(int first, int k);
+  // (c_q, c_v, per group a matrix M_g, its top-left k x k used) => LU of
+  // A = I - c_q F_q M - c_v F_v, M block diagonal: M_g on the groups' columns, I elsewhere
+  bool factorise(double cq, double cv, const std::vector<Eigen::Matrix<double, 6, 6>>& maps);
+  // (c, x) => y += c F_q x (F_q as formed, without M)
+  void addFq(double c, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   // (b) => x = A^-1 b (NaN when the last factorisation failed: Newton then gives up)
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   void solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
@@ -99,6 +109,10 @@ class SparseNewtonMatrix {
   Eigen::SparseMatrix<double> A_;  // structure fixed at construction; values per factorise
   std::vector<int> diagonal_;      // per column: the index of its diagonal entry in A_'s values
   Eigen::VectorXd fq_, fv_;        // F_q, F_v on A_'s structure
+  std::vector<std::array<int, 2>> groups_;  // column groups (first, k) of factorise(.., maps)
+  Eigen::VectorXd fqm_;                     // F_q M on A_'s structure
+  // (A's values set) => the numeric LU, ok_
+  bool factoriseValues();
   Eigen::VectorXd step_, deltaP_, qp_, vp_, fp_;
   mutable Eigen::VectorXd y_, work_;  // solve(): the permuted right-hand side, L's work vector
   std::vector<std::array<int, 9>> blockIndex_;  // per block: its entries in A_'s values, by column

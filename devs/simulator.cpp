@@ -92,8 +92,9 @@ bool Simulator::step() {
   for (const std::uint32_t i : imminent_) {
     AtomicBase* a = flat_.atomics[i];
     a->lambda();
-    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j) {
-      const PortBase* out = flat_.outPorts[j];
+    const std::span<PortBase* const> outs = a->outPorts();
+    for (std::uint32_t o = 0, j = flat_.outBegin[i]; o < outs.size(); ++o, ++j) {
+      const PortBase* out = outs[o];
       if (out->empty()) continue;
       if (traced)
         for (Listener* l : listeners_) l->onOutput(t, *a, *out);
@@ -137,8 +138,8 @@ bool Simulator::step() {
         l->onTransition(t, *a, kind, e);
         l->onState(t, *a);
       }
-    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
-      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
+    for (PortBase* out : a->outPorts())
+      if (!out->empty()) out->clear();
     if (input) clearInputs(*a);
     flags_[i] = 0;
     reschedule(i, t);

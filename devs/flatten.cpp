@@ -1,5 +1,7 @@
 #include "devs/flatten.hpp"
 
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "devs/coupled.hpp"
@@ -7,41 +9,55 @@
 namespace yardsim::devs {
 namespace {
 
-// (root, visit) => visit(atomic) for every atomic below root in depth-first order, components in
-// the order they were added; the stack holds one entry per level, not one per pending model
-template <class Visit>
-void forEachAtomic(Model& root, Visit&& visit) {
-  if (root.isAtomic()) {
-    visit(static_cast<AtomicBase&>(root));
-    return;
+// The atomics below a root in depth-first order, components in the order they were added; the
+// stack holds one entry per level, not one per pending model.
+class AtomicsInOrder {
+ public:
+  explicit AtomicsInOrder(Model& root) {
+    if (root.isAtomic()) {
+      single_ = static_cast<AtomicBase*>(&root);
+    } else {
+      const auto& top = static_cast<Coupled&>(root).components();
+      stack_.push_back({top.data(), top.data() + top.size()});
+    }
   }
+  // () => the next atomic, or nullptr after the last
+  AtomicBase* next() {
+    if (single_) return std::exchange(single_, nullptr);
+    while (!stack_.empty()) {
+      Level& level = stack_.back();
+      if (level.next == level.end) {
+        stack_.pop_back();
+        continue;
+      }
+      Model* m = (level.next++)->get();
+      if (m->isAtomic()) return static_cast<AtomicBase*>(m);
+      const auto& children = static_cast<Coupled*>(m)->components();
+      stack_.push_back({children.data(), children.data() + children.size()});
+    }
+    return nullptr;
+  }
+
+ private:
   struct Level {
     const std::unique_ptr<Model>* next;
     const std::unique_ptr<Model>* end;
   };
-  const auto& top = static_cast<Coupled&>(root).components();
-  std::vector<Level> stack{{top.data(), top.data() + top.size()}};
-  while (!stack.empty()) {
-    Level& level = stack.back();
-    if (level.next == level.end) {
-      stack.pop_back();
-      continue;
-    }
-    Model* m = (level.next++)->get();
-    if (m->isAtomic()) {
-      visit(static_cast<AtomicBase&>(*m));
-    } else {
-      const auto& children = static_cast<Coupled*>(m)->components();
-      stack.push_back({children.data(), children.data() + children.size()});
-    }
-  }
-}
+  std::vector<Level> stack_;
+  AtomicBase* single_ = nullptr;
+};
 
-// (output port, visit) => visit(input port) for every atomic input port its messages reach;
-// frontier is scratch
+// (output port, visit) => visit(input port) for every atomic input port its messages reach, in
+// the order of a stack seeded with its links (the last link first; a coupled model's port
+// replaced by its own links); frontier is scratch, used only when a link is a coupled model's
 template <class Visit>
 void forEachDestination(const PortBase& out, std::vector<PortBase*>& frontier, Visit&& visit) {
-  frontier.assign(out.links().begin(), out.links().end());
+  const std::span<PortBase* const> links = out.links();
+  std::size_t n = links.size();
+  // (links) => atomic ones visited from the last on, until a coupled model's port
+  while (n > 0 && links[n - 1]->owner().isAtomic()) visit(*links[--n]);
+  if (n == 0) return;
+  frontier.assign(links.begin(), links.begin() + static_cast<std::ptrdiff_t>(n));
   while (!frontier.empty()) {
     PortBase* p = frontier.back();
     frontier.pop_back();
@@ -60,34 +76,38 @@ FlatModel flatten(Model& root) {
   // one block of its final size
   std::size_t atomics = 0, outPorts = 0, dests = 0;
   std::vector<PortBase*> frontier;
-  forEachAtomic(root, [&](AtomicBase& a) {
+  for (AtomicsInOrder it(root); AtomicBase* a = it.next();) {
     ++atomics;
-    outPorts += a.outPorts().size();
-    for (const PortBase* out : a.outPorts())
-      forEachDestination(*out, frontier, [&](PortBase&) { ++dests; });
-  });
+    for (const PortBase* out : a->outPorts()) {
+      ++outPorts;
+      if (!out->links().empty()) forEachDestination(*out, frontier, [&](PortBase&) { ++dests; });
+    }
+  }
   flat.atomics.reserve(atomics);
   flat.outBegin.reserve(atomics + 1);
   flat.destBegin.reserve(outPorts + 1);
   flat.dests.reserve(dests);
 
-  // (hierarchy) => atomics in depth-first order, each with its index
-  forEachAtomic(root, [&](AtomicBase& a) {
-    a.simIndex_ = static_cast<std::uint32_t>(flat.atomics.size());
-    flat.atomics.push_back(&a);
-  });
+  // (hierarchy) => atomics in depth-first order, each with its index and its first output port
+  std::uint32_t firstOut = 0;
+  for (AtomicsInOrder it(root); AtomicBase* a = it.next();) {
+    a->simIndex_ = static_cast<std::uint32_t>(flat.atomics.size());
+    flat.atomics.push_back(a);
+    flat.outBegin.push_back(firstOut);
+    firstOut += static_cast<std::uint32_t>(a->outPorts().size());
+  }
+  flat.outBegin.push_back(firstOut);
 
   // (atomic output ports, couplings) => atomic input ports reached through any depth
-  for (AtomicBase* a : flat.atomics) {
-    flat.outBegin.push_back(static_cast<std::uint32_t>(flat.destBegin.size()));
+  for (const AtomicBase* a : flat.atomics) {
     for (const PortBase* out : a->outPorts()) {
       flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+      if (out->links().empty()) continue;
       forEachDestination(*out, frontier, [&](PortBase& p) {
         flat.dests.push_back({&p, static_cast<AtomicBase&>(p.owner()).simIndex()});
       });
     }
   }
-  flat.outBegin.push_back(static_cast<std::uint32_t>(flat.destBegin.size()));
   flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
   return flat;
 }

@@ -1,8 +1,6 @@
 #include "devs/model.hpp"
 
 #include <array>
-#include <cstdint>
-#include <cstring>
 
 #include "devs/coupled.hpp"
 #include "devs/model_arena.hpp"
@@ -37,33 +35,10 @@ constexpr auto kForbidden = [] {
 }
 }  // namespace
 
-namespace {
-// (eight bytes) => whether one of them is forbidden: a byte equal to c is a zero byte of
-// w ^ (c in every byte), and (x - 0x01..) & ~x & 0x80.. is non-zero exactly when x has one
-constexpr bool anyForbidden(std::uint64_t w) {
-  constexpr std::uint64_t ones = 0x0101010101010101ull, highs = 0x8080808080808080ull;
-  std::uint64_t found = 0;
-  for (const unsigned char c : {'.', ' ', '\t', '\n', '"'}) {
-    const std::uint64_t x = w ^ (ones * c);
-    found |= (x - ones) & ~x & highs;
-  }
-  return found != 0;
-}
-}  // namespace
-
 void checkName(std::string_view name, std::string_view what) {
-  // (name) => eight bytes at a time, then the last few one by one
-  const std::size_t n = name.size();
-  if (n == 0) refuseName(name, what);
-  const char* p = name.data();
-  std::size_t i = 0;
-  for (; i + 8 <= n; i += 8) {
-    std::uint64_t w;
-    std::memcpy(&w, p + i, 8);
-    if (anyForbidden(w)) refuseName(name, what);
-  }
-  for (; i < n; ++i)
-    if (kForbidden[static_cast<unsigned char>(p[i])]) refuseName(name, what);
+  if (name.empty()) refuseName(name, what);
+  for (const char c : name)
+    if (kForbidden[static_cast<unsigned char>(c)]) refuseName(name, what);
 }
 
 std::string PortBase::path() const {

@@ -54,8 +54,15 @@ template <class Visit>
 void forEachDestination(const PortBase& out, std::vector<PortBase*>& frontier, Visit&& visit) {
   const std::span<PortBase* const> links = out.links();
   std::size_t n = links.size();
-  // (links) => atomic ones visited from the last on, until a coupled model's port
-  while (n > 0 && links[n - 1]->owner().isAtomic()) visit(*links[--n]);
+  // (links) => from the last on, atomic ones visited and coupled models' ports coupled no further
+  // passed over, until a coupled model's port with couplings of its own
+  for (; n > 0; --n) {
+    PortBase* p = links[n - 1];
+    if (p->owner().isAtomic())
+      visit(*p);
+    else if (!p->links().empty())
+      break;
+  }
   if (n == 0) return;
   frontier.assign(links.begin(), links.begin() + static_cast<std::ptrdiff_t>(n));
   while (!frontier.empty()) {
@@ -85,6 +92,7 @@ FlatModel flatten(Model& root) {
   }
   flat.atomics.reserve(atomics);
   flat.outBegin.reserve(atomics + 1);
+  flat.outPorts.reserve(outPorts);
   flat.destBegin.reserve(outPorts + 1);
   flat.dests.reserve(dests);
 
@@ -100,7 +108,8 @@ FlatModel flatten(Model& root) {
 
   // (atomic output ports, couplings) => atomic input ports reached through any depth
   for (const AtomicBase* a : flat.atomics) {
-    for (const PortBase* out : a->outPorts()) {
+    for (PortBase* out : a->outPorts()) {
+      flat.outPorts.push_back(out);
       flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
       if (out->links().empty()) continue;
       forEachDestination(*out, frontier, [&](PortBase& p) {

@@ -18,11 +18,10 @@ struct FlatModel {
     PortBase* port;
     std::uint32_t atomic;
   };
-  ListVector<AtomicBase*> atomics;  // depth-first order of the hierarchy
-  // atomic i's output ports, atomics[i]->outPorts() in order, are the flat output ports
-  // outBegin[i] .. outBegin[i+1]
-  ListVector<std::uint32_t> outBegin;
-  ListVector<std::uint32_t> destBegin;  // flat output port j reaches dests[destBegin[j] .. [j+1])
+  ListVector<AtomicBase*> atomics;     // depth-first order of the hierarchy
+  ListVector<std::uint32_t> outBegin;  // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
+  ListVector<PortBase*> outPorts;
+  ListVector<std::uint32_t> destBegin;  // out port j reaches dests[destBegin[j] .. [j+1])
   ListVector<Destination> dests;
 };
 

@@ -92,9 +92,8 @@ bool Simulator::step() {
   for (const std::uint32_t i : imminent_) {
     AtomicBase* a = flat_.atomics[i];
     a->lambda();
-    const std::span<PortBase* const> outs = a->outPorts();
-    for (std::uint32_t o = 0, j = flat_.outBegin[i]; o < outs.size(); ++o, ++j) {
-      const PortBase* out = outs[o];
+    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j) {
+      const PortBase* out = flat_.outPorts[j];
       if (out->empty()) continue;
       if (traced)
         for (Listener* l : listeners_) l->onOutput(t, *a, *out);
@@ -138,8 +137,8 @@ bool Simulator::step() {
         l->onTransition(t, *a, kind, e);
         l->onState(t, *a);
       }
-    for (PortBase* out : a->outPorts())
-      if (!out->empty()) out->clear();
+    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
+      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
     if (input) clearInputs(*a);
     flags_[i] = 0;
     reschedule(i, t);

@@ -81,12 +81,14 @@ struct Current {
 };
 // initial-exec: the library is linked, not opened with dlopen, so the slab is found without a
 // call to __tls_get_addr per model
+// Two per thread: the models' and the lists' (apart, so that the models of one build stay side by
+// side: a list that grows leaves its old blocks behind, which would spread the models out).
 [[gnu::tls_model("initial-exec")]] thread_local Current current;
+[[gnu::tls_model("initial-exec")]] thread_local Current currentLists;
 
-// (size rounded to kAlign, at most a slab's room) => a block from the thread's current slab
-void* fromSlab(std::size_t size) {
+// (current slab of this thread, size rounded to kAlign, at most a slab's room) => a block from it
+void* fromSlab(Current& c, std::size_t size) {
   constexpr std::size_t kSlabBytes = ModelArena::kSlabBytes;
-  Current& c = current;
   if (!c.slab || c.used + size > kSlabBytes) {
     Slab* fresh = mapSlab();
     if (c.slab) retire(c.slab, c.blocks);
@@ -118,7 +120,7 @@ constexpr std::size_t ownMapping(std::size_t size) {
 void* ModelArena::allocate(std::size_t size) {
   size = (size + kAlign - 1) & ~(kAlign - 1);
   if (!kSlabs || size > kLargest) return ::operator new(size);
-  return fromSlab(size);
+  return fromSlab(current, size);
 }
 
 void ModelArena::release(void* block, std::size_t size) noexcept {
@@ -134,7 +136,7 @@ void ModelArena::release(void* block, std::size_t size) noexcept {
 void* ModelArena::allocateList(std::size_t size) {
   size = (size + kAlign - 1) & ~(kAlign - 1);
   if (!kSlabs) return ::operator new(size);
-  if (size <= kSlabRoom) return fromSlab(size);
+  if (size <= kSlabRoom) return fromSlab(currentLists, size);
   return mapAligned(ownMapping(size));
 }
 

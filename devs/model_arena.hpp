@@ -8,10 +8,10 @@
 // models: built together, freed together. Blocks above kLargest bytes, and every block in a
 // build with AddressSanitizer (which must see each block), come from the global heap.
 //
-// Lists sized once that go with the models (the flat model's and the Simulator's per-atomic
-// lists) come from the same slabs, whatever their size up to a slab's (allocateList): they take
-// no fresh small pages of their own. A list larger than a slab gets its own mapping of whole
-// slabs, advised the same way.
+// Lists that go with the models (components, couplings, the flat model's, the Simulator's) come
+// from slabs too, each thread's lists from a slab of their own beside its models' (allocateList,
+// any size up to a slab's; the models stay side by side). A list larger than a slab gets its own
+// mapping of whole slabs, advised the same way.
 #include <cstddef>
 #include <vector>
 

@@ -95,6 +95,18 @@ TEST_CASE("lists come from the current slab whatever their size up to a slab's")
   CHECK(values[999] == 499.5);
 }
 
+TEST_CASE("lists come from slabs apart from the models', which stay side by side") {
+  if (!ModelArena::usesSlabs()) return;
+  auto* a = static_cast<std::byte*>(ModelArena::allocate(304));
+  void* list = ModelArena::allocateList(2048);  // a list grown between two models
+  auto* b = static_cast<std::byte*>(ModelArena::allocate(304));
+  CHECK(slabOf(list) != slabOf(a));
+  if (slabOf(a) == slabOf(b)) CHECK(b - a == 304);
+  ModelArena::release(b, 304);
+  ModelArena::releaseList(list, 2048);
+  ModelArena::release(a, 304);
+}
+
 TEST_CASE("a list larger than a slab has its own mapping, returned when released") {
   const std::size_t before = ModelArena::slabsHeld();
   const std::size_t size = ModelArena::kSlabBytes + 4096;

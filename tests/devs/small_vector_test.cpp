@@ -73,12 +73,12 @@ TEST_CASE("a grown small vector's block comes from the model arena") {
   if (!yardsim::devs::ModelArena::usesSlabs()) return;
   SmallVector<std::uint64_t, 1> v;
   for (std::uint64_t i = 0; i < 3; ++i) v.push_back(i);
-  // (a block of 4 from the arena, then a block from the arena right after it) => side by side
-  void* next = yardsim::devs::ModelArena::allocate(16);
+  // (a block of 4 from the arena's lists, then another list right after it) => side by side
+  void* next = yardsim::devs::ModelArena::allocateList(16);
   const auto slab = [](const void* p) {
     return reinterpret_cast<std::uintptr_t>(p) & ~(yardsim::devs::ModelArena::kSlabBytes - 1);
   };
   if (slab(next) == slab(v.data()))
     CHECK(reinterpret_cast<std::byte*>(next) - reinterpret_cast<std::byte*>(v.data()) == 32);
-  yardsim::devs::ModelArena::release(next, 16);
+  yardsim::devs::ModelArena::releaseList(next, 16);
 }

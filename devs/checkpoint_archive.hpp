@@ -125,13 +125,13 @@ struct StateCodec<std::string> {
   static void load(CheckpointReader& r, std::string& v) { v = r.str(); }
 };
 
-template <class T>
-struct StateCodec<std::vector<T>> {
-  static void save(CheckpointWriter& w, const std::vector<T>& v) {
+template <class T, class A>
+struct StateCodec<std::vector<T, A>> {
+  static void save(CheckpointWriter& w, const std::vector<T, A>& v) {
     w.list(v.size());
     for (const auto& e : v) devs::save(w, e);
   }
-  static void load(CheckpointReader& r, std::vector<T>& v) {
+  static void load(CheckpointReader& r, std::vector<T, A>& v) {
     v.resize(r.list());
     for (auto& e : v) {
       if constexpr (std::is_same_v<T, bool>) {

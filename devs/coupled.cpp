@@ -38,7 +38,7 @@ std::uint64_t nameHash(std::string_view name) {
 }
 
 // (name index, position i, its name's hash) => i in the first free slot from the hash on
-void place(std::vector<std::uint32_t>& index, std::uint32_t i, std::uint64_t hash) {
+void place(ListVector<std::uint32_t>& index, std::uint32_t i, std::uint64_t hash) {
   const std::size_t mask = index.size() / 2 - 1;
   std::size_t s = hash & mask;
   while (index[2 * s] != 0) s = (s + 1) & mask;
@@ -88,7 +88,7 @@ void Coupled::index(std::uint32_t i, std::uint64_t hash) {
   if (2 * components_.size() > index_.size() / 2) {
     std::size_t slots = 4 * kLinearNames;
     while (slots < 2 * components_.size()) slots *= 2;
-    std::vector<std::uint32_t> old(std::move(index_));
+    ListVector<std::uint32_t> old(std::move(index_));
     index_.assign(2 * slots, 0);
     if (old.empty()) {
       for (std::uint32_t j = 0; j < i; ++j) place(index_, j, nameHash(components_[j]->name()));

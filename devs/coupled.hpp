@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "devs/model.hpp"
+#include "devs/model_arena.hpp"
 
 namespace yardsim::devs {
 
@@ -35,7 +36,9 @@ class Coupled : public Model {
   // ModelError like couple().
   void coupleDirect(PortBase& from, PortBase& to);
 
-  const std::vector<std::unique_ptr<Model>>& components() const { return components_; }
+  // Components in the order they were added (a list in the model arena, devs/model_arena.hpp).
+  using Components = ListVector<std::unique_ptr<Model>>;
+  const Components& components() const { return components_; }
   Model* findComponent(std::string_view name) const;
   std::size_t couplingCount() const { return couplings_; }
 
@@ -45,13 +48,13 @@ class Coupled : public Model {
   // (component at position i, its name's hash) => in the name index (rebuilt when half full)
   void index(std::uint32_t i, std::uint64_t hash);
 
-  std::vector<std::unique_ptr<Model>> components_;
+  Components components_;
   // Name index over components_, built once there are more than kLinearNames of them: open
   // addressing, a power-of-two number of slots of two entries: (position + 1, 0 for an empty
   // slot) and the low 32 bits of the name's hash. One array, so adding a component takes no heap
-  // block of its own.
+  // block of its own; in the model arena, as components_.
   static constexpr std::size_t kLinearNames = 8;
-  std::vector<std::uint32_t> index_;
+  ListVector<std::uint32_t> index_;
   std::size_t couplings_ = 0;
 };
 

@@ -95,15 +95,15 @@ void EventQueue::save(CheckpointWriter& w) const {
 
 void EventQueue::load(CheckpointReader& r) {
   r.section("event_queue");
-  std::vector<std::uint32_t> heap;
-  std::vector<Time> tn;
+  ListVector<std::uint32_t> heap;
+  ListVector<Time> tn;
   devs::load(r, heap);
   devs::load(r, tn);
   if (tn.size() != tn_.size())
     throw CheckpointError("the checkpoint's event queue has " + std::to_string(tn.size()) +
                           " models, this scene " + std::to_string(tn_.size()));
   // (heap, times) => positions rebuilt; every entry a model, once, with a finite time
-  std::vector<std::uint32_t> pos(tn.size(), kAbsent);
+  ListVector<std::uint32_t> pos(tn.size(), kAbsent);
   for (std::size_t k = 0; k < heap.size(); ++k) {
     if (heap[k] >= tn.size() || pos[heap[k]] != kAbsent || tn[heap[k]] == kInfinity)
       throw CheckpointError("the checkpoint's event queue is inconsistent at entry " +

@@ -1,10 +1,12 @@
 #pragma once
 // Indexed binary min-heap of next-event times: O(log n) to schedule, move or remove one model.
-// Passive models (tn = infinity) are kept out of the heap.
+// Passive models (tn = infinity) are kept out of the heap. Its lists are sized once (resize), in
+// the model arena beside the models.
 #include <cstdint>
 #include <vector>
 
 #include "devs/checkpoint_archive.hpp"
+#include "devs/model_arena.hpp"
 #include "devs/time.hpp"
 
 namespace yardsim::devs {
@@ -32,9 +34,9 @@ class EventQueue {
   void siftDown(std::uint32_t pos);
   void removeAt(std::uint32_t pos);
 
-  std::vector<std::uint32_t> heap_;  // model indices
-  std::vector<std::uint32_t> pos_;   // heap position of each model, or kAbsent
-  std::vector<Time> tn_;             // next event time of each model
+  ListVector<std::uint32_t> heap_;  // model indices
+  ListVector<std::uint32_t> pos_;   // heap position of each model, or kAbsent
+  ListVector<Time> tn_;             // next event time of each model
 };
 
 }  // namespace yardsim::devs

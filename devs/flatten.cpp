@@ -1,66 +1,122 @@
 #include "devs/flatten.hpp"
 
+#include <span>
+#include <utility>
+#include <vector>
+
 #include "devs/coupled.hpp"
 
 namespace yardsim::devs {
+namespace {
+
+// The atomics below a root in depth-first order, components in the order they were added; the
+// stack holds one entry per level, not one per pending model.
+class AtomicsInOrder {
+ public:
+  explicit AtomicsInOrder(Model& root) {
+    if (root.isAtomic()) {
+      single_ = static_cast<AtomicBase*>(&root);
+    } else {
+      const auto& top = static_cast<Coupled&>(root).components();
+      stack_.push_back({top.data(), top.data() + top.size()});
+    }
+  }
+  // () => the next atomic, or nullptr after the last
+  AtomicBase* next() {
+    if (single_) return std::exchange(single_, nullptr);
+    while (!stack_.empty()) {
+      Level& level = stack_.back();
+      if (level.next == level.end) {
+        stack_.pop_back();
+        continue;
+      }
+      Model* m = (level.next++)->get();
+      if (m->isAtomic()) return static_cast<AtomicBase*>(m);
+      const auto& children = static_cast<Coupled*>(m)->components();
+      stack_.push_back({children.data(), children.data() + children.size()});
+    }
+    return nullptr;
+  }
+
+ private:
+  struct Level {
+    const std::unique_ptr<Model>* next;
+    const std::unique_ptr<Model>* end;
+  };
+  std::vector<Level> stack_;
+  AtomicBase* single_ = nullptr;
+};
+
+// (output port, visit) => visit(input port) for every atomic input port its messages reach, in
+// the order of a stack seeded with its links (the last link first; a coupled model's port
+// replaced by its own links); frontier is scratch, used only when a link is a coupled model's
+template <class Visit>
+void forEachDestination(const PortBase& out, std::vector<PortBase*>& frontier, Visit&& visit) {
+  const std::span<PortBase* const> links = out.links();
+  std::size_t n = links.size();
+  // (links) => from the last on, atomic ones visited and coupled models' ports coupled no further
+  // passed over, until a coupled model's port with couplings of its own
+  for (; n > 0; --n) {
+    PortBase* p = links[n - 1];
+    if (p->owner().isAtomic())
+      visit(*p);
+    else if (!p->links().empty())
+      break;
+  }
+  if (n == 0) return;
+  frontier.assign(links.begin(), links.begin() + static_cast<std::ptrdiff_t>(n));
+  while (!frontier.empty()) {
+    PortBase* p = frontier.back();
+    frontier.pop_back();
+    if (p->owner().isAtomic())
+      visit(*p);
+    else
+      frontier.insert(frontier.end(), p->links().begin(), p->links().end());
+  }
+}
+
+}  // namespace
 
 FlatModel flatten(Model& root) {
   FlatModel flat;
-  // (hierarchy) => how many atomics and atomic output ports: every list below takes one block of
-  // its final size (a list that doubles its way up touches twice its size in fresh pages)
-  std::size_t atomics = 0, outPorts = 0;
-  std::vector<Model*> stack{&root};
-  while (!stack.empty()) {
-    Model* m = stack.back();
-    stack.pop_back();
-    if (m->isAtomic()) {
-      ++atomics;
-      outPorts += m->outPorts().size();
-    } else {
-      for (const auto& child : static_cast<Coupled*>(m)->components()) stack.push_back(child.get());
+  // (hierarchy) => how many atomics, atomic output ports and destinations: every list below takes
+  // one block of its final size
+  std::size_t atomics = 0, outPorts = 0, dests = 0;
+  std::vector<PortBase*> frontier;
+  for (AtomicsInOrder it(root); AtomicBase* a = it.next();) {
+    ++atomics;
+    for (const PortBase* out : a->outPorts()) {
+      ++outPorts;
+      if (!out->links().empty()) forEachDestination(*out, frontier, [&](PortBase&) { ++dests; });
     }
   }
   flat.atomics.reserve(atomics);
   flat.outBegin.reserve(atomics + 1);
   flat.outPorts.reserve(outPorts);
   flat.destBegin.reserve(outPorts + 1);
-  flat.dests.reserve(outPorts);  // a guess: one destination per output port
+  flat.dests.reserve(dests);
 
-  // (hierarchy) => atomics in depth-first order
-  stack.push_back(&root);
-  while (!stack.empty()) {
-    Model* m = stack.back();
-    stack.pop_back();
-    if (m->isAtomic()) {
-      flat.atomics.push_back(static_cast<AtomicBase*>(m));
-    } else {
-      const auto& children = static_cast<Coupled*>(m)->components();
-      for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(it->get());
-    }
+  // (hierarchy) => atomics in depth-first order, each with its index and its first output port
+  std::uint32_t firstOut = 0;
+  for (AtomicsInOrder it(root); AtomicBase* a = it.next();) {
+    a->simIndex_ = static_cast<std::uint32_t>(flat.atomics.size());
+    flat.atomics.push_back(a);
+    flat.outBegin.push_back(firstOut);
+    firstOut += static_cast<std::uint32_t>(a->outPorts().size());
   }
-  for (std::uint32_t i = 0; i < flat.atomics.size(); ++i) flat.atomics[i]->simIndex_ = i;
+  flat.outBegin.push_back(firstOut);
 
   // (atomic output ports, couplings) => atomic input ports reached through any depth
-  std::vector<PortBase*> frontier;
-  for (AtomicBase* a : flat.atomics) {
-    flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
+  for (const AtomicBase* a : flat.atomics) {
     for (PortBase* out : a->outPorts()) {
-      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
       flat.outPorts.push_back(out);
-      frontier.assign(out->links().begin(), out->links().end());
-      while (!frontier.empty()) {
-        PortBase* p = frontier.back();
-        frontier.pop_back();
-        Model& owner = p->owner();
-        if (owner.isAtomic()) {
-          flat.dests.push_back({p, static_cast<AtomicBase&>(owner).simIndex()});
-        } else {
-          frontier.insert(frontier.end(), p->links().begin(), p->links().end());
-        }
-      }
+      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+      if (out->links().empty()) continue;
+      forEachDestination(*out, frontier, [&](PortBase& p) {
+        flat.dests.push_back({&p, static_cast<AtomicBase&>(p.owner()).simIndex()});
+      });
     }
   }
-  flat.outBegin.push_back(static_cast<std::uint32_t>(flat.outPorts.size()));
   flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
   return flat;
 }

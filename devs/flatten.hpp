@@ -3,10 +3,13 @@
 // atomic output port, the list of atomic input ports its messages reach (following EIC, IC
 // and EOC couplings through every level). A message reaching one input port along two paths
 // is delivered twice, as the hierarchical semantics would.
+//
+// Every list is sized once (the hierarchy is counted first) and lives in the model arena beside
+// the models (devs/model_arena.hpp): set-up takes no fresh small pages per atomic.
 #include <cstdint>
-#include <vector>
 
 #include "devs/atomic.hpp"
+#include "devs/model_arena.hpp"
 
 namespace yardsim::devs {
 
@@ -15,11 +18,11 @@ struct FlatModel {
     PortBase* port;
     std::uint32_t atomic;
   };
-  std::vector<AtomicBase*> atomics;    // depth-first order of the hierarchy
-  std::vector<std::uint32_t> outBegin; // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
-  std::vector<PortBase*> outPorts;
-  std::vector<std::uint32_t> destBegin;  // out port j reaches dests[destBegin[j] .. [j+1])
-  std::vector<Destination> dests;
+  ListVector<AtomicBase*> atomics;     // depth-first order of the hierarchy
+  ListVector<std::uint32_t> outBegin;  // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
+  ListVector<PortBase*> outPorts;
+  ListVector<std::uint32_t> destBegin;  // out port j reaches dests[destBegin[j] .. [j+1])
+  ListVector<Destination> dests;
 };
 
 // (root model) => flat atomics and direct routes; sets each atomic's simIndex

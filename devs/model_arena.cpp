@@ -32,20 +32,28 @@ constexpr std::size_t kHeader = (sizeof(Slab) + ModelArena::kAlign - 1) & ~(Mode
 
 std::atomic<std::size_t> heldSlabs{0};
 
-// () => a fresh slab aligned to its size, one huge page where the kernel grants it
-Slab* mapSlab() {
+// (bytes, a multiple of kSlabBytes) => a fresh mapping aligned to kSlabBytes, advised as huge
+// pages
+void* mapAligned(std::size_t bytes) {
   constexpr std::size_t n = ModelArena::kSlabBytes;
-  void* raw = mmap(nullptr, 2 * n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  void* raw = mmap(nullptr, bytes + n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (raw == MAP_FAILED) throw std::bad_alloc();
-  // (2n bytes) => the n-aligned n bytes inside kept, the rest unmapped
+  // (bytes + n) => the n-aligned bytes inside kept, the rest unmapped
   const auto at = reinterpret_cast<std::uintptr_t>(raw);
   const std::uintptr_t start = (at + n - 1) & ~(n - 1);
   if (start > at) munmap(raw, start - at);
-  if (start + n < at + 2 * n) munmap(reinterpret_cast<void*>(start + n), at + 2 * n - start - n);
-  void* slab = reinterpret_cast<void*>(start);
+  if (start + bytes < at + bytes + n)
+    munmap(reinterpret_cast<void*>(start + bytes), at + n - start);
+  void* block = reinterpret_cast<void*>(start);
 #ifdef MADV_HUGEPAGE
-  madvise(slab, n, MADV_HUGEPAGE);
+  madvise(block, bytes, MADV_HUGEPAGE);
 #endif
+  return block;
+}
+
+// () => a fresh slab aligned to its size, one huge page where the kernel grants it
+Slab* mapSlab() {
+  void* slab = mapAligned(ModelArena::kSlabBytes);
   heldSlabs.fetch_add(1, std::memory_order_relaxed);
   return ::new (slab) Slab;
 }
@@ -73,14 +81,14 @@ struct Current {
 };
 // initial-exec: the library is linked, not opened with dlopen, so the slab is found without a
 // call to __tls_get_addr per model
+// Two per thread: the models' and the lists' (apart, so that the models of one build stay side by
+// side: a list that grows leaves its old blocks behind, which would spread the models out).
 [[gnu::tls_model("initial-exec")]] thread_local Current current;
+[[gnu::tls_model("initial-exec")]] thread_local Current currentLists;
 
-}  // namespace
-
-void* ModelArena::allocate(std::size_t size) {
-  size = (size + kAlign - 1) & ~(kAlign - 1);
-  if (!kSlabs || size > kLargest) return ::operator new(size);
-  Current& c = current;
+// (current slab of this thread, size rounded to kAlign, at most a slab's room) => a block from it
+void* fromSlab(Current& c, std::size_t size) {
+  constexpr std::size_t kSlabBytes = ModelArena::kSlabBytes;
   if (!c.slab || c.used + size > kSlabBytes) {
     Slab* fresh = mapSlab();
     if (c.slab) retire(c.slab, c.blocks);
@@ -94,6 +102,27 @@ void* ModelArena::allocate(std::size_t size) {
   return block;
 }
 
+// (block in a slab) => released; the slab unmapped with its last block once its owner moved on
+void toSlab(void* block) noexcept {
+  auto* slab = reinterpret_cast<Slab*>(reinterpret_cast<std::uintptr_t>(block) &
+                                       ~(ModelArena::kSlabBytes - 1));
+  if (slab->balance.fetch_sub(1, std::memory_order_acq_rel) == 1) unmapSlab(slab);
+}
+
+constexpr std::size_t kSlabRoom = ModelArena::kSlabBytes - kHeader;
+// (list bytes past a slab's room) => the bytes of its own mapping, whole slabs
+constexpr std::size_t ownMapping(std::size_t size) {
+  return (size + ModelArena::kSlabBytes - 1) & ~(ModelArena::kSlabBytes - 1);
+}
+
+}  // namespace
+
+void* ModelArena::allocate(std::size_t size) {
+  size = (size + kAlign - 1) & ~(kAlign - 1);
+  if (!kSlabs || size > kLargest) return ::operator new(size);
+  return fromSlab(current, size);
+}
+
 void ModelArena::release(void* block, std::size_t size) noexcept {
   if (!block) return;
   size = (size + kAlign - 1) & ~(kAlign - 1);
@@ -101,8 +130,27 @@ void ModelArena::release(void* block, std::size_t size) noexcept {
     ::operator delete(block);  // unsized: clang has no sized deallocation by default
     return;
   }
-  auto* slab = reinterpret_cast<Slab*>(reinterpret_cast<std::uintptr_t>(block) & ~(kSlabBytes - 1));
-  if (slab->balance.fetch_sub(1, std::memory_order_acq_rel) == 1) unmapSlab(slab);
+  toSlab(block);
+}
+
+void* ModelArena::allocateList(std::size_t size) {
+  size = (size + kAlign - 1) & ~(kAlign - 1);
+  if (!kSlabs) return ::operator new(size);
+  if (size <= kSlabRoom) return fromSlab(currentLists, size);
+  return mapAligned(ownMapping(size));
+}
+
+void ModelArena::releaseList(void* block, std::size_t size) noexcept {
+  if (!block) return;
+  size = (size + kAlign - 1) & ~(kAlign - 1);
+  if (!kSlabs) {
+    ::operator delete(block);  // unsized: clang has no sized deallocation by default
+    return;
+  }
+  if (size <= kSlabRoom)
+    toSlab(block);
+  else
+    munmap(block, ownMapping(size));
 }
 
 std::size_t ModelArena::slabsHeld() {

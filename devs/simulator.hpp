@@ -11,8 +11,8 @@
 // are computed from the states before any transition of that t, and zero time advances make
 // further event times at the same t, processed by the next step in order.
 #include <cstdint>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "devs/event_queue.hpp"
@@ -79,11 +79,12 @@ class Simulator {
 
   FlatModel flat_;
   EventQueue queue_;
-  std::vector<Time> tl_;                  // time of last transition per atomic
-  std::vector<std::uint8_t> flags_;       // kImminent | kHasInput per atomic
-  std::vector<std::uint32_t> imminent_;   // scratch, reused every step
-  std::vector<std::uint32_t> receivers_;  // non-imminent atomics that got input
-  std::vector<PortBase*> filled_;         // traced runs: input ports filled this step
+  // Per-atomic lists, sized once in the model arena (devs/model_arena.hpp) beside flat_'s
+  ListVector<Time> tl_;                  // time of last transition per atomic
+  ListVector<std::uint8_t> flags_;       // kImminent | kHasInput per atomic
+  ListVector<std::uint32_t> imminent_;   // scratch, reused every step
+  ListVector<std::uint32_t> receivers_;  // non-imminent atomics that got input
+  std::vector<PortBase*> filled_;        // traced runs: input ports filled this step
   std::vector<Listener*> listeners_;
   SimulatorStats stats_;
   Time t_;

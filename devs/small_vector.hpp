@@ -3,12 +3,15 @@
 // so the common short lists of model construction (a model's ports, a port's couplings) take no
 // heap block. The inline elements share their bytes with the heap pointer (a SmallVector of one
 // or two pointers is 16 or 24 bytes). Not copyable or movable: it lives inside models, whose
-// addresses are stable.
+// addresses are stable. Past N elements its block comes from the model arena, as the models'
+// (devs/model_arena.hpp: no fresh small pages of the heap per growing list).
 #include <cstdint>
 #include <cstring>
 #include <memory>
 #include <span>
 #include <type_traits>
+
+#include "devs/model_arena.hpp"
 
 namespace yardsim::devs {
 
@@ -22,7 +25,7 @@ class SmallVector {
   SmallVector(const SmallVector&) = delete;
   SmallVector& operator=(const SmallVector&) = delete;
   ~SmallVector() {
-    if (onHeap()) std::allocator<T>().deallocate(heap_, cap_);
+    if (onHeap()) ListAllocator<T>().deallocate(heap_, cap_);
   }
 
   // (value) => appended; the first heap block is taken past N elements, then doubled
@@ -33,6 +36,7 @@ class SmallVector {
   // (position <= size, value) => inserted there, the later elements moved up by one
   void insert(std::uint32_t at, T v) {
     push_back(v);
+    if (at + 1 == size_) return;  // appended: nothing to move
     T* d = data();
     std::memmove(static_cast<void*>(d + at + 1), d + at, (size_ - 1 - at) * sizeof(T));
     d[at] = v;
@@ -61,9 +65,9 @@ class SmallVector {
   bool onHeap() const { return cap_ > N; }
   // (capacity > size) => the elements moved to a heap block of that capacity
   void grow(std::uint32_t cap) {
-    T* fresh = std::allocator<T>().allocate(cap);
+    T* fresh = ListAllocator<T>().allocate(cap);
     std::memcpy(static_cast<void*>(fresh), data(), size_ * sizeof(T));
-    if (onHeap()) std::allocator<T>().deallocate(heap_, cap_);
+    if (onHeap()) ListAllocator<T>().deallocate(heap_, cap_);
     heap_ = fresh;
     cap_ = cap;
   }

@@ -3,7 +3,9 @@
 // variant, depth, width, atomics, internal, external, expected counts, build_seconds (model
 // construction and flattening), sim_seconds, transitions_per_second (of the simulation phase),
 // counts_ok, and the same two phases in process CPU time (build_cpu_seconds, sim_cpu_seconds),
-// which a busy machine disturbs less than wall time. Exit status 1 when the counts differ from the
+// which a busy machine disturbs less than wall time, and the minor page faults of the model's
+// construction, the Simulator's set-up and the simulation (build_faults, setup_faults,
+// sim_faults). Exit status 1 when the counts differ from the
 // closed form.
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -28,20 +30,28 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     const auto variant = bench::devstone::parseVariant(variantName);
+    const long f0 = bench::devstone::minorFaults();
     const double c0 = bench::devstone::cpuSeconds();
     const auto t0 = Clock::now();
     auto root = bench::devstone::build(variant, depth, width);
+    const long f1 = bench::devstone::minorFaults();
     devs::Simulator sim(*root);
     devs::Listener nullListener;
     if (hooks) sim.addListener(nullListener);
     const auto t1 = Clock::now();
     const double c1 = bench::devstone::cpuSeconds();
+    const long f2 = bench::devstone::minorFaults();
     sim.run();
     const auto t2 = Clock::now();
     const double c2 = bench::devstone::cpuSeconds();
+    const long f3 = bench::devstone::minorFaults();
     const bench::devstone::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
-                                      std::chrono::duration<double>(t2 - t1).count(), c1 - c0,
-                                      c2 - c1};
+                                      std::chrono::duration<double>(t2 - t1).count(),
+                                      c1 - c0,
+                                      c2 - c1,
+                                      f1 - f0,
+                                      f2 - f1,
+                                      f3 - f2};
     const bool ok = bench::devstone::printRun("yardsim", variantName.c_str(), depth, width,
                                               bench::devstone::count(*root),
                                               bench::devstone::expected(variant, depth, width), t);

@@ -26,22 +26,30 @@ int main(int argc, char** argv) {
     const int depth = std::stoi(argv[2]), width = std::stoi(argv[3]);
     const ds::Variant variant = ds::parseVariant(type);
     // () => the model built and the simulator set up
+    const long f0 = ds::minorFaults();
     const double c0 = ds::cpuSeconds();
     const auto t0 = Clock::now();
     auto* model = new DEVStone(type, width, depth, 0, 0);
     adevs::Simulator<IO_Type> sim(model);
     const auto t1 = Clock::now();
     const double c1 = ds::cpuSeconds();
+    const long f1 = ds::minorFaults();
     // () => every event executed
     while (sim.nextEventTime() < DBL_MAX) sim.execNextEvent();
     const auto t2 = Clock::now();
     const double c2 = ds::cpuSeconds();
+    const long f2 = ds::minorFaults();
     ds::Counts got;
     got.atomics = model->model->nAtomics();
     got.internal = model->model->nInternals();
     got.external = model->model->nExternals();
     const ds::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
-                         std::chrono::duration<double>(t2 - t1).count(), c1 - c0, c2 - c1};
+                         std::chrono::duration<double>(t2 - t1).count(),
+                         c1 - c0,
+                         c2 - c1,
+                         f1 - f0,
+                         -1,
+                         f2 - f1};
     return ds::printRun("adevs", type.c_str(), depth, width, got,
                         ds::expected(variant, depth, width), t)
                ? 0

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     const int depth = std::stoi(argv[2]), width = std::stoi(argv[3]);
     const ds::Variant variant = ds::parseVariant(type);
     // () => the model built, the coordinators made and started
+    const long f0 = ds::minorFaults();
     const double c0 = ds::cpuSeconds();
     const auto t0 = Clock::now();
     auto model = std::make_shared<cadmium::example::devstone::DEVStone>(type, width, depth, 0, 0);
@@ -32,17 +33,24 @@ int main(int argc, char** argv) {
     root.start();
     const auto t1 = Clock::now();
     const double c1 = ds::cpuSeconds();
+    const long f1 = ds::minorFaults();
     // () => every event executed
     root.simulate(std::numeric_limits<double>::infinity());
     const auto t2 = Clock::now();
     const double c2 = ds::cpuSeconds();
+    const long f2 = ds::minorFaults();
     root.stop();
     ds::Counts got;
     got.atomics = static_cast<std::uint64_t>(model->nAtomics());
     got.internal = static_cast<std::uint64_t>(model->nInternals());
     got.external = static_cast<std::uint64_t>(model->nExternals());
     const ds::RunTimes t{std::chrono::duration<double>(t1 - t0).count(),
-                         std::chrono::duration<double>(t2 - t1).count(), c1 - c0, c2 - c1};
+                         std::chrono::duration<double>(t2 - t1).count(),
+                         c1 - c0,
+                         c2 - c1,
+                         f1 - f0,
+                         -1,
+                         f2 - f1};
     return ds::printRun("cadmium", type.c_str(), depth, width, got,
                         ds::expected(variant, depth, width), t)
                ? 0

@@ -1,8 +1,13 @@
 #include "devs/flatten.hpp"
 
 #include <catch2/catch.hpp>
+#include <memory>
+#include <string>
+#include <vector>
 
+#include "devs/coupled.hpp"
 #include "support/gpt_builders.hpp"
+#include "support/test_models.hpp"
 
 using namespace yardsim;
 
@@ -26,4 +31,59 @@ TEST_CASE("flattening reaches atomic inputs through every level") {
   REQUIRE(flat.destBegin[procOut + 1] - flat.destBegin[procOut] == 1);
   CHECK(flat.dests[flat.destBegin[procOut]].port->path() == "gpt.ef.transd.solved");
   CHECK(flat.dests[flat.destBegin[procOut]].atomic == 1);
+}
+
+TEST_CASE(
+    "flattening a deep hierarchy: depth-first order, routes in stack order, lists sized once") {
+  // root: emitter e, then c<D>; c<k>: collector a<k>, c<k-1>, collector b<k>; c<k>.in feeds
+  // a<k>.in and c<k-1>.in, so e.out reaches every a<k> through up to D levels
+  constexpr int depth = 1500;
+  auto root = std::make_unique<devs::Coupled>("root");
+  auto& e = root->add<testing::Emitter>("e", std::vector<devs::Time>{1.0});
+  std::unique_ptr<devs::Coupled> below;
+  for (int k = 1; k <= depth; ++k) {
+    auto c = std::make_unique<devs::Coupled>("c" + std::to_string(k));
+    auto& in = c->addInPort<int>("in");
+    auto& a = c->add<testing::Collector>("a" + std::to_string(k));
+    c->couple(in, a.in);
+    if (below) {
+      auto& sub = static_cast<devs::Coupled&>(c->addComponent(std::move(below)));
+      c->couple(in, *sub.findPort("in"));
+    }
+    c->add<testing::Collector>("b" + std::to_string(k));
+    below = std::move(c);
+  }
+  auto& top = static_cast<devs::Coupled&>(root->addComponent(std::move(below)));
+  root->couple(e.out, *top.findPort("in"));
+
+  const auto flat = devs::flatten(*root);
+  REQUIRE(flat.atomics.size() == 1 + 2 * depth);
+  // (hierarchy) => e, a<D> .. a<1>, b<1> .. b<D>
+  CHECK(flat.atomics[0]->name() == "e");
+  bool ordered = true;
+  for (int k = 1; k <= depth; ++k) {
+    ordered = ordered && flat.atomics[1 + depth - k]->name() == "a" + std::to_string(k) &&
+              flat.atomics[depth + k]->name() == "b" + std::to_string(k);
+  }
+  CHECK(ordered);
+  for (std::uint32_t i = 0; i < flat.atomics.size(); ++i) CHECK(flat.atomics[i]->simIndex() == i);
+
+  // (e.out) => a<1> .. a<D>: the deepest first, as a stack seeded with the links delivers them
+  const std::uint32_t eOut = flat.outBegin[0];
+  REQUIRE(flat.destBegin[eOut + 1] - flat.destBegin[eOut] == depth);
+  bool routed = true;
+  for (int k = 1; k <= depth; ++k) {
+    const auto& d = flat.dests[flat.destBegin[eOut] + static_cast<std::uint32_t>(k - 1)];
+    routed = routed && d.port->owner().name() == "a" + std::to_string(k) &&
+             d.atomic == static_cast<std::uint32_t>(1 + depth - k);
+  }
+  CHECK(routed);
+  // every output port listed (e.out, then each collector's tick), no tick routed anywhere
+  CHECK(flat.outBegin.back() == 1 + 2 * depth);
+  CHECK(flat.destBegin.back() == depth);
+  // (counted first) => each list one block of its final size
+  CHECK(flat.atomics.capacity() == flat.atomics.size());
+  CHECK(flat.outBegin.capacity() == flat.outBegin.size());
+  CHECK(flat.destBegin.capacity() == flat.destBegin.size());
+  CHECK(flat.dests.capacity() == flat.dests.size());
 }

@@ -77,6 +77,49 @@ TEST_CASE("large blocks come from the global heap") {
   ModelArena::release(small, 16);
 }
 
+TEST_CASE("lists come from the current slab whatever their size up to a slab's") {
+  using yardsim::devs::ListVector;
+  const std::size_t big = 4 * ModelArena::kLargest;  // the heap's for a model, a slab's for a list
+  auto* list = static_cast<std::byte*>(ModelArena::allocateList(big));
+  CHECK(reinterpret_cast<std::uintptr_t>(list) % ModelArena::kAlign == 0);
+  std::memset(list, 0x5a, big);
+  auto* after = static_cast<std::byte*>(ModelArena::allocateList(24));
+  if (ModelArena::usesSlabs() && slabOf(after) == slabOf(list)) CHECK(after - list == big);
+  ModelArena::releaseList(after, 24);
+  ModelArena::releaseList(list, big);
+  // (a list sized once) => its elements, from the arena
+  ListVector<double> values;
+  values.reserve(1000);
+  for (int i = 0; i < 1000; ++i) values.push_back(0.5 * i);
+  CHECK(values.capacity() == 1000);
+  CHECK(values[999] == 499.5);
+}
+
+TEST_CASE("lists come from slabs apart from the models', which stay side by side") {
+  if (!ModelArena::usesSlabs()) return;
+  auto* a = static_cast<std::byte*>(ModelArena::allocate(304));
+  void* list = ModelArena::allocateList(2048);  // a list grown between two models
+  auto* b = static_cast<std::byte*>(ModelArena::allocate(304));
+  CHECK(slabOf(list) != slabOf(a));
+  if (slabOf(a) == slabOf(b)) CHECK(b - a == 304);
+  ModelArena::release(b, 304);
+  ModelArena::releaseList(list, 2048);
+  ModelArena::release(a, 304);
+}
+
+TEST_CASE("a list larger than a slab has its own mapping, returned when released") {
+  const std::size_t before = ModelArena::slabsHeld();
+  const std::size_t size = ModelArena::kSlabBytes + 4096;
+  auto* list = static_cast<std::byte*>(ModelArena::allocateList(size));
+  if (ModelArena::usesSlabs())
+    CHECK(reinterpret_cast<std::uintptr_t>(list) % ModelArena::kSlabBytes == 0);
+  std::memset(list, 0x11, size);  // every byte is there
+  CHECK(list[size - 1] == std::byte{0x11});
+  CHECK(ModelArena::slabsHeld() == before);  // not a slab: no other block shares it
+  ModelArena::releaseList(list, size);
+  CHECK(ModelArena::slabsHeld() == before);
+}
+
 TEST_CASE("models are built in the arena and freed with it") {
   if (!ModelArena::usesSlabs()) return;
   auto root = std::make_unique<yardsim::devs::Coupled>("root");

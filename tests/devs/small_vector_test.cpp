@@ -1,6 +1,7 @@
 #include "devs/small_vector.hpp"
 
 #include <catch2/catch.hpp>
+#include <cstddef>
 #include <cstdint>
 
 using yardsim::devs::SmallVector;
@@ -55,4 +56,29 @@ TEST_CASE(
   v.insert(0, 9);
   REQUIRE(v.size() == 5);
   for (std::uint32_t i = 0; i < 5; ++i) CHECK(v[i] == static_cast<int>(9 + i));
+}
+
+TEST_CASE("insert at the end appends, in the middle moves the later elements up") {
+  SmallVector<int, 2> v;
+  v.insert(0, 1);  // at the end of an empty list
+  v.insert(1, 3);  // at the end
+  v.insert(1, 2);  // in the middle, past the inline capacity
+  v.insert(3, 4);  // at the end again
+  v.insert(0, 0);  // at the front
+  REQUIRE(v.size() == 5);
+  for (std::uint32_t i = 0; i < 5; ++i) CHECK(v[i] == static_cast<int>(i));
+}
+
+TEST_CASE("a grown small vector's block comes from the model arena") {
+  if (!yardsim::devs::ModelArena::usesSlabs()) return;
+  SmallVector<std::uint64_t, 1> v;
+  for (std::uint64_t i = 0; i < 3; ++i) v.push_back(i);
+  // (a block of 4 from the arena's lists, then another list right after it) => side by side
+  void* next = yardsim::devs::ModelArena::allocateList(16);
+  const auto slab = [](const void* p) {
+    return reinterpret_cast<std::uintptr_t>(p) & ~(yardsim::devs::ModelArena::kSlabBytes - 1);
+  };
+  if (slab(next) == slab(v.data()))
+    CHECK(reinterpret_cast<std::byte*>(next) - reinterpret_cast<std::byte*>(v.data()) == 32);
+  yardsim::devs::ModelArena::releaseList(next, 16);
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Indexed binary min-heap of next-event times: O(log n) to schedule, move or remove one model.
 // Passive models (tn = infinity) are kept out of the heap. Its lists are sized once (resize), in
-// the model arena beside the models.
+// the model arena's list slabs (apart from the models, devs/model_arena.hpp).
 #include <cstdint>
 #include <vector>
 

@@ -67,29 +67,36 @@ inline Force inertiaForceSpatial(const SpatialInertia& I, const Transform& X, co
 
 // flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products and
 // cross products as calls); kZeroAcc: ddq = 0 (biasForces), which also keeps the spatial form of
-// the inertia force (inertiaForceSpatial); rnea takes the centroidal form (inertiaForceCentroidal)
+// the inertia force (inertiaForceSpatial); rnea takes the centroidal form (inertiaForceCentroidal).
+// placed: null, or a Data whose X_WB and S already hold q's placements (used instead of placing
+// the bodies again: the same doubles); sub: null, or the bodies whose joint forces are wanted (a
+// set closed under children: only they get an inertia force and a backward step, and only they
+// and their ancestors a forward step; the other entries of out are left as they were)
 template <bool kZeroAcc>
 YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
                               const Eigen::VectorXd& v, const Eigen::VectorXd* ddq,
-                              const ExternalForces* fext, Eigen::VectorXd& out) {
+                              const ExternalForces* fext, Eigen::VectorXd& out,
+                              const Data* placed = nullptr, const SubtreeMask* sub = nullptr) {
+  const Data& k = placed != nullptr ? *placed : d;
   d.A_W[0].head<3>().setZero();
   d.A_W[0].tail<3>() = -m.gravity;
   // (q, v, ddq) => X_WB, S_W, V_W, A_W, F_W = I_W A_W + V_W x* I_W V_W - F_ext_W
   for (int i = 1; i < m.nbodies; ++i) {
-    placeBody(m, d, i, q);
+    if (sub != nullptr && !sub->forward[static_cast<std::size_t>(i)]) continue;
+    if (placed == nullptr) placeBody(m, d, i, q);
     const int p = m.parent[i];
-    const Transform& X = d.X_WB[i];
+    const Transform& X = k.X_WB[i];
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     if (nv == 1) {
-      const Motion s = worldSubspaceColumn(m, d, i);
+      const Motion s = worldSubspaceColumn(m, k, i);
       d.S_W.col(iv) = s;
       const Motion vJ = s * v[iv];
       d.V_W[i] = d.V_W[p] + vJ;
       d.A_W[i] = d.A_W[p] + crossMotion(d.V_W[i], vJ);
       if constexpr (!kZeroAcc) d.A_W[i] += s * (*ddq)[iv];
     } else {
-      for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
+      for (int c = 0; c < nv; ++c) d.S_W.col(iv + c) = X.actMotion(k.S[i].col(c));
       const auto S = d.S_W.middleCols(iv, nv);
       const Motion vJ = nv > 0 ? Motion(S * v.segment(iv, nv)) : Motion::Zero();
       d.V_W[i] = d.V_W[p] + vJ;
@@ -101,6 +108,7 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
         if (nv > 0) d.A_W[i] += S * ddq->segment(iv, nv);
       }
     }
+    if (sub != nullptr && !sub->subtree[static_cast<std::size_t>(i)]) continue;
     if (d.hasAddedMass[i]) {
       // I + A_W (added mass); gravity, folded into the base acceleration -g, acts on the rigid
       // mass only: A_W (0, -g) is taken back
@@ -121,6 +129,7 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
   }
   // (F_W) => tau = S_W^T F_W, F_W(parent) += F_W
   for (int i = m.nbodies - 1; i >= 1; --i) {
+    if (sub != nullptr && !sub->subtree[static_cast<std::size_t>(i)]) continue;
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     if (nv == 1) {
@@ -129,7 +138,7 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
       out.segment(iv, nv).noalias() = d.S_W.middleCols(iv, nv).transpose() * d.F_W[i];
     }
     const int p = m.parent[i];
-    if (p > 0) d.F_W[p] += d.F_W[i];
+    if (p > 0 && (sub == nullptr || sub->subtree[static_cast<std::size_t>(p)])) d.F_W[p] += d.F_W[i];
   }
 }
 
@@ -145,6 +154,30 @@ const Eigen::VectorXd& rnea(const Model& m, Data& d, const Eigen::VectorXd& q, c
 const Eigen::VectorXd& biasForces(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                   const ExternalForces* fext) {
   rneaImpl<true>(m, d, q, v, nullptr, fext, d.nle);
+  return d.nle;
+}
+
+void SubtreeMask::mark(const Model& m, const std::vector<char>& roots) {
+  // (roots) => subtree: a body is in it when it or its parent is; forward: the subtree and every
+  // ancestor of it
+  subtree.assign(static_cast<std::size_t>(m.nbodies), 0);
+  forward.assign(static_cast<std::size_t>(m.nbodies), 0);
+  any = false;
+  for (int i = 1; i < m.nbodies; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    subtree[u] = (roots[u] != 0 || subtree[static_cast<std::size_t>(m.parent[i])] != 0) ? 1 : 0;
+    forward[u] = subtree[u];
+    any = any || subtree[u] != 0;
+  }
+  for (int i = m.nbodies - 1; i >= 1; --i)
+    if (forward[static_cast<std::size_t>(i)] != 0) forward[static_cast<std::size_t>(m.parent[i])] = 1;
+}
+
+const Eigen::VectorXd& biasForcesOfSubtrees(const Model& m, Data& d, const Data& placed,
+                                            const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                            const SubtreeMask& sub) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, &v, nullptr, "biasForcesOfSubtrees");
+  rneaImpl<true>(m, d, q, v, nullptr, nullptr, d.nle, &placed, &sub);
   return d.nle;
 }
 

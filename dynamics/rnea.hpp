@@ -3,6 +3,8 @@
 // the world frame (velocities, accelerations and forces in world coordinates, so a joint force
 // passes to the parent by addition), and the bias forces h(q, v) = RNEA(q, v, 0).
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "dynamics/data.hpp"
@@ -19,5 +21,24 @@ const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::VectorX
 /// (q, v, external forces) => data.nle = h(q, v) - sum J_i^T F_ext_i, i.e. RNEA with ddq = 0.
 const Eigen::VectorXd& biasForces(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                   const ExternalForces* fext = nullptr);
+
+/// Bodies of a model by index (world = 0): `subtree` marks the bodies of the subtrees of some
+/// joints, `forward` those and their ancestors. Sized by mark(); assign() reuses the capacity,
+/// so a mask marked again for the same model does not allocate.
+struct SubtreeMask {
+  std::vector<char> subtree, forward;
+  bool any = false;  ///< the subtree is not empty
+  /// (roots[i] != 0: body i's joint is wanted, size nbodies) => subtree, forward, any
+  void mark(const Model& model, const std::vector<char>& roots);
+};
+
+/// (q, v; placed: a Data holding forwardKinematics(q) (X_WB, S); the subtrees of the wanted
+/// joints) => data.nle[iv] = h(q, v) for every joint of the mask's subtree, N or N m: the same
+/// doubles as biasForces (no external forces), without placing the bodies again and without
+/// the bodies outside the subtrees and their supports. The other entries of data.nle keep
+/// their values.
+const Eigen::VectorXd& biasForcesOfSubtrees(const Model& model, Data& data, const Data& placed,
+                                            const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                                            const SubtreeMask& mask);
 
 }  // namespace yardsim::dynamics

@@ -63,6 +63,10 @@ class ForceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// (model, spatial forces f on its bodies, joint forces tau) => every coefficient is finite
+bool forcesFinite(const dynamics::Model& model, const dynamics::ExternalForces& f,
+                  const Eigen::VectorXd& tau);
+
 class ForceProvider {
  public:
   explicit ForceProvider(std::string name) : name_(std::move(name)) {}
@@ -78,6 +82,12 @@ class ForceProvider {
   // (stage) => forces added to f and generalized forces added to tau (size nv); throws
   // ForceError when what this provider added is not finite. Allocation-free given a scratch.
   void evaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const;
+  // (stage) => the same forces as evaluate(), added without the check: for a caller that adds
+  // several providers' forces, checks their sum once (forcesFinite) and, when it is not finite,
+  // evaluates them again through evaluate() to name the provider (mechanics/stage.cpp)
+  void evaluateUnchecked(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const {
+    doEvaluate(s, f, tau);
+  }
   // (stage) => energy stored by this provider, J (gravity: m g h; a rope: its strain energy)
   double potentialEnergy(const Stage& s) const { return doPotentialEnergy(s); }
   // (stage) => power of the non-conservative part into the system, W (damping <= 0; a winch

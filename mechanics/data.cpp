@@ -7,12 +7,14 @@ Data::Data(const System& s)
       scratch(s.model()),
       view(s.model()),
       feedforward(s.model()),
+      drivenJoints(static_cast<std::size_t>(s.model().nbodies), 0),
       reaction(s.model()),
       spForces(s.model()),
       spTau(Eigen::VectorXd::Zero(s.model().nv)),
       prescribedMask(static_cast<std::size_t>(s.model().nv), 0),
       prescribedAcc(Eigen::VectorXd::Zero(s.model().nv)),
       accelScratch(Eigen::VectorXd::Zero(s.model().nv)) {
+  feedforwardMask.mark(s.model(), drivenJoints);  // (sized once: a stage marks it again)
   for (const forces::ForceProvider* p : s.providers()) providerScratch.push_back(p->makeScratch());
 }
 

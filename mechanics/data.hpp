@@ -13,6 +13,7 @@
 #include "dynamics/data.hpp"
 #include "dynamics/external_forces.hpp"
 #include "dynamics/multibody_system.hpp"
+#include "dynamics/rnea.hpp"
 #include "forces/force_provider.hpp"
 #include "mechanics/set_points.hpp"
 #include "mechanics/system.hpp"
@@ -25,6 +26,8 @@ struct Data {
   dynamics::Data scratch;             // kinematics for power, events and blow-up checks
   dynamics::Data view;                // kinematics of the committed state, for channels
   dynamics::Data feedforward;         // bias forces h(q, v) for the servos
+  std::vector<char> drivenJoints;     // per body: its joint is servo-driven at this stage
+  dynamics::SubtreeMask feedforwardMask;  // their subtrees and supports (the feedforward's RNEA)
   dynamics::Data reaction;            // RNEA for the joint reactions
   dynamics::ExternalForces spForces;  // the set-point forces (actor loads), for their power
   Eigen::VectorXd spTau;              // the servos' joint forces, N m or N

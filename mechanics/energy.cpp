@@ -41,7 +41,7 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
   d.setPoints = &sp;
   d.spForces.clear();
   d.spTau.setZero();
-  setPointForces(s, d, sp, t, q, v, d.spForces, d.spTau);
+  setPointForces(s, d, sp, t, q, v, d.scratch, d.spForces, d.spTau);
   p += d.spTau.dot(v);
   if (prescribedDofs(s, d,
                      sp)) {  // (prescribed dofs) => the power of the effort that enforces them

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "dynamics/rnea.hpp"
 #include "mechanics/follow_draft.hpp"
@@ -22,15 +23,20 @@ bool prescribedDofs(const System& s, Data& d, const SetPoints& sp) {
 }
 
 void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
-                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, dynamics::ExternalForces& f,
-                    Eigen::VectorXd& tau) {
+                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, const dynamics::Data& kin,
+                    dynamics::ExternalForces& f, Eigen::VectorXd& tau) {
   const auto& m = s.model();
   const ServoSettings& servo = s.servo();
   const double wc = servo.bandwidth;
-  // (q, v) => bias forces h(q, v), the drives' feedforward (gravity and velocity terms)
-  const bool driving =
-      std::any_of(sp.drives.begin(), sp.drives.end(), [](auto& j) { return j.active; });
-  if (driving) dynamics::biasForces(m, d.feedforward, q, v);
+  // (q, v, the placements in kin) => bias forces h(q, v) of the servo-driven joints, their
+  // feedforward (gravity and velocity terms): RNEA over their subtrees and supports only
+  for (int i = 0; i < m.nbodies; ++i) {
+    const JointDrive& j = sp.drives[static_cast<std::size_t>(i)];
+    d.drivenJoints[static_cast<std::size_t>(i)] = (i > 0 && j.active && !j.prescribed) ? 1 : 0;
+  }
+  d.feedforwardMask.mark(m, d.drivenJoints);
+  if (d.feedforwardMask.any)
+    dynamics::biasForcesOfSubtrees(m, d.feedforward, kin, q, v, d.feedforwardMask);
   for (int i = 1; i < m.nbodies; ++i) {
     // (ramp reference, servo, feedforward) => bounded joint force of a driven 1-dof joint
     const JointDrive& j = sp.drives[i];
@@ -55,6 +61,27 @@ void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
   }
 }
 
+namespace {
+// (a stage whose forces f are not finite) => throws the ForceError of the first provider that
+// makes them non-finite when evaluated again in order from zero (allocates: an error path), or
+// one naming the body when only their sum is not finite
+[[noreturn]] void diagnoseForces(const System& s, Data& d, const forces::Stage& stage,
+                                 const dynamics::ExternalForces& f) {
+  const auto& m = s.model();
+  dynamics::ExternalForces again(m);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(m.nv);
+  forEachProvider(s, d, stage, [&](const forces::ForceProvider& p, const forces::Stage& st) {
+    p.evaluate(st, again, tau);
+  });
+  std::string body = "a joint";
+  for (int b = m.nbodies - 1; b >= 1; --b)
+    if (!f.bodyFrame(b).allFinite() || (f.hasWorldFrame() && !f.worldFrame(b).allFinite()))
+      body = "body '" + m.names[static_cast<std::size_t>(b)] + "'";
+  throw forces::ForceError("the force providers' sum is not finite on " + body + " at t = " +
+                           std::to_string(stage.t) + " s; take a smaller step");
+}
+}  // namespace
+
 void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
                  const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
                  Eigen::VectorXd& tau) {
@@ -68,9 +95,14 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
   }
   if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any())
     d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);
-  forEachProvider(s, d, d.stage(s, t, kin, q, v),
-                  [&](const forces::ForceProvider& p, const forces::Stage& st) { p.evaluate(st, f, tau); });
-  setPointForces(s, d, sp, t, q, v, f, tau);
+  // (stage) => every provider's forces, their sum checked once; not finite: evaluated again one
+  // by one, each checked, from zero, so the error names the first provider that made it
+  const forces::Stage stage = d.stage(s, t, kin, q, v);
+  forEachProvider(s, d, stage, [&](const forces::ForceProvider& p, const forces::Stage& st) {
+    p.evaluateUnchecked(st, f, tau);
+  });
+  if (!forces::forcesFinite(s.model(), f, tau)) diagnoseForces(s, d, stage, f);
+  setPointForces(s, d, sp, t, q, v, kin, f, tau);
 }
 
 void connectStage(const System& s, Data& d) {

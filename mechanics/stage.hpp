@@ -20,8 +20,8 @@ bool prescribedDofs(const System& s, Data& d, const SetPoints& sp);
 // (N m or N: ramp reference, PD at the servo bandwidth, bias-force feedforward, bounded) and the
 // actors' loads added to f (world frame)
 void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
-                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, dynamics::ExternalForces& f,
-                    Eigen::VectorXd& tau);
+                    const Eigen::VectorXd& q, const Eigen::VectorXd& v, const dynamics::Data& kin,
+                    dynamics::ExternalForces& f, Eigen::VectorXd& tau);
 
 // (t, q, v, kinematics of (q, v) in kin, the set-points d.setPoints) => every provider's forces,
 // then the set-point forces, added to f and tau; the prescribed dofs handed to the kernel

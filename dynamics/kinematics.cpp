@@ -41,13 +41,6 @@ Motion bodyVelocityWorld(const Data& d, int body) { return d.X_WB[body].actMotio
 
 Motion bodyAccelerationWorld(const Data& d, int body) { return d.X_WB[body].actMotion(d.A_B[body]); }
 
-Vector3 pointPosition(const Data& d, int body, const Vector3& p_B) { return d.X_WB[body].actPoint(p_B); }
-
-Vector3 pointVelocity(const Data& d, int body, const Vector3& p_B) {
-  const Motion& v = d.V_B[body];
-  return d.X_WB[body].R * (v.tail<3>() + v.head<3>().cross(p_B));
-}
-
 Vector3 pointAcceleration(const Data& d, int body, const Vector3& p_B) {
   // (V, A, p) => a_O + alpha x p + w x (v_O + w x p), body frame, then rotated to the world
   const Motion& v = d.V_B[body];

@@ -26,10 +26,16 @@ void forwardKinematics(const Model& model, Data& data, const Eigen::VectorXd& q,
 Motion bodyVelocityWorld(const Data& data, int body);
 /// Spatial acceleration of a body in the world frame (about the world origin); needs FK(q, v, ddq).
 Motion bodyAccelerationWorld(const Data& data, int body);
-/// Position in the world of the point p_B fixed on a body; needs FK(q).
-Vector3 pointPosition(const Data& data, int body, const Vector3& p_B);
-/// Velocity in the world frame of the point p_B fixed on a body; needs FK(q, v).
-Vector3 pointVelocity(const Data& data, int body, const Vector3& p_B);
+/// Position in the world of the point p_B fixed on a body; needs FK(q). (Inline: the rope paths
+/// call it for every attachment at every stage.)
+inline Vector3 pointPosition(const Data& data, int body, const Vector3& p_B) {
+  return data.X_WB[body].actPoint(p_B);
+}
+/// Velocity in the world frame of the point p_B fixed on a body; needs FK(q, v). (Inline.)
+inline Vector3 pointVelocity(const Data& data, int body, const Vector3& p_B) {
+  const Motion& v = data.V_B[body];
+  return data.X_WB[body].R * (v.tail<3>() + v.head<3>().cross(p_B));
+}
 /// Classical acceleration in the world frame of the point p_B fixed on a body; needs FK(q, v, ddq).
 Vector3 pointAcceleration(const Data& data, int body, const Vector3& p_B);
 /// (roll, pitch, yaw) of the body in the world, R_WB = Rz(yaw) Ry(pitch) Rx(roll); needs FK(q).

@@ -15,15 +15,15 @@ namespace yardsim::mechanics {
 double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   // (initial state) => total weight x the system's size, plus its kinetic and strain energy
   const auto& m = s.model();
-  dynamics::forwardKinematics(m, d.scratch, q, v);
+  const dynamics::Data& kin = d.scratchKinematics(s, q, v);
   std::vector<dynamics::Vector3> points;
-  for (int i = 1; i < m.nbodies; ++i) points.push_back(d.scratch.X_WB[i].p);
-  const forces::Stage stage{0.0, m, d.scratch, q, v};
+  for (int i = 1; i < m.nbodies; ++i) points.push_back(kin.X_WB[i].p);
+  const forces::Stage stage{0.0, m, kin, q, v};
   double stored = 0.0;
   for (const auto& r : s.ropes()) {  // (every branch's points) => the system's extent
     for (int j = 0; j < r->branchCount(); ++j)
       for (const auto& a : r->branch(j).points())
-        points.push_back(dynamics::pointPosition(d.scratch, a.body, a.p_B));
+        points.push_back(dynamics::pointPosition(kin, a.body, a.p_B));
     stored += r->potentialEnergy(stage);
   }
   double size = 1.0;
@@ -31,7 +31,7 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
     for (const auto& b : points) size = std::max(size, (a - b).norm());
   double kinetic = 0.0;
   for (int i = 1; i < m.nbodies; ++i)
-    kinetic += 0.5 * d.scratch.V_B[i].dot(m.inertias[i].apply(d.scratch.V_B[i]));
+    kinetic += 0.5 * kin.V_B[i].dot(m.inertias[i].apply(kin.V_B[i]));
   return m.totalMass() * std::max(m.gravity.norm(), 1.0) * size + kinetic + stored;
 }
 
@@ -70,17 +70,18 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
                  "its state became NaN or infinite", likelyCause(s, limits.method, limits.dt));
   }
   // (energy balance) => a rise beyond the bound, naming the most energetic body and element
-  const double rise = energy(s, d, d.scratch, q, v, t) - work - limits.balance0;
+  dynamics::Data& kin = d.scratchKinematics(s, q, v);
+  const double rise = energyAfterKinematics(s, d, kin, q, v, t) - work - limits.balance0;
   if (rise > limits.energyBound) {
     int body = 1;
     double most = -1.0;
     for (int i = 1; i < m.nbodies; ++i) {
-      const double k = 0.5 * d.scratch.V_B[i].dot(m.inertias[i].apply(d.scratch.V_B[i]));
+      const double k = 0.5 * kin.V_B[i].dot(m.inertias[i].apply(kin.V_B[i]));
       if (k > most) most = k, body = i;
     }
     std::string element;
     double strain = 0.0;
-    const forces::Stage stage{t, m, d.scratch, q, v};
+    const forces::Stage stage{t, m, kin, q, v};
     for (const auto& r : s.ropes())
       if (const double u = r->potentialEnergy(stage); u > strain)
         strain = u, element = (r->branchCount() > 1 ? "equalizer '" : "rope '") + r->name() + "'";
@@ -95,6 +96,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
   }
   // (loops) => the loop with the largest residual, if beyond the bound
   if (m.nc == 0) return;
+  d.scratchWritten();  // (the residual places the bodies in scratch)
   const Eigen::VectorXd& r = dynamics::loopResidual(m, d.scratch, q);
   for (const auto& loop : m.loops) {
     const double g = r.segment(loop.row, loop.dim).norm();

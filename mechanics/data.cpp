@@ -1,10 +1,15 @@
 #include "mechanics/data.hpp"
 
+#include <cstring>
+
+#include "dynamics/kinematics.hpp"
+
 namespace yardsim::mechanics {
 
 Data::Data(const System& s)
     : kernel(s.model()),
       scratch(s.model()),
+      scratch2(s.model()),
       view(s.model()),
       feedforward(s.model()),
       drivenJoints(static_cast<std::size_t>(s.model().nbodies), 0),
@@ -15,7 +20,34 @@ Data::Data(const System& s)
       prescribedAcc(Eigen::VectorXd::Zero(s.model().nv)),
       accelScratch(Eigen::VectorXd::Zero(s.model().nv)) {
   feedforwardMask.mark(s.model(), drivenJoints);  // (sized once: a stage marks it again)
+  for (auto& slot : slots) {
+    slot.q = Eigen::VectorXd::Zero(s.model().nq);
+    slot.v = Eigen::VectorXd::Zero(s.model().nv);
+  }
   for (const forces::ForceProvider* p : s.providers()) providerScratch.push_back(p->makeScratch());
+}
+
+dynamics::Data& Data::scratchKinematics(const System& s, const Eigen::VectorXd& q,
+                                        const Eigen::VectorXd& v) {
+  // (q, v bit for bit those of the last pass, nothing written since) => scratch as it is
+  const auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+  };
+  for (int k = 0; k < 2; ++k)
+    if (slots[k].holds && same(q, slots[k].q) && same(v, slots[k].v)) {
+      lastSlot = k;
+      return k == 0 ? scratch : scratch2;
+    }
+  // (neither) => the slot used less recently
+  lastSlot = 1 - lastSlot;
+  KinematicsSlot& slot = slots[lastSlot];
+  dynamics::Data& kin = lastSlot == 0 ? scratch : scratch2;
+  dynamics::forwardKinematics(s.model(), kin, q, v);
+  slot.q = q;
+  slot.v = v;
+  slot.holds = true;
+  return kin;
 }
 
 forces::ProviderScratch* Data::scratchOf(const System& s, const forces::ForceProvider& p) const {

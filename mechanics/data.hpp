@@ -24,6 +24,13 @@ struct Data {
   explicit Data(const System& s);
   dynamics::MultibodySystem kernel;   // ABA / hybrid / loops with the stage's forces
   dynamics::Data scratch;             // kinematics for power, events and blow-up checks
+  dynamics::Data scratch2;            // the second of scratchKinematics' two slots
+  struct KinematicsSlot {             // the state whose forwardKinematics a slot holds
+    Eigen::VectorXd q, v;
+    bool holds = false;
+  };
+  KinematicsSlot slots[2];  // for scratch and scratch2
+  int lastSlot = 0;         // the slot used last
   dynamics::Data view;                // kinematics of the committed state, for channels
   dynamics::Data feedforward;         // bias forces h(q, v) for the servos
   std::vector<char> drivenJoints;     // per body: its joint is servo-driven at this stage
@@ -44,6 +51,13 @@ struct Data {
                       const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
     return forces::Stage{t, s.model(), kin, q, v, nullptr, stepStart};
   }
+  // (q, v) => scratch or scratch2, holding forwardKinematics(q, v): computed into the slot used
+  // less recently unless one holds them already. Two slots: a step's event functions at its
+  // start and end, its power and its energy balance share one pass per committed state (the
+  // same doubles). A caller that writes scratch otherwise calls scratchWritten().
+  dynamics::Data& scratchKinematics(const System& s, const Eigen::VectorXd& q,
+                                    const Eigen::VectorXd& v);
+  void scratchWritten() { slots[0].holds = false; }
   // (provider of the system) => its scratch here (nullptr when it needs none)
   forces::ProviderScratch* scratchOf(const System& s, const forces::ForceProvider& p) const;
 };

@@ -10,8 +10,13 @@ namespace yardsim::mechanics {
 double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::VectorXd& q,
               const Eigen::VectorXd& v, double t) {
   // (one kinematics pass) => kinetic + gravity potential of every body, then stored energy
+  dynamics::forwardKinematics(s.model(), kin, q, v);
+  return energyAfterKinematics(s, d, kin, q, v, t);
+}
+
+double energyAfterKinematics(const System& s, const Data& d, dynamics::Data& kin,
+                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t) {
   const auto& m = s.model();
-  dynamics::forwardKinematics(m, kin, q, v);
   // (pose) => the added mass of the kinetic energy, where it follows the draft
   followDraft(s, kin, kin);
   double e = 0.0;
@@ -30,9 +35,9 @@ double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::
 double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double t) {
   const auto& m = s.model();
-  dynamics::forwardKinematics(m, d.scratch, q, v);
+  const dynamics::Data& kin = d.scratchKinematics(s, q, v);
   double p = 0.0;
-  forEachProvider(s, d, d.stage(s, t, d.scratch, q, v),
+  forEachProvider(s, d, d.stage(s, t, kin, q, v),
                   [&](const forces::ForceProvider& f, const forces::Stage& st) {
                     p += f.power(st);
                   });
@@ -41,7 +46,7 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
   d.setPoints = &sp;
   d.spForces.clear();
   d.spTau.setZero();
-  setPointForces(s, d, sp, t, q, v, d.scratch, d.spForces, d.spTau);
+  setPointForces(s, d, sp, t, q, v, kin, d.spForces, d.spTau);
   p += d.spTau.dot(v);
   if (prescribedDofs(s, d,
                      sp)) {  // (prescribed dofs) => the power of the effort that enforces them
@@ -49,7 +54,7 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
     p += d.kernel.prescribedEffort().dot(v);
   }
   d.setPoints = saved;
-  for (int b = 1; b < m.nbodies; ++b) p += d.spForces.inBodyFrame(d.scratch, b).dot(d.scratch.V_B[b]);
+  for (int b = 1; b < m.nbodies; ++b) p += d.spForces.inBodyFrame(kin, b).dot(kin.V_B[b]);
   return p;
 }
 

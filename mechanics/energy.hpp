@@ -17,10 +17,14 @@ namespace yardsim::mechanics {
 // kinetic + gravity potential + stored energy of every provider, J
 double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::VectorXd& q,
               const Eigen::VectorXd& v, double t);
+// (t, q, v; kin holding forwardKinematics(q, v), its draft-following added mass set here) => the
+// same energy, J, without the kinematics pass
+double energyAfterKinematics(const System& s, const Data& d, dynamics::Data& kin,
+                             const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t);
 
 // (t, q, v, set-points) => power of the non-conservative forces into the system, W: every
 // provider's power, the servos' tau . v, the effort that enforces prescribed motion, and the
-// actor loads' F . V; d.scratch holds the kinematics of (q, v) afterwards
+// actor loads' F . V; d.scratchKinematics(s, q, v) holds the kinematics of (q, v) afterwards
 double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double t);
 

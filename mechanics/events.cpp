@@ -40,8 +40,8 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
   // (ropes with a minimum breaking load) => > 0 once the tension exceeds it
   const auto& ropes = s.ropes();
   if (ropes.empty() && s.watches().empty() && s.providerEvents().empty()) return;
-  dynamics::forwardKinematics(m, d.scratch, q, v);
-  const forces::Stage stage{t, m, d.scratch, q, v};
+  const dynamics::Data& kin = d.scratchKinematics(s, q, v);
+  const forces::Stage stage{t, m, kin, q, v};
   const std::size_t nb = static_cast<std::size_t>(m.nbodies), nr = ropes.size();
   for (std::size_t r = 0; r < nr; ++r) {
     const auto& mbl = ropes[r]->properties().breakingLoad;
@@ -52,7 +52,7 @@ void eventFunctions(const System& s, Data& d, const SetPoints& sp, const Eigen::
   // (watches) => > 0 once the quantity is past its threshold in the watched direction
   const auto& specs = s.description().watches;
   for (std::size_t w = 0; w < s.watches().size(); ++w) {
-    const double value = watched(s, w, d.scratch, q, v, t);
+    const double value = watched(s, w, kin, q, v, t);
     g[nb + 2 * nr + w] = specs[w].above ? value - specs[w].threshold : specs[w].threshold - value;
   }
   // (provider events) => their own functions
@@ -71,11 +71,11 @@ EventReport reportStateEvent(const System& s, Data& d, const SetPoints& sp,
   if (e.kind == K::DriveReached)
     return {s.description().jointNames[k], sp.drives[k].actor, "reached", q[model.idxQ[e.index]]};
   // (state) => its kinematics, the quantity at the event
-  dynamics::forwardKinematics(model, d.scratch, q, v);
-  const forces::Stage stage{t, model, d.scratch, q, v};
+  const dynamics::Data& kin = d.scratchKinematics(s, q, v);
+  const forces::Stage stage{t, model, kin, q, v};
   switch (e.kind) {
     case K::WatchCrossed:
-      return {s.description().watches[k].name, "", "crossed", watched(s, k, d.scratch, q, v, t)};
+      return {s.description().watches[k].name, "", "crossed", watched(s, k, kin, q, v, t)};
     case K::SlackTaut: {  // (direction of the crossing) => lengthening through L0: taut;
                           // shortening: slack
       const bool taut = ropes[k]->lengthRate(stage) >= ropes[k]->payoutRate(t);

@@ -131,13 +131,14 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
     x0.setPoints.winches.resize(system_.winches().size());
     for (std::size_t r = 0; r < system_.winches().size(); ++r)
       x0.setPoints.winches[r].pieces = system_.winches()[r].winch->history();
-    dynamics::forwardKinematics(model, ws_.data.scratch, x0.q, x0.v);
-    const forces::Stage stage{0.0, model, ws_.data.scratch, x0.q, x0.v};
+    const dynamics::Data& kin0 = ws_.data.scratchKinematics(system_, x0.q, x0.v);
+    const forces::Stage stage{0.0, model, kin0, x0.q, x0.v};
     for (std::size_t r = 0; r < system_.ropes().size(); ++r)
       x0.peakTension[r] = system_.ropes()[r]->tension(stage);
     initialTension_ = x0.peakTension;
     // (initial state) => the energy balance and the bound on its rise (mechanics/blowup.hpp)
-    limits_.balance0 = mechanics::energy(system_, ws_.data, ws_.data.scratch, x0.q, x0.v, 0.0);
+    limits_.balance0 = mechanics::energyAfterKinematics(
+        system_, ws_.data, ws_.data.scratchKinematics(system_, x0.q, x0.v), x0.q, x0.v, 0.0);
     limits_.energyBound =
         opt_.energyGrowthLimit * mechanics::energyScale(system_, ws_.data, x0.q, x0.v);
     limits_.loopResidualLimit = opt_.loopResidualLimit;
@@ -179,6 +180,7 @@ void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::Vect
   // of kinetic energy
   const auto& m = system_.model();
   auto& d = ws_.data;
+  d.scratchWritten();  // (the impulse writes scratch)
   // (q) => the added mass at this pose where it follows the draft (the impulse's mass matrix and
   // both kinetic energies read it), not whatever the scratch held last
   if (!system_.draftAddedMass().empty()) {
@@ -215,8 +217,9 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   if (x.q.allFinite() && x.v.allFinite()) {
     const double p1 = mechanics::nonConservativePower(system_, d, x.setPoints, x.q, x.v, t + dt);
     x.work += 0.5 * dt * (p0 + p1);
-    // (end-of-step kinematics in scratch) => running peak of every rope's tension
-    const forces::Stage stage{t + dt, system_.model(), d.scratch, x.q, x.v};
+    // (end-of-step kinematics, computed for the power) => running peak of every rope's tension
+    const forces::Stage stage{t + dt, system_.model(), d.scratchKinematics(system_, x.q, x.v),
+                              x.q, x.v};
     for (std::size_t r = 0; r < system_.ropes().size(); ++r)
       if (const double tension = system_.ropes()[r]->tension(stage); tension > x.peakTension[r]) {
         x.peakTension[r] = tension;

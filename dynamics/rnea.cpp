@@ -138,7 +138,8 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
       out.segment(iv, nv).noalias() = d.S_W.middleCols(iv, nv).transpose() * d.F_W[i];
     }
     const int p = m.parent[i];
-    if (p > 0 && (sub == nullptr || sub->subtree[static_cast<std::size_t>(p)])) d.F_W[p] += d.F_W[i];
+    if (p > 0 && (sub == nullptr || sub->subtree[static_cast<std::size_t>(p)]))
+      d.F_W[p] += d.F_W[i];
   }
 }
 
@@ -170,7 +171,8 @@ void SubtreeMask::mark(const Model& m, const std::vector<char>& roots) {
     any = any || subtree[u] != 0;
   }
   for (int i = m.nbodies - 1; i >= 1; --i)
-    if (forward[static_cast<std::size_t>(i)] != 0) forward[static_cast<std::size_t>(m.parent[i])] = 1;
+    if (forward[static_cast<std::size_t>(i)] != 0)
+      forward[static_cast<std::size_t>(m.parent[i])] = 1;
 }
 
 const Eigen::VectorXd& biasForcesOfSubtrees(const Model& m, Data& d, const Data& placed,

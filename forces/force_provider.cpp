@@ -16,8 +16,8 @@ bool allFinite(const dynamics::Force& first, int bodies) {
 bool forcesFinite(const dynamics::Model& model, const dynamics::ExternalForces& f,
                   const Eigen::VectorXd& tau) {
   const int n = model.nbodies - 1;
-  return (n <= 0 ||
-          (allFinite(f.bodyFrame(1), n) && (!f.hasWorldFrame() || allFinite(f.worldFrame(1), n)))) &&
+  return (n <= 0 || (allFinite(f.bodyFrame(1), n) &&
+                     (!f.hasWorldFrame() || allFinite(f.worldFrame(1), n)))) &&
          tau.allFinite();
 }
 
@@ -28,8 +28,7 @@ void ForceProvider::evaluate(const Stage& s, dynamics::ExternalForces& f,
   // appears first after the provider that made it
   if (forcesFinite(s.model, f, tau)) return;
   for (int b = 1; b < s.model.nbodies; ++b) {
-    if (f.bodyFrame(b).allFinite() && (!f.hasWorldFrame() || f.worldFrame(b).allFinite()))
-      continue;
+    if (f.bodyFrame(b).allFinite() && (!f.hasWorldFrame() || f.worldFrame(b).allFinite())) continue;
     throw ForceError("force provider '" + name_ + "' produced a non-finite force on body '" +
                      s.model.names[b] + "' at t = " + std::to_string(s.t) +
                      " s; check its parameters, or take a smaller step");

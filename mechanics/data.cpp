@@ -29,10 +29,10 @@ Data::Data(const System& s)
 
 dynamics::Data& Data::scratchKinematics(const System& s, const Eigen::VectorXd& q,
                                         const Eigen::VectorXd& v) {
-  // (q, v bit for bit those of the last pass, nothing written since) => scratch as it is
+  // (q, v bit for bit those a slot was computed at, nothing written since) => that slot as it is
   const auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return a.size() == b.size() &&
-           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+    const auto bytes = sizeof(double) * static_cast<std::size_t>(a.size());
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), bytes) == 0;
   };
   for (int k = 0; k < 2; ++k)
     if (slots[k].holds && same(q, slots[k].q) && same(v, slots[k].v)) {

@@ -29,8 +29,8 @@ struct Data {
     Eigen::VectorXd q, v;
     bool holds = false;
   };
-  KinematicsSlot slots[2];  // for scratch and scratch2
-  int lastSlot = 0;         // the slot used last
+  KinematicsSlot slots[2];            // for scratch and scratch2
+  int lastSlot = 0;                   // the slot used last
   dynamics::Data view;                // kinematics of the committed state, for channels
   dynamics::Data feedforward;         // bias forces h(q, v) for the servos
   std::vector<char> drivenJoints;     // per body: its joint is servo-driven at this stage

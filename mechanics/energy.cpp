@@ -37,10 +37,9 @@ double nonConservativePower(const System& s, Data& d, const SetPoints& sp, const
   const auto& m = s.model();
   const dynamics::Data& kin = d.scratchKinematics(s, q, v);
   double p = 0.0;
-  forEachProvider(s, d, d.stage(s, t, kin, q, v),
-                  [&](const forces::ForceProvider& f, const forces::Stage& st) {
-                    p += f.power(st);
-                  });
+  forEachProvider(
+      s, d, d.stage(s, t, kin, q, v),
+      [&](const forces::ForceProvider& f, const forces::Stage& st) { p += f.power(st); });
   // (drives, loads) => their forces at this state, and the power they deliver
   const SetPoints* saved = d.setPoints;
   d.setPoints = &sp;

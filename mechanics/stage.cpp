@@ -77,8 +77,8 @@ namespace {
   for (int b = m.nbodies - 1; b >= 1; --b)
     if (!f.bodyFrame(b).allFinite() || (f.hasWorldFrame() && !f.worldFrame(b).allFinite()))
       body = "body '" + m.names[static_cast<std::size_t>(b)] + "'";
-  throw forces::ForceError("the force providers' sum is not finite on " + body + " at t = " +
-                           std::to_string(stage.t) + " s; take a smaller step");
+  throw forces::ForceError("the force providers' sum is not finite on " + body +
+                           " at t = " + std::to_string(stage.t) + " s; take a smaller step");
 }
 }  // namespace
 

@@ -218,8 +218,8 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
     const double p1 = mechanics::nonConservativePower(system_, d, x.setPoints, x.q, x.v, t + dt);
     x.work += 0.5 * dt * (p0 + p1);
     // (end-of-step kinematics, computed for the power) => running peak of every rope's tension
-    const forces::Stage stage{t + dt, system_.model(), d.scratchKinematics(system_, x.q, x.v),
-                              x.q, x.v};
+    const forces::Stage stage{t + dt, system_.model(), d.scratchKinematics(system_, x.q, x.v), x.q,
+                              x.v};
     for (std::size_t r = 0; r < system_.ropes().size(); ++r)
       if (const double tension = system_.ropes()[r]->tension(stage); tension > x.peakTension[r]) {
         x.peakTension[r] = tension;

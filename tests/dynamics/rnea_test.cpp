@@ -105,3 +105,40 @@ TEST_CASE("a force at the tip of a horizontal chain needs joint torques f * leve
   // holding torque about +y at joint k (x = k) is -(F x r)_y = -(r x F)_y, r = (3 - k) e_x, F = 10 e_z: (r x F)_y = -10 (3 - k)
   for (int k = 0; k < 3; ++k) CHECK(tau[k] == Approx(10.0 * (3 - k)));
 }
+
+TEST_CASE(
+    "the bias forces of some joints' subtrees, on placed kinematics, are biasForces' doubles") {
+  // (random trees, random wanted joints) => the mask is closed under children and forward holds
+  // their ancestors; the wanted joints' h equals biasForces' bit for bit (the same operations on
+  // the same placements); every other entry keeps the value it had
+  std::mt19937 rng(24);
+  std::bernoulli_distribution pick(0.3);
+  for (int n : {1, 6, 17, -5, -17}) {
+    const Model m = n > 0 ? randomTree(rng, n) : randomAxisTree(rng, -n);
+    Data full(m), kin(m), sub(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = 3.0 * randomVectorX(rng, m.nv);
+    const Eigen::VectorXd h = biasForces(m, full, q, v);
+    forwardKinematics(m, kin, q, v);
+    std::vector<char> roots(static_cast<std::size_t>(m.nbodies), 0);
+    for (int i = 1; i < m.nbodies; ++i) roots[static_cast<std::size_t>(i)] = pick(rng) ? 1 : 0;
+    SubtreeMask mask;
+    mask.mark(m, roots);
+    for (int i = 1; i < m.nbodies; ++i) {
+      const auto u = static_cast<std::size_t>(i), p = static_cast<std::size_t>(m.parent[i]);
+      CHECK(mask.subtree[u] == ((roots[u] != 0 || (p > 0 && mask.subtree[p] != 0)) ? 1 : 0));
+      if (mask.forward[u] != 0 && p > 0) CHECK(mask.forward[p] == 1);
+      if (mask.subtree[u] != 0) CHECK(mask.forward[u] == 1);
+    }
+    sub.nle.setConstant(12345.0);
+    biasForcesOfSubtrees(m, sub, kin, q, v, mask);
+    for (int i = 1; i < m.nbodies; ++i)
+      for (int k = 0; k < m.jointNv[i]; ++k) {
+        const int iv = m.idxV[i] + k;
+        INFO("body " << i << ", dof " << iv);
+        if (mask.subtree[static_cast<std::size_t>(i)] != 0)
+          CHECK(sub.nle[iv] == h[iv]);
+        else
+          CHECK(sub.nle[iv] == 12345.0);
+      }
+  }
+}

@@ -1,7 +1,8 @@
 #pragma once
-// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1), written in
-// the world frame (velocities, accelerations and forces in world coordinates, so a joint force
-// passes to the parent by addition), and the bias forces h(q, v) = RNEA(q, v, 0).
+// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1): rnea in each
+// body's frame (where its inertia is constant), rneaWorld in the world frame (velocities,
+// accelerations and forces in world coordinates, so a joint force passes to the parent by
+// addition), and the bias forces h(q, v) = RNEA(q, v, 0) in the world frame.
 
 #include <Eigen/Core>
 

@@ -1,5 +1,7 @@
 #include "dynamics/rnea.hpp"
 
+#include <type_traits>
+
 #include "dynamics/checks.hpp"
 #include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
@@ -63,6 +65,219 @@ inline Force inertiaForceSpatial(const SpatialInertia& I, const Transform& X, co
   Iv.head<3>() = X.R * Jv + c.cross(hv);
   Iv.tail<3>() = hv;
   return Ia + crossForce(v, Iv);
+}
+
+// (I_B: mass, centre of mass c and inertia about it, all in the body frame; motions a, v in the
+// body frame) => I a + v x* I v, as the Newton-Euler equations about the centre of mass (the form
+// of inertiaForceCentroidal, in the frame where c and Ic are constant: no rotation): h = m (u + w x
+// c), f = m (a_O + alpha x c) + w x h, n = Ic alpha + w x Ic w + c x f; kDiagonal: Ic is diagonal
+template <bool kDiagonal>
+inline Force inertiaForceBody(const SpatialInertia& I, const Motion& a, const Motion& v) {
+  const Vector3& c = I.com;
+  const Vector3 w = v.head<3>(), alpha = a.head<3>();
+  const Vector3 h = I.mass * (v.tail<3>() + w.cross(c));
+  const Vector3 f = I.mass * (a.tail<3>() + alpha.cross(c)) + w.cross(h);
+  Vector3 n;
+  if constexpr (kDiagonal) {
+    const Vector3 dI = I.inertiaCom.diagonal();
+    n = dI.cwiseProduct(alpha) + w.cross(dI.cwiseProduct(w));
+  } else {
+    n = I.inertiaCom * alpha + w.cross(I.inertiaCom * w);
+  }
+  Force F;
+  F.head<3>() = n + c.cross(f);
+  F.tail<3>() = f;
+  return F;
+}
+
+// (s, c of an angle about coordinate axis K; x) => R^T x, R the rotation by the angle: the axis
+// component kept, the two others mixed (4 products instead of a 3x3's 9)
+template <int K>
+inline Vector3 rotateBack(double s, double c, const Vector3& x) {
+  constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+  Vector3 r;
+  r[K] = x[K];
+  r[a] = c * x[a] + s * x[b];
+  r[b] = c * x[b] - s * x[a];
+  return r;
+}
+
+// (s, c of an angle about coordinate axis K; x) => R x
+template <int K>
+inline Vector3 rotate(double s, double c, const Vector3& x) {
+  constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+  Vector3 r;
+  r[K] = x[K];
+  r[a] = c * x[a] - s * x[b];
+  r[b] = c * x[b] + s * x[a];
+  return r;
+}
+
+// (body i: revolute about axis K of a joint frame translated by p = X_PJ.p; q, qd, qdd; V_B, A_B
+// of its parent) => X_PB[i], V_B[i] = X_BP V_P + e_K qd, A_B[i] = X_BP A_P + V_B[i] x e_K qd +
+// e_K qdd, where X_BP (w, u) = (R^T w, R^T (u - p x w)); e_K x products are two swapped entries
+template <int K>
+inline void revoluteForward(const Model& m, Data& d, int i, double q, double qd, double qdd) {
+  constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+  double s = 0.0, c = 0.0;
+  sinCos(q, s, c);
+  Transform& X = d.X_PB[i];
+  coordinateAxisRotation(K, s, c, X.R);
+  X.p = m.X_PJ[i].p;
+  const Motion& vp = d.V_B[m.parent[i]];
+  const Motion& ap = d.A_B[m.parent[i]];
+  Motion vi, ai;
+  vi.head<3>() = rotateBack<K>(s, c, vp.head<3>());
+  vi.tail<3>() = rotateBack<K>(s, c, vp.tail<3>() - X.p.cross(vp.head<3>()));
+  vi[K] += qd;
+  ai.head<3>() = rotateBack<K>(s, c, ap.head<3>());
+  ai.tail<3>() = rotateBack<K>(s, c, ap.tail<3>() - X.p.cross(ap.head<3>()));
+  ai[K] += qdd;
+  ai[a] += vi[b] * qd;
+  ai[b] -= vi[a] * qd;
+  ai[3 + a] += vi[3 + b] * qd;
+  ai[3 + b] -= vi[3 + a] * qd;
+  d.V_B[i] = vi;
+  d.A_B[i] = ai;
+}
+
+// (body i: prismatic along axis K of a translated joint frame) => X_PB[i] (R = 1, p = X_PJ.p +
+// e_K q), V_B[i] = X_BP V_P + (0, e_K qd), A_B[i] = X_BP A_P + (0, w x e_K qd) + (0, e_K qdd)
+template <int K>
+inline void prismaticForward(const Model& m, Data& d, int i, double q, double qd, double qdd) {
+  constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+  Transform& X = d.X_PB[i];
+  X.R.setIdentity();
+  X.p = m.X_PJ[i].p;
+  X.p[K] += q;
+  const Motion& vp = d.V_B[m.parent[i]];
+  const Motion& ap = d.A_B[m.parent[i]];
+  Motion vi, ai;
+  vi.head<3>() = vp.head<3>();
+  vi.tail<3>() = vp.tail<3>() - X.p.cross(vp.head<3>());
+  vi[3 + K] += qd;
+  ai.head<3>() = ap.head<3>();
+  ai.tail<3>() = ap.tail<3>() - X.p.cross(ap.head<3>());
+  ai[3 + K] += qdd;
+  ai[3 + a] += vi[b] * qd;
+  ai[3 + b] -= vi[a] * qd;
+  d.V_B[i] = vi;
+  d.A_B[i] = ai;
+}
+
+// (body i, any joint) => X_PB[i], V_B[i] = X_BP V_P + S v_i, A_B[i] = X_BP A_P + V_B[i] x S v_i +
+// c_J + S ddq_i
+inline void generalForward(const Model& m, Data& d, int i, const Eigen::VectorXd& q,
+                           const Eigen::VectorXd& v, const Eigen::VectorXd& ddq) {
+  updateJointPlacement(m, d, i, q);
+  const Transform& X = d.X_PB[i];
+  const int p = m.parent[i];
+  const int nv = m.jointNv[i];
+  const int iv = m.idxV[i];
+  Motion vJ = Motion::Zero(), aJ = Motion::Zero();
+  if (nv > 0) {
+    vJ.noalias() = d.S[i] * v.segment(iv, nv);
+    aJ.noalias() = d.S[i] * ddq.segment(iv, nv);
+  }
+  const Motion vi = X.invActMotion(d.V_B[p]) + vJ;
+  Motion ai = X.invActMotion(d.A_B[p]) + crossMotion(vi, vJ) + aJ;
+  if (!m.joints[i].constantSubspace())
+    ai += jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv);
+  d.V_B[i] = vi;
+  d.A_B[i] = ai;
+}
+
+// (k = 0, 1, 2; fn) => fn(std::integral_constant<int, k>): the axis as a compile-time constant
+template <class Fn>
+inline void withAxis(int k, Fn&& fn) {
+  if (k == 0) {
+    fn(std::integral_constant<int, 0>{});
+  } else if (k == 1) {
+    fn(std::integral_constant<int, 1>{});
+  } else {
+    fn(std::integral_constant<int, 2>{});
+  }
+}
+
+// (F_B of body i, X_PB[i]: revolute about axis K) => F_B[parent] += X_PB F_B: (R n + p x R f, R f)
+template <int K>
+inline void revoluteToParent(const Transform& X, const Force& F, Force& Fp) {
+  const double s = X.R((K + 2) % 3, (K + 1) % 3);  // R(b, a) = sin
+  const double c = X.R((K + 1) % 3, (K + 1) % 3);  // R(a, a) = cos
+  const Vector3 f = rotate<K>(s, c, F.tail<3>());
+  Fp.head<3>() += rotate<K>(s, c, F.head<3>()) + X.p.cross(f);
+  Fp.tail<3>() += f;
+}
+
+// (q, v, ddq, fext) => tau, in the body frame of each body (Featherstone's table 5.1, as RBDL):
+// V_B, A_B (including -g), and in F_W the force of each joint on its body about the body origin
+// in the body frame; coordinate-axis revolute and prismatic joints of translated frames take the
+// steps above, the inertia is applied where it is constant. Without external forces in the
+// world frame or added mass no world pose is formed
+YARDSIM_FLATTEN void rneaBodyFrame(const Model& m, Data& d, const Eigen::VectorXd& q,
+                                   const Eigen::VectorXd& v, const Eigen::VectorXd& ddq,
+                                   const ExternalForces* fext, Eigen::VectorXd& out) {
+  d.V_B[0].setZero();
+  d.A_B[0].head<3>().setZero();
+  d.A_B[0].tail<3>() = -m.gravity;
+  bool world = fext != nullptr && fext->hasWorldFrame();
+  for (int i = 1; i < m.nbodies && !world; ++i) world = d.hasAddedMass[i] != 0;
+  // (q, v, ddq) => X_PB, V_B, A_B, F = I A_B + V_B x* I V_B - F_ext (body frame)
+  for (int i = 1; i < m.nbodies; ++i) {
+    const int k = m.jointAxis[i];
+    const int iv = m.idxV[i];
+    if (k >= 0 && !m.placementRotated[i]) {
+      const double qi = q[m.idxQ[i]], qd = v[iv], qdd = ddq[iv];
+      if (m.joints[i].type == JointType::Revolute) {
+        withAxis(k, [&](auto K) { revoluteForward<decltype(K)::value>(m, d, i, qi, qd, qdd); });
+      } else {
+        withAxis(k, [&](auto K) { prismaticForward<decltype(K)::value>(m, d, i, qi, qd, qdd); });
+      }
+    } else {
+      generalForward(m, d, i, q, v, ddq);
+    }
+    const Motion& vi = d.V_B[i];
+    const Motion& ai = d.A_B[i];
+    Force F = m.inertiaDiagonal[i] ? inertiaForceBody<true>(m.inertias[i], ai, vi)
+                                   : inertiaForceBody<false>(m.inertias[i], ai, vi);
+    if (world) {
+      d.X_WB[i] = d.X_WB[m.parent[i]] * d.X_PB[i];
+      if (d.hasAddedMass[i]) {
+        // (A_B, added mass about the body origin) => A a + v x* A v; gravity, folded into the
+        // base acceleration -g, acts on the rigid mass only: A (0, R_WB^T g) taken back
+        const Matrix6& A = d.addedMass[i];
+        F += A * ai + crossForce(vi, A * vi) +
+             A.rightCols<3>() * (d.X_WB[i].R.transpose() * m.gravity);
+      }
+      if (fext != nullptr) F -= d.X_WB[i].invActForce(fext->worldFrame(i));
+    }
+    if (fext != nullptr) F -= fext->bodyFrame(i);
+    d.F_W[i] = F;
+  }
+  // (F) => tau = S^T F, F(parent) += X_PB F
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    const int k = m.jointAxis[i];
+    const int iv = m.idxV[i];
+    const int nv = m.jointNv[i];
+    const int p = m.parent[i];
+    const Force& F = d.F_W[i];
+    const Transform& X = d.X_PB[i];
+    if (k >= 0 && !m.placementRotated[i]) {
+      if (m.joints[i].type == JointType::Revolute) {
+        out[iv] = F[k];
+        if (p == 0) continue;
+        withAxis(k, [&](auto K) { revoluteToParent<decltype(K)::value>(X, F, d.F_W[p]); });
+      } else {
+        out[iv] = F[3 + k];
+        if (p == 0) continue;
+        d.F_W[p].head<3>() += F.head<3>() + X.p.cross(F.tail<3>());
+        d.F_W[p].tail<3>() += F.tail<3>();
+      }
+      continue;
+    }
+    if (nv > 0) out.segment(iv, nv).noalias() = d.S[i].transpose() * F;
+    if (p > 0) d.F_W[p] += X.actForce(F);
+  }
 }
 
 // flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products and
@@ -145,9 +360,18 @@ YARDSIM_FLATTEN void rneaImpl(const Model& m, Data& d, const Eigen::VectorXd& q,
 
 }  // namespace
 
-const Eigen::VectorXd& rnea(const Model& m, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                            const Eigen::VectorXd& ddq, const ExternalForces* fext) {
+const Eigen::VectorXd& rnea(const Model& m, Data& d, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& v, const Eigen::VectorXd& ddq,
+                            const ExternalForces* fext) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &ddq, "rnea");
+  rneaBodyFrame(m, d, q, v, ddq, fext, d.tau);
+  return d.tau;
+}
+
+const Eigen::VectorXd& rneaWorld(const Model& m, Data& d, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& v, const Eigen::VectorXd& ddq,
+                                 const ExternalForces* fext) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, &v, &ddq, "rneaWorld");
   rneaImpl<false>(m, d, q, v, &ddq, fext, d.tau);
   return d.tau;
 }

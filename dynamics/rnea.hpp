@@ -1,7 +1,8 @@
 #pragma once
-// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1), written in
-// the world frame (velocities, accelerations and forces in world coordinates, so a joint force
-// passes to the parent by addition), and the bias forces h(q, v) = RNEA(q, v, 0).
+// Inverse dynamics by the recursive Newton-Euler algorithm (Featherstone, table 5.1): rnea in each
+// body's frame (where its inertia is constant), rneaWorld in the world frame (velocities,
+// accelerations and forces in world coordinates, so a joint force passes to the parent by
+// addition), and the bias forces h(q, v) = RNEA(q, v, 0) in the world frame.
 
 #include <vector>
 
@@ -13,10 +14,21 @@
 
 namespace yardsim::dynamics {
 
-/// (q, v, ddq, external forces) => data.tau with M ddq + h = tau + sum J_i^T F_ext_i.
-/// Also leaves data.X_WB, data.S_W, data.V_W, data.A_W (world frame, including -g) and data.F_W.
-const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                            const Eigen::VectorXd& ddq, const ExternalForces* fext = nullptr);
+/// (q, v, ddq, external forces) => data.tau with M ddq + h = tau + sum J_i^T F_ext_i, computed in
+/// each body's frame (Featherstone's table 5.1 as written). Also leaves data.X_PB, data.V_B (as
+/// forwardKinematics), data.A_B (body frame, including -g) and in data.F_W the force transmitted
+/// by joint i to body i **in body i's frame**, about its origin; data.X_WB only with external
+/// forces in the world frame or added mass. The same torques as rneaWorld to round-off.
+const Eigen::VectorXd& rnea(const Model& model, Data& data, const Eigen::VectorXd& q,
+                            const Eigen::VectorXd& v, const Eigen::VectorXd& ddq,
+                            const ExternalForces* fext = nullptr);
+
+/// rnea written in the world frame (the bias forces' loop with ddq): data.tau, and data.X_WB,
+/// data.S_W, data.V_W, data.A_W (world frame, including -g) and data.F_W, the force transmitted
+/// by joint i to body i in the world frame (the joint reactions of a scene's channels).
+const Eigen::VectorXd& rneaWorld(const Model& model, Data& data, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& v, const Eigen::VectorXd& ddq,
+                                 const ExternalForces* fext = nullptr);
 
 /// (q, v, external forces) => data.nle = h(q, v) - sum J_i^T F_ext_i, i.e. RNEA with ddq = 0.
 const Eigen::VectorXd& biasForces(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

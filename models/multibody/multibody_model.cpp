@@ -399,8 +399,8 @@ const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
   auto& d = ws_.data;
   if (ws_.reactionTime != s.tx) {
     evaluateCommitted();
-    dynamics::rnea(system_.model(), d.reaction, s.x.q, s.x.v, ws_.accel,
-                   d.kernel.stageExternalForces());
+    dynamics::rneaWorld(system_.model(), d.reaction, s.x.q, s.x.v, ws_.accel,
+                        d.kernel.stageExternalForces());
     ws_.reactionTime = s.tx;
   }
   return d.reaction.F_W;

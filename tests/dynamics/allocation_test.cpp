@@ -43,6 +43,8 @@ TEST_CASE("RNEA, ABA, CRBA + Cholesky, energy and RK4 steps do not allocate") {
   const std::size_t before = allocationCount();
   for (int k = 0; k < 3; ++k) {
     rnea(m, d, q, v, tau, &f);
+    rnea(m, d, q, v, tau);
+    rneaWorld(m, d, q, v, tau, &f);
     biasForces(m, d, q, v);
     aba(m, d, q, v, tau, &f);
     crba(m, d, q);

@@ -18,7 +18,8 @@ TEST_CASE("RNEA = M ddq + h (CRBA), on random trees with every joint type") {
     // negative n: |n| bodies on coordinate axes in translated frames (the kernels' special case)
     const Model m = n > 0 ? randomTree(rng, n) : randomAxisTree(rng, -n);
     Data d(m);
-    const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), a = randomVectorX(rng, m.nv);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv),
+                          a = randomVectorX(rng, m.nv);
     const Eigen::VectorXd h = biasForces(m, d, q, v);
     const Eigen::MatrixXd M = crba(m, d, q);
     const Eigen::VectorXd tau = rnea(m, d, q, v, a);
@@ -78,7 +79,8 @@ TEST_CASE("an external force in the world frame equals the same force in the bod
   std::mt19937 rng(16);
   const Model m = randomTree(rng, 9);
   Data d(m);
-  const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv), a = randomVectorX(rng, m.nv);
+  const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv),
+                        a = randomVectorX(rng, m.nv);
   forwardKinematics(m, d, q);
   ExternalForces fw(m), fb(m);
   for (int i = 1; i < m.nbodies; ++i) {
@@ -102,7 +104,8 @@ TEST_CASE("a force at the tip of a horizontal chain needs joint torques f * leve
   mg.gravity.setZero();
   f.addPointForceWorld(3, Vector3(3, 0, 0), Vector3(0, 0, 10));
   const Eigen::VectorXd tau = rnea(mg, d, zero, zero, zero, &f);
-  // holding torque about +y at joint k (x = k) is -(F x r)_y = -(r x F)_y, r = (3 - k) e_x, F = 10 e_z: (r x F)_y = -10 (3 - k)
+  // holding torque about +y at joint k (x = k) is -(F x r)_y = -(r x F)_y, r = (3 - k) e_x, F = 10
+  // e_z: (r x F)_y = -10 (3 - k)
   for (int k = 0; k < 3; ++k) CHECK(tau[k] == Approx(10.0 * (3 - k)));
 }
 
@@ -141,4 +144,47 @@ TEST_CASE(
           CHECK(sub.nle[iv] == 12345.0);
       }
   }
+}
+
+TEST_CASE("RNEA in the body frame equals RNEA in the world frame, torques and joint forces") {
+  // rnea runs each body's step in its own frame (special steps for coordinate-axis revolute and
+  // prismatic joints of translated frames), rneaWorld in the world frame: the same torques and,
+  // moved to the world, the same joint forces, on every joint type, with added mass and external
+  // forces in both frames (the body-frame step taken about the wrong axis or with a sign of its
+  // e_K cross products flipped shows here)
+  std::mt19937 rng(17);
+  for (int n : {1, 6, 17, -2, -9, -24}) {
+    for (bool added : {false, true}) {
+      const Model m = n > 0 ? randomTree(rng, n, {0.3, -1.0, -9.81}, added)
+                            : randomAxisTree(rng, -n, added, n == -9);
+      Data d(m), dw(m);
+      const Eigen::VectorXd q = randomConfiguration(m, rng), v = 3.0 * randomVectorX(rng, m.nv);
+      const Eigen::VectorXd a = randomVectorX(rng, m.nv);
+      ExternalForces f(m);
+      for (int i = 1; i < m.nbodies; ++i) {
+        if (i % 2 == 0) f.addWorldFrame(i, randomVectorX(rng, 6));
+        if (i % 3 == 0) f.addBodyFrame(i, randomVectorX(rng, 6));
+      }
+      const ExternalForces* cases[] = {nullptr, &f};
+      for (const ExternalForces* fext : cases) {
+        const Eigen::VectorXd tw = rneaWorld(m, dw, q, v, a, fext);
+        const Eigen::VectorXd tb = rnea(m, d, q, v, a, fext);
+        CHECK(relativeError(tb, tw) < 1e-12);
+        for (int i = 1; i < m.nbodies; ++i) {
+          const Force F = dw.X_WB[i].actForce(d.F_W[i]);
+          CHECK((F - dw.F_W[i]).norm() <= 1e-11 * (1.0 + dw.F_W[i].norm()));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("RNEA of the planar chain: body-frame torques equal the world frame's") {
+  // the bench's chain (revolute about y in translated frames, diagonal inertias) in both forms
+  std::mt19937 rng(18);
+  const Model m = planarChain(12);
+  Data d(m), dw(m);
+  const Eigen::VectorXd q = randomVectorX(rng, m.nv, 3.0), v = randomVectorX(rng, m.nv, 2.0);
+  const Eigen::VectorXd a = randomVectorX(rng, m.nv);
+  CHECK(relativeError(rnea(m, d, q, v, a), rneaWorld(m, dw, q, v, a)) < 1e-13);
 }

@@ -6,9 +6,12 @@
 // again for 10 s: the difference is the second half, after the release's transient ("_late").
 // Counters: real-time factor and wall time per step and per inner node (wall time: on a shared
 // machine compare the CPU column too); and the integrator's work per step (stage evaluations,
-// Jacobians, Newton iterations) with its failed Newton solves, the factors of the cost besides
-// the nodes. A run includes the run summary's stiffness estimate (Arnoldi on the coloured
-// Jacobian for a system with lumped lines: mechanics/largest_mode.hpp).
+// Jacobians, Newton iterations, factorisations) with its failed Newton solves and error-test
+// failures, the factors of the cost besides the nodes. The "Suspended" cases are the same scene
+// without a sea bed (seabed: false): the chains hang below their anchors and never touch a bed,
+// so only the segments' slack/taut corner can switch. A run includes the run summary's stiffness
+// estimate (Arnoldi on the coloured Jacobian for a system with lumped lines:
+// mechanics/largest_mode.hpp).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -31,8 +34,9 @@ namespace {
 
 constexpr double kUntil = 20.0, kStep = 0.05;
 
-// (segments per line, integrator) => the scene: 8 lines spread at 45 deg, 290 m out, 40 m down
-std::string scene(int segments, const std::string& method) {
+// (segments per line, integrator, whether the lines lie on a sea bed) => the scene: 8 lines
+// spread at 45 deg, 290 m out, 39 m down (without the bed, hanging below their anchors)
+std::string scene(int segments, const std::string& method, bool bed = true) {
   std::string s = "schema_version: 1\nintegrator: {method: " + method +
                   ", dt: " + std::to_string(kStep) + ", stiffness_check: off}\n" + R"(mechanics:
   gravity: [0, 0, 0]
@@ -49,7 +53,7 @@ std::string scene(int segments, const std::string& method) {
          std::to_string(290.0 * std::cos(a)) + ", " + std::to_string(290.0 * std::sin(a)) +
          ", 0], fairlead: {body: buoy}, length: 314, EA: 1.2e9, mass: 282.21, diameter: "
          "0.216, segments: " +
-         std::to_string(segments) + "}\n";
+         std::to_string(segments) + (bed ? "}\n" : ", seabed: false}\n");
   }
   return s + "record: {interval: 10, channels: [\"line0.fairlead_tension\"]}\nuntil: " +
          std::to_string(kUntil) + "\n";
@@ -93,12 +97,14 @@ double runOnce(const scene::Scene& loaded, const fs::path& out, double until,
 
 // (state.range(0): segments; method) => per iteration one whole run, and one to half its length:
 // their difference is the second half, after the buoy's release (the "_late" counters)
-void runLines(benchmark::State& state, const std::string& method, bool dense = false) {
+void runLines(benchmark::State& state, const std::string& method, bool dense = false,
+              bool bed = true) {
   const int segments = static_cast<int>(state.range(0));
   const fs::path dir =
-      fs::temp_directory_path() / ("yardsim-bench-lines-" + method + std::to_string(segments));
+      fs::temp_directory_path() /
+      ("yardsim-bench-lines-" + method + (bed ? "" : "-suspended") + std::to_string(segments));
   fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << scene(segments, method);
+  std::ofstream(dir / "s.yaml") << scene(segments, method, bed);
   auto loaded = scene::loadSceneOrThrow(dir / "s.yaml");
   double wall = 0.0, wallHalf = 0.0;
   dynamics::IntegratorStats work, half;
@@ -113,10 +119,13 @@ void runLines(benchmark::State& state, const std::string& method, bool dense = f
   state.counters["ns_per_step_node"] = 1e9 * wall / runs / steps / nodes;
   // (the last run's integrator work) => per step of the grid: stage evaluations, Jacobians,
   // Newton iterations and failed solves (the cost's factors besides the nodes)
+  state.counters["solver_steps_per_step"] = static_cast<double>(work.steps) / steps;
   state.counters["f_evals_per_step"] = static_cast<double>(work.f_evals) / steps;
   state.counters["jacobians_per_step"] = static_cast<double>(work.jac_evals) / steps;
   state.counters["newton_per_step"] = static_cast<double>(work.newton_its) / steps;
   state.counters["failed_solves"] = static_cast<double>(work.err_fails);
+  state.counters["factorisations_per_step"] = static_cast<double>(work.factorisations) / steps;
+  state.counters["conv_fails"] = static_cast<double>(work.conv_fails);
   // (whole run - half run) => the same for the second half alone
   const double late = 0.5 * steps;
   state.counters["us_per_step_late"] = 1e6 * (wall - wallHalf) / runs / late;
@@ -124,6 +133,13 @@ void runLines(benchmark::State& state, const std::string& method, bool dense = f
   state.counters["newton_per_step_late"] =
       static_cast<double>(work.newton_its - half.newton_its) / late;
   state.counters["failed_solves_late"] = static_cast<double>(work.err_fails - half.err_fails);
+  state.counters["solver_steps_per_step_late"] =
+      static_cast<double>(work.steps - half.steps) / late;
+  state.counters["jacobians_per_step_late"] =
+      static_cast<double>(work.jac_evals - half.jac_evals) / late;
+  state.counters["factorisations_per_step_late"] =
+      static_cast<double>(work.factorisations - half.factorisations) / late;
+  state.counters["conv_fails_late"] = static_cast<double>(work.conv_fails - half.conv_fails);
   fs::remove_all(dir);
 }
 
@@ -156,6 +172,30 @@ void BM_LumpedLinesCvodeDense(benchmark::State& state) {
   runLines(state, "cvode_bdf", true);
 }
 BENCHMARK(BM_LumpedLinesCvodeDense)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The same lines without a sea bed (fully suspended: nothing touches down), HHT and CVODE BDF
+void BM_LumpedLinesSuspendedHht(benchmark::State& state) {
+  runLines(state, "hht", false, false);
+}
+BENCHMARK(BM_LumpedLinesSuspendedHht)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(80)
+    ->Arg(160)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_LumpedLinesSuspendedCvode(benchmark::State& state) {
+  runLines(state, "cvode_bdf", false, false);
+}
+BENCHMARK(BM_LumpedLinesSuspendedCvode)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(80)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -153,6 +153,8 @@ void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::Vect
   stats_.jac_evals += c1.jac_evals - c0.jac_evals;
   stats_.newton_its += c1.newton_its - c0.newton_its;
   stats_.err_fails += c1.err_fails - c0.err_fails;
+  stats_.factorisations += c1.factorisations - c0.factorisations;
+  stats_.conv_fails += c1.conv_fails - c0.conv_fails;
   if (thrown_) {
     initialised_ = false;
     std::exception_ptr e = thrown_;

@@ -92,12 +92,14 @@ bool Arkode::rootReturn(int flag) const { return flag == ARK_ROOT_RETURN; }
 void Arkode::rootInfo(int* found) { ARKStepGetRootInfo(mem_, found); }
 
 void Arkode::counters(IntegratorStats& s) {
-  long steps = 0, jac = 0, nni = 0, etf = 0;
+  long steps = 0, jac = 0, nni = 0, etf = 0, setups = 0, ncf = 0;
   if (mem_ != nullptr) {
     ARKStepGetNumSteps(mem_, &steps);
     if (kind_ != Kind::Erk) {
       ARKStepGetNumJacEvals(mem_, &jac);
       ARKStepGetNumNonlinSolvIters(mem_, &nni);
+      ARKStepGetNumLinSolvSetups(mem_, &setups);
+      ARKStepGetNumNonlinSolvConvFails(mem_, &ncf);
     }
     ARKStepGetNumErrTestFails(mem_, &etf);
   }
@@ -105,6 +107,8 @@ void Arkode::counters(IntegratorStats& s) {
   s.jac_evals = jac;
   s.newton_its = nni;
   s.err_fails = etf;
+  s.factorisations = setups;
+  s.conv_fails = ncf;
 }
 
 }  // namespace yardsim::dynamics

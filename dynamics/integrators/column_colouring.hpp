@@ -23,6 +23,11 @@ struct JacobianPattern {
 // finite difference.
 struct JacobianBlocks {
   std::vector<std::array<int, 2>> at;
+  // 3 x 1 blocks (rows r0 .. r0 + 2 of column c0: a line's end node coupled to a rigid dof of
+  // the body at the line's end), their values in the first column of the Matrix3 after the
+  // at.size() square ones; they do not take their columns out of the colouring (the column's
+  // other rows are still differenced) and are left out where the pattern has no such entries
+  std::vector<std::array<int, 2>> columns;
 };
 
 // Per column its colour in [0, count), and per colour its columns (increasing).

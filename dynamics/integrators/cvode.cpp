@@ -6,6 +6,7 @@
 namespace yardsim::dynamics {
 
 namespace {
+constexpr long kLinesJacobianAge = 1000;  // steps between coloured Jacobians with lumped lines
 int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
   return static_cast<AdaptiveIntegrator*>(self)->rightHandSide(t, y, ydot, AdaptiveIntegrator::Part::All);
 }
@@ -44,7 +45,14 @@ void Cvode::init(double t, int nroots) {
     const bool sparse = makeChartSolver(true);
     if (!sparse) makeLinearSolver();
     CVodeSetLinearSolver(mem_, LS_, A_);
-    if (sparse) CVodeSetLinSysFn(mem_, linSys);
+    if (sparse) {
+      CVodeSetLinSysFn(mem_, linSys);
+      // (lumped lines: their blocks, and their end nodes' couplings to the bodies, are
+      // re-evaluated in closed form at every setup, so only the rest of the rigid dofs' columns
+      // age) => a coloured Jacobian after a failed Newton solve or every kLinesJacobianAge
+      // steps, instead of CVODE's 51 (docs/performance.md, "The slope in nodes, third pass")
+      CVodeSetJacEvalFrequency(mem_, kLinesJacobianAge);
+    }
     if (spec_.maxOrder > 0) CVodeSetMaxOrd(mem_, spec_.maxOrder);
     if (spec_.maxStep > 0) CVodeSetMaxStep(mem_, spec_.maxStep);
     CVodeSetMaxNumSteps(mem_, 1000000);
@@ -65,17 +73,21 @@ bool Cvode::rootReturn(int flag) const { return flag == CV_ROOT_RETURN; }
 void Cvode::rootInfo(int* found) { CVodeGetRootInfo(mem_, found); }
 
 void Cvode::counters(IntegratorStats& s) {
-  long steps = 0, jac = 0, nni = 0, etf = 0;
+  long steps = 0, jac = 0, nni = 0, etf = 0, setups = 0, ncf = 0;
   if (mem_ != nullptr) {
     CVodeGetNumSteps(mem_, &steps);
     CVodeGetNumJacEvals(mem_, &jac);
     CVodeGetNumNonlinSolvIters(mem_, &nni);
     CVodeGetNumErrTestFails(mem_, &etf);
+    CVodeGetNumLinSolvSetups(mem_, &setups);
+    CVodeGetNumNonlinSolvConvFails(mem_, &ncf);
   }
   s.steps = steps;
   s.jac_evals = jac;
   s.newton_its = nni;
   s.err_fails = etf;
+  s.factorisations = setups;
+  s.conv_fails = ncf;
 }
 
 }  // namespace yardsim::dynamics

@@ -178,6 +178,7 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
 void GeneralizedAlpha::factorise(double h) {
   // (f_q, f_v, h) => LU of A = I - beta' h^2 f_q - gamma' h f_v; Schur complement J A^-1 M^-1 J^T
   const double s = (1.0 - p_.alphaF) / (1.0 - p_.alphaM);
+  ++stats_.factorisations;
   if (sparseActive_) {
     sparse_->factorise(p_.beta * s * h * h, p_.gamma * s * h);
   } else {

@@ -77,6 +77,8 @@ struct IntegratorStats {
   long jac_evals = 0;   ///< Jacobian (iteration matrix) evaluations
   long newton_its = 0;  ///< Newton (nonlinear solver) iterations
   long err_fails = 0;   ///< error-test failures (adaptive) or rejected Newton solves
+  long factorisations = 0;  ///< LU factorisations of the iteration matrix (implicit methods)
+  long conv_fails = 0;      ///< failed Newton solves of an adaptive method (CVODE, ARKODE)
 };
 
 class Integrator {

@@ -44,8 +44,19 @@ SparseNewtonMatrix::SparseNewtonMatrix(const Model& model, const JacobianPattern
       }
       blockIndex_.push_back(idx);
     }
-    dq_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
-    dv_.assign(blockIndex_.size(), Eigen::Matrix3d::Zero());
+    // (3 x 1 blocks) => their entries' places, or -1 outside the pattern
+    auto find = [&](int i, int j) {
+      for (int k = A_.outerIndexPtr()[j]; k < A_.outerIndexPtr()[j + 1]; ++k)
+        if (A_.innerIndexPtr()[k] == i) return k;
+      return -1;
+    };
+    for (const auto& [r0, c0] : blocks->columns) {
+      if (r0 < 0 || c0 < 0 || r0 + 3 > n || c0 >= n)
+        throw std::invalid_argument("SparseNewtonMatrix: a closed-form block leaves the matrix");
+      columnIndex_.push_back({find(r0, c0), find(r0 + 1, c0), find(r0 + 2, c0)});
+    }
+    dq_.assign(blockIndex_.size() + columnIndex_.size(), Eigen::Matrix3d::Zero());
+    dv_.assign(blockIndex_.size() + columnIndex_.size(), Eigen::Matrix3d::Zero());
   }
   JacobianPattern differenced = pattern;  // the columns that still need differences
   std::vector<char> closed(static_cast<std::size_t>(n), 0);
@@ -104,6 +115,15 @@ bool SparseNewtonMatrix::applyBlocks(std::uint64_t signature) {
       fq_[blockIndex_[b][k]] = dq_[b](e % 3, e / 3);
       fv_[blockIndex_[b][k]] = dv_[b](e % 3, e / 3);
     }
+  for (std::size_t c = 0; c < columnIndex_.size(); ++c) {
+    const std::size_t b = blockIndex_.size() + c;
+    for (int e = 0; e < 3; ++e) {
+      const int k = columnIndex_[c][static_cast<std::size_t>(e)];
+      if (k < 0) continue;
+      fq_[k] = dq_[b](e, 0);
+      fv_[k] = dv_[b](e, 0);
+    }
+  }
   const bool changed = !applied_ || signature != signature_;
   applied_ = true;
   signature_ = signature;

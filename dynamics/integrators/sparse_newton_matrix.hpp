@@ -10,7 +10,9 @@
 // The blocks a system gives in closed form (JacobianBlocks: a lumped line's nodes among
 // themselves) are written from the system's blockJacobian instead, and a column all of whose
 // entries lie in such blocks is left out of the colours: the differences are then needed only for
-// the columns of the rigid dofs and of the nodes next to them.
+// the columns of the rigid dofs and of the nodes next to them. The 3 x 1 blocks (a line's end node
+// against a rigid dof of the body at its end) overwrite those entries of the rigid columns at
+// every refresh of the blocks; the columns' other rows keep their differences.
 // F is the accelerations (1/s^2 per m or rad, 1/s per m/s or rad/s); A is dimensionless.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -69,7 +71,8 @@ class SparseNewtonMatrix {
     return 2 * colouring_.count();
   }
 
-  // the blocks' values, to be filled by AccelerationSource::blockJacobian (3x3 each)
+  // the blocks' values, to be filled by AccelerationSource::blockJacobian (3x3 each, then the
+  // 3 x 1 blocks in their first columns)
   bool hasBlocks() const { return !blockIndex_.empty(); }
   std::vector<Eigen::Matrix3d>& blockDq() { return dq_; }
   std::vector<Eigen::Matrix3d>& blockDv() { return dv_; }
@@ -115,7 +118,8 @@ class SparseNewtonMatrix {
   bool factoriseValues();
   Eigen::VectorXd step_, deltaP_, qp_, vp_, fp_;
   mutable Eigen::VectorXd y_, work_;  // solve(): the permuted right-hand side, L's work vector
-  std::vector<std::array<int, 9>> blockIndex_;  // per block: its entries in A_'s values, by column
+  std::vector<std::array<int, 9>> blockIndex_;   // per block: its entries in A_'s values, by column
+  std::vector<std::array<int, 3>> columnIndex_;  // per 3 x 1 block: its entries, -1 outside
   std::vector<Eigen::Matrix3d> dq_, dv_;
   std::uint64_t signature_ = 0;
   bool applied_ = false;

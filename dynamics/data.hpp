@@ -17,11 +17,13 @@ struct Data {
   std::vector<Transform> X_WB;  ///< pose of body i in the world
   std::vector<MotionSubspace> S;  ///< joint motion subspace of body i, body frame
   std::vector<Motion> V_B;  ///< forwardKinematics: spatial velocity of body i, body frame
-  std::vector<Motion> A_B;  ///< forwardKinematics: spatial acceleration of body i, body frame, without gravity (rnea: with -g)
+  std::vector<Motion> A_B;  ///< forwardKinematics: spatial acceleration of body i, body frame,
+                            ///< without gravity (rnea: with -g)
   std::vector<Motion> C_B;  ///< forwardKinematics: velocity-product acceleration c_J + V x S v_i, body frame
 
   // RNEA / ABA (world frame)
-  std::vector<Force> F_W;  ///< RNEA: force transmitted by joint i to body i, world frame (rneaWorld, biasForces; rnea: body frame)
+  std::vector<Force> F_W;     ///< RNEA: force transmitted by joint i to body i, world frame
+                              ///< (rneaWorld, biasForces; rnea: body frame)
   std::vector<Matrix6> IA_W;  ///< articulated inertia, world frame
   std::vector<Motion> A_W;  ///< RNEA, ABA: spatial acceleration, world frame, including -g
   std::vector<Motion> C_W;  ///< ABA: velocity-product acceleration, world frame

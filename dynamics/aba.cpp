@@ -10,6 +10,55 @@ namespace yardsim::dynamics {
 
 namespace {
 
+// (symmetric positive definite D, 6 x 6) => its L D L^T factors in place: L's strict lower
+// triangle (unit diagonal implied) and D's pivots on the diagonal; the upper triangle is not read
+inline void ldltInPlace6(Eigen::Map<Matrix6> A) {
+  for (int j = 0; j < 6; ++j) {
+    double dj = A(j, j);
+    for (int k = 0; k < j; ++k) dj -= A(j, k) * A(j, k) * A(k, k);
+    A(j, j) = dj;
+    const double inv = 1.0 / dj;
+    for (int i = j + 1; i < 6; ++i) {
+      double aij = A(i, j);
+      for (int k = 0; k < j; ++k) aij -= A(i, k) * A(j, k) * A(k, k);
+      A(i, j) = aij * inv;
+    }
+  }
+}
+
+// (ldltInPlace6's factors of D, b) => D^-1 b: forward, diagonal and backward substitution
+inline Vector6 ldltSolve6(const Eigen::Map<const Matrix6> F, Vector6 b) {
+  for (int i = 1; i < 6; ++i)
+    for (int k = 0; k < i; ++k) b[i] -= F(i, k) * b[k];
+  for (int i = 0; i < 6; ++i) b[i] /= F(i, i);
+  for (int i = 4; i >= 0; --i)
+    for (int k = i + 1; k < 6; ++k) b[i] -= F(k, i) * b[k];
+  return b;
+}
+
+// (free joint at the root: IA_W[i], PA_W[i]) => U = IA S, D = S^T U factored as L D L^T in
+// Dinv's buffer (the root hands nothing to a parent, so only D^-1 (u - U^T a) is needed: one
+// solve instead of the inverse, a twelfth of its cost), u = tau - S^T PA
+inline void abaFreeRootBackward(Data& d, int i, int iv, const Eigen::VectorXd& tau) {
+  const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
+  Eigen::Map<Matrix6> U(d.U[i].data());
+  Eigen::Map<Matrix6> F(d.Dinv[i].data());
+  U.noalias() = d.IA_W[i] * S;
+  F.noalias() = S.transpose() * U;
+  ldltInPlace6(F);
+  Eigen::Map<Vector6>(d.u[i].data()).noalias() = tau.segment<6>(iv) - S.transpose() * d.PA_W[i];
+}
+
+// (free joint at the root, its factors, a = A_W[0] + C_W[i]) => ddq of the joint, A_W[i]
+inline void abaFreeRootForward(Data& d, int i, int iv, const Motion& a) {
+  const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
+  const Eigen::Map<const Matrix6> U(d.U[i].data());
+  const Eigen::Map<const Vector6> u(d.u[i].data());
+  auto qdd = d.ddq.segment<6>(iv);
+  qdd = ldltSolve6(Eigen::Map<const Matrix6>(d.Dinv[i].data()), u - U.transpose() * a);
+  d.A_W[i] = a + S * qdd;
+}
+
 // (body i with an NV-dof joint, IA_W[i], PA_W[i], c = C_W[i]) => U = IA S, D^-1 = (S^T U)^-1,
 // u = tau - S^T PA, and the articulated inertia and bias handed to the parent p (p = 0: none);
 // fixed-size maps of Data's buffers, without the heap temporaries of the dynamic-size code below
@@ -129,6 +178,8 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
     const Motion& c = d.C_W[i];
     if (nv == 1) {
       abaOneDofBackward(d, i, p, iv, tau[iv]);
+    } else if (nv == 6 && p == 0) {
+      abaFreeRootBackward(d, i, iv, tau);
     } else if (nv == 6) {
       abaJointBackward<6>(d, i, p, iv, tau);
     } else if (nv == 3) {
@@ -163,6 +214,8 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       const double qdd = d.Dinv[i](0, 0) * (d.u[i][0] - d.U[i].col(0).dot(a));
       d.ddq[iv] = qdd;
       d.A_W[i] = a + d.S_W.col(iv) * qdd;
+    } else if (nv == 6 && m.parent[i] == 0) {
+      abaFreeRootForward(d, i, iv, a);
     } else if (nv == 6) {
       abaJointForward<6>(d, i, iv, a);
     } else if (nv == 3) {

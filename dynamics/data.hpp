@@ -29,6 +29,8 @@ struct Data {
   std::vector<Motion> C_W;  ///< ABA: velocity-product acceleration, world frame
   std::vector<Force> PA_W;  ///< ABA: articulated bias force, world frame
   std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> U;
+  /// ABA: D^-1 = (S^T IA S)^-1 of joint i; for a free joint at the root, D's L D L^T factors
+  /// instead (strict lower triangle L, diagonal D: aba.cpp solves with them)
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>> Dinv;
   std::vector<Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>> u;
   Eigen::VectorXd tau;  ///< RNEA output

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "devs/general_text.hpp"
 #include "dynamics/energy.hpp"
@@ -192,7 +193,7 @@ void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::Vect
   d.kernel.hybrid().setPrescribed(d.prescribedMask);
   d.kernel.hybrid().velocityStep(d.scratch, x.q, x.v, dv);
   x.work += dynamics::kineticEnergy(m, d.scratch, x.q, x.v) - before;
-  ws_.powerState = nullptr;
+  dropStepCaches();
 }
 
 void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) const {
@@ -241,7 +242,7 @@ void MultibodyModel::checkBlowUp(const MultibodyState& x, double t) const {
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
-  ws_.powerState = nullptr;  // set-points change the forces
+  dropStepCaches();  // set-points change the forces
   ws_.integrator->reset();   // the forces change here: no history across it
   const auto& model = system_.model();
   auto& sp = x.setPoints;
@@ -311,7 +312,7 @@ devs::Time MultibodyModel::nextTimeEvent(const MultibodyState& x, devs::Time t) 
 }
 
 void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
-  ws_.powerState = nullptr;
+  dropStepCaches();
   const auto& model = system_.model();
   // (prescribed ramps ending now) => locked exactly at their targets
   for (int i = 1; i < model.nbodies; ++i) {
@@ -339,7 +340,26 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
 
 void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t,
                                     std::span<double> g) const {
+  // (x, t) => g, from the last evaluation when (t, q, v) are the same bit for bit and the
+  // set-points have not changed since (dropStepCaches), else computed and kept
+  auto& memo = ws_.events;
+  auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    return a.size() == b.size() &&
+           (a.size() == 0 ||
+            std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
+  };
+  if (memo.valid && t == memo.t && memo.g.size() == g.size() && same(x.q, memo.q) &&
+      same(x.v, memo.v)) {
+    std::copy(memo.g.begin(), memo.g.end(), g.begin());
+    return;
+  }
+  memo.valid = false;
   mechanics::eventFunctions(system_, ws_.data, x.setPoints, x.q, x.v, t, g);
+  memo.t = t;
+  memo.q = x.q;
+  memo.v = x.v;
+  memo.g.assign(g.begin(), g.end());
+  memo.valid = true;
 }
 
 void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss::Reached& r) const {
@@ -357,7 +377,7 @@ void MultibodyModel::outputAt(const MultibodyState& x, devs::Time t, const dtss:
 }
 
 void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
-  ws_.powerState = nullptr;
+  dropStepCaches();
   ws_.integrator->reset();
   const mechanics::EventSlot& slot = events_[static_cast<std::size_t>(e)];
   if (slot.kind == mechanics::EventSlot::Kind::DriveReached)
@@ -453,6 +473,7 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   for (std::size_t k = 0; k < system_.winches().size(); ++k)
     system_.winches()[k].winch->restoreHistory(x.setPoints.winches[k].pieces);
   // (caches of the run that wrote it) => the same reuse of the power at the next step
+  ws_.events.valid = false;
   ws_.powerState = r.boolean() ? &state().xNext : nullptr;
   ws_.powerTime = r.f64();
   ws_.power = r.f64();

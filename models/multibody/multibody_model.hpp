@@ -104,6 +104,12 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
   // (committed state) => the kernel's stage there: ws_.accel, and its forces in the kernel
   void evaluateCommitted() const;
+  // (set-points or the state changed outside a step) => the power and event functions of the
+  // last step's end are not reused
+  void dropStepCaches() const {
+    ws_.powerState = nullptr;
+    ws_.events.valid = false;
+  }
   // (committed state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
   // (committed state, the provider to read, if it needs its scratch) => the stage it sees there
@@ -139,6 +145,15 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     std::vector<forces::HydrostaticReport> reports;
     std::vector<double> reportTime;
     std::vector<Eigen::VectorXd> reportQ;
+    // the event functions g last evaluated, at (t, q, v) compared bit for bit: a step starts
+    // where the last one ended, so its start's g are its predecessor's end's. Valid while the
+    // set-points stay (dropped with powerState wherever they change: dropStepCaches)
+    struct {
+      bool valid = false;
+      double t = 0.0;
+      Eigen::VectorXd q, v;
+      std::vector<double> g;
+    } events;
   };
   mutable Workspace ws_;
 };

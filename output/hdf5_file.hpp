@@ -2,16 +2,21 @@
 // A small HDF5 writer on Debian's libhdf5 (C API): groups, 1-D datasets of doubles, 64-bit
 // integers and variable-length UTF-8 strings, and string attributes — what h5py and HDFView
 // read without yardsim. Paths are absolute ("/table/status"); parent groups are created.
+// libhdf5 is loaded with the first file written (hdf5_module.hpp).
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace yardsim::output {
 
+class Hdf5Backend;
+
 class Hdf5File {
  public:
-  // (file) => created (truncated); throws std::runtime_error naming the file when it cannot be
+  // (file) => created (truncated); throws std::runtime_error naming the file when it cannot be,
+  // or why the HDF5 module cannot be loaded
   explicit Hdf5File(const std::filesystem::path& file);
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
@@ -27,12 +32,7 @@ class Hdf5File {
   void attribute(const std::string& path, const std::string& name, const std::string& value);
 
  private:
-  std::int64_t file_ = -1;  // hid_t
-  std::filesystem::path name_;
-  // (path) => its parent groups created
-  void parents(const std::string& path);
-  // (dataset path, type, count, data) => written
-  void dataset(const std::string& path, std::int64_t type, std::size_t n, const void* data);
+  std::unique_ptr<Hdf5Backend> writer_;
 };
 
 }  // namespace yardsim::output

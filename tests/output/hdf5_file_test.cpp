@@ -1,10 +1,13 @@
 // The HDF5 writer, read back by h5py (an independent reader): every dataset type, nested
 // groups, attributes, and a file that cannot be created.
+#include <link.h>
 #include <sys/wait.h>
 #include <catch2/catch.hpp>
 #include <cstdio>
+#include <cstring>
 
 #include "output/hdf5_file.hpp"
+#include "output/hdf5_module.hpp"
 #include "support/scene_files.hpp"
 #include "support/test_paths.hpp"
 
@@ -23,6 +26,17 @@ std::string python(const std::string& program, const std::string& file) {
   INFO(out);
   REQUIRE((WIFEXITED(raw) && WEXITSTATUS(raw) == 0));
   return out;
+}
+
+// (part of a file name) => whether a loaded object's path contains it
+bool loaded(const char* part) {
+  auto visit = [](dl_phdr_info* info, std::size_t, void* data) {
+    return info->dlpi_name != nullptr &&
+                   std::strstr(info->dlpi_name, static_cast<const char*>(data)) != nullptr
+               ? 1
+               : 0;
+  };
+  return dl_iterate_phdr(visit, const_cast<char*>(part)) != 0;
 }
 }  // namespace
 
@@ -56,4 +70,21 @@ TEST_CASE("Datasets and attributes written by Hdf5File read back with h5py") {
 TEST_CASE("An HDF5 file that cannot be created throws naming it") {
   CHECK_THROWS_WITH(Hdf5File("/nonexistent-folder/x.h5"),
                     Catch::Contains("/nonexistent-folder/x.h5"));
+}
+
+TEST_CASE("libhdf5 is loaded with the first HDF5 file, not before") {
+  // (each test case runs in its own process under ctest) => nothing of HDF5 at start-up: the
+  // writer's module and libhdf5 come with the first file
+  CHECK_FALSE(loaded("libhdf5"));
+  CHECK_FALSE(loaded("libyardsim_hdf5"));
+  yardsim::testing::SceneDir dir;
+  { Hdf5File h(dir.file("first.h5")); }
+  CHECK(loaded("libhdf5"));
+  CHECK(loaded("libyardsim_hdf5"));
+}
+
+TEST_CASE("A missing HDF5 module is an error naming it and the fix") {
+  CHECK_THROWS_WITH(yardsim::output::loadHdf5Module("/nonexistent-folder/libyardsim_hdf5.so"),
+                    Catch::Contains("/nonexistent-folder/libyardsim_hdf5.so") &&
+                        Catch::Contains("reinstall yardsim"));
 }

@@ -1,13 +1,10 @@
 #include "studies/sweep_mpi.hpp"
 
-// the C API only: no C++ bindings (deprecated, and warnings under -Werror)
-#define OMPI_SKIP_MPICXX 1
-#define MPICH_SKIP_MPICXX 1
-#include <mpi.h>
 #include <cstdlib>
 #include <deque>
 #include <memory>
 
+#include "output/module_loader.hpp"
 #include "studies/sweep_pool.hpp"
 
 namespace yardsim::studies {
@@ -27,14 +24,13 @@ const SweepCase& byId(const std::vector<SweepCase>& all, long id) {
   return all.at(static_cast<std::size_t>(id));
 }
 
-// (spec, all, OUT, rank) => cases asked of rank 0 and run until it says there are none left
-void work(const SweepSpec& spec, const std::vector<SweepCase>& all,
+// (communicator, spec, all, OUT, rank) => cases asked of rank 0 and run until it says there are
+// none left
+void work(const MpiComm& comm, const SweepSpec& spec, const std::vector<SweepCase>& all,
           const std::filesystem::path& out, int rank) {
   for (;;) {
-    int ask = rank;
-    MPI_Send(&ask, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
-    long id = -1;
-    MPI_Recv(&id, 1, MPI_LONG, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    comm.sendInt(rank, 0, kRequest);
+    const long id = comm.receiveLong(0, kAssign);
     if (id < 0) return;
     CaseProcess p(spec, byId(all, id), out, rank);
     while (!p.poll()) pollPause();
@@ -47,33 +43,40 @@ bool launchedByMpi() {
          moreThanOne("PMIX_SIZE") || moreThanOne("MPI_LOCALNRANKS");
 }
 
+std::string mpiModulePath() {
+#ifndef YARDSIM_MPI_LINKED
+  return output::moduleBeside(reinterpret_cast<const void*>(&mpiModulePath), "libyardsim_mpi.so");
+#else
+  return {};
+#endif
+}
+
+MpiInitEntry loadMpiModule(const std::string& file) {
+  return reinterpret_cast<MpiInitEntry>(output::openModuleEntry(
+      file, "yardsim_mpi_init", "the MPI module",
+      "; the MPI module is built and installed with yardsim (reinstall yardsim, or put the module "
+      "back beside libyardsim_studies.so)",
+      true));
+}
+
 MpiSession::MpiSession() {
-  MPI_Init(nullptr, nullptr);
-  MPI_Comm_rank(MPI_COMM_WORLD, &world_.rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &world_.size);
+#ifdef YARDSIM_MPI_LINKED
+  yardsim_mpi_init(comm_);
+#else
+  loadMpiModule(mpiModulePath())(comm_);
+#endif
 }
 
-MpiSession::~MpiSession() {
-  MPI_Finalize();
-}
-
-void MpiSession::barrier() const {
-  MPI_Barrier(MPI_COMM_WORLD);
-}
-
-bool MpiSession::broadcast(bool flag) const {
-  int v = flag ? 1 : 0;
-  MPI_Bcast(&v, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  return v != 0;
-}
+MpiSession::~MpiSession() = default;
 
 void runMpiSchedule(const MpiSession& session, const SweepSpec& spec,
                     const std::vector<SweepCase>& all, const std::vector<SweepCase>& todo,
                     const std::filesystem::path& out,
                     const std::function<void(const CaseRecord&)>& onDone) {
   const MpiWorld w = session.world();
+  const MpiComm& comm = session.comm();
   if (w.rank != 0) {
-    work(spec, all, out, w.rank);
+    work(comm, spec, all, out, w.rank);
     session.barrier();
     return;
   }
@@ -83,12 +86,9 @@ void runMpiSchedule(const MpiSession& session, const SweepSpec& spec,
   int stopped = 0;
   // (requests, own slot) => each asking rank served the next case; rank 0 runs one case at a time
   while (stopped < w.size - 1 || !queue.empty() || own) {
-    int flag = 0;
-    MPI_Status st;
     bool busy = false;
-    while (MPI_Iprobe(MPI_ANY_SOURCE, kRequest, MPI_COMM_WORLD, &flag, &st), flag) {
-      int who = 0;
-      MPI_Recv(&who, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    for (int from = comm.waiting(kRequest); from >= 0; from = comm.waiting(kRequest)) {
+      comm.receiveInt(from, kRequest);
       long id = -1;
       if (!queue.empty()) {
         id = queue.front();
@@ -96,7 +96,7 @@ void runMpiSchedule(const MpiSession& session, const SweepSpec& spec,
       } else {
         ++stopped;
       }
-      MPI_Send(&id, 1, MPI_LONG, st.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+      comm.sendLong(id, from, kAssign);
       busy = true;
     }
     if (!own && !queue.empty()) {

@@ -6,8 +6,10 @@
 // only its running case, which a resume runs again.
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include "studies/mpi_module.hpp"
 #include "studies/sweep_case.hpp"
 
 namespace yardsim::studies {
@@ -15,25 +17,23 @@ namespace yardsim::studies {
 // () => whether mpirun/srun started this process as one of several MPI ranks (environment)
 bool launchedByMpi();
 
-struct MpiWorld {
-  int rank = 0, size = 1;
-};
-
-// Initialises MPI on construction and finalises it on destruction.
+// Initialises MPI on construction (Open MPI loaded then: mpi_module.hpp) and finalises it on
+// destruction.
 class MpiSession {
  public:
   MpiSession();
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
-  MpiWorld world() const { return world_; }
+  MpiWorld world() const { return comm_->world(); }
   // () => every rank reached this point
-  void barrier() const;
+  void barrier() const { comm_->barrier(); }
   // (rank 0's flag) => the same flag on every rank
-  bool broadcast(bool flag) const;
+  bool broadcast(bool flag) const { return comm_->broadcast(flag ? 1 : 0) != 0; }
+  const MpiComm& comm() const { return *comm_; }
 
  private:
-  MpiWorld world_;
+  std::unique_ptr<MpiComm> comm_;
 };
 
 // (session, spec, cases still to run (read on rank 0 only), OUT, on each of rank 0's own results)

@@ -1,13 +1,12 @@
 // The HDF5 writer, read back by h5py (an independent reader): every dataset type, nested
 // groups, attributes, and a file that cannot be created.
-#include <link.h>
 #include <sys/wait.h>
 #include <catch2/catch.hpp>
 #include <cstdio>
-#include <cstring>
 
 #include "output/hdf5_file.hpp"
 #include "output/hdf5_module.hpp"
+#include "support/loaded_objects.hpp"
 #include "support/scene_files.hpp"
 #include "support/test_paths.hpp"
 
@@ -26,17 +25,6 @@ std::string python(const std::string& program, const std::string& file) {
   INFO(out);
   REQUIRE((WIFEXITED(raw) && WEXITSTATUS(raw) == 0));
   return out;
-}
-
-// (part of a file name) => whether a loaded object's path contains it
-bool loaded(const char* part) {
-  auto visit = [](dl_phdr_info* info, std::size_t, void* data) {
-    return info->dlpi_name != nullptr &&
-                   std::strstr(info->dlpi_name, static_cast<const char*>(data)) != nullptr
-               ? 1
-               : 0;
-  };
-  return dl_iterate_phdr(visit, const_cast<char*>(part)) != 0;
 }
 }  // namespace
 
@@ -73,6 +61,7 @@ TEST_CASE("An HDF5 file that cannot be created throws naming it") {
 }
 
 TEST_CASE("libhdf5 is loaded with the first HDF5 file, not before") {
+  using yardsim::testing::loaded;
   // (each test case runs in its own process under ctest) => nothing of HDF5 at start-up: the
   // writer's module and libhdf5 come with the first file
   CHECK_FALSE(loaded("libhdf5"));

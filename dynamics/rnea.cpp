@@ -397,12 +397,53 @@ void SubtreeMask::mark(const Model& m, const std::vector<char>& roots) {
   for (int i = m.nbodies - 1; i >= 1; --i)
     if (forward[static_cast<std::size_t>(i)] != 0)
       forward[static_cast<std::size_t>(m.parent[i])] = 1;
+  // (joints of forward) => whether none of them rotates
+  translational = any;
+  for (int i = 1; i < m.nbodies && translational; ++i) {
+    const JointType t = m.joints[i].type;
+    translational = forward[static_cast<std::size_t>(i)] == 0 || t == JointType::Prismatic ||
+                    t == JointType::Translation || t == JointType::Fixed;
+  }
 }
+
+namespace {
+
+// (translational mask, placements) => data.nle of the subtree's joints: with no rotation from the
+// world down, every body's acceleration at zero ddq is the base's -g and its velocity products
+// vanish, so a joint carries the weight of its subtree, S^T sum m (-g) (linear parts only). False,
+// untouched, when a body of the subtree has added mass (its share of -g differs).
+bool translationalBias(const Model& m, Data& d, const Data& k, const SubtreeMask& sub) {
+  for (int i = 1; i < m.nbodies; ++i)
+    if (sub.subtree[static_cast<std::size_t>(i)] && d.hasAddedMass[i]) return false;
+  // (mass) => its weight's reaction m (-g), the subtree's summed leaves first (children follow
+  // their parents in the body order)
+  for (int i = 1; i < m.nbodies; ++i)
+    if (sub.subtree[static_cast<std::size_t>(i)])
+      d.F_W[i].tail<3>() = m.inertias[i].mass * (-m.gravity);
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    if (!sub.subtree[static_cast<std::size_t>(i)]) continue;
+    const Vector3& f = d.F_W[i].tail<3>();
+    const int nv = m.jointNv[i];
+    const int iv = m.idxV[i];
+    if (nv == 1) {
+      d.nle[iv] = worldSubspaceColumn(m, k, i).tail<3>().dot(f);
+    } else {
+      for (int c = 0; c < nv; ++c)
+        d.nle[iv + c] = (k.X_WB[i].R * k.S[i].col(c).tail<3>()).dot(f);
+    }
+    const int p = m.parent[i];
+    if (p > 0 && sub.subtree[static_cast<std::size_t>(p)]) d.F_W[p].tail<3>() += f;
+  }
+  return true;
+}
+
+}  // namespace
 
 const Eigen::VectorXd& biasForcesOfSubtrees(const Model& m, Data& d, const Data& placed,
                                             const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                             const SubtreeMask& sub) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, &v, nullptr, "biasForcesOfSubtrees");
+  if (sub.translational && translationalBias(m, d, placed, sub)) return d.nle;
   rneaImpl<true>(m, d, q, v, nullptr, nullptr, d.nle, &placed, &sub);
   return d.nle;
 }

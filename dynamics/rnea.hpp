@@ -40,6 +40,8 @@ const Eigen::VectorXd& biasForces(const Model& model, Data& data, const Eigen::V
 struct SubtreeMask {
   std::vector<char> subtree, forward;
   bool any = false;  ///< the subtree is not empty
+  /// every joint of `forward` is prismatic, a translation or fixed: nothing in it rotates
+  bool translational = false;
   /// (roots[i] != 0: body i's joint is wanted, size nbodies) => subtree, forward, any
   void mark(const Model& model, const std::vector<char>& roots);
 };
@@ -48,7 +50,10 @@ struct SubtreeMask {
 /// joints) => data.nle[iv] = h(q, v) for every joint of the mask's subtree, N or N m: the same
 /// doubles as biasForces (no external forces), without placing the bodies again and without
 /// the bodies outside the subtrees and their supports. The other entries of data.nle keep
-/// their values.
+/// their values. A translational mask on bodies without added mass (a crane's travel and
+/// trolleys) takes a shorter path with the same meaning: nothing rotates, so h is the weight of
+/// each joint's subtree along its axes, S^T sum m (-g) (equal to RNEA's to round-off: its
+/// velocity-product and moment terms are exact zeros there).
 const Eigen::VectorXd& biasForcesOfSubtrees(const Model& model, Data& data, const Data& placed,
                                             const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                             const SubtreeMask& mask);

@@ -146,6 +146,64 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("the bias forces of translational subtrees are RNEA's: each joint carries its subtree's weight") {
+  // (random trees of prismatic, translation and fixed joints in rotated frames, gravity along no
+  // axis, random q and v) => the mask is translational and its short path equals biasForces to
+  // round-off, and a subtree's vertical prismatic joint carries its bodies' weight; a revolute
+  // joint in the forward set or added mass on a subtree's body takes RNEA (bit for bit)
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const JointType kinds[3] = {JointType::Prismatic, JointType::Translation, JointType::Fixed};
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 2 + trial;
+    const bool rotating = trial % 4 == 3, added = trial % 4 == 2;
+    ModelBuilder b;
+    b.setGravity({0.4, -1.3, -9.7});
+    for (int i = 0; i < n; ++i) {
+      const std::string parent = i == 0 ? "world" : indexed("b", static_cast<int>(u(rng) * i));
+      const JointType t = rotating && i == 1 ? JointType::Revolute : kinds[i % 3];
+      b.addBody(indexed("b", i), parent, jointOfType(t, rng),
+                Transform{randomRotation(rng), randomVector(rng)}, randomInertia(rng));
+    }
+    if (added) b.setAddedMass(indexed("b", n - 1), randomAddedMass(rng));
+    const Model m = b.build();
+    Data full(m), kin(m), sub(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = 3.0 * randomVectorX(rng, m.nv);
+    const Eigen::VectorXd h = biasForces(m, full, q, v);
+    forwardKinematics(m, kin, q, v);
+    std::vector<char> roots(static_cast<std::size_t>(m.nbodies), 0);
+    roots[1] = 1;  // the whole tree
+    SubtreeMask mask;
+    mask.mark(m, roots);
+    INFO("trial " << trial << (rotating ? ", a revolute joint" : "") << (added ? ", added mass" : ""));
+    CHECK(mask.translational == !rotating);
+    sub.nle.setZero();
+    biasForcesOfSubtrees(m, sub, kin, q, v, mask);
+    const double scale = h.cwiseAbs().maxCoeff();
+    for (int iv = 0; iv < m.nv; ++iv) {
+      if (rotating || added)
+        CHECK(sub.nle[iv] == h[iv]);
+      else
+        CHECK(std::abs(sub.nle[iv] - h[iv]) <= 1e-13 * scale);
+    }
+  }
+  // (a vertical hoist on a horizontal trolley, at speed) => the hoist carries the hook's weight,
+  // the trolley nothing (its axis is horizontal)
+  ModelBuilder b;
+  b.addBody("trolley", "world", Joint::prismatic({1, 0, 0}), Transform{}, SpatialInertia{2000.0, Vector3(0, 0, 1), Matrix3::Identity()});
+  b.addBody("hook", "trolley", Joint::prismatic({0, 0, 1}), Transform{}, SpatialInertia{300.0, Vector3(0.5, 0, 0), Matrix3::Identity()});
+  const Model m = b.build();
+  Data kin(m), sub(m);
+  const Eigen::VectorXd q = Eigen::Vector2d(3.0, -12.0), v = Eigen::Vector2d(0.5, -0.3);
+  forwardKinematics(m, kin, q, v);
+  SubtreeMask mask;
+  mask.mark(m, {0, 1, 0});
+  REQUIRE(mask.translational);
+  biasForcesOfSubtrees(m, sub, kin, q, v, mask);
+  CHECK(sub.nle[0] == 0.0);
+  CHECK(sub.nle[1] == Approx(300.0 * 9.81).epsilon(1e-15));
+}
+
 TEST_CASE("RNEA in the body frame equals RNEA in the world frame, torques and joint forces") {
   // rnea runs each body's step in its own frame (special steps for coordinate-axis revolute and
   // prismatic joints of translated frames), rneaWorld in the world frame: the same torques and,

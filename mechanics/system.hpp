@@ -14,13 +14,12 @@
 #include <vector>
 
 #include "forces/body_load.hpp"
-#include "forces/rope.hpp"
 #include "forces/flow_load.hpp"
-#include "forces/provider_events.hpp"
 #include "forces/hydro/draft_added_mass.hpp"
 #include "forces/hydrostatics.hpp"
-#include "forces/lines/lumped_line_provider.hpp"
 #include "forces/linear_quadratic_damping.hpp"
+#include "forces/lines/lumped_line_provider.hpp"
+#include "forces/provider_events.hpp"
 #include "forces/rope.hpp"
 #include "mechanics/description.hpp"
 

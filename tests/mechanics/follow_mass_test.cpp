@@ -59,8 +59,8 @@ Eigen::MatrixXd massMatrix(testing::StagedSystem& s, double t, const Eigen::Vect
 std::vector<dynamics::Matrix3> lineBlocks(testing::StagedSystem& s, double t,
                                           const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
   const forces::LumpedLineProvider& line = *s.system.winchedLines().at(0);
-  const std::size_t size = static_cast<std::size_t>(
-      (2 * line.line().jacobianBandwidth() + 1) * line.line().nodes());
+  const std::size_t size =
+      static_cast<std::size_t>((2 * line.line().jacobianBandwidth() + 1) * line.line().nodes());
   std::vector<dynamics::Matrix3> dadr(size), dadv(size);
   dynamics::forwardKinematics(s.model(), s.data.view, q, v);
   line.accelerationJacobian(s.data.stage(s.system, t, s.data.view, q, v), dadr, dadv);
@@ -179,7 +179,8 @@ record: {interval: 0.004, channels: ["lift.q", "hoist.unstretched_length", "mech
   run::runScene(*scene, *root, {dir.path() / "out", 25.0, {}, {}, 0.1});
   const testing::CsvFile csv((dir.path() / "out" / "timeseries.csv").string());
   const int z = csv.column("lift.q[m]"), length = csv.column("hoist.unstretched_length[m]");
-  const int balance = csv.column("mechanics.energy_balance[J]"), work = csv.column("mechanics.work[J]");
+  const int balance = csv.column("mechanics.energy_balance[J]"),
+            work = csv.column("mechanics.work[J]");
   REQUIRE(std::min({z, length, balance, work}) > 0);
   REQUIRE(csv.rows.back()[length] == Approx(L1).epsilon(1e-12));
   // (held from 11 s) => the mean height and the upward crossings through it
@@ -216,7 +217,8 @@ record: {interval: 0.004, channels: ["lift.q", "hoist.unstretched_length", "mech
   // (the winch hauls in 60 kg of rope moving at up to 1 m/s: the kinetic energy that leaves with
   // it is in the power) => the balance closes
   double drift = 0.0;
-  for (const auto& r : csv.rows) drift = std::max(drift, std::abs(r[balance] - csv.rows[0][balance]));
+  for (const auto& r : csv.rows)
+    drift = std::max(drift, std::abs(r[balance] - csv.rows[0][balance]));
   const double done = std::abs(csv.rows.back()[work] - csv.rows[0][work]);
   INFO("balance drift " << drift << " J of the winch's " << done << " J");
   CHECK(done > 0.5 * M * g * 6.0);

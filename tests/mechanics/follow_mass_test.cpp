@@ -27,24 +27,6 @@ using namespace yardsim;
 
 namespace {
 
-// (L0) => a 2 t block on a free joint hanging from (0, 0, 30) by a lumped rope of 8 segments
-// (10 kg/m, EA 5e7 N, EI 2e4 N m^2, undamped: its forces do not depend on the winch's rate)
-std::string ropeScene(double length) {
-  return R"(schema_version: 1
-integrator: {method: rk4, dt: 0.001}
-mechanics:
-  bodies:
-    block: {parent: world, joint: {type: free, q0: {xyz: [0.4, -0.3, 10.1]}}, mass: 2000,
-            inertia: [100, 120, 140]}
-  ropes:
-    hoist: {model: lumped, path: [{body: world, point: [0, 0, 30]}, {body: block, point: [0, 0, 0.5]}],
-            L0: )" +
-         std::to_string(length) + R"(, segments: 8, EA: 5.0e7, EI: 2.0e4, mass_per_length: 10,
-            diameter: 0.04, damping_ratio: 0}
-until: 1
-)";
-}
-
 // (staged system, t, q, v) => its mass matrix with the masses that follow at t (CRBA)
 Eigen::MatrixXd massMatrix(testing::StagedSystem& s, double t, const Eigen::VectorXd& q,
                            const Eigen::VectorXd& v) {
@@ -100,8 +82,8 @@ double rodFrequency(double mu, double L, double ea, double M) {
 }  // namespace
 
 TEST_CASE("a rope under a winch has at t the mass matrix and accelerations of a rope of L(t)") {
-  testing::StagedSystem hauled(testing::buildFromScene(ropeScene(20.0)));
-  testing::StagedSystem shorter(testing::buildFromScene(ropeScene(19.2)));
+  testing::StagedSystem hauled(testing::buildFromScene(testing::hangingRopeScene(20.0)));
+  testing::StagedSystem shorter(testing::buildFromScene(testing::hangingRopeScene(19.2)));
   REQUIRE(hauled.system.winchedLines().size() == 1);
   REQUIRE(hauled.model().nv == shorter.model().nv);
   // (hauling in at 0.4 m/s from t = 1 s) => L(3) = 19.2 m

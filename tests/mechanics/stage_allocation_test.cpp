@@ -69,17 +69,7 @@ TEST_CASE("a stage writing the node masses of a lumped rope under a winch alloca
   // (a 2 t block hanging on 20 m of lumped rope, 8 segments, hauled in at 0.4 m/s from t = 0) =>
   // each stage writes its nodes' masses at t into the kernel's, the servos' and the reactions'
   // workspaces (mechanics/follow_mass.hpp), and the energy into its own, without allocating
-  testing::StagedSystem s(testing::buildFromScene(R"(schema_version: 1
-integrator: {method: rk4, dt: 0.001}
-mechanics:
-  bodies:
-    block: {parent: world, joint: {type: free, q0: {xyz: [0.4, -0.3, 10.1]}}, mass: 2000,
-            inertia: [100, 120, 140]}
-  ropes:
-    hoist: {model: lumped, path: [{body: world, point: [0, 0, 30]}, {body: block}], L0: 20,
-            segments: 8, EA: 5.0e7, mass_per_length: 10, diameter: 0.04}
-until: 1
-)"));
+  testing::StagedSystem s(testing::buildFromScene(testing::hangingRopeScene(20.0)));
   REQUIRE(s.system.winchedLines().size() == 1);
   s.system.winches().at(0).winch->setPayoutRate(0.0, -0.4);
   const Eigen::VectorXd v = Eigen::VectorXd::Constant(s.model().nv, 0.1);

@@ -12,7 +12,7 @@
 // Per inner node the provider adds to its joint's generalized force (= the world force on the
 // node) the line's node force minus the model's gravity on the node's mass m_i: the model applies
 // m_i g to every body; the line's net weight w l_n (buoyancy included) replaces it. The node mass
-// is mu l_n + rho V Can: the joint-space mass of a body is constant, so the added mass is taken
+// is mu l_n + rho V Can: a body's mass in the model is isotropic, so the added mass is taken
 // isotropic with the normal coefficient (the tangential one, usually smaller, is not used for the
 // mass; docs/lines.md). Potential energy: the line's (strain, bending, net weight, bed springs)
 // plus sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes.

@@ -2,7 +2,7 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
-#include "mechanics/follow_draft.hpp"
+#include "mechanics/follow_mass.hpp"
 #include "mechanics/stage.hpp"
 
 namespace yardsim::mechanics {
@@ -17,8 +17,8 @@ double energy(const System& s, const Data& d, dynamics::Data& kin, const Eigen::
 double energyAfterKinematics(const System& s, const Data& d, dynamics::Data& kin,
                              const Eigen::VectorXd& q, const Eigen::VectorXd& v, double t) {
   const auto& m = s.model();
-  // (pose) => the added mass of the kinetic energy, where it follows the draft
-  followDraft(s, kin, kin);
+  // (pose, t) => the added mass of the kinetic energy, where it follows the draft or a winch
+  followMass(s, t, kin, kin);
   double e = 0.0;
   for (int i = 1; i < m.nbodies; ++i) {
     e +=

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "dynamics/rnea.hpp"
-#include "mechanics/follow_draft.hpp"
+#include "mechanics/follow_mass.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/line_jacobian.hpp"
 
@@ -86,12 +86,12 @@ void stageForces(const System& s, Data& d, double t, const Eigen::VectorXd& q,
                  const Eigen::VectorXd& v, const dynamics::Data& kin, dynamics::ExternalForces& f,
                  Eigen::VectorXd& tau) {
   const SetPoints& sp = *d.setPoints;
-  // (kinematics of the stage) => the draft-following added mass of the kernel's ABA, the servos'
-  // bias forces and the reactions' RNEA (nothing without such a body)
-  if (!s.draftAddedMass().empty()) {
-    followDraft(s, kin, d.kernel.data());
-    followDraft(s, kin, d.feedforward);
-    followDraft(s, kin, d.reaction);
+  // (kinematics of the stage, t) => the masses that follow the draft or a winch, for the kernel's
+  // ABA, the servos' bias forces and the reactions' RNEA (nothing without such a body)
+  if (followsMass(s)) {
+    followMass(s, t, kin, d.kernel.data());
+    followMass(s, t, kin, d.feedforward);
+    followMass(s, t, kin, d.reaction);
   }
   if (prescribedDofs(s, d, sp) || d.kernel.hybrid().any())
     d.kernel.prescribe(d.prescribedMask, d.prescribedAcc);

@@ -6,6 +6,7 @@
 #include "forces/current_load.hpp"
 #include "forces/wind_load.hpp"
 #include "mechanics/build.hpp"
+#include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/providers.hpp"
 
 namespace yardsim::mechanics {
@@ -95,6 +96,10 @@ System::System(BuiltMechanics mechanics, const ServoSettings& servo, const std::
   for (auto& r : ropes_) winches_.push_back({r->name(), &r->winch()});
   for (auto& c : contributed_)
     if (forces::Winch* w = c->payoutWinch()) winches_.push_back({c->name(), w});
+  // (contributed lumped lines with a winch) => the lines whose node masses follow it
+  for (auto& c : contributed_)
+    if (const forces::LumpedLineProvider* l = lumpedLine(*c); l && l->line().winch())
+      winchedLines_.push_back(l);
   // (contributed providers with events) => their event functions, in order
   for (auto& c : contributed_)
     if (const auto* e = dynamic_cast<const forces::ProviderEvents*>(c.get()))

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "forces/body_load.hpp"
-#include "forces/rope.hpp"
 #include "forces/flow_load.hpp"
-#include "forces/provider_events.hpp"
 #include "forces/hydro/draft_added_mass.hpp"
 #include "forces/hydrostatics.hpp"
 #include "forces/linear_quadratic_damping.hpp"
+#include "forces/lines/lumped_line_provider.hpp"
+#include "forces/provider_events.hpp"
 #include "forces/rope.hpp"
 #include "mechanics/description.hpp"
 
@@ -78,6 +78,11 @@ class System {
   const std::vector<std::unique_ptr<forces::hydro::DraftAddedMass>>& draftAddedMass() const {
     return draftAddedMass_;
   }
+  // the lumped lines under a winch (crane ropes with mass): their inner nodes' mass follows the
+  // rope paid out (mechanics/follow_mass.hpp)
+  const std::vector<const forces::LumpedLineProvider*>& winchedLines() const {
+    return winchedLines_;
+  }
   const std::vector<WatchRef>& watches() const { return watchRefs_; }
   // the located state events the contributed providers declare (forces/provider_events.hpp)
   const std::vector<const forces::ProviderEvent*>& providerEvents() const {
@@ -106,6 +111,7 @@ class System {
   std::vector<std::unique_ptr<forces::ForceProvider>> contributed_;
   std::vector<std::unique_ptr<forces::hydro::DraftAddedMass>> draftAddedMass_;
   std::vector<forces::ForceProvider*> providers_;
+  std::vector<const forces::LumpedLineProvider*> winchedLines_;
   std::vector<WatchRef> watchRefs_;
   std::vector<const forces::ProviderEvent*> providerEvents_;
   std::vector<WinchRef> winches_;

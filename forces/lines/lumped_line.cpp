@@ -47,6 +47,10 @@ LumpedLine::LumpedLine(const LumpedLineProperties& p, std::string name, const Ai
     throw std::invalid_argument("lumped line '" + name_ + "': its winch starts at " +
                                 std::to_string(winch_->history().front().l0) +
                                 " m, not at the line's length " + std::to_string(p_.length) + " m");
+  if (winch_ && !(winch_->minLength() > 0.0))
+    throw std::invalid_argument("lumped line '" + name_ +
+                                "': its winch's minimum length must be > 0 (the nodes' masses "
+                                "follow the length paid out)");
   l_ = p_.length / p_.segments;
   area_ = 0.25 * std::numbers::pi * p_.diameter * p_.diameter;
   w_ = (p_.massPerLength - p_.waterDensity * area_) * p_.gravity;
@@ -118,10 +122,11 @@ void LumpedLine::nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v
   }
 }
 
-void LumpedLine::nodeMass(const Eigen::Matrix3Xd& r, std::vector<Matrix3>& m) const {
-  // (q) => mu l_n I + rho V [Can (I - q q^T) + Cat q q^T]
+void LumpedLine::nodeMass(const Eigen::Matrix3Xd& r, double t, std::vector<Matrix3>& m) const {
+  // (q, l_n(t)) => mu l_n I + rho V [Can (I - q q^T) + Cat q q^T], V = A l_n
+  const double l = segmentLength(t);
   for (int i = 0; i <= p_.segments; ++i) {
-    const double ln = nodeLength(i);
+    const double ln = nodeLength(i, l);
     const Vector3 q = tangent(r, i);
     const Matrix3 qq = q * q.transpose();
     m[static_cast<std::size_t>(i)] =

@@ -17,9 +17,9 @@
 // Under a winch (a crane rope's, forces/winch.hpp) the unstretched length L(t) is the winch's and
 // every segment's is l(t) = L(t)/N: the strain e = |d| / l(t) - 1, its rate u.dv / l - |d| l' / l^2
 // (the damping acts on the rope's elongation beyond what the winch pays out, as the massless
-// rope's), the net weight, bending, bed and fluid terms on l_n(t); the node masses stay those of
-// the start (nodeMass(), the bodies' masses are fixed). potentialEnergyRate() is dV/dl l' at fixed
-// positions, the winch's power.
+// rope's), the net weight, bending, bed and fluid terms and the node masses (nodeMass()) on
+// l_n(t). potentialEnergyRate() is dV/dl l' at fixed positions, the winch's power. The winch's
+// minimum length must be > 0 (the masses stay positive).
 // All world frame, SI units. This is the node-force evaluation as a pure function of node
 // positions and velocities; lumped_line_provider.hpp makes the inner nodes bodies of the
 // multibody tree (their states integrated with the rest); the end nodes' forces are what the
@@ -63,8 +63,8 @@ class LumpedLine {
  public:
   // (properties, name, waves and current or null: still water, the winch that sets its
   // unstretched length or null: p.length throughout) => the line; throws std::invalid_argument
-  // naming it for a parameter out of range or a winch that does not start at p.length. waves and
-  // current must outlive it.
+  // naming it for a parameter out of range or a winch that does not start at p.length or whose
+  // minimum length is not > 0. waves and current must outlive it.
   LumpedLine(const LumpedLineProperties& p, std::string name, const AiryWaves* waves = nullptr,
              const CurrentField* current = nullptr, std::shared_ptr<const Winch> winch = nullptr);
 
@@ -91,9 +91,9 @@ class LumpedLine {
   // must be sized 3 x nodes() and segments. Allocation-free.
   void nodeForces(const Eigen::Matrix3Xd& r, const Eigen::Matrix3Xd& v, double t,
                   Eigen::Matrix3Xd& f, Eigen::VectorXd& tension) const;
-  // (r) => every node's 3x3 mass, structural plus added, at the start's segment length, kg; m
-  // sized nodes(). Allocation-free.
-  void nodeMass(const Eigen::Matrix3Xd& r, std::vector<dynamics::Matrix3>& m) const;
+  // (r, t) => every node's 3x3 mass, structural plus added, on its length l_n(t) (the ends' half
+  // segments included), kg; m sized nodes(). Allocation-free.
+  void nodeMass(const Eigen::Matrix3Xd& r, double t, std::vector<dynamics::Matrix3>& m) const;
   // (r, t) => strain energy of the taut segments + bending + net weight w l_n z + bed springs, J
   double potentialEnergy(const Eigen::Matrix3Xd& r, double t) const;
   // (r, t) => dV/dt at fixed r: dV/dl l'(t), the power the winch puts into the line, W (0 without

@@ -148,12 +148,17 @@ double LumpedLineProvider::doPotentialEnergy(const Stage& s) const {
 }
 
 double LumpedLineProvider::doPower(const Stage& s) const {
-  // (node forces, their conservative part) => sum (f - f_c) . v, plus the winch's dV/dt
+  // (node forces, their conservative part) => sum (f - f_c) . v, plus under a winch its dV/dt and
+  // the kinetic energy of the rope leaving or joining the inner nodes, 1/2 m_i' |v_i|^2
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& w = evaluated(s, temporary);
   line_->conservativeForces(w.r, s.t, w.fc);
-  const double power = ((w.f - w.fc).cwiseProduct(w.v)).sum();
-  return winch_ ? power + line_->potentialEnergyRate(w.r, s.t) : power;
+  double power = ((w.f - w.fc).cwiseProduct(w.v)).sum();
+  if (!winch_) return power;
+  power += line_->potentialEnergyRate(w.r, s.t);
+  for (int i = 1; i < line_->properties().segments; ++i)
+    power += 0.5 * nodeMassRate(i, s.t) * w.v.col(i).squaredNorm();
+  return power;
 }
 
 double LumpedLineProvider::fairleadTension(const Stage& s) const {
@@ -183,17 +188,19 @@ double LumpedLineProvider::laidLength(const Stage& s) const {
 std::uint64_t LumpedLineProvider::accelerationJacobian(const Stage& s,
                                                        std::vector<dynamics::Matrix3>& dadr,
                                                        std::vector<dynamics::Matrix3>& dadv) const {
-  // (node forces' blocks) => the inner nodes' rows over their masses
+  // (node forces' blocks) => the inner nodes' rows over their masses at t
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& w = scratchOf<Scratch>(s, temporary);
   gather(s, w);
   const std::uint64_t signature = line_->forceJacobian(w.r, w.v, s.t, dadr, dadv);
   const int width = 2 * line_->jacobianBandwidth() + 1;  // blocks per node row
-  for (int i = 1; i < line_->properties().segments; ++i)
+  for (int i = 1; i < line_->properties().segments; ++i) {
+    const double m = nodeMass(i, s.t);
     for (int k = width * i; k < width * i + width; ++k) {
-      dadr[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
-      dadv[static_cast<std::size_t>(k)] /= masses_[static_cast<std::size_t>(i)];
+      dadr[static_cast<std::size_t>(k)] /= m;
+      dadv[static_cast<std::size_t>(k)] /= m;
     }
+  }
   return signature;
 }
 

@@ -12,14 +12,21 @@
 // Per inner node the provider adds to its joint's generalized force (= the world force on the
 // node) the line's node force minus the model's gravity on the node's mass m_i: the model applies
 // m_i g to every body; the line's net weight w l_n (buoyancy included) replaces it. The node mass
-// is mu l_n + rho V Can: the joint-space mass of a body is constant, so the added mass is taken
+// is mu l_n + rho V Can: a body's mass in the model is isotropic, so the added mass is taken
 // isotropic with the normal coefficient (the tangential one, usually smaller, is not used for the
 // mass; docs/lines.md). Potential energy: the line's (strain, bending, net weight, bed springs)
 // plus sum m_i g_model . r_i, which cancels the model's own gravity potential of the nodes.
 // Power: the part of the node forces that is not -dV/dr (internal and bed damping, friction,
 // drag, the flow's inertia force) times the node velocities, plus dV/dt, the power of the line's
 // winch when it has one (a crane rope's: payoutWinch() takes its set-points between steps, the
-// line's unstretched length follows it, lumped_line.hpp). World frame, SI units.
+// line's unstretched length follows it, lumped_line.hpp).
+// Under a winch an inner node's mass follows the rope paid out: m_i(t) = m_i l(t)/l (m_i the
+// model's, built at the start's segment length l), nodeMass(i, t). The model keeps m_i; the
+// difference m_i(t) - m_i is what mechanics writes into the kernels' added mass before they run
+// (mechanics/follow_mass.hpp; gravity does not act on it, so the weight stays w l_n(t)). The
+// rope that leaves a node (hauled in) or joins it (paid out) does so at the node's velocity: no
+// force, m_i(t) dv_i/dt = f_i, and the kinetic energy it takes or brings, 1/2 m_i'(t) |v_i|^2,
+// is in the power (docs/lines.md, "A winch on a rope between two points"). World frame, SI units.
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,7 +83,7 @@ class LumpedLineProvider final : public ForceProvider {
   // (stage) => unstretched length of the nodes at or below the sea bed (0 without one), m
   double laidLength(const Stage& s) const;
   // (stage) => per inner node i the blocks d a_i/d r_j (1/s^2) and d a_i/d v_j (1/s) of its
-  // acceleration a_i = f_i / m_i (a point mass on its own joint) for j = i - b .. i + b at
+  // acceleration a_i = f_i / m_i(t) (a point mass on its own joint) for j = i - b .. i + b at
   // [(2 b + 1) i + j - i + b], b = line().jacobianBandwidth() (1, or 2 with bending)
   // (LumpedLine::forceJacobian over the node's mass; the end nodes' rows are the force's, N/m
   // and N s/m), both sized (2 b + 1) (N + 1); returns the line's switch signature.
@@ -89,6 +96,16 @@ class LumpedLineProvider final : public ForceProvider {
   const Attachment& fairlead() const { return fairlead_; }
   // (inner node i in 1 .. N-1) => its body index
   int nodeBody(int i) const { return bodies_[static_cast<std::size_t>(i)]; }
+  // (inner node i in 1 .. N-1, t) => its mass at t, m_i l(t)/l, kg (the model's without a winch
+  // or at the start's length), and its rate m_i l'(t)/l, kg/s
+  double nodeMass(int i, double t) const {
+    return masses_[static_cast<std::size_t>(i)] *
+           (line_->segmentLength(t) / line_->segmentLength());
+  }
+  double nodeMassRate(int i, double t) const {
+    return masses_[static_cast<std::size_t>(i)] *
+           (line_->segmentLengthRate(t) / line_->segmentLength());
+  }
 
  protected:
   void doEvaluate(const Stage& s, dynamics::ExternalForces& f, Eigen::VectorXd& tau) const override;

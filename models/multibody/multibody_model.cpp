@@ -12,7 +12,7 @@
 #include "dynamics/rnea.hpp"
 #include "dynamics/static_equilibrium.hpp"
 #include "mechanics/energy.hpp"
-#include "mechanics/follow_draft.hpp"
+#include "mechanics/follow_mass.hpp"
 #include "mechanics/stage.hpp"
 #include "models/numerical_error.hpp"
 
@@ -176,17 +176,18 @@ void MultibodyModel::settle() {
   x.v.setZero();
 }
 
-void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const {
+void MultibodyModel::prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv,
+                                            double t) const {
   // (dv on the prescribed dofs) => every dof's velocity after the impulse; its work = the change
   // of kinetic energy
   const auto& m = system_.model();
   auto& d = ws_.data;
   d.scratchWritten();  // (the impulse writes scratch)
-  // (q) => the added mass at this pose where it follows the draft (the impulse's mass matrix and
-  // both kinetic energies read it), not whatever the scratch held last
-  if (!system_.draftAddedMass().empty()) {
+  // (q, t) => the added mass at this pose and time where it follows the draft or a winch (the
+  // impulse's mass matrix and both kinetic energies read it), not whatever the scratch held last
+  if (mechanics::followsMass(system_)) {
     dynamics::forwardKinematics(m, d.scratch, x.q);
-    mechanics::followDraft(system_, d.scratch, d.scratch);
+    mechanics::followMass(system_, t, d.scratch, d.scratch);
   }
   const double before = dynamics::kineticEnergy(m, d.scratch, x.q, x.v);
   mechanics::prescribedDofs(system_, d, x.setPoints);
@@ -267,7 +268,7 @@ void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
           Eigen::VectorXd& dv = ws_.data.accelScratch;
           dv.setZero();
           dv[iv] = step;
-          prescribedVelocityStep(x, dv);
+          prescribedVelocityStep(x, dv, t);
         }
         break;
       }
@@ -323,7 +324,7 @@ void MultibodyModel::onTimeEvent(MultibodyState& x, devs::Time t) const {
     Eigen::VectorXd& dv = ws_.data.accelScratch;
     dv.setZero();
     dv[iv] = -x.v[iv];
-    prescribedVelocityStep(x, dv);
+    prescribedVelocityStep(x, dv, t);
     d.reported = true;
   }
   ws_.integrator->reset();

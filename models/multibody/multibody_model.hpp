@@ -100,8 +100,9 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
  private:
   // (initial state) => static equilibrium, or a NumericalError saying why not
   void settle();
-  // (x, new velocity of the prescribed dofs in dv) => x.v after the impulse, its work in x.work
-  void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv) const;
+  // (x, new velocity of the prescribed dofs in dv, t) => x.v after the impulse, its work in
+  // x.work
+  void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv, double t) const;
   // (committed state) => the kernel's stage there: ws_.accel, and its forces in the kernel
   void evaluateCommitted() const;
   // (set-points or the state changed outside a step) => the power and event functions of the

@@ -93,6 +93,24 @@ struct StagedSystem {
   const dynamics::Model& model() const { return system.model(); }
 };
 
+// (L0) => a scene: a 2 t block on a free joint hanging from (0, 0, 30) by a lumped rope of 8
+// segments (10 kg/m, EA 5e7 N, EI 2e4 N m^2, undamped) whose winch a test may drive
+inline std::string hangingRopeScene(double length) {
+  return R"(schema_version: 1
+integrator: {method: rk4, dt: 0.001}
+mechanics:
+  bodies:
+    block: {parent: world, joint: {type: free, q0: {xyz: [0.4, -0.3, 10.1]}}, mass: 2000,
+            inertia: [100, 120, 140]}
+  ropes:
+    hoist: {model: lumped, path: [{body: world, point: [0, 0, 30]}, {body: block, point: [0, 0, 0.5]}],
+            L0: )" +
+         std::to_string(length) + R"(, segments: 8, EA: 5.0e7, EI: 2.0e4, mass_per_length: 10,
+            diameter: 0.04, damping_ratio: 0}
+until: 1
+)";
+}
+
 // (extra lines of the mechanics block, extra keys of every line) => a scene: a 200 t buoy on a
 // surge-sway slider at the fairlead height, moored by 4 lumped chain lines of 8 segments in still
 // water, released at 0.5 m/s, stepped by HHT at 0.05 s

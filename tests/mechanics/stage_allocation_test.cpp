@@ -1,8 +1,8 @@
 // Once set up, a stage of a system with ropes and an equalizer allocates nothing: the providers'
 // scratch is made once in mechanics::Data and handed over at every stage; nor does a stage that
-// writes the added mass following a hull's draft, nor a step of any integrator on a system with
-// lumped lines (HHT and generalized-alpha through their sparse Newton matrix, the SUNDIALS
-// methods through the chart Newton system).
+// writes the added mass following a hull's draft or the node masses of a lumped rope under a
+// winch, nor a step of any integrator on a system with lumped lines (HHT and generalized-alpha
+// through their sparse Newton matrix, the SUNDIALS methods through the chart Newton system).
 #include <catch2/catch.hpp>
 
 #include "dynamics/integrators/factory.hpp"
@@ -63,6 +63,19 @@ TEST_CASE("a stage writing the added mass that follows a hull's draft allocates 
   // (through the table's drafts: 1.7 .. 2.7 m)
   CHECK(stageAllocations(s, s.system.description().q0, v, -0.1) == 0);
   CHECK(s.data.kernel.data().hasAddedMass[1]);  // (wet: the written added mass is on)
+}
+
+TEST_CASE("a stage writing the node masses of a lumped rope under a winch allocates nothing") {
+  // (a 2 t block hanging on 20 m of lumped rope, 8 segments, hauled in at 0.4 m/s from t = 0) =>
+  // each stage writes its nodes' masses at t into the kernel's, the servos' and the reactions'
+  // workspaces (mechanics/follow_mass.hpp), and the energy into its own, without allocating
+  testing::StagedSystem s(testing::buildFromScene(testing::hangingRopeScene(20.0)));
+  REQUIRE(s.system.winchedLines().size() == 1);
+  s.system.winches().at(0).winch->setPayoutRate(0.0, -0.4);
+  const Eigen::VectorXd v = Eigen::VectorXd::Constant(s.model().nv, 0.1);
+  CHECK(stageAllocations(s, s.system.description().q0, v) == 0);
+  CHECK(s.data.kernel.data().hasAddedMass[static_cast<std::size_t>(
+      s.model().bodyIndex("hoist.node4"))]);  // (hauled in: the written mass is on)
 }
 
 TEST_CASE("every integrator steps a buoy moored by lumped lines without allocating") {

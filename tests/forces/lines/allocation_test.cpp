@@ -79,7 +79,7 @@ TEST_CASE("a lumped line's node forces and masses do not allocate") {
   std::vector<dynamics::Matrix3> m(11);
   const std::size_t before = allocationCount();
   line.nodeForces(r, v, 1.0, f, tension);
-  line.nodeMass(r, m);
+  line.nodeMass(r, 0.0, m);
   const double e = line.potentialEnergy(r, 0.0);
   CHECK(allocationCount() == before);
   CHECK(std::isfinite(e + f.sum() + tension.sum() + m[3].sum()));

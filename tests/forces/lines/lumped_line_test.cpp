@@ -270,7 +270,7 @@ TEST_CASE("Morison drag in a current, fluid inertia in waves, added mass, the se
     CHECK(a.norm() > 0.01);
     CHECK((f.col(1) - expected).norm() < 1e-10 * expected.norm());
     std::vector<Matrix3> m(2);
-    line.nodeMass(r, m);
+    line.nodeMass(r, 0.0, m);
     Matrix3 qq = Matrix3::Zero();
     qq(0, 0) = 1.0;
     const Matrix3 expectedMass =

@@ -1,9 +1,9 @@
 // A lumped-mass line under a winch (forces/lines/lumped_line.cpp, a crane rope with mass): at a
-// time t its forces are those of the same line built with the winch's length L(t); the damping
-// acts on the elongation beyond what the winch pays out (a rope hauled in at rest in its own
-// stretch feels only EA e); dV/dt at fixed positions, the winch's power, equals the central
+// time t its forces and node masses are those of the same line built with the winch's length L(t);
+// the damping acts on the elongation beyond what the winch pays out (a rope hauled in at rest in
+// its own stretch feels only EA e); dV/dt at fixed positions, the winch's power, equals the central
 // difference of the energy in time; the force Jacobian equals central differences while the winch
-// runs; a winch that does not start at the line's length is refused.
+// runs; a winch that does not start at the line's length, or may haul in to nothing, is refused.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -91,6 +91,37 @@ TEST_CASE("lumped line under a winch: its forces at t are those of a line of len
   CHECK((f - g).norm() <= 1e-12 * g.norm());
 }
 
+TEST_CASE("lumped line under a winch: its node masses at t are those of a line of length L(t)") {
+  // (hauling in, added mass on) => every node's 3x3 mass at t = 3 (L = 19.2 m), the ends' half
+  // segments included, equals the 19.2 m line's; before the winch starts, the 20 m line's
+  LumpedLineProperties p = wire();
+  p.waterDensity = 1025.0;
+  p.can = 1.0;
+  p.cat = 0.3;
+  const LumpedLine line(p, "hoist", nullptr, nullptr, hauling());
+  LumpedLineProperties shorter = p;
+  shorter.length = 19.2;
+  const LumpedLine fixed(shorter, "fixed"), start(p, "start");
+  const Eigen::Matrix3Xd r = wavy(8, 2.4, 0.003);
+  std::vector<Matrix3> m(9), expected(9);
+  line.nodeMass(r, 3.0, m);
+  fixed.nodeMass(r, 0.0, expected);
+  for (int i = 0; i <= 8; ++i) {
+    INFO("node " << i);
+    CHECK((m[static_cast<std::size_t>(i)] - expected[static_cast<std::size_t>(i)]).norm() <=
+          1e-14 * expected[static_cast<std::size_t>(i)].norm());
+  }
+  // (an inner node: 2.4 m of rope, 24 kg of wire and the water's; an end: half of it) => the
+  // trace 3 mu l + rho A l (2 Can + Cat)
+  const double l = 2.4, area = 0.25 * 3.141592653589793 * 0.04 * 0.04;
+  CHECK(m[4].trace() == Approx(3.0 * 10.0 * l + 1025.0 * area * l * 2.3).epsilon(1e-12));
+  CHECK(m[0].trace() == Approx(0.5 * m[4].trace()).epsilon(1e-12));
+  line.nodeMass(r, 0.5, m);
+  start.nodeMass(r, 0.0, expected);
+  CHECK((m[4] - expected[4]).norm() <= 1e-14 * expected[4].norm());
+  CHECK(m[4].trace() > expected[0].trace());
+}
+
 TEST_CASE("lumped line under a winch: the damping acts on the elongation beyond the payout") {
   // (a straight rope at strain e whose nodes move as the winch hauls it in, v_i = i l' (1 + e)
   // along it: its strain does not change) => every tension is EA e, the damping adds nothing;
@@ -170,4 +201,7 @@ TEST_CASE("lumped line under a winch: a winch that does not start at the line's 
   CHECK_THROWS_AS(
       LumpedLine(wire(), "hoist", nullptr, nullptr, std::make_shared<Winch>(21.0, 0.01)),
       std::invalid_argument);
+  // (a winch that may haul in to nothing) => refused: the nodes' masses follow the length
+  CHECK_THROWS_AS(LumpedLine(wire(), "hoist", nullptr, nullptr, std::make_shared<Winch>(20.0, 0.0)),
+                  std::invalid_argument);
 }

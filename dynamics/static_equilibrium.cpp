@@ -239,14 +239,18 @@ EquilibriumResult solveStaticEquilibrium(const Model& model, AccelerationSource&
   const Eigen::VectorXd q0 = q;
   EquilibriumResult result = search(true);
   if (result.converged) return result;
-  // (q where the search stopped) => what has no stiffness and a force
+  // (q0: the pose the search started from) => what has no stiffness and a force there. Not where
+  // the search stopped: a body pushed along a direction without stiffness runs off (millions of
+  // metres), where the moments' round-off turns it and the directions named depend on the
+  // digits (the same push named as sway, or as surge and yaw)
+  const Eigen::VectorXd stopped = q;
+  q = q0;
+  residual(q, a);
   result.rank = jacobian();
   result.unbalanced =
       unbalancedDirections(model, V.rightCols(nv - result.rank), q, a, options.tolerance);
   // (q0) => the minimum-norm search of before, when the rank-revealing one stalls where stiffness
   // appears only after a move (a barge pulled sideways by an inclined rope that is still slack)
-  const Eigen::VectorXd stopped = q;
-  q = q0;
   EquilibriumResult plain = search(false);
   if (plain.converged) {
     plain.minimumNorm = true;

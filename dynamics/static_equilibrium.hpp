@@ -43,12 +43,14 @@ struct EquilibriumResult {
   bool converged = false;
   int iterations = 0;
   double residual = 0.0;  // max |a| at the returned configuration
-  int rank = 0;           // of J at the last iteration (model.nv: every direction stiff)
+  int rank = 0;  // of J at the last iteration; when not converged, at the initial q (model.nv:
+                 // every direction stiff)
   /// Found only by the minimum-norm search of before, from the initial q, after the rank-revealing
   /// one stalled: directions without stiffness may have moved.
   bool minimumNorm = false;
-  /// When not converged: the directions without stiffness at the returned configuration along
-  /// which a net force acts (why there is no equilibrium: a wind on an unmoored barge).
+  /// When not converged: the directions without stiffness at the initial configuration along
+  /// which a net force acts (why there is no equilibrium: a wind on an unmoored barge). The
+  /// returned configuration is where the search stopped, possibly far along such a direction.
   std::vector<UnbalancedDirection> unbalanced;
 };
 

@@ -64,11 +64,11 @@ MultibodyOptions resolved(MultibodyOptions o) {
 
 std::string unbalancedText(const mechanics::System& system, const Eigen::VectorXd& q,
                            const std::vector<dynamics::UnbalancedDirection>& u) {
-  // (directions without stiffness, their forces, q where the search stopped) => "hull: sway (y)
-  // has no stiffness and a net force of 12.3 kN (along the body's own y axis, world direction
-  // [+1, +0, +0] where the search stopped); ..." (body; joint name beside a joint that is not
-  // free). A free or spherical joint's directions are its body's own axes (they turn with it);
-  // the others' are the joint's axes.
+  // (directions without stiffness, their forces, the initial q where the search found them) =>
+  // "hull: sway (y) has no stiffness and a net force of 12.3 kN (along the body's own y axis,
+  // world direction [+1, +0, +0] at the initial pose); ..." (body; joint name beside a joint
+  // that is not free). A free or spherical joint's directions are its body's own axes (they
+  // turn with it); the others' are the joint's axes.
   const auto& m = system.model();
   dynamics::Data kin(m);
   dynamics::forwardKinematics(m, kin, q);
@@ -90,8 +90,8 @@ std::string unbalancedText(const mechanics::System& system, const Eigen::VectorX
       auto shown = [](double c) { return std::round(c * 1e3) / 1e3 + 0.0; };  // no -0.000
       char text[160];
       std::snprintf(text, sizeof text,
-                    " (%s the body's own %c axis, world direction [%+.3f, %+.3f, %+.3f] where the "
-                    "search stopped)",
+                    " (%s the body's own %c axis, world direction [%+.3f, %+.3f, %+.3f] at the "
+                    "initial pose)",
                     rotation ? "about" : "along", "xyz"[axis], shown(w[0]), shown(w[1]),
                     shown(w[2]));
       frame = text;
@@ -158,6 +158,7 @@ void MultibodyModel::settle() {
   // (q0, forces at rest) => q0 moved to static equilibrium; holds follow their joints
   MultibodyState& x = mutableState().x;
   ws_.data.setPoints = &x.setPoints;
+  const Eigen::VectorXd q0 = x.q;  // where the search starts and names what it cannot balance
   const auto r = dynamics::solveStaticEquilibrium(system_.model(), ws_.data.kernel, 0.0, x.q);
   ws_.data.setPoints = nullptr;
   if (!r.converged) {
@@ -169,7 +170,7 @@ void MultibodyModel::settle() {
                            "start closer to equilibrium, hold the joints that have no stiffness, or "
                            "set equilibrium: false");
     throw NumericalError("multibody '" + path() + "'", 0.0,
-                         "no static equilibrium: " + unbalancedText(system_, x.q, r.unbalanced) +
+                         "no static equilibrium: " + unbalancedText(system_, q0, r.unbalanced) +
                              " (" + search + ")",
                          "add a mooring, a rope or a held joint there, or set equilibrium: false");
   }

@@ -428,8 +428,7 @@ bool translationalBias(const Model& m, Data& d, const Data& k, const SubtreeMask
     if (nv == 1) {
       d.nle[iv] = worldSubspaceColumn(m, k, i).tail<3>().dot(f);
     } else {
-      for (int c = 0; c < nv; ++c)
-        d.nle[iv + c] = (k.X_WB[i].R * k.S[i].col(c).tail<3>()).dot(f);
+      for (int c = 0; c < nv; ++c) d.nle[iv + c] = (k.X_WB[i].R * k.S[i].col(c).tail<3>()).dot(f);
     }
     const int p = m.parent[i];
     if (p > 0 && sub.subtree[static_cast<std::size_t>(p)]) d.F_W[p].tail<3>() += f;

@@ -33,7 +33,9 @@ Hdf5File::Hdf5File(const std::filesystem::path& file) {
 
 Hdf5File::~Hdf5File() = default;
 
-void Hdf5File::group(const std::string& path) { writer_->group(path); }
+void Hdf5File::group(const std::string& path) {
+  writer_->group(path);
+}
 
 void Hdf5File::doubles(const std::string& path, const std::vector<double>& v) {
   writer_->doubles(path, v);

@@ -56,8 +56,8 @@ class Hdf5Writer final : public Hdf5Backend {
                  const std::string& value) override {
     const hid_t type = utf8();
     const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate_by_name(file_, path.c_str(), name.c_str(), type, space,
-                                      H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t a = H5Acreate_by_name(file_, path.c_str(), name.c_str(), type, space, H5P_DEFAULT,
+                                      H5P_DEFAULT, H5P_DEFAULT);
     const char* text = value.c_str();
     const herr_t w = a >= 0 ? H5Awrite(a, type, &text) : -1;
     if (a >= 0) H5Aclose(a);

@@ -26,9 +26,8 @@ void* openModuleEntry(const std::string& file, const char* entry, const std::str
   void* handle = dlopen(file.c_str(), RTLD_NOW | (global ? RTLD_GLOBAL : RTLD_LOCAL));
   if (handle == nullptr) {
     const char* why = dlerror();
-    throw std::runtime_error(what + " " + file +
-                             " cannot be loaded: " + (why != nullptr ? why : "unknown error") +
-                             fix);
+    throw std::runtime_error(
+        what + " " + file + " cannot be loaded: " + (why != nullptr ? why : "unknown error") + fix);
   }
   void* address = dlsym(handle, entry);
   if (address == nullptr)

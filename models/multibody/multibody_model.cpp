@@ -169,10 +169,10 @@ void MultibodyModel::settle() {
                            "no static equilibrium found from the given initial state (" + search + ")",
                            "start closer to equilibrium, hold the joints that have no stiffness, or "
                            "set equilibrium: false");
-    throw NumericalError("multibody '" + path() + "'", 0.0,
-                         "no static equilibrium: " + unbalancedText(system_, q0, r.unbalanced) +
-                             " (" + search + ")",
-                         "add a mooring, a rope or a held joint there, or set equilibrium: false");
+    throw NumericalError(
+        "multibody '" + path() + "'", 0.0,
+        "no static equilibrium: " + unbalancedText(system_, q0, r.unbalanced) + " (" + search + ")",
+        "add a mooring, a rope or a held joint there, or set equilibrium: false");
   }
   x.v.setZero();
 }
@@ -244,7 +244,7 @@ void MultibodyModel::checkBlowUp(const MultibodyState& x, double t) const {
 }
 
 void MultibodyModel::applyInput(MultibodyState& x, devs::Time t) const {
-  dropStepCaches();  // set-points change the forces
+  dropStepCaches();          // set-points change the forces
   ws_.integrator->reset();   // the forces change here: no history across it
   const auto& model = system_.model();
   auto& sp = x.setPoints;
@@ -347,8 +347,8 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t,
   auto& memo = ws_.events;
   auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return a.size() == b.size() &&
-           (a.size() == 0 ||
-            std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
+           (a.size() == 0 || std::memcmp(a.data(), b.data(),
+                                         sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
   };
   if (memo.valid && t == memo.t && memo.g.size() == g.size() && same(x.q, memo.q) &&
       same(x.v, memo.v)) {

@@ -146,7 +146,9 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the bias forces of translational subtrees are RNEA's: each joint carries its subtree's weight") {
+TEST_CASE(
+    "the bias forces of translational subtrees are RNEA's: each joint carries its subtree's "
+    "weight") {
   // (random trees of prismatic, translation and fixed joints in rotated frames, gravity along no
   // axis, random q and v) => the mask is translational and its short path equals biasForces to
   // round-off, and a subtree's vertical prismatic joint carries its bodies' weight; a revolute
@@ -175,7 +177,8 @@ TEST_CASE("the bias forces of translational subtrees are RNEA's: each joint carr
     roots[1] = 1;  // the whole tree
     SubtreeMask mask;
     mask.mark(m, roots);
-    INFO("trial " << trial << (rotating ? ", a revolute joint" : "") << (added ? ", added mass" : ""));
+    INFO("trial " << trial << (rotating ? ", a revolute joint" : "")
+                  << (added ? ", added mass" : ""));
     CHECK(mask.translational == !rotating);
     sub.nle.setZero();
     biasForcesOfSubtrees(m, sub, kin, q, v, mask);
@@ -190,8 +193,10 @@ TEST_CASE("the bias forces of translational subtrees are RNEA's: each joint carr
   // (a vertical hoist on a horizontal trolley, at speed) => the hoist carries the hook's weight,
   // the trolley nothing (its axis is horizontal)
   ModelBuilder b;
-  b.addBody("trolley", "world", Joint::prismatic({1, 0, 0}), Transform{}, SpatialInertia{2000.0, Vector3(0, 0, 1), Matrix3::Identity()});
-  b.addBody("hook", "trolley", Joint::prismatic({0, 0, 1}), Transform{}, SpatialInertia{300.0, Vector3(0.5, 0, 0), Matrix3::Identity()});
+  b.addBody("trolley", "world", Joint::prismatic({1, 0, 0}), Transform{},
+            SpatialInertia{2000.0, Vector3(0, 0, 1), Matrix3::Identity()});
+  b.addBody("hook", "trolley", Joint::prismatic({0, 0, 1}), Transform{},
+            SpatialInertia{300.0, Vector3(0.5, 0, 0), Matrix3::Identity()});
   const Model m = b.build();
   Data kin(m), sub(m);
   const Eigen::VectorXd q = Eigen::Vector2d(3.0, -12.0), v = Eigen::Vector2d(0.5, -0.3);

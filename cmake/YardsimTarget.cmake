@@ -69,6 +69,27 @@ function(yardsim_layer name)
     FILES_MATCHING PATTERN "*.hpp")
 endfunction()
 
+# yardsim_module(NAME OWNER SOURCE DEFINE LIBS...) — a heavy dependency kept out of start-up: in
+# a shared build SOURCE is the module libyardsim_NAME.so, built beside OWNER's library, installed
+# beside it and opened by OWNER when first needed (output/module_loader.hpp); in a static build
+# SOURCE is compiled into OWNER with DEFINE and LIBS linked in.
+function(yardsim_module name owner source define)
+  if(BUILD_SHARED_LIBS)
+    add_library(yardsim_${name} MODULE ${source})
+    target_link_libraries(yardsim_${name} PRIVATE yardsim_flags ${ARGN})
+    target_include_directories(yardsim_${name} PRIVATE ${PROJECT_SOURCE_DIR})
+    if(NOT YARDSIM_SANITIZE)
+      target_link_options(yardsim_${name} PRIVATE -Wl,--no-undefined)
+    endif()
+    add_dependencies(${owner} yardsim_${name})
+    install(TARGETS yardsim_${name} LIBRARY DESTINATION lib)
+  else()
+    target_sources(${owner} PRIVATE ${source})
+    target_link_libraries(${owner} PRIVATE ${ARGN})
+    target_compile_definitions(${owner} PRIVATE ${define})
+  endif()
+endfunction()
+
 # yardsim_test_flags(TARGET) — what every test translation unit is compiled with: the tests'
 # folder on the include path, the source and build folders (yardsim_test_paths: compiled into
 # one library, not into each test file's flags, so that the files compile to the same objects in

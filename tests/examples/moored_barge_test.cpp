@@ -21,14 +21,23 @@
 
 using namespace yardsim;
 
+namespace {
+
+// (a scene of examples/moored_barge, until, folder) => its run there: timeseries.csv
+testing::CsvFile runExample(const std::string& file, double until, const testing::SceneDir& out) {
+  auto scene =
+      scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) + "/examples/moored_barge/" + file);
+  auto root = scene::assemble(*scene);
+  run::runScene(*scene, *root, {out.path(), until, {}, {}, 0.1});
+  return testing::CsvFile((out.path() / "timeseries.csv").string());
+}
+
+}  // namespace
+
 TEST_CASE("moored barge: offset and line tensions of the hand calculation of the mooring stiffness",
           "[long]") {
-  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
-                                       "/examples/moored_barge/scene.yaml");
-  auto root = scene::assemble(*scene);
   testing::SceneDir out;
-  run::runScene(*scene, *root, {out.path(), 90.0, {}, {}, 0.1});
-  const testing::CsvFile csv((out.path() / "timeseries.csv").string());
+  const testing::CsvFile csv = runExample("scene.yaml", 90.0, out);
   auto col = [&](const std::string& name) {
     const int k = csv.column(name);
     REQUIRE(k > 0);
@@ -156,12 +165,8 @@ TEST_CASE("moored barge in an irregular sea: mean offset, heave and tensions wit
           "[long]") {
   // (examples/moored_barge/irregular_sea.yaml: JONSWAP Hs 1.5 m, Tp 8 s, beam, 300 s) => over
   // 100-300 s (the sea grown, two sway periods 2 pi sqrt(m / K_yy) = 41 s after it)
-  auto scene = scene::loadSceneOrThrow(std::string(YARDSIM_SOURCE_DIR) +
-                                       "/examples/moored_barge/irregular_sea.yaml");
-  auto root = scene::assemble(*scene);
   testing::SceneDir out;
-  run::runScene(*scene, *root, {out.path(), 300.0, {}, {}, 0.1});
-  const testing::CsvFile csv((out.path() / "timeseries.csv").string());
+  const testing::CsvFile csv = runExample("irregular_sea.yaml", 300.0, out);
   const int y = csv.column("barge.y[m]"), z = csv.column("barge.z[m]");
   REQUIRE(y > 0);
   REQUIRE(z > 0);

@@ -69,4 +69,13 @@ std::unique_ptr<ForceProvider> withOutputs(
   return std::make_unique<ObservedProvider<P>>(std::move(inner), list);
 }
 
+// (provider) => the P it is, or that it wraps with outputs, or nullptr
+template <class P>
+const P* providerAs(const ForceProvider& p) {
+  if (const auto* direct = dynamic_cast<const P*>(&p)) return direct;
+  if (const auto* observed = dynamic_cast<const ObservedProvider<P>*>(&p))
+    return &observed->inner();
+  return nullptr;
+}
+
 }  // namespace yardsim::forces

@@ -1,8 +1,10 @@
 #pragma once
 // The motion of a run's bodies as the report's 3D replay and replay.glb show it: per body its
 // shape (resolved: never Auto) and its world pose at every frame, and the ropes as polylines
-// through points fixed on bodies (or the world). Models that have bodies implement Replayable;
-// the replay recorder samples them on the record grid.
+// through points fixed on bodies (or the world): wire ropes through their paths, lines with mass
+// through their nodes (bodies), catenary lines through markers (bodies without a shape) that
+// follow their profile. Models that have bodies implement Replayable; the replay recorder samples
+// them on the record grid.
 #include <array>
 #include <memory>
 #include <string>
@@ -18,6 +20,9 @@ using mechanics::MechanicsSpec;
 
 struct ReplayBody {
   std::string name;  // full path
+  // a point that lines are drawn through (a catenary line's profile point): no shape, and only
+  // its translation per frame (rotation stays empty)
+  bool marker = false;
   MechanicsSpec::Visual::Shape shape = MechanicsSpec::Visual::Shape::Box;
   dynamics::Vector3 size = dynamics::Vector3::Ones();  // as MechanicsSpec::Visual::size
   dynamics::Transform X_BG;                             // shape frame in the body frame

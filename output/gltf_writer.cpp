@@ -197,7 +197,7 @@ void appendU32(std::vector<std::uint8_t>& out, std::uint32_t v) {
 std::vector<std::uint8_t> glbBytes(const Replay& replay) {
   const std::size_t frames = replay.times.size();
   for (const auto& b : replay.bodies)
-    if (b.translation.size() != frames || b.rotation.size() != frames)
+    if (b.translation.size() != frames || b.rotation.size() != (b.marker ? 0 : frames))
       throw std::invalid_argument("replay: body '" + b.name + "' has " +
                                   std::to_string(b.translation.size()) + " poses for " +
                                   std::to_string(frames) + " frames");
@@ -217,39 +217,50 @@ std::vector<std::uint8_t> glbBytes(const Replay& replay) {
   static const char* const kPalette[] = {"0.85,0.55,0.13", "0.20,0.47,0.75", "0.40,0.65,0.30",
                                          "0.75,0.30,0.30", "0.55,0.40,0.70", "0.35,0.65,0.70"};
   std::string materials;
+  std::size_t nMeshes = 0;
   for (std::size_t i = 0; i < replay.bodies.size(); ++i) {
     const ReplayBody& b = replay.bodies[i];
-    // (shape) => mesh i and material i
-    const Mesh m = shapeMesh(b);
-    const int pos = g.accessor(m.position, 3, "VEC3", 34962);
-    const int nrm = g.accessor(m.normal, 3, "VEC3", 34962);
-    const int idx = g.accessor(m.index, 1, "SCALAR", 34963);
-    const std::string c = kPalette[i % (sizeof kPalette / sizeof *kPalette)];
-    materials += std::string(i ? "," : "") + "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[" + c +
-                 ",1],\"metallicFactor\":0.1,\"roughnessFactor\":0.7}}";
-    meshes += std::string(i ? "," : "") + "{\"name\":";
-    appendJsonString(meshes, b.name);
-    meshes += ",\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
-              ",\"NORMAL\":" + std::to_string(nrm) + "},\"indices\":" + std::to_string(idx) +
-              ",\"material\":" + std::to_string(i) + "}]}";
+    // (shape) => its mesh and material (none for a marker)
+    const std::string mesh = std::to_string(nMeshes);
+    if (!b.marker) {
+      const Mesh m = shapeMesh(b);
+      const int pos = g.accessor(m.position, 3, "VEC3", 34962);
+      const int nrm = g.accessor(m.normal, 3, "VEC3", 34962);
+      const int idx = g.accessor(m.index, 1, "SCALAR", 34963);
+      const std::string c = kPalette[i % (sizeof kPalette / sizeof *kPalette)];
+      materials += std::string(nMeshes ? "," : "") +
+                   "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[" + c +
+                   ",1],\"metallicFactor\":0.1,\"roughnessFactor\":0.7}}";
+      meshes += std::string(nMeshes ? "," : "") + "{\"name\":";
+      appendJsonString(meshes, b.name);
+      meshes += ",\"primitives\":[{\"attributes\":{\"POSITION\":" + std::to_string(pos) +
+                ",\"NORMAL\":" + std::to_string(nrm) + "},\"indices\":" + std::to_string(idx) +
+                ",\"material\":" + mesh + "}]}";
+      ++nMeshes;
+    }
     // (first pose) => node i + 1, its rest pose
     nodes += ",{\"name\":";
     appendJsonString(nodes, b.name);
-    nodes += ",\"mesh\":" + std::to_string(i);
+    if (!b.marker) nodes += ",\"mesh\":" + mesh;
     if (frames) {
       std::string t, r;
       for (int k = 0; k < 3; ++k) appendJsonNumber(t += k ? "," : "", b.translation[0][static_cast<std::size_t>(k)]);
-      for (int k = 0; k < 4; ++k) appendJsonNumber(r += k ? "," : "", b.rotation[0][static_cast<std::size_t>(k)]);
-      nodes += ",\"translation\":[" + t + "],\"rotation\":[" + r + "]";
+      nodes += ",\"translation\":[" + t + "]";
+      if (!b.marker) {
+        for (int k = 0; k < 4; ++k)
+          appendJsonNumber(r += k ? "," : "", b.rotation[0][static_cast<std::size_t>(k)]);
+        nodes += ",\"rotation\":[" + r + "]";
+      }
     }
     nodes += ",\"extras\":{\"body\":";
     appendJsonString(nodes, b.name);
     nodes += "}}";
     if (!frames) continue;
-    // (poses) => samplers and channels of node i + 1
+    // (poses) => samplers and channels of node i + 1 (a marker's translation only)
     const int tr = g.accessor(flat(b.translation), 3, "VEC3", 0);
-    const int ro = g.accessor(flat(b.rotation), 4, "VEC4", 0);
+    const int ro = b.marker ? -1 : g.accessor(flat(b.rotation), 4, "VEC4", 0);
     for (auto [out, path] : {std::pair{tr, "translation"}, {ro, "rotation"}}) {
+      if (out < 0) continue;
       const int k = nSamplers++;
       samplers += std::string(k ? "," : "") + "{\"input\":" + std::to_string(time) +
                   ",\"output\":" + std::to_string(out) + ",\"interpolation\":\"LINEAR\"}";

@@ -1,6 +1,7 @@
 #pragma once
 // OUTDIR/replay.glb: a replay as a glTF 2.0 binary. One node per body (named by its path, a
-// mesh of its shape in the body frame), children of a root node that turns yardsim's z-up
+// mesh of its shape in the body frame; a marker, a point that lines pass through, has no mesh and
+// only a translation channel), children of a root node that turns yardsim's z-up
 // world into glTF's y-up; one animation "replay" with, per body, a translation and a rotation
 // channel (LINEAR; time in s; rotations as unit quaternions x, y, z, w). Every accessor has min
 // and max, every buffer view and chunk is 4-byte aligned. The ropes travel in the scene's

@@ -88,6 +88,18 @@ CatenaryLineState CatenaryLine::state(const Stage& s) const {
                  s.t);
 }
 
+std::vector<Vector3> CatenaryLine::profile(const Stage& s, int segments) const {
+  // (the solution at the stage) => its points at equal unstretched arc lengths, in the world
+  const CatenaryLineState st = state(s);
+  const Vector3 pA = dynamics::pointPosition(s.data, anchor_.body, anchor_.p_B);
+  std::vector<Vector3> out;
+  for (int k = 0; k <= segments; ++k) {
+    const CatenaryPoint c = catenaryPoint(p_, st.solution, st.xf, p_.length * k / segments);
+    out.push_back(pA + c.x * st.horizontal + c.z * Vector3::UnitZ());
+  }
+  return out;
+}
+
 Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const {
   // (J^-1, e_h, HF/XF) => K = e_h (k11 e_h + k12 e_z)^T + HF/XF (I_h - e_h e_h^T)
   //                           + e_z (k21 e_h + k22 e_z)^T

@@ -14,6 +14,7 @@
 // balance closes. A fairlead within 1e-9 L horizontally of its anchor is evaluated at 1e-9 L in
 // the last horizontal direction. Conventions: docs/forces.md.
 #include <string>
+#include <vector>
 
 #include "forces/force_provider.hpp"
 #include "forces/lines/catenary.hpp"
@@ -49,6 +50,10 @@ class CatenaryLine final : public ForceProvider {
   // (stage) => K = -dF_B/dp_B, the fairlead's 3x3 stiffness in the world frame, N/m (symmetric
   // without friction)
   dynamics::Matrix3 fairleadStiffness(const Stage& s) const;
+  // (stage, segments n >= 1) => the line's shape: n + 1 world points (m) at the unstretched arc
+  // lengths k L / n from the anchor (k = 0) to the fairlead (k = n), in the vertical plane through
+  // the ends (on the bed where it lies there); throws ForceError as state()
+  std::vector<dynamics::Vector3> profile(const Stage& s, int segments) const;
   const CatenaryParameters& parameters() const { return p_; }
   const Attachment& anchor() const { return anchor_; }
   const Attachment& fairlead() const { return fairlead_; }

@@ -1,5 +1,6 @@
 #include "forces/lines/lumped_line_provider.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -181,8 +182,35 @@ double LumpedLineProvider::laidLength(const Stage& s) const {
   double laid = 0.0;
   const double l = line_->segmentLength(s.t);
   for (int i = 0; i <= p.segments; ++i)
-    if (w.r(2, i) <= p.seabedZ + p.diameter) laid += line_->nodeLength(i, l);
+    if (onBed(w.r, i)) laid += line_->nodeLength(i, l);
   return laid;
+}
+
+double LumpedLineProvider::fairleadAngle(const Stage& s) const {
+  // (f_N) => its angle below the horizontal
+  std::unique_ptr<ProviderScratch> temporary;
+  const Vector3 f = evaluated(s, temporary).f.col(line_->properties().segments);
+  return std::atan2(-f.z(), std::hypot(f.x(), f.y()));
+}
+
+double LumpedLineProvider::anchorAngle(const Stage& s) const {
+  // (f_0, the bed under the anchor) => its angle above the horizontal
+  std::unique_ptr<ProviderScratch> temporary;
+  const Scratch& w = evaluated(s, temporary);
+  const Vector3 f = w.f.col(0);
+  const double up = onBed(w.r, 0) ? std::max(0.0, f.z()) : f.z();
+  return std::atan2(up, std::hypot(f.x(), f.y()));
+}
+
+LumpedLineProvider::Touchdown LumpedLineProvider::touchdown(const Stage& s) const {
+  // (nodes from the anchor) => the last of those on the bed without a gap
+  std::unique_ptr<ProviderScratch> temporary;
+  Scratch& w = scratchOf<Scratch>(s, temporary);
+  gather(s, w);
+  int k = 0;
+  while (k < line_->properties().segments && onBed(w.r, 0) && onBed(w.r, k + 1)) ++k;
+  const Vector3 d = w.r.col(k) - w.r.col(0);
+  return {std::hypot(d.x(), d.y()), w.r.col(k)};
 }
 
 std::uint64_t LumpedLineProvider::accelerationJacobian(const Stage& s,

@@ -80,8 +80,33 @@ class LumpedLineProvider final : public ForceProvider {
   // weight, drag and bed), and the tension of the first segment at the anchor, N
   double fairleadTension(const Stage& s) const;
   double anchorTension(const Stage& s) const;
-  // (stage) => unstretched length of the nodes at or below the sea bed (0 without one), m
+  // (stage) => unstretched length of the nodes on the sea bed (0 without one), m: the nodes
+  // within one diameter of it (onBed)
   double laidLength(const Stage& s) const;
+  // (stage) => the angle below the horizontal of the line's force on the fairlead, f_N (> 0: the
+  // line runs down from the fairlead), rad: atan2(-f_N.z, |f_N horizontal|), the catenary's
+  // atan2(VF, HF)
+  double fairleadAngle(const Stage& s) const;
+  // (stage) => the angle above the horizontal of the line's force on the anchor, f_0 (> 0: it
+  // lifts the anchor), rad, the catenary's atan2(VA, HA); with a sea bed its vertical part is
+  // max(0, f_0.z): a line lying on the bed at the anchor does not pull it down (the bed carries
+  // the anchor node's half segment, which the node model hangs on the anchor)
+  double anchorAngle(const Stage& s) const;
+  // The touchdown point: the last node of the run of nodes from the anchor that lie on the bed
+  // (onBed; the anchor itself for a suspended line or without a bed), its horizontal distance
+  // from the anchor (m) and its world position (m).
+  struct Touchdown {
+    double distance = 0.0;
+    dynamics::Vector3 point = dynamics::Vector3::Zero();
+  };
+  // (stage) => the touchdown point, within about a segment of the continuous line's
+  Touchdown touchdown(const Stage& s) const;
+  // (node positions, node) => true when the node lies on the sea bed: a bed, and the node within
+  // one diameter above it (or below it)
+  bool onBed(const Eigen::Matrix3Xd& r, int i) const {
+    const LumpedLineProperties& p = line_->properties();
+    return p.seabed && r(2, i) <= p.seabedZ + p.diameter;
+  }
   // (stage) => per inner node i the blocks d a_i/d r_j (1/s^2) and d a_i/d v_j (1/s) of its
   // acceleration a_i = f_i / m_i(t) (a point mass on its own joint) for j = i - b .. i + b at
   // [(2 b + 1) i + j - i + b], b = line().jacobianBandwidth() (1, or 2 with bending)

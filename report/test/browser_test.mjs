@@ -42,7 +42,8 @@ if (data.glb) {
     return new Float32Array(bin.buffer.slice(bin.byteOffset + view.byteOffset, bin.byteOffset + view.byteOffset + view.byteLength));
   };
   gltf.nodes.forEach((node, i) => {
-    if (!node.extras || node.extras.body === undefined) return;
+    // (a catenary line's profile marker: extras.body without a mesh) => not a body
+    if (!node.extras || node.extras.body === undefined || node.mesh === undefined) return;
     const ch = gltf.animations[0].channels.find(c => c.target.node === i && c.target.path === 'translation');
     const p = floats(gltf.animations[0].samplers[ch.sampler].output);
     let travel = 0;

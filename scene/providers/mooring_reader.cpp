@@ -3,7 +3,8 @@
 // their channels: fairlead and anchor tensions and angles, the horizontal tension, the touchdown
 // point and the laid length; or, with `model: lumped`, lumped-mass lines
 // (forces/lines/lumped_line_provider.hpp) whose inner nodes are bodies of the system (channels:
-// fairlead and anchor tensions, laid length; the nodes' positions are their bodies' channels).
+// fairlead and anchor tensions and angles, laid length, touchdown point; the nodes' positions are
+// their bodies' channels).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -79,6 +80,13 @@ std::vector<ProviderOutput> lumpedOutputs(const forces::LumpedLineProvider& l) {
       {"fairlead_tension", "N", [&l](const Stage& s) { return l.fairleadTension(s); }},
       {"anchor_tension", "N", [&l](const Stage& s) { return l.anchorTension(s); }},
       {"laid_length", "m", [&l](const Stage& s) { return l.laidLength(s); }},
+      // the catenary's names, units and conventions (mooringOutputs above); the touchdown point
+      // is the last node of the run from the anchor on the bed (docs/lines.md)
+      {"fairlead_angle", "rad", [&l](const Stage& s) { return l.fairleadAngle(s); }},
+      {"anchor_angle", "rad", [&l](const Stage& s) { return l.anchorAngle(s); }},
+      {"touchdown_distance", "m", [&l](const Stage& s) { return l.touchdown(s).distance; }},
+      {"touchdown_x", "m", [&l](const Stage& s) { return l.touchdown(s).point.x(); }},
+      {"touchdown_y", "m", [&l](const Stage& s) { return l.touchdown(s).point.y(); }},
   };
 }
 

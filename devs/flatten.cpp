@@ -94,7 +94,8 @@ FlatModel flatten(Model& root) {
   flat.outBegin.reserve(atomics + 1);
   flat.outPorts.reserve(outPorts);
   flat.destBegin.reserve(outPorts + 1);
-  flat.dests.reserve(dests);
+  flat.destPorts.reserve(dests);
+  flat.destAtomics.reserve(dests);
 
   // (hierarchy) => atomics in depth-first order, each with its index and its first output port
   std::uint32_t firstOut = 0;
@@ -110,14 +111,15 @@ FlatModel flatten(Model& root) {
   for (const AtomicBase* a : flat.atomics) {
     for (PortBase* out : a->outPorts()) {
       flat.outPorts.push_back(out);
-      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.destPorts.size()));
       if (out->links().empty()) continue;
       forEachDestination(*out, frontier, [&](PortBase& p) {
-        flat.dests.push_back({&p, static_cast<AtomicBase&>(p.owner()).simIndex()});
+        flat.destPorts.push_back(&p);
+        flat.destAtomics.push_back(static_cast<AtomicBase&>(p.owner()).simIndex());
       });
     }
   }
-  flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
+  flat.destBegin.push_back(static_cast<std::uint32_t>(flat.destPorts.size()));
   return flat;
 }
 

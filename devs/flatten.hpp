@@ -14,15 +14,14 @@
 namespace yardsim::devs {
 
 struct FlatModel {
-  struct Destination {
-    PortBase* port;
-    std::uint32_t atomic;
-  };
   ListVector<AtomicBase*> atomics;     // depth-first order of the hierarchy
   ListVector<std::uint32_t> outBegin;  // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
   ListVector<PortBase*> outPorts;
-  ListVector<std::uint32_t> destBegin;  // out port j reaches dests[destBegin[j] .. [j+1])
-  ListVector<Destination> dests;
+  // out port j reaches destination k in [destBegin[j], destBegin[j+1]): the input port
+  // destPorts[k] of the atomic destAtomics[k] (two lists: a bag is copied along destPorts alone)
+  ListVector<std::uint32_t> destBegin;
+  ListVector<PortBase*> destPorts;
+  ListVector<std::uint32_t> destAtomics;
 };
 
 // (root model) => flat atomics and direct routes; sets each atomic's simIndex

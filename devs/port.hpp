@@ -40,8 +40,14 @@ class PortBase {
   bool empty() const { return count_ == 0; }
   // (bag) => empty bag, capacity kept
   virtual void clear() = 0;
+  // (this bag, destination ports of its value type) => each destination's bag += this bag, in
+  // their order (one call per output port and event time: the loop runs inside the typed port)
+  virtual void appendToEach(std::span<PortBase* const> dsts) const = 0;
   // (this bag, dst of the same value type) => dst bag += this bag
-  virtual void appendTo(PortBase& dst) const = 0;
+  void appendTo(PortBase& dst) const {
+    PortBase* const one = &dst;
+    appendToEach({&one, 1});
+  }
   // (message i) => its JSON form appended to out
   virtual void writeValue(std::string& out, std::size_t i) const = 0;
 
@@ -105,17 +111,27 @@ class Port : public PortBase {
     if constexpr (!kInlineBag<T>) bag_.values.clear();
     count_ = 0;
   }
-  void appendTo(PortBase& dst) const final {
-    auto& to = static_cast<Port<T>&>(dst);  // flatten checked the types
+  void appendToEach(std::span<PortBase* const> dsts) const final {
+    // flatten checked the types: every destination is a Port<T>
     if constexpr (kInlineBag<T>) {
-      const T* from = data();
-      for (std::uint32_t i = 0; i < count_; ++i) to.push(from[i]);
+      if (count_ == 1) {  // the common bag: one message, read once, stored into each
+        const T value = data()[0];
+        for (PortBase* d : dsts) static_cast<Port<T>*>(d)->push(value);
+        return;
+      }
+      for (PortBase* d : dsts) {
+        const T* from = data();
+        for (std::uint32_t i = 0; i < count_; ++i) static_cast<Port<T>*>(d)->push(from[i]);
+      }
     } else {
-      if (count_ == 1)
-        to.bag_.values.push_back(bag_.values.front());  // without a range insert's memmove
-      else
-        to.bag_.values.insert(to.bag_.values.end(), bag_.values.begin(), bag_.values.end());
-      to.count_ = static_cast<std::uint32_t>(to.bag_.values.size());
+      for (PortBase* d : dsts) {
+        auto& to = static_cast<Port<T>&>(*d).bag_.values;
+        if (count_ == 1)
+          to.push_back(bag_.values.front());  // without a range insert's memmove
+        else
+          to.insert(to.end(), bag_.values.begin(), bag_.values.end());
+        static_cast<Port<T>*>(d)->count_ = static_cast<std::uint32_t>(to.size());
+      }
     }
   }
   void writeValue(std::string& out, std::size_t i) const final {
@@ -127,7 +143,8 @@ class Port : public PortBase {
   template <class V>
   void push(V&& value) {
     if constexpr (kInlineBag<T>) {
-      if (count_ == bagCapacity_) grow();
+      if (count_ == bagCapacity_) [[unlikely]]
+        grow();
       (onHeap() ? bag_.heap : bag_.inside)[count_++] = value;
     } else {
       bag_.values.push_back(std::forward<V>(value));

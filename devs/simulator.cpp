@@ -95,16 +95,23 @@ bool Simulator::step() {
     for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j) {
       const PortBase* out = flat_.outPorts[j];
       if (out->empty()) continue;
-      if (traced)
+      const std::uint32_t first = flat_.destBegin[j], last = flat_.destBegin[j + 1];
+      const std::span<PortBase* const> dsts(flat_.destPorts.data() + first, last - first);
+      if (traced) {
         for (Listener* l : listeners_) l->onOutput(t, *a, *out);
-      for (std::uint32_t k = flat_.destBegin[j]; k < flat_.destBegin[j + 1]; ++k) {
-        const FlatModel::Destination& d = flat_.dests[k];
-        if (traced && d.port->empty()) filled_.push_back(d.port);
-        out->appendTo(*d.port);
-        stats_.messages += out->size();
-        if (!(flags_[d.atomic] & kHasInput)) {
-          if (!(flags_[d.atomic] & kImminent)) receivers_.push_back(d.atomic);
-          flags_[d.atomic] |= kHasInput;
+        for (PortBase* p : dsts) {
+          if (p->empty()) filled_.push_back(p);
+          out->appendTo(*p);
+        }
+      } else {
+        out->appendToEach(dsts);
+      }
+      stats_.messages += out->size() * dsts.size();
+      for (std::uint32_t k = first; k < last; ++k) {
+        const std::uint32_t r = flat_.destAtomics[k];
+        if (!(flags_[r] & kHasInput)) {
+          if (!(flags_[r] & kImminent)) receivers_.push_back(r);
+          flags_[r] |= kHasInput;
         }
       }
     }

@@ -23,14 +23,14 @@ TEST_CASE("flattening reaches atomic inputs through every level") {
   const std::uint32_t genrOut = flat.outBegin[0];
   std::vector<std::string> reached;
   for (auto k = flat.destBegin[genrOut]; k < flat.destBegin[genrOut + 1]; ++k)
-    reached.push_back(flat.dests[k].port->path());
+    reached.push_back(flat.destPorts[k]->path());
   std::sort(reached.begin(), reached.end());
   CHECK(reached == std::vector<std::string>{"gpt.ef.transd.arrived", "gpt.proc.in"});
   // proc.out reaches transd.solved (IC at the top, then EIC into ef)
   const std::uint32_t procOut = flat.outBegin[2];
   REQUIRE(flat.destBegin[procOut + 1] - flat.destBegin[procOut] == 1);
-  CHECK(flat.dests[flat.destBegin[procOut]].port->path() == "gpt.ef.transd.solved");
-  CHECK(flat.dests[flat.destBegin[procOut]].atomic == 1);
+  CHECK(flat.destPorts[flat.destBegin[procOut]]->path() == "gpt.ef.transd.solved");
+  CHECK(flat.destAtomics[flat.destBegin[procOut]] == 1);
 }
 
 TEST_CASE(
@@ -73,9 +73,9 @@ TEST_CASE(
   REQUIRE(flat.destBegin[eOut + 1] - flat.destBegin[eOut] == depth);
   bool routed = true;
   for (int k = 1; k <= depth; ++k) {
-    const auto& d = flat.dests[flat.destBegin[eOut] + static_cast<std::uint32_t>(k - 1)];
-    routed = routed && d.port->owner().name() == "a" + std::to_string(k) &&
-             d.atomic == static_cast<std::uint32_t>(1 + depth - k);
+    const std::uint32_t d = flat.destBegin[eOut] + static_cast<std::uint32_t>(k - 1);
+    routed = routed && flat.destPorts[d]->owner().name() == "a" + std::to_string(k) &&
+             flat.destAtomics[d] == static_cast<std::uint32_t>(1 + depth - k);
   }
   CHECK(routed);
   // every output port listed (e.out, then each collector's tick), no tick routed anywhere
@@ -85,5 +85,6 @@ TEST_CASE(
   CHECK(flat.atomics.capacity() == flat.atomics.size());
   CHECK(flat.outBegin.capacity() == flat.outBegin.size());
   CHECK(flat.destBegin.capacity() == flat.destBegin.size());
-  CHECK(flat.dests.capacity() == flat.dests.size());
+  CHECK(flat.destPorts.capacity() == flat.destPorts.size());
+  CHECK(flat.destAtomics.capacity() == flat.destAtomics.size());
 }

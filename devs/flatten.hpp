@@ -14,12 +14,16 @@
 namespace yardsim::devs {
 
 struct FlatModel {
+  // One atomic output port and the destinations its messages reach: the input ports
+  // destPorts[destFirst, destLast) of the atomics destAtomics[destFirst, destLast)
+  struct Out {
+    PortBase* port;
+    std::uint32_t destFirst, destLast;
+  };
   ListVector<AtomicBase*> atomics;     // depth-first order of the hierarchy
-  ListVector<std::uint32_t> outBegin;  // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
-  ListVector<PortBase*> outPorts;
-  // out port j reaches destination k in [destBegin[j], destBegin[j+1]): the input port
-  // destPorts[k] of the atomic destAtomics[k] (two lists: a bag is copied along destPorts alone)
-  ListVector<std::uint32_t> destBegin;
+  ListVector<std::uint32_t> outBegin;  // atomic i owns outs[outBegin[i] .. outBegin[i+1])
+  ListVector<Out> outs;
+  // two lists: a bag is copied along destPorts alone
   ListVector<PortBase*> destPorts;
   ListVector<std::uint32_t> destAtomics;
 };

@@ -38,8 +38,14 @@ class PortBase {
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  // (bag) => empty bag, capacity kept
-  virtual void clear() = 0;
+  // (bag) => empty bag, capacity kept; a bag of small values (Port<T> with kInlineBag<T>, whose
+  // capacity is never 0) is its count alone, cleared without a call
+  void clear() {
+    if (bagCapacity_ != 0)
+      count_ = 0;
+    else
+      clearValues();
+  }
   // (this bag, destination ports of its value type) => each destination's bag += this bag, in
   // their order (one call per output port and event time: the loop runs inside the typed port)
   virtual void appendToEach(std::span<PortBase* const> dsts) const = 0;
@@ -56,8 +62,10 @@ class PortBase {
 
  protected:
   std::uint32_t count_ = 0;             // messages in the bag
-  std::uint32_t bagCapacity_ : 31 = 0;  // an inline bag's capacity (Port<T>)
+  std::uint32_t bagCapacity_ : 31 = 0;  // an inline bag's capacity (Port<T>), else 0
   std::uint32_t isInput_ : 1;
+  // (a bag kept in a std::vector) => its values destroyed, count 0, capacity kept
+  virtual void clearValues() = 0;
 
  private:
   friend class Coupled;
@@ -107,7 +115,7 @@ class Port : public PortBase {
   // () => the messages of this event time
   std::span<const T> values() const { return {data(), count_}; }
 
-  void clear() final {
+  void clearValues() final {
     if constexpr (!kInlineBag<T>) bag_.values.clear();
     count_ = 0;
   }

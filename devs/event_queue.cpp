@@ -3,21 +3,54 @@
 namespace yardsim::devs {
 
 void EventQueue::resize(std::size_t models) {
-  heap_.clear();
-  heap_.reserve(models);
+  heap_.assign(models, 0);
+  size_ = 0;
   pos_.assign(models, kAbsent);
   tn_.assign(models, kInfinity);
+}
+
+// (entry at pos) => moved up to its place; inlined into its callers (one call fewer per pop and
+// schedule, whose frames hold it already)
+[[gnu::always_inline]] inline void EventQueue::siftUp(std::uint32_t pos) {
+  const std::uint32_t m = heap_[pos];
+  const Time t = tn_[m];
+  while (pos > 0) {
+    const std::uint32_t parent = (pos - 1) / 2;
+    if (!(t < tn_[heap_[parent]])) break;
+    heap_[pos] = heap_[parent];
+    pos_[heap_[pos]] = pos;
+    pos = parent;
+  }
+  heap_[pos] = m;
+  pos_[m] = pos;
+}
+
+// (entry at pos) => moved down to its place
+[[gnu::always_inline]] inline void EventQueue::siftDown(std::uint32_t pos) {
+  const std::uint32_t n = size_;
+  const std::uint32_t m = heap_[pos];
+  const Time t = tn_[m];
+  for (;;) {
+    std::uint32_t child = 2 * pos + 1;
+    if (child >= n) break;
+    if (child + 1 < n && tn_[heap_[child + 1]] < tn_[heap_[child]]) ++child;
+    if (!(tn_[heap_[child]] < t)) break;
+    heap_[pos] = heap_[child];
+    pos_[heap_[pos]] = pos;
+    pos = child;
+  }
+  heap_[pos] = m;
+  pos_[m] = pos;
 }
 
 std::uint32_t EventQueue::pop() {
   // (heap) => its root removed: the last entry sifted down from the root (removeAt's siftUp
   // would not move it there)
-  const std::uint32_t top = heap_.front();
+  const std::uint32_t top = heap_[0];
   pos_[top] = kAbsent;
   tn_[top] = kInfinity;
-  const std::uint32_t last = heap_.back();
-  heap_.pop_back();
-  if (!heap_.empty()) {
+  const std::uint32_t last = heap_[--size_];
+  if (size_ > 0) {
     heap_[0] = last;
     pos_[last] = 0;
     siftDown(0);
@@ -34,9 +67,9 @@ void EventQueue::schedule(std::uint32_t model, Time tn) {
     return;
   }
   if (p == kAbsent) {
-    pos_[model] = static_cast<std::uint32_t>(heap_.size());
-    heap_.push_back(model);
-    siftUp(pos_[model]);
+    pos_[model] = size_;
+    heap_[size_] = model;
+    siftUp(size_++);
   } else if (tn < old) {
     siftUp(p);
   } else if (tn > old) {
@@ -47,49 +80,17 @@ void EventQueue::schedule(std::uint32_t model, Time tn) {
 void EventQueue::removeAt(std::uint32_t pos) {
   const std::uint32_t gone = heap_[pos];
   pos_[gone] = kAbsent;
-  const std::uint32_t last = heap_.back();
-  heap_.pop_back();
-  if (pos == heap_.size()) return;
+  const std::uint32_t last = heap_[--size_];
+  if (pos == size_) return;
   heap_[pos] = last;
   pos_[last] = pos;
   siftDown(pos);
   siftUp(pos_[last]);
 }
 
-void EventQueue::siftUp(std::uint32_t pos) {
-  const std::uint32_t m = heap_[pos];
-  const Time t = tn_[m];
-  while (pos > 0) {
-    const std::uint32_t parent = (pos - 1) / 2;
-    if (!(t < tn_[heap_[parent]])) break;
-    heap_[pos] = heap_[parent];
-    pos_[heap_[pos]] = pos;
-    pos = parent;
-  }
-  heap_[pos] = m;
-  pos_[m] = pos;
-}
-
-void EventQueue::siftDown(std::uint32_t pos) {
-  const std::uint32_t n = static_cast<std::uint32_t>(heap_.size());
-  const std::uint32_t m = heap_[pos];
-  const Time t = tn_[m];
-  for (;;) {
-    std::uint32_t child = 2 * pos + 1;
-    if (child >= n) break;
-    if (child + 1 < n && tn_[heap_[child + 1]] < tn_[heap_[child]]) ++child;
-    if (!(tn_[heap_[child]] < t)) break;
-    heap_[pos] = heap_[child];
-    pos_[heap_[pos]] = pos;
-    pos = child;
-  }
-  heap_[pos] = m;
-  pos_[m] = pos;
-}
-
 void EventQueue::save(CheckpointWriter& w) const {
   w.section("event_queue");
-  devs::save(w, heap_);
+  devs::save(w, ListVector<std::uint32_t>(heap_.begin(), heap_.begin() + size_));
   devs::save(w, tn_);
 }
 
@@ -110,6 +111,8 @@ void EventQueue::load(CheckpointReader& r) {
                             std::to_string(k));
     pos[heap[k]] = static_cast<std::uint32_t>(k);
   }
+  size_ = static_cast<std::uint32_t>(heap.size());
+  heap.resize(tn.size());  // the heap as a prefix of a list with room for every model
   heap_ = std::move(heap);
   tn_ = std::move(tn);
   pos_ = std::move(pos);

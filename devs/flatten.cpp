@@ -92,9 +92,9 @@ FlatModel flatten(Model& root) {
   }
   flat.atomics.reserve(atomics);
   flat.outBegin.reserve(atomics + 1);
-  flat.outPorts.reserve(outPorts);
-  flat.destBegin.reserve(outPorts + 1);
-  flat.dests.reserve(dests);
+  flat.outs.reserve(outPorts);
+  flat.destPorts.reserve(dests);
+  flat.destAtomics.reserve(dests);
 
   // (hierarchy) => atomics in depth-first order, each with its index and its first output port
   std::uint32_t firstOut = 0;
@@ -109,15 +109,16 @@ FlatModel flatten(Model& root) {
   // (atomic output ports, couplings) => atomic input ports reached through any depth
   for (const AtomicBase* a : flat.atomics) {
     for (PortBase* out : a->outPorts()) {
-      flat.outPorts.push_back(out);
-      flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
-      if (out->links().empty()) continue;
-      forEachDestination(*out, frontier, [&](PortBase& p) {
-        flat.dests.push_back({&p, static_cast<AtomicBase&>(p.owner()).simIndex()});
-      });
+      const auto first = static_cast<std::uint32_t>(flat.destPorts.size());
+      if (!out->links().empty()) {
+        forEachDestination(*out, frontier, [&](PortBase& p) {
+          flat.destPorts.push_back(&p);
+          flat.destAtomics.push_back(static_cast<AtomicBase&>(p.owner()).simIndex());
+        });
+      }
+      flat.outs.push_back({out, first, static_cast<std::uint32_t>(flat.destPorts.size())});
     }
   }
-  flat.destBegin.push_back(static_cast<std::uint32_t>(flat.dests.size()));
   return flat;
 }
 

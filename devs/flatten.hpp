@@ -14,15 +14,18 @@
 namespace yardsim::devs {
 
 struct FlatModel {
-  struct Destination {
+  // One atomic output port and the destinations its messages reach: the input ports
+  // destPorts[destFirst, destLast) of the atomics destAtomics[destFirst, destLast)
+  struct Out {
     PortBase* port;
-    std::uint32_t atomic;
+    std::uint32_t destFirst, destLast;
   };
   ListVector<AtomicBase*> atomics;     // depth-first order of the hierarchy
-  ListVector<std::uint32_t> outBegin;  // atomic i owns outPorts[outBegin[i] .. outBegin[i+1])
-  ListVector<PortBase*> outPorts;
-  ListVector<std::uint32_t> destBegin;  // out port j reaches dests[destBegin[j] .. [j+1])
-  ListVector<Destination> dests;
+  ListVector<std::uint32_t> outBegin;  // atomic i owns outs[outBegin[i] .. outBegin[i+1])
+  ListVector<Out> outs;
+  // two lists: a bag is copied along destPorts alone
+  ListVector<PortBase*> destPorts;
+  ListVector<std::uint32_t> destAtomics;
 };
 
 // (root model) => flat atomics and direct routes; sets each atomic's simIndex

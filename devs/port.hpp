@@ -38,10 +38,22 @@ class PortBase {
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
-  // (bag) => empty bag, capacity kept
-  virtual void clear() = 0;
+  // (bag) => empty bag, capacity kept; a bag of small values (Port<T> with kInlineBag<T>, whose
+  // capacity is never 0) is its count alone, cleared without a call
+  void clear() {
+    if (bagCapacity_ != 0)
+      count_ = 0;
+    else
+      clearValues();
+  }
+  // (this bag, destination ports of its value type) => each destination's bag += this bag, in
+  // their order (one call per output port and event time: the loop runs inside the typed port)
+  virtual void appendToEach(std::span<PortBase* const> dsts) const = 0;
   // (this bag, dst of the same value type) => dst bag += this bag
-  virtual void appendTo(PortBase& dst) const = 0;
+  void appendTo(PortBase& dst) const {
+    PortBase* const one = &dst;
+    appendToEach({&one, 1});
+  }
   // (message i) => its JSON form appended to out
   virtual void writeValue(std::string& out, std::size_t i) const = 0;
 
@@ -50,8 +62,10 @@ class PortBase {
 
  protected:
   std::uint32_t count_ = 0;             // messages in the bag
-  std::uint32_t bagCapacity_ : 31 = 0;  // an inline bag's capacity (Port<T>)
+  std::uint32_t bagCapacity_ : 31 = 0;  // an inline bag's capacity (Port<T>), else 0
   std::uint32_t isInput_ : 1;
+  // (a bag kept in a std::vector) => its values destroyed, count 0, capacity kept
+  virtual void clearValues() = 0;
 
  private:
   friend class Coupled;
@@ -101,21 +115,31 @@ class Port : public PortBase {
   // () => the messages of this event time
   std::span<const T> values() const { return {data(), count_}; }
 
-  void clear() final {
+  void clearValues() final {
     if constexpr (!kInlineBag<T>) bag_.values.clear();
     count_ = 0;
   }
-  void appendTo(PortBase& dst) const final {
-    auto& to = static_cast<Port<T>&>(dst);  // flatten checked the types
+  void appendToEach(std::span<PortBase* const> dsts) const final {
+    // flatten checked the types: every destination is a Port<T>
     if constexpr (kInlineBag<T>) {
-      const T* from = data();
-      for (std::uint32_t i = 0; i < count_; ++i) to.push(from[i]);
+      if (count_ == 1) {  // the common bag: one message, read once, stored into each
+        const T value = data()[0];
+        for (PortBase* d : dsts) static_cast<Port<T>*>(d)->push(value);
+        return;
+      }
+      for (PortBase* d : dsts) {
+        const T* from = data();
+        for (std::uint32_t i = 0; i < count_; ++i) static_cast<Port<T>*>(d)->push(from[i]);
+      }
     } else {
-      if (count_ == 1)
-        to.bag_.values.push_back(bag_.values.front());  // without a range insert's memmove
-      else
-        to.bag_.values.insert(to.bag_.values.end(), bag_.values.begin(), bag_.values.end());
-      to.count_ = static_cast<std::uint32_t>(to.bag_.values.size());
+      for (PortBase* d : dsts) {
+        auto& to = static_cast<Port<T>&>(*d).bag_.values;
+        if (count_ == 1)
+          to.push_back(bag_.values.front());  // without a range insert's memmove
+        else
+          to.insert(to.end(), bag_.values.begin(), bag_.values.end());
+        static_cast<Port<T>*>(d)->count_ = static_cast<std::uint32_t>(to.size());
+      }
     }
   }
   void writeValue(std::string& out, std::size_t i) const final {
@@ -127,7 +151,8 @@ class Port : public PortBase {
   template <class V>
   void push(V&& value) {
     if constexpr (kInlineBag<T>) {
-      if (count_ == bagCapacity_) grow();
+      if (count_ == bagCapacity_) [[unlikely]]
+        grow();
       (onHeap() ? bag_.heap : bag_.inside)[count_++] = value;
     } else {
       bag_.values.push_back(std::forward<V>(value));

@@ -12,7 +12,9 @@ constexpr std::uint8_t kHasInput = 2;
 Simulator::Simulator(Model& root, Time t0) : flat_(flatten(root)), t_(t0) {
   const std::size_t n = flat_.atomics.size();
   queue_.resize(n);
-  tl_.assign(n, t0);
+  slots_.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    slots_.push_back({flat_.atomics[i], t0, flat_.outBegin[i], flat_.outBegin[i + 1]});
   flags_.assign(n, 0);
   imminent_.reserve(n);
   receivers_.reserve(n);
@@ -26,14 +28,21 @@ void Simulator::addListener(Listener& listener) {
   listeners_.push_back(&listener);
 }
 
+namespace {
+// (model, its next event time before t) => throws the SimulationError that names them; apart
+// from reschedule, whose frame it would otherwise widen
+[[noreturn, gnu::cold, gnu::noinline]] void throwTimeAdvance(const AtomicBase& a, Time tn, Time t) {
+  throw SimulationError("model '" + a.path() + "' scheduled its next event at " +
+                        std::to_string(tn) + " s, before the current time " + std::to_string(t) +
+                        " s; a time advance must be >= 0 (or infinity)");
+}
+}  // namespace
+
 void Simulator::reschedule(std::uint32_t i, Time t) {
-  const Time tn = flat_.atomics[i]->nextEventTime(t);
-  if (!(tn >= t)) {
-    throw SimulationError("model '" + flat_.atomics[i]->path() + "' scheduled its next event at " +
-                          std::to_string(tn) + " s, before the current time " + std::to_string(t) +
-                          " s; a time advance must be >= 0 (or infinity)");
-  }
-  tl_[i] = t;
+  Slot& s = slots_[i];
+  const Time tn = s.model->nextEventTime(t);
+  if (!(tn >= t)) throwTimeAdvance(*s.model, tn, t);
+  s.tl = t;
   queue_.schedule(i, tn);
 }
 
@@ -90,21 +99,29 @@ bool Simulator::step() {
   receivers_.clear();
   filled_.clear();
   for (const std::uint32_t i : imminent_) {
-    AtomicBase* a = flat_.atomics[i];
+    const Slot& s = slots_[i];
+    AtomicBase* a = s.model;
     a->lambda();
-    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j) {
-      const PortBase* out = flat_.outPorts[j];
+    for (std::uint32_t j = s.outFirst; j < s.outLast; ++j) {
+      const PortBase* out = flat_.outs[j].port;
       if (out->empty()) continue;
-      if (traced)
+      const std::uint32_t first = flat_.outs[j].destFirst, last = flat_.outs[j].destLast;
+      const std::span<PortBase* const> dsts(flat_.destPorts.data() + first, last - first);
+      if (traced) {
         for (Listener* l : listeners_) l->onOutput(t, *a, *out);
-      for (std::uint32_t k = flat_.destBegin[j]; k < flat_.destBegin[j + 1]; ++k) {
-        const FlatModel::Destination& d = flat_.dests[k];
-        if (traced && d.port->empty()) filled_.push_back(d.port);
-        out->appendTo(*d.port);
-        stats_.messages += out->size();
-        if (!(flags_[d.atomic] & kHasInput)) {
-          if (!(flags_[d.atomic] & kImminent)) receivers_.push_back(d.atomic);
-          flags_[d.atomic] |= kHasInput;
+        for (PortBase* p : dsts) {
+          if (p->empty()) filled_.push_back(p);
+          out->appendTo(*p);
+        }
+      } else {
+        out->appendToEach(dsts);
+      }
+      stats_.messages += out->size() * dsts.size();
+      for (std::uint32_t k = first; k < last; ++k) {
+        const std::uint32_t r = flat_.destAtomics[k];
+        if (!(flags_[r] & kHasInput)) {
+          if (!(flags_[r] & kImminent)) receivers_.push_back(r);
+          flags_[r] |= kHasInput;
         }
       }
     }
@@ -119,8 +136,9 @@ bool Simulator::step() {
   // when all transitions come first), so an atomic is visited once here
   if (instantLimit_ > 0) countInstant(t, imminent_.size() + receivers_.size());
   for (const std::uint32_t i : imminent_) {
-    AtomicBase* a = flat_.atomics[i];
-    const Time e = t - tl_[i];
+    const Slot& s = slots_[i];
+    AtomicBase* a = s.model;
+    const Time e = t - s.tl;
     Transition kind;
     const bool input = flags_[i] & kHasInput;
     if (input) {
@@ -137,15 +155,15 @@ bool Simulator::step() {
         l->onTransition(t, *a, kind, e);
         l->onState(t, *a);
       }
-    for (std::uint32_t j = flat_.outBegin[i]; j < flat_.outBegin[i + 1]; ++j)
-      if (!flat_.outPorts[j]->empty()) flat_.outPorts[j]->clear();
+    for (std::uint32_t j = s.outFirst; j < s.outLast; ++j)
+      if (!flat_.outs[j].port->empty()) flat_.outs[j].port->clear();
     if (input) clearInputs(*a);
     flags_[i] = 0;
     reschedule(i, t);
   }
   for (const std::uint32_t r : receivers_) {
-    AtomicBase* a = flat_.atomics[r];
-    const Time e = t - tl_[r];
+    AtomicBase* a = slots_[r].model;
+    const Time e = t - slots_[r].tl;
     a->deltaExt(e);
     ++stats_.external;
     if (traced)
@@ -176,7 +194,10 @@ void Simulator::saveCheckpoint(CheckpointWriter& w) {
   // (simulator) => clock, counters, queue, then per atomic its path and state
   w.section("simulator");
   devs::save(w, t_);
-  devs::save(w, tl_);
+  ListVector<Time> tl;  // the times of the last transitions, one list as the archive holds them
+  tl.reserve(slots_.size());
+  for (const Slot& s : slots_) tl.push_back(s.tl);
+  devs::save(w, tl);
   for (const std::uint64_t c : {stats_.eventTimes, stats_.internal, stats_.external,
                                 stats_.confluent, stats_.messages, atInstant_})
     w.i64(static_cast<std::int64_t>(c));
@@ -193,10 +214,12 @@ void Simulator::saveCheckpoint(CheckpointWriter& w) {
 void Simulator::loadCheckpoint(CheckpointReader& r) {
   r.section("simulator");
   devs::load(r, t_);
-  devs::load(r, tl_);
-  if (tl_.size() != flat_.atomics.size())
-    throw CheckpointError("the checkpoint holds " + std::to_string(tl_.size()) +
-                          " atomic models, this scene " + std::to_string(flat_.atomics.size()));
+  ListVector<Time> tl;
+  devs::load(r, tl);
+  if (tl.size() != slots_.size())
+    throw CheckpointError("the checkpoint holds " + std::to_string(tl.size()) +
+                          " atomic models, this scene " + std::to_string(slots_.size()));
+  for (std::size_t i = 0; i < tl.size(); ++i) slots_[i].tl = tl[i];
   for (std::uint64_t* c : {&stats_.eventTimes, &stats_.internal, &stats_.external,
                            &stats_.confluent, &stats_.messages, &atInstant_})
     *c = static_cast<std::uint64_t>(r.i64());

@@ -22,15 +22,16 @@ TEST_CASE("flattening reaches atomic inputs through every level") {
   // genr.out reaches transd.arrived (IC) and proc.in (EOC then IC at the top)
   const std::uint32_t genrOut = flat.outBegin[0];
   std::vector<std::string> reached;
-  for (auto k = flat.destBegin[genrOut]; k < flat.destBegin[genrOut + 1]; ++k)
-    reached.push_back(flat.dests[k].port->path());
+  for (auto k = flat.outs[genrOut].destFirst; k < flat.outs[genrOut].destLast; ++k)
+    reached.push_back(flat.destPorts[k]->path());
   std::sort(reached.begin(), reached.end());
   CHECK(reached == std::vector<std::string>{"gpt.ef.transd.arrived", "gpt.proc.in"});
   // proc.out reaches transd.solved (IC at the top, then EIC into ef)
   const std::uint32_t procOut = flat.outBegin[2];
-  REQUIRE(flat.destBegin[procOut + 1] - flat.destBegin[procOut] == 1);
-  CHECK(flat.dests[flat.destBegin[procOut]].port->path() == "gpt.ef.transd.solved");
-  CHECK(flat.dests[flat.destBegin[procOut]].atomic == 1);
+  REQUIRE(flat.outs[procOut].destLast - flat.outs[procOut].destFirst == 1);
+  CHECK(flat.outs[procOut].port->path() == "gpt.proc.out");
+  CHECK(flat.destPorts[flat.outs[procOut].destFirst]->path() == "gpt.ef.transd.solved");
+  CHECK(flat.destAtomics[flat.outs[procOut].destFirst] == 1);
 }
 
 TEST_CASE(
@@ -70,20 +71,22 @@ TEST_CASE(
 
   // (e.out) => a<1> .. a<D>: the deepest first, as a stack seeded with the links delivers them
   const std::uint32_t eOut = flat.outBegin[0];
-  REQUIRE(flat.destBegin[eOut + 1] - flat.destBegin[eOut] == depth);
+  REQUIRE(flat.outs[eOut].destLast - flat.outs[eOut].destFirst == depth);
   bool routed = true;
   for (int k = 1; k <= depth; ++k) {
-    const auto& d = flat.dests[flat.destBegin[eOut] + static_cast<std::uint32_t>(k - 1)];
-    routed = routed && d.port->owner().name() == "a" + std::to_string(k) &&
-             d.atomic == static_cast<std::uint32_t>(1 + depth - k);
+    const std::uint32_t d = flat.outs[eOut].destFirst + static_cast<std::uint32_t>(k - 1);
+    routed = routed && flat.destPorts[d]->owner().name() == "a" + std::to_string(k) &&
+             flat.destAtomics[d] == static_cast<std::uint32_t>(1 + depth - k);
   }
   CHECK(routed);
   // every output port listed (e.out, then each collector's tick), no tick routed anywhere
   CHECK(flat.outBegin.back() == 1 + 2 * depth);
-  CHECK(flat.destBegin.back() == depth);
+  CHECK(flat.outs.size() == 1 + 2 * depth);
+  CHECK(flat.outs.back().destLast == depth);
   // (counted first) => each list one block of its final size
   CHECK(flat.atomics.capacity() == flat.atomics.size());
   CHECK(flat.outBegin.capacity() == flat.outBegin.size());
-  CHECK(flat.destBegin.capacity() == flat.destBegin.size());
-  CHECK(flat.dests.capacity() == flat.dests.size());
+  CHECK(flat.outs.capacity() == flat.outs.size());
+  CHECK(flat.destPorts.capacity() == flat.destPorts.size());
+  CHECK(flat.destAtomics.capacity() == flat.destAtomics.size());
 }

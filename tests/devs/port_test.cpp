@@ -83,3 +83,34 @@ TEST_CASE("a bag of other values is a vector with the port's count") {
   CHECK(m.namesIn.size() == 0);
   CHECK(m.namesIn.values().empty());
 }
+
+TEST_CASE("a bag is appended to each of several destinations, in order, the same one twice") {
+  Ports a, b;
+  // (bags of one and of three messages, inline and on the heap) => every destination gets them all
+  for (const int n : {1, 3}) {
+    b.ints.add(-1);  // a destination with a message of its own keeps it first
+    b.ints.appendTo(b.intsIn);
+    b.ints.clear();
+    for (int i = 0; i < n; ++i) a.ints.add(10 + i);
+    devs::PortBase* const dsts[] = {&a.intsIn, &b.intsIn, &a.intsIn};
+    a.ints.appendToEach(dsts);
+    REQUIRE(a.intsIn.size() == static_cast<std::size_t>(2 * n));
+    REQUIRE(b.intsIn.size() == static_cast<std::size_t>(1 + n));
+    CHECK(b.intsIn.values()[0] == -1);
+    for (int i = 0; i < n; ++i) {
+      CHECK(a.intsIn.values()[static_cast<std::size_t>(i)] == 10 + i);
+      CHECK(a.intsIn.values()[static_cast<std::size_t>(n + i)] == 10 + i);
+      CHECK(b.intsIn.values()[static_cast<std::size_t>(1 + i)] == 10 + i);
+    }
+    for (devs::PortBase* p : {static_cast<devs::PortBase*>(&a.ints), dsts[0], dsts[1]}) p->clear();
+  }
+  // (a bag of strings, two messages) => both destinations get both, in order
+  a.names.add("x");
+  a.names.add("y");
+  devs::PortBase* const named[] = {&b.namesIn, &a.namesIn};
+  a.names.appendToEach(named);
+  CHECK(std::vector<std::string>(b.namesIn.values().begin(), b.namesIn.values().end()) ==
+        std::vector<std::string>{"x", "y"});
+  CHECK(std::vector<std::string>(a.namesIn.values().begin(), a.namesIn.values().end()) ==
+        std::vector<std::string>{"x", "y"});
+}

@@ -30,11 +30,15 @@ void setPointForces(const System& s, Data& d, const SetPoints& sp, double t,
   const double wc = servo.bandwidth;
   // (q, v, the placements in kin) => bias forces h(q, v) of the servo-driven joints, their
   // feedforward (gravity and velocity terms): RNEA over their subtrees and supports only
+  // (drives) => the mask marked again only when the driven joints changed (between steps)
+  bool changed = false;
   for (int i = 0; i < m.nbodies; ++i) {
     const JointDrive& j = sp.drives[static_cast<std::size_t>(i)];
-    d.drivenJoints[static_cast<std::size_t>(i)] = (i > 0 && j.active && !j.prescribed) ? 1 : 0;
+    const char on = (i > 0 && j.active && !j.prescribed) ? 1 : 0;
+    changed = changed || d.drivenJoints[static_cast<std::size_t>(i)] != on;
+    d.drivenJoints[static_cast<std::size_t>(i)] = on;
   }
-  d.feedforwardMask.mark(m, d.drivenJoints);
+  if (changed) d.feedforwardMask.mark(m, d.drivenJoints);
   if (d.feedforwardMask.any)
     dynamics::biasForcesOfSubtrees(m, d.feedforward, kin, q, v, d.feedforwardMask);
   for (int i = 1; i < m.nbodies; ++i) {

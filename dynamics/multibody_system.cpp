@@ -121,4 +121,25 @@ std::uint64_t MultibodySystem::blockJacobian(double t, const Eigen::VectorXd& q,
   return blockCallback_(t, q, v, data_, dq, dv);
 }
 
+void MultibodySystem::beginLinearisation(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+  // (q, v) => kinematics in data_ (the next stage recomputes them), then the callback's
+  // linearisation there; a scope already open is ended first, and one that throws is ended
+  if (!linearisation_) return;
+  endLinearisation();
+  forwardKinematics(model_, data_, q, v);
+  linearised_ = true;
+  try {
+    linearisation_(true, t, q, v, data_);
+  } catch (...) {
+    endLinearisation();
+    throw;
+  }
+}
+
+void MultibodySystem::endLinearisation() {
+  if (!linearised_) return;
+  linearised_ = false;
+  linearisation_(false, 0.0, Eigen::VectorXd(), Eigen::VectorXd(), data_);
+}
+
 }  // namespace yardsim::dynamics

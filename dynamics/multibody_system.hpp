@@ -71,6 +71,15 @@ class MultibodySystem final : public AccelerationSource {
   std::uint64_t blockJacobian(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                               std::vector<Eigen::Matrix3d>& dq, std::vector<Eigen::Matrix3d>& dv) override;
 
+  /// (on, t, q, v, data after forward kinematics(q, v)) => the callback's forces linearised
+  /// about (t, q, v) from on = true until on = false (AccelerationSource::beginLinearisation).
+  using LinearisationCallback = std::function<void(bool on, double t, const Eigen::VectorXd& q,
+                                                   const Eigen::VectorXd& v, const Data& data)>;
+  void setLinearisation(LinearisationCallback callback) { linearisation_ = std::move(callback); }
+  void beginLinearisation(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) override;
+  void endLinearisation() override;
+  bool linearises() const override { return static_cast<bool>(linearisation_); }
+
   /// Prescribed motion (trees only): the dofs flagged in mask move with the accelerations in
   /// aPrescribed (others ignored) instead of responding to forces; the force callback may call
   /// this at every stage. The joint forces that enforce them: prescribedEffort().
@@ -97,6 +106,8 @@ class MultibodySystem final : public AccelerationSource {
   std::shared_ptr<const JacobianPattern> pattern_;
   std::shared_ptr<const JacobianBlocks> blocks_;
   BlockCallback blockCallback_;
+  LinearisationCallback linearisation_;
+  bool linearised_ = false;
   // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
   const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;

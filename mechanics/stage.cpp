@@ -8,6 +8,7 @@
 #include "mechanics/follow_mass.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/line_jacobian.hpp"
+#include "mechanics/linearisation.hpp"
 
 namespace yardsim::mechanics {
 
@@ -113,6 +114,7 @@ void connectStage(const System& s, Data& d) {
   d.kernel.setJacobianPattern(jacobianPattern(s));
   LineJacobian lines = lineJacobian(s, d);
   d.kernel.setJacobianBlocks(std::move(lines.blocks), std::move(lines.evaluate));
+  connectLinearisation(s, d);
   d.kernel.setForces([&s, &d](double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                               const dynamics::Data& kin, dynamics::ExternalForces& f,
                               Eigen::VectorXd& tau) { stageForces(s, d, t, q, v, kin, f, tau); });

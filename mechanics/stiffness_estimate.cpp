@@ -100,8 +100,10 @@ StiffnessEstimate estimateStiffness(const BuiltMechanics& original, const ServoS
   dynamics::MultibodySystem& kernel = data.kernel;
   // (a structured system: lumped-line nodes) => J on its pattern and Arnoldi (largest_mode.hpp);
   // (any other) => J dense by central differences and every eigenvalue
+  // (a catenary line) => its analytic linearisation about the initial state in the differences
   std::complex<double> lambda;
   Eigen::VectorXcd shape;
+  const dynamics::LinearisedScope linearised(kernel, 0.0, mech.q0, mech.v0);
   if (const dynamics::JacobianPattern* pattern = kernel.jacobianPattern()) {
     const LargestMode mode = largestMode(kernel, model, mech.q0, mech.v0, *pattern, kStep);
     lambda = mode.lambda;

@@ -6,7 +6,9 @@
 // function of system.hpp: every provider of the one list, and the servos of held joints), and
 // omega_max is the largest eigenvalue modulus (a system with lumped-line nodes, which reports
 // the structure of its Jacobian: J on that pattern by column colours and Arnoldi's method,
-// largest_mode.hpp, linear in the nodes; any other: J dense and every eigenvalue). The mode is attributed to the body that moves
+// largest_mode.hpp, linear in the nodes; any other: J dense and every eigenvalue), with the
+// forces that have an analytic linearisation (catenary lines, linearisation.hpp) taking it. The
+// mode is attributed to the body that moves
 // most in it and to the provider (rope, equalizer, hydrostatics, ...) that stores most of its
 // strain energy. A provider that brings stiffness in later (a contact open at the start,
 // forces/provider_stiffness.hpp) states its own highest frequency; the larger one is reported.

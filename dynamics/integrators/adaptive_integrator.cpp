@@ -1,6 +1,8 @@
 #include "dynamics/integrators/adaptive_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <sunlinsol/sunlinsol_dense.h>
@@ -76,6 +78,34 @@ int AdaptiveIntegrator::linearSystem(double t, N_Vector y, N_Vector fy, bool jok
     }
     // (gamma) => the reduced matrix's LU (a singular one fails the solver's setup, recoverably)
     newton_->factorise(gamma);
+    return 0;
+  } catch (...) {
+    thrown_ = std::current_exception();
+    return -1;
+  }
+}
+
+int AdaptiveIntegrator::denseJacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, N_Vector work,
+                                      Part part) {
+  try {
+    // (y) => q, v, the linearisation about them; (each column j) => y_j moved by
+    // sqrt(eps) max(1, |y_j|), the part there, the quotient, y_j restored
+    double* yv = N_VGetArrayPointer(y);
+    const double* f0 = N_VGetArrayPointer(fy);
+    const double* f1 = N_VGetArrayPointer(work);
+    chart_.scatter(yv, q_, v_);
+    const LinearisedScope linearised(*source_, t, q_, v_);
+    const sunindextype n = SUNDenseMatrix_Columns(J);
+    const double eps = std::sqrt(std::numeric_limits<double>::epsilon());
+    for (sunindextype j = 0; j < n; ++j) {
+      const double saved = yv[j], inc = eps * std::max(1.0, std::abs(saved));
+      yv[j] = saved + inc;
+      const int flag = rightHandSide(t, y, work, part);
+      yv[j] = saved;
+      if (flag != 0) return flag;
+      double* col = SUNDenseMatrix_Column(J, j);
+      for (sunindextype i = 0; i < n; ++i) col[i] = (f1[i] - f0[i]) / inc;
+    }
     return 0;
   } catch (...) {
     thrown_ = std::current_exception();

@@ -53,6 +53,12 @@ class AdaptiveIntegrator : public Integrator {
   /// refreshed, and factorised for gamma; 0, or -1 after the source threw (the solvers' linear
   /// system function, with makeChartSolver()'s solver)
   int linearSystem(double t, N_Vector y, N_Vector fy, bool jok, int* jcur, double gamma);
+  /// (t, y, fy = the part at (t, y), the dense matrix J, a work vector, the part) => J = d part/dy
+  /// by forward differences, the source's forces with an analytic linearisation taking it about
+  /// (t, y) (AccelerationSource::beginLinearisation); 0, or -1 after the source threw. The dense
+  /// path's Jacobian function for a source that linearises() (denseJacobianWanted()); any other
+  /// keeps SUNDIALS' own difference quotients.
+  int denseJacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, N_Vector work, Part part);
 
  protected:
   AdaptiveIntegrator(const Model& model, const IntegratorSpec& spec);
@@ -72,6 +78,9 @@ class AdaptiveIntegrator : public Integrator {
   /// solver in A_, LS_ (sundials_chart_solver.hpp; made on first use) and true: the caller then
   /// sets linearSystem() as the solver's linear system function; else false (the dense path)
   bool makeChartSolver(bool kinematicImplicit);
+  /// Whether the dense path should set denseJacobian() as the solver's Jacobian function: the
+  /// source has forces with an analytic linearisation (a quasi-static catenary line).
+  bool denseJacobianWanted() const { return source_ != nullptr && source_->linearises(); }
 
   const Model& model_;
   IntegratorSpec spec_;

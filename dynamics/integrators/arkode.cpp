@@ -22,6 +22,11 @@ int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, SUNMatrix, booleantype 
   *jcur = current != 0 ? SUNTRUE : SUNFALSE;
   return flag;
 }
+template <Part P>
+int jac(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* self, N_Vector work, N_Vector,
+        N_Vector) {
+  return static_cast<AdaptiveIntegrator*>(self)->denseJacobian(t, y, fy, J, work, P);
+}
 void onError(int, const char* module, const char* function, char* message, void* self) {
   static_cast<AdaptiveIntegrator*>(self)->solverError(module, function, message);
 }
@@ -71,6 +76,9 @@ void Arkode::init(double t, int nroots) {
       const bool sparse = makeChartSolver(kind_ == Kind::Dirk);
       if (!sparse) makeLinearSolver();
       ARKStepSetLinearSolver(mem_, LS_, A_);
+      // (dense, a catenary line) => its analytic linearisation in the difference quotients of fi
+      if (!sparse && denseJacobianWanted())
+        ARKStepSetJacFn(mem_, kind_ == Kind::Dirk ? jac<Part::All> : jac<Part::Dynamic>);
       if (sparse) ARKStepSetLinSysFn(mem_, linSys);
     }
     if (spec_.maxStep > 0) ARKStepSetMaxStep(mem_, spec_.maxStep);

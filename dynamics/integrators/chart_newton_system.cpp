@@ -68,7 +68,9 @@ int ChartNewtonSystem::form(AccelerationSource& source, double t, const Eigen::V
   theta_ = Eigen::Map<const Eigen::VectorXd>(y, n);
   v_ = Eigen::Map<const Eigen::VectorXd>(y + n, n);
   f_ = a;
-  // (colours) => F_q through the chart at q*, F_v, by forward differences
+  // (colours) => F_q through the chart at q*, F_v, by forward differences (the forces with an
+  // analytic linearisation taking it about (q, v))
+  const LinearisedScope linearised(source, t, q, v_);
   const int evaluations =
       sparse_.form([&](const Eigen::VectorXd& qs, const Eigen::VectorXd& vs, bool,
                        Eigen::VectorXd& out) { source.acceleration(t, qs, vs, out); },

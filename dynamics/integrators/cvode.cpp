@@ -21,6 +21,11 @@ int linSys(double t, N_Vector y, N_Vector fy, SUNMatrix, booleantype jok, boolea
   *jcur = current != 0 ? SUNTRUE : SUNFALSE;
   return flag;
 }
+int jac(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* self, N_Vector work, N_Vector,
+        N_Vector) {
+  return static_cast<AdaptiveIntegrator*>(self)->denseJacobian(t, y, fy, J, work,
+                                                               AdaptiveIntegrator::Part::All);
+}
 void onError(int, const char* module, const char* function, char* message, void* self) {
   static_cast<AdaptiveIntegrator*>(self)->solverError(module, function, message);
 }
@@ -45,6 +50,8 @@ void Cvode::init(double t, int nroots) {
     const bool sparse = makeChartSolver(true);
     if (!sparse) makeLinearSolver();
     CVodeSetLinearSolver(mem_, LS_, A_);
+    // (dense, a catenary line) => its analytic linearisation in the difference quotients
+    if (!sparse && denseJacobianWanted()) CVodeSetJacFn(mem_, jac);
     if (sparse) {
       CVodeSetLinSysFn(mem_, linSys);
       // (lumped lines: their blocks, and their end nodes' couplings to the bodies, are

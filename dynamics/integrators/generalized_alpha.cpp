@@ -125,6 +125,8 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
     f_.noalias() += MinvJtf_ * lambda_;
   }
   const double eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  // (the predictor's state) => the forces with an analytic linearisation take it for the columns
+  const LinearisedScope linearised(system, t + h, qNew_, vNew_);
   const JacobianPattern* pattern = system.jacobianPattern();
   sparseActive_ = pattern != nullptr;
   if (sparseActive_) {

@@ -63,11 +63,36 @@ class AccelerationSource {
   /// and end differ, docs/integrators.md "Switching forces").
   virtual std::uint64_t regime(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/) { return 0; }
 
+  /// Finite-difference Jacobians (the implicit methods' Newton matrices, the stiffness estimate):
+  /// (t, q, v) => until endLinearisation(), the source evaluates the forces that have an analytic
+  /// linearisation (a quasi-static catenary line) as that linearisation about (t, q, v): exact
+  /// derivatives there and no inner solve per column; the value at (t, q, v) itself is unchanged.
+  virtual void beginLinearisation(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/) {}
+  virtual void endLinearisation() {}
+  /// Whether some force of the source has such a linearisation (false: the calls do nothing).
+  virtual bool linearises() const { return false; }
+
   /// Number of state-event functions located by integrators that find roots (0: none).
   virtual int eventCount() const { return 0; }
   /// (t, q, v) => g_j for every event function; an event is a sign change of g_j.
   virtual void eventFunctions(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/,
                               std::span<double> /*g*/) {}
+};
+
+/// (source, t, q, v) => its linearisation about (t, q, v) for the scope's lifetime (ended also
+/// when a finite difference throws)
+class LinearisedScope {
+ public:
+  LinearisedScope(AccelerationSource& source, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v)
+      : source_(source) {
+    source_.beginLinearisation(t, q, v);
+  }
+  ~LinearisedScope() { source_.endLinearisation(); }
+  LinearisedScope(const LinearisedScope&) = delete;
+  LinearisedScope& operator=(const LinearisedScope&) = delete;
+
+ private:
+  AccelerationSource& source_;
 };
 
 /// Work counters of an integrator since construction or resetStats().

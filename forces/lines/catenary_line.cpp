@@ -100,10 +100,11 @@ std::vector<Vector3> CatenaryLine::profile(const Stage& s, int segments) const {
   return out;
 }
 
-Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const {
+Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const { return stiffnessOf(state(s)); }
+
+Matrix3 CatenaryLine::stiffnessOf(const CatenaryLineState& st) {
   // (J^-1, e_h, HF/XF) => K = e_h (k11 e_h + k12 e_z)^T + HF/XF (I_h - e_h e_h^T)
   //                           + e_z (k21 e_h + k22 e_z)^T
-  const CatenaryLineState st = state(s);
   const CatenarySolution& c = st.solution;
   const Vector3& e = st.horizontal;
   const Vector3 z = Vector3::UnitZ();
@@ -113,10 +114,37 @@ Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const {
          z * (c.k21 * e + c.k22 * z).transpose();
 }
 
+void CatenaryLine::linearise(const Stage& s) const {
+  // (the stage's solve, its stiffness) => the base of F_B0 - K (d - d_0), F_A0 + K (d - d_0)
+  if (s.scratch == nullptr) return;
+  auto& lin = static_cast<Scratch&>(*s.scratch);
+  const Vector3 pA = dynamics::pointPosition(s.data, anchor_.body, anchor_.p_B);
+  const Vector3 pB = dynamics::pointPosition(s.data, fairlead_.body, fairlead_.p_B);
+  lin.linearised = false;
+  const CatenaryLineState st = solveAt(pA, pB, lin, s.t);
+  lin.span0 = pB - pA;
+  lin.fairleadForce0 = st.fairleadForce;
+  lin.anchorForce0 = st.anchorForce;
+  lin.stiffness0 = stiffnessOf(st);
+  lin.linearised = true;
+}
+
+void CatenaryLine::release(ProviderScratch& scratch) const {
+  static_cast<Scratch&>(scratch).linearised = false;
+}
+
 void CatenaryLine::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
                               Eigen::VectorXd& /*tau*/) const {
   const Vector3 pA = dynamics::pointPosition(s.data, anchor_.body, anchor_.p_B);
   const Vector3 pB = dynamics::pointPosition(s.data, fairlead_.body, fairlead_.p_B);
+  if (s.scratch != nullptr && static_cast<const Scratch&>(*s.scratch).linearised) {
+    // (linearised: a Jacobian's difference) => the forces' linearisation, no solve, warm start kept
+    const auto& lin = static_cast<const Scratch&>(*s.scratch);
+    const Vector3 dF = lin.stiffness0 * (pB - pA - lin.span0);
+    f.addPointForceWorld(fairlead_.body, pB, lin.fairleadForce0 - dF);
+    if (anchor_.body != 0) f.addPointForceWorld(anchor_.body, pA, lin.anchorForce0 + dF);
+    return;
+  }
   const CatenaryLineState st = solveAt(pA, pB, warmStart(s), s.t);
   if (s.scratch != nullptr) {  // (the caller's scratch) => the next stage starts from here
     auto& warm = static_cast<Scratch&>(*s.scratch);

@@ -7,6 +7,9 @@
 // scratch (the caller's, one per system: a temporary one starts cold). The fairlead
 // feels F_B = -HF e_h - VF e_z and the anchor body F_A = HA e_h + VA e_z (world frame, N, at the
 // points); F_A + F_B differs from zero by the line's weight and the sea bed's reaction.
+// Linearised (forces/provider_linearisation.hpp) about p_A0, p_B0 with K = fairleadStiffness():
+// F_B = F_B0 - K (d - d_0), F_A = F_A0 + K (d - d_0), d = p_B - p_A (the forces depend on d only;
+// with the anchor on the ground p_A is fixed).
 // Potential energy: the line's stored energy (weight and strain) plus w L z_A, J (zero at the
 // world's z = 0, like Gravity). Power: 0 without sea-bed friction (the line is conservative);
 // with friction the quasi-static model is not, and power() reports F . v + dV/dt (the friction's
@@ -18,6 +21,7 @@
 
 #include "forces/force_provider.hpp"
 #include "forces/lines/catenary.hpp"
+#include "forces/provider_linearisation.hpp"
 #include "forces/rope_path.hpp"
 
 namespace yardsim::forces {
@@ -32,7 +36,7 @@ struct CatenaryLineState {
   dynamics::Vector3 anchorForce = dynamics::Vector3::Zero();
 };
 
-class CatenaryLine final : public ForceProvider {
+class CatenaryLine final : public ForceProvider, public ProviderLinearisation {
  public:
   // (name, model (checks only), anchor, fairlead (on a body >= 1), parameters) => the line;
   // throws std::invalid_argument naming it for a body outside the model, a fairlead on the
@@ -58,10 +62,21 @@ class CatenaryLine final : public ForceProvider {
   const Attachment& anchor() const { return anchor_; }
   const Attachment& fairlead() const { return fairlead_; }
 
-  // the scratch: the last evaluate()'s solution and horizontal direction (the warm start)
+  // (stage with the scratch) => the linearisation about it in the scratch (one solve, warm
+  // start kept); (scratch) => evaluate() solves again
+  void linearise(const Stage& s) const override;
+  void release(ProviderScratch& scratch) const override;
+
+  // the scratch: the last evaluate()'s solution and horizontal direction (the warm start), and
+  // the linearisation while one is in force: its base span vector d_0 (m), end forces (N) and K
   struct Scratch final : ProviderScratch {
     CatenarySolution last;
     dynamics::Vector3 lastHorizontal = dynamics::Vector3::UnitX();
+    bool linearised = false;
+    dynamics::Vector3 span0 = dynamics::Vector3::Zero();
+    dynamics::Vector3 fairleadForce0 = dynamics::Vector3::Zero();
+    dynamics::Vector3 anchorForce0 = dynamics::Vector3::Zero();
+    dynamics::Matrix3 stiffness0 = dynamics::Matrix3::Zero();
     // (warm start) => HF, VF, e_h: all that the next solve starts from
     void carried(std::vector<double>& out) const override {
       out.insert(out.end(),
@@ -82,6 +97,8 @@ class CatenaryLine final : public ForceProvider {
   double doPower(const Stage& s) const override;
 
  private:
+  // (state) => K = -dF_B/dp_B there (world frame, N/m)
+  static dynamics::Matrix3 stiffnessOf(const CatenaryLineState& st);
   // (anchor and fairlead world points, warm start) => the state
   CatenaryLineState solveAt(const dynamics::Vector3& pA, const dynamics::Vector3& pB,
                             const Scratch& warm, double t) const;

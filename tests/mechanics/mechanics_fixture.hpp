@@ -137,4 +137,28 @@ mechanics:
   return s + extra + "until: 1\n";
 }
 
+// (integrator line, surge q0, m) => a scene: a 1e5 kg buoy on a surge slider between two
+// catenary chain lines (450 m, EA 1e9 N, 1000 N/m in water; anchors 400 m either side and 100 m
+// down, on the sea bed), no gravity on the slider
+inline std::string catenaryBuoyScene(const std::string& integrator, double q0) {
+  return R"(schema_version: 1
+integrator: )" + integrator +
+         R"(
+mechanics:
+  gravity: [0, 0, 0]
+  bodies:
+    buoy:
+      parent: world
+      joint: {name: surge, type: prismatic, axis: [1, 0, 0], q0: )" +
+         std::to_string(q0) + R"(}
+      mass: 1.0e5
+      inertia: [1, 1, 1]
+  mooring:
+    west: {anchor: [-400, 0, -100], fairlead: {body: buoy}, length: 450, EA: 1.0e9, weight: 1000}
+    east: {anchor: [400, 0, -100], fairlead: {body: buoy}, length: 450, EA: 1.0e9, weight: 1000}
+record: {interval: 0.5, channels: ["surge.q", "surge.v"]}
+until: 1
+)";
+}
+
 }  // namespace yardsim::testing

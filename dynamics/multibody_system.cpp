@@ -121,7 +121,8 @@ std::uint64_t MultibodySystem::blockJacobian(double t, const Eigen::VectorXd& q,
   return blockCallback_(t, q, v, data_, dq, dv);
 }
 
-void MultibodySystem::beginLinearisation(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+void MultibodySystem::beginLinearisation(double t, const Eigen::VectorXd& q,
+                                         const Eigen::VectorXd& v) {
   // (q, v) => kinematics in data_ (the next stage recomputes them), then the callback's
   // linearisation there; a scope already open is ended first, and one that throws is ended
   if (!linearisation_) return;

@@ -28,8 +28,7 @@ void connectLinearisation(const System& s, Data& d) {
   }
   // (on, the base state's stage) => each linearised there in its scratch; (off) => released
   d.kernel.setLinearisation([&s, &d, entries](bool on, double t, const Eigen::VectorXd& q,
-                                              const Eigen::VectorXd& v,
-                                              const dynamics::Data& kin) {
+                                              const Eigen::VectorXd& v, const dynamics::Data& kin) {
     if (!on) {
       for (const auto& [l, i] : *entries) l->release(*d.providerScratch[i]);
       return;

@@ -67,7 +67,8 @@ class AccelerationSource {
   /// (t, q, v) => until endLinearisation(), the source evaluates the forces that have an analytic
   /// linearisation (a quasi-static catenary line) as that linearisation about (t, q, v): exact
   /// derivatives there and no inner solve per column; the value at (t, q, v) itself is unchanged.
-  virtual void beginLinearisation(double /*t*/, const Eigen::VectorXd& /*q*/, const Eigen::VectorXd& /*v*/) {}
+  virtual void beginLinearisation(double /*t*/, const Eigen::VectorXd& /*q*/,
+                                  const Eigen::VectorXd& /*v*/) {}
   virtual void endLinearisation() {}
   /// Whether some force of the source has such a linearisation (false: the calls do nothing).
   virtual bool linearises() const { return false; }
@@ -83,7 +84,8 @@ class AccelerationSource {
 /// when a finite difference throws)
 class LinearisedScope {
  public:
-  LinearisedScope(AccelerationSource& source, double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v)
+  LinearisedScope(AccelerationSource& source, double t, const Eigen::VectorXd& q,
+                  const Eigen::VectorXd& v)
       : source_(source) {
     source_.beginLinearisation(t, q, v);
   }

@@ -100,7 +100,9 @@ std::vector<Vector3> CatenaryLine::profile(const Stage& s, int segments) const {
   return out;
 }
 
-Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const { return stiffnessOf(state(s)); }
+Matrix3 CatenaryLine::fairleadStiffness(const Stage& s) const {
+  return stiffnessOf(state(s));
+}
 
 Matrix3 CatenaryLine::stiffnessOf(const CatenaryLineState& st) {
   // (J^-1, e_h, HF/XF) => K = e_h (k11 e_h + k12 e_z)^T + HF/XF (I_h - e_h e_h^T)

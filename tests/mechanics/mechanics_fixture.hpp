@@ -142,7 +142,8 @@ mechanics:
 // down, on the sea bed), no gravity on the slider
 inline std::string catenaryBuoyScene(const std::string& integrator, double q0) {
   return R"(schema_version: 1
-integrator: )" + integrator +
+integrator: )" +
+         integrator +
          R"(
 mechanics:
   gravity: [0, 0, 0]

@@ -138,8 +138,8 @@ TEST_CASE("every integrator steps a buoy moored by catenary lines without alloca
     const std::size_t before = testing::allocationCount();
     int steps = 0;
     const bool sundialsNewton = method.adaptive && method.implicit;
-    while (steps < 10 || (sundialsNewton && integrator->stats().jac_evals == jacobians &&
-                          steps < 2000)) {
+    while (steps < 10 ||
+           (sundialsNewton && integrator->stats().jac_evals == jacobians && steps < 2000)) {
       integrator->step(s.data.kernel, t, q, v, spec.dt);
       ++steps;
     }

@@ -52,23 +52,17 @@ struct StateCodec<dtss::State<X>> : FieldCodec<dtss::State<X>> {
   }
 };
 
-// (DTSS state, what writes x's JSON value) => {"t": time of x, "steps": k, "x": x} appended
-template <class X, class WriteX>
-void writeDtssState(std::string& out, const dtss::State<X>& s, WriteX&& writeX) {
-  out += "{\"t\":";
-  appendJsonNumber(out, s.tx);
-  out += ",\"steps\":";
-  out += std::to_string(s.steps);
-  out += ",\"x\":";
-  writeX(out, s.x);
-  out += '}';
-}
-
 // A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}
 template <class X>
 struct TraceFormat<dtss::State<X>> {
   static void write(std::string& out, const dtss::State<X>& s) {
-    writeDtssState(out, s, [](std::string& o, const X& x) { TraceFormat<X>::write(o, x); });
+    out += "{\"t\":";
+    appendJsonNumber(out, s.tx);
+    out += ",\"steps\":";
+    out += std::to_string(s.steps);
+    out += ",\"x\":";
+    TraceFormat<X>::write(out, s.x);
+    out += '}';
   }
 };
 }  // namespace yardsim::devs

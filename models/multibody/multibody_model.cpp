@@ -27,15 +27,6 @@ void appendStateText(std::string& out, const MultibodyState& s) {
   out += ']';
 }
 
-void appendStateText(std::string& out, const MultibodyState& s, devs::General6Memo& memo) {
-  out += "q=[";
-  for (Eigen::Index i = 0; i < s.q.size(); ++i) {
-    if (i) out += ',';
-    memo.append(out, static_cast<std::size_t>(i), s.q[i]);  // "%g"
-  }
-  out += ']';
-}
-
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
   std::string text;
   appendStateText(text, s);
@@ -499,16 +490,6 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   ws_.accelTime = ws_.viewTime = ws_.reactionTime = ws_.energyTime = -1.0;
   ws_.viewState = nullptr;
   ws_.integrator->reset();
-}
-
-void MultibodyModel::writeState(std::string& out) const {
-  // (state) => the trace's record of it, as TraceFormat writes it, the coordinates' texts through
-  // the memo of the last record
-  devs::writeDtssState(out, state(), [this](std::string& o, const MultibodyState& x) {
-    o += '"';
-    appendStateText(o, x, ws_.stateText);
-    o += '"';
-  });
 }
 
 void MultibodyModel::afterCheckpoint() {

@@ -80,9 +80,6 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   const dynamics::Integrator& integrator() const { return *ws_.integrator; }
   void replayBodies(Replay& out) const override;
   void replayFrame(Replay& out, std::size_t firstBody) const override;
-  // (state) => its trace record, the same text as TraceFormat's (unchanged coordinates' texts
-  // kept from the last record)
-  void writeState(std::string& out) const override;
 
  protected:
   void advance(MultibodyState& x, devs::Time t, devs::Time dt) const override;
@@ -158,7 +155,6 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
       Eigen::VectorXd q, v;
       std::vector<double> g;
     } events;
-    devs::General6Memo stateText;  // the trace's text of each coordinate of q, last record's
   };
   mutable Workspace ws_;
 };

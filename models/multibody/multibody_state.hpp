@@ -10,7 +10,6 @@
 #include <Eigen/Core>
 
 #include "devs/checkpoint_archive.hpp"
-#include "devs/general_text_memo.hpp"
 #include "devs/trace_format.hpp"
 #include "mechanics/set_points.hpp"
 
@@ -29,9 +28,6 @@ struct MultibodyState {
 // (state) => "q=[q0,q1,...]" appended to out, each coordinate (rad or m) as printf's "%g" prints
 // it (six significant digits); operator<< prints the same text whatever the stream's precision
 void appendStateText(std::string& out, const MultibodyState& s);
-// (state, the memo of the last text of each coordinate) => the same text, each coordinate whose
-// bits did not change since the memo's last state taken from it (held joints, fixed bodies)
-void appendStateText(std::string& out, const MultibodyState& s, devs::General6Memo& memo);
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s);
 
 }  // namespace yardsim::models

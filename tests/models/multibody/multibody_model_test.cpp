@@ -490,34 +490,3 @@ TEST_CASE(
   CHECK("\"" + streamed.str() + "\"" == expected);
   CHECK(out.find("1e+06") != std::string::npos);  // 999999.5 rounds up to the next decade
 }
-
-TEST_CASE("the model's trace record is TraceFormat's at every step, held and moving coordinates") {
-  // (a swinging rod beside a held one, recorded step by step) => the model's record (its memo of
-  // the last record's texts) is the generic TraceFormat of its DTSS state, at every step
-  std::string two = std::string(kRod) + R"(  arm:
-    parent: world
-    joint: {name: brake, type: revolute, axis: [1, 0, 0], q0_deg: 30, hold: true}
-    mass: 2.0
-    com: [0, 0, -0.5]
-    inertia: [0.2, 0.2, 0.01]
-)";
-  models::MultibodyOptions opt;
-  opt.dt = 1e-2;
-  devs::Coupled root("root");
-  auto& mb = root.add<MultibodyModel>("pendulum", build(two), opt);
-  devs::Simulator sim(root);
-  std::size_t bad = 0, heldSame = 0;
-  double held = 0.0;
-  for (int k = 0; k <= 300; ++k) {
-    sim.runUntil(k * opt.dt);
-    std::string fast, ref;
-    mb.writeState(fast);
-    devs::TraceFormat<dtss::State<models::MultibodyState>>::write(ref, mb.state());
-    bad += fast != ref;
-    heldSame += k > 0 && mb.state().x.q[1] == held;
-    held = mb.state().x.q[1];
-  }
-  CHECK(bad == 0);
-  CHECK(heldSame > 100);  // the held joint's coordinate repeats: the memo's case is exercised
-  CHECK(mb.state().x.q[0] < M_PI / 2 - 0.5);  // and the rod moved: so does the other one
-}

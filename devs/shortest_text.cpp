@@ -32,6 +32,19 @@ char* writeFixed(char* p, std::uint64_t n, int k) {
   }
   return p;
 }
+
+// (whole number 1e5 <= n < 1e9) => whether std::to_chars writes it fixed: its D digits are no
+// more than scientific's s digits, point (when s > 1) and "e+0X" (s: D less its trailing zeros)
+bool fixedIsShorter(std::uint64_t n) {
+  int digits = 0, zeros = 0;
+  bool trailing = true;
+  for (; n != 0; n /= 10, ++digits) {
+    trailing = trailing && n % 10 == 0;
+    zeros += trailing;
+  }
+  const int significant = digits - zeros;
+  return digits <= significant + (significant > 1 ? 1 : 0) + 4;
+}
 }  // namespace
 
 char* writeShortest(char* buf, double value) {
@@ -42,13 +55,13 @@ char* writeShortest(char* buf, double value) {
   // below 1/8); and the only one of its length: v's rounding interval (about 2.2e-7 wide below
   // 1e9) holds one multiple of 10^-6 at most. Fixed is std::to_chars' choice there: shorter than
   // scientific with decimals when |v| >= 1, as short or shorter for 0.001 <= |v| < 1 (two zeros
-  // after the point at most), and for whole numbers below 1e5
+  // after the point at most) and for whole numbers below 1e5; above, when fixedIsShorter
   const double a = std::fabs(value);
   if (a >= 1e-3 && a < 1e9) {
     for (int k = 0; k <= 6; ++k) {
       const double n = std::nearbyint(a * kPow10[k]);
       if (n / kPow10[k] != a) continue;
-      if (k == 0 && n >= 1e5) break;  // 100000: "1e+05" is shorter
+      if (k == 0 && n >= 1e5 && !fixedIsShorter(static_cast<std::uint64_t>(n))) break;
       char* p = buf;
       if (std::signbit(value)) *p++ = '-';
       return writeFixed(p, static_cast<std::uint64_t>(n), k);

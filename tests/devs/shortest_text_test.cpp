@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include "support/split_mix.hpp"
+
 using namespace yardsim::devs;
 
 namespace {
@@ -50,13 +52,7 @@ TEST_CASE("writeShortest writes std::to_chars' text for every kind of double and
   // random bit patterns (every exponent), random values near the quick range, the range's ends
   // and the places where std::to_chars turns to scientific (1e-04, 1e+05) or ties (0.001)
   std::size_t bad = 0;
-  std::uint64_t s = 0x13198a2e03707344ULL;
-  auto next = [&s] {  // splitmix64
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  };
+  yardsim::test::SplitMix64 next{0x13198a2e03707344ULL};
   for (int i = 0; i < 200000; ++i) {
     bad += !same(std::bit_cast<double>(next()));
     const double u = static_cast<double>(next() >> 11) * 0x1p-53;

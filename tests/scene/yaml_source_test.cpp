@@ -129,7 +129,8 @@ TEST_CASE("resolveRefs replaces every $name at any depth and keeps the rest and 
   CHECK(r["f"].as<std::string>() == "$len");  // "!": a literal string
   CHECK(r["g"].IsNull());
   CHECK(r.size() == 6);
-  CHECK_THAT(d.report(), Catch::Contains("s.yaml:8:4") && Catch::Contains("unknown parameter 'nope'"));
+  CHECK_THAT(d.report(),
+             Catch::Contains("s.yaml:8:4") && Catch::Contains("unknown parameter 'nope'"));
   CHECK(r["b"][0]["x"].Mark().line == 2);  // a scalar of the file keeps its place
   CHECK(r["b"][1][1].Mark().column == 12);
   // the source is not changed, and a second resolution of it gives the same text

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "devs/shortest_text.hpp"
+
 namespace yardsim::devs {
 
 void appendJsonString(std::string& out, std::string_view text) {
@@ -80,9 +82,8 @@ void appendJsonNumber(std::string& out, double value) {
     if (c.used[i] < c.used[oldest]) oldest = i;
   }
   // (value) => its shortest round-trip form, kept in the cache in place of the oldest entry
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-  const auto n = static_cast<std::size_t>(ec == std::errc() ? end - buf : 0);
+  char buf[kShortestTextSize];
+  const auto n = static_cast<std::size_t>(writeShortest(buf, value) - buf);
   out.append(buf, n);
   if (n == 0) return;
   std::memcpy(c.text[oldest], buf, n);

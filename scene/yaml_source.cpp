@@ -237,8 +237,23 @@ std::vector<std::string> Scope::names() const {
   return out;
 }
 
-YAML::Node resolveRefs(const YAML::Node& node, const Scope& scope, const std::string& file,
-                       const std::string& keyPath, Diagnostics& diags) {
+namespace {
+// The rebuilt maps and sequences of one resolveRefs call, made as entries of one throwaway map so
+// that they share its node memory: yaml-cpp copies the whole set of a document's nodes into a
+// node's memory the first time a node of that document is assigned into it, once per memory, so
+// fresh maps (each with a memory of its own) copied the document once each
+struct Rebuilt {
+  YAML::Node arena{YAML::NodeType::Sequence};
+  // () => a null node in the arena's memory, which becomes a map or a sequence when filled
+  YAML::Node make() {
+    YAML::Node n;
+    arena.push_back(n);
+    return n;
+  }
+};
+
+YAML::Node resolveIn(const YAML::Node& node, const Scope& scope, const std::string& file,
+                     const std::string& keyPath, Diagnostics& diags, Rebuilt& rebuilt) {
   if (node.IsScalar()) {
     const std::string& text = node.Scalar();
     if (text.size() < 2 || text[0] != '$' || node.Tag() == "!") return node;
@@ -250,21 +265,32 @@ YAML::Node resolveRefs(const YAML::Node& node, const Scope& scope, const std::st
     return YAML::Node(YAML::NodeType::Null);
   }
   if (node.IsSequence()) {
-    YAML::Node out(YAML::NodeType::Sequence);
+    if (node.size() == 0) return YAML::Node(YAML::NodeType::Sequence);
+    YAML::Node out = rebuilt.make();
     std::size_t i = 0;
     for (const auto& e : node)
-      out.push_back(resolveRefs(e, scope, file, keyPath + "[" + std::to_string(i++) + "]", diags));
+      out.push_back(
+          resolveIn(e, scope, file, keyPath + "[" + std::to_string(i++) + "]", diags, rebuilt));
     return out;
   }
   if (node.IsMap()) {
-    YAML::Node out(YAML::NodeType::Map);
+    if (node.size() == 0) return YAML::Node(YAML::NodeType::Map);
+    YAML::Node out = rebuilt.make();
     for (auto it = node.begin(); it != node.end(); ++it) {
       const auto key = it->first.as<std::string>();
-      out[key] = resolveRefs(it->second, scope, file, joinKey(keyPath, key), diags);
+      out[key] = resolveIn(it->second, scope, file, joinKey(keyPath, key), diags, rebuilt);
     }
     return out;
   }
   return node;
+}
+}  // namespace
+
+YAML::Node resolveRefs(const YAML::Node& node, const Scope& scope, const std::string& file,
+                       const std::string& keyPath, Diagnostics& diags) {
+  // (node) => the rebuilt copy, its maps and sequences in one memory (Rebuilt)
+  Rebuilt rebuilt;
+  return resolveIn(node, scope, file, keyPath, diags, rebuilt);
 }
 
 std::string shown(const YAML::Node& node) {

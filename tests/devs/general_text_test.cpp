@@ -10,6 +10,8 @@
 #include <limits>
 #include <string>
 
+#include "support/split_mix.hpp"
+
 using namespace yardsim::devs;
 
 TEST_CASE("appendGeneral6 writes printf's g text for every kind of double") {
@@ -31,13 +33,7 @@ TEST_CASE("appendGeneral6 writes printf's g text for every kind of double") {
     return true;
   };
   std::size_t bad = 0;
-  std::uint64_t s = 0x9e3779b97f4a7c15ULL;
-  auto next = [&s] {  // splitmix64
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  };
+  yardsim::test::SplitMix64 next{0x9e3779b97f4a7c15ULL};
   for (int i = 0; i < 200000; ++i) {
     bad += !check(std::bit_cast<double>(next()));
     const double u = static_cast<double>(next() >> 11) * 0x1p-53;  // [0, 1)

@@ -97,3 +97,45 @@ TEST_CASE("an alias inside its own anchor is refused and does not overflow the s
                                                        std::string(60, ']') + "\n"),
                             {}, "", d));
 }
+
+TEST_CASE("resolveRefs replaces every $name at any depth and keeps the rest and its places") {
+  // (a document with references in maps, sequences of maps, an empty map and list, a literal
+  // "!" string and an unknown name; a scope of a number and of a mapping) => the resolved copy:
+  // the same structure and scalars, parameters' values in place of their names, the scalars of
+  // the file with their line and column, the unknown name reported at its place and null
+  const YAML::Node doc = YAML::Load(
+      "a: $len\n"
+      "b:\n"
+      "  - {x: 1, y: $len}\n"
+      "  - [$pose, 2]\n"
+      "c: {}\n"
+      "d: []\n"
+      "f: ! $len\n"
+      "g: $nope\n");
+  scene::Scope scope;
+  scope.values["len"] = YAML::Load("12.5");
+  scope.values["pose"] = YAML::Load("{at: [1, 2, 3]}");
+  models::Diagnostics d;
+  const YAML::Node r = scene::resolveRefs(doc, scope, "s.yaml", "", d);
+  CHECK(r["a"].as<double>() == 12.5);
+  CHECK(r["b"][0]["x"].as<int>() == 1);
+  CHECK(r["b"][0]["y"].as<double>() == 12.5);
+  CHECK(r["b"][1][0]["at"][2].as<int>() == 3);
+  CHECK(r["b"][1][1].as<int>() == 2);
+  CHECK(r["c"].IsMap());
+  CHECK(r["c"].size() == 0);
+  CHECK(r["d"].IsSequence());
+  CHECK(r["d"].size() == 0);
+  CHECK(r["f"].as<std::string>() == "$len");  // "!": a literal string
+  CHECK(r["g"].IsNull());
+  CHECK(r.size() == 6);
+  CHECK_THAT(d.report(),
+             Catch::Contains("s.yaml:8:4") && Catch::Contains("unknown parameter 'nope'"));
+  CHECK(r["b"][0]["x"].Mark().line == 2);  // a scalar of the file keeps its place
+  CHECK(r["b"][1][1].Mark().column == 12);
+  // the source is not changed, and a second resolution of it gives the same text
+  CHECK(doc["a"].as<std::string>() == "$len");
+  CHECK(YAML::Dump(doc["b"]) == "- {x: 1, y: $len}\n- [$pose, 2]");
+  models::Diagnostics d2;
+  CHECK(YAML::Dump(scene::resolveRefs(doc, scope, "s.yaml", "", d2)) == YAML::Dump(r));
+}

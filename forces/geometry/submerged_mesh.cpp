@@ -72,7 +72,9 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   for (std::size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
     const auto& tri = mesh.triangles[ti];
     // (corner depths) => the wetted polygon (Sutherland-Hodgman against depth > 0), <= 4 corners,
-    // and for each the triangle's corner it is (-1: a point on a clipped edge)
+    // and for each the triangle's corner e it is, or -1 - e for a point where edge e (from corner
+    // e to e + 1) crosses the surface. In waves the crossing is interpolated from the edge's end
+    // with the lower vertex number: the same double vector in both triangles on the edge
     Vector3 poly[4];
     int corner[4];
     int n = 0;
@@ -85,27 +87,42 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         poly[n++] = ws.vertices[i];
       }
       if ((di > 0.0) != (dj > 0.0)) {
-        corner[n] = -1;
-        poly[n++] = ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]);
+        corner[n] = -1 - e;
+        poly[n++] = waves && j < i
+                        ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
+                        : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
       }
     }
-    // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure;
-    // a side between two of the triangle's own corners is a mesh edge: its midpoint 0.5 (a + b)
-    // is the same double vector in every triangle sharing it, so its pressure is computed once,
-    // in waves from its corners' half phases
-    const auto pressureAt = [&](const Vector3& q, int u, int w) {
-      if (corner[u] < 0 || corner[w] < 0) return sea.pressure(q, t);
-      const int e = (corner[u] + 1) % 3 == corner[w] ? corner[u] : corner[w];
+    // (mesh edge e of the triangle, midpoint q of its wet part, t) => the incident pressure there,
+    // once per call for every triangle on the edge: a wholly wet edge's midpoint 0.5 (a + b) in
+    // waves from its corners' half phases, a crossing one's (between its wet corner and the
+    // crossing, the same double vector in both triangles in waves) directly
+    const auto edgePressure = [&](const Vector3& q, int e, bool whole) {
       const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
       if (ws.edgeStamp[k] != ws.call) {
         const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
         const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] = waves ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
-                                                         ws.halfPhase.data() + m2 * b, t)
-                                   : sea.pressure(q, t);
+        ws.edgePressure[k] = waves && whole ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                                  ws.halfPhase.data() + m2 * b, t)
+                                            : sea.pressure(q, t);
         ws.edgeStamp[k] = ws.call;
       }
       return ws.edgePressure[k];
+    };
+    // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure:
+    // per mesh edge as above for a side along one (a crossing's side in waves only: in calm water
+    // the two triangles' crossings differ in their last bits, and the pressure is cheap); the
+    // diagonal of a four-cornered polygon, a side of both its pieces, once
+    double diagonal = 0.0;
+    const auto pressureAt = [&](const Vector3& q, int u, int w) {
+      const int cu = corner[u], cw = corner[w];
+      if (cu >= 0 && cw >= 0) return edgePressure(q, (cu + 1) % 3 == cw ? cu : cw, true);
+      if (n == 4 && (u ^ w) == 2) {  // (0, 2) or (2, 0): the first piece's last side comes first
+        if (u == 2) diagonal = sea.pressure(q, t);
+        return diagonal;
+      }
+      if (waves && (cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
+      return sea.pressure(q, t);
     };
     for (int k = 1; k + 1 < n; ++k) {
       // (wetted piece a, b, c) => its share of every integral

@@ -67,7 +67,7 @@ class Hydrostatics final : public ForceProvider {
       bool all = false;        // p holds every integral, not the force and moment alone
       unsigned long when = 0;  // the number of the clipping: the larger, the newer
     };
-    Last last[2][2];  // [0] the sea, [1] calm water (and the sea while it is calm)
+    Last last[2][2];              // [0] the sea, [1] calm water (and the sea while it is calm)
     unsigned long clippings = 0;  // clippings done in this scratch
   };
   std::unique_ptr<ProviderScratch> makeScratch() const override;

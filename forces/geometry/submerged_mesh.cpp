@@ -111,10 +111,10 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
       if (ws.edgeStamp[k] != ws.call) {
         const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
         const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] =
-            waves && whole ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
-                                                 ws.halfPhase.data() + m2 * b, t, ramp)
-                           : sea.pressure(q, t, ramp);
+        ws.edgePressure[k] = waves && whole
+                                 ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                       ws.halfPhase.data() + m2 * b, t, ramp)
+                                 : sea.pressure(q, t, ramp);
         ws.edgeStamp[k] = ws.call;
       }
       return ws.edgePressure[k];
@@ -146,9 +146,10 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
       }
       if ((di > 0.0) != (dj > 0.0)) {
         corner[n] = -1 - e;
-        poly[n++] = waves && j < i
-                        ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
-                        : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
+        poly[n++] =
+            waves && j < i
+                ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
+                : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
       }
     }
     // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure:

@@ -263,15 +263,17 @@ TEST_CASE("the scratch's last clipping is given again only for the same time and
   CHECK(seen[3] != seen[4]);  // another time, the same pose
 }
 
-TEST_CASE("before its waves start the sea is clipped once with calm water, and a step's end is kept") {
+TEST_CASE(
+    "before its waves start the sea is clipped once with calm water, and a step's end is kept") {
   // (a heeled box in a sea whose waves start at t = 5 s, one scratch; a step's calls as the
   // multibody model makes them: the power and energy at its end, the next step's stages, then the
   // samples' energy at the end before) => the same doubles as fresh clippings (no scratch) and as
   // integrateSubmerged at the sea itself, with the clippings the scratch counts
   const double m = kRho * L * B * 1.8;
   const dynamics::Model model = freeBox(m, 2.5, 3.0);
-  const auto sea = std::make_shared<const AiryWaves>(WaterProperties{kRho, kG, 0.0, 40.0, 2.0, 5.0},
-                                                     std::vector<WaveComponent>{{1.5, 7.0, 1.2, 0.3}});
+  const auto sea =
+      std::make_shared<const AiryWaves>(WaterProperties{kRho, kG, 0.0, 40.0, 2.0, 5.0},
+                                        std::vector<WaveComponent>{{1.5, 7.0, 1.2, 0.3}});
   const TriangleMesh hull = boxMesh(Vector3(L, B, D), 4, 2, 2);
   Hydrostatics hydro("hull", model, 1, hull, sea);
   const std::unique_ptr<ProviderScratch> scratch = hydro.makeScratch();

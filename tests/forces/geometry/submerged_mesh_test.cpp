@@ -233,7 +233,8 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the force-only integrals equal every integral's force and moment on random poses and seas") {
+TEST_CASE(
+    "the force-only integrals equal every integral's force and moment on random poses and seas") {
   // (random poses of a box, random seas of one to three components, times before, during and
   // after the ramp) => SubmergedIntegrals::Force's force and moment bit for bit All's
   std::mt19937_64 rng(21);
@@ -244,10 +245,12 @@ TEST_CASE("the force-only integrals equal every integral's force and moment on r
     std::vector<WaveComponent> waves;
     const int components = 1 + trial % 3;
     for (int i = 0; i < components; ++i)
-      waves.push_back({0.3 + 1.2 * u(rng), 4.0 + 8.0 * u(rng), 2.0 * M_PI * u(rng), 2.0 * M_PI * u(rng)});
+      waves.push_back(
+          {0.3 + 1.2 * u(rng), 4.0 + 8.0 * u(rng), 2.0 * M_PI * u(rng), 2.0 * M_PI * u(rng)});
     const AiryWaves sea(WaterProperties{kRho, kG, 0.3, 30.0 + 100.0 * u(rng), 4.0, 2.0}, waves);
     SubmergedWorkspace ws(hull, sea.size());
-    Transform X = Transform::translation(Vector3(10.0 * u(rng), -10.0 * u(rng), 4.0 - 8.0 * u(rng)));
+    Transform X =
+        Transform::translation(Vector3(10.0 * u(rng), -10.0 * u(rng), 4.0 - 8.0 * u(rng)));
     X.R = (Eigen::AngleAxisd(2.0 * M_PI * u(rng), Vector3::UnitZ()) *
            Eigen::AngleAxisd(0.8 * (u(rng) - 0.5), Vector3::UnitY()) *
            Eigen::AngleAxisd(3.0 * (u(rng) - 0.5), Vector3::UnitX()))
@@ -255,7 +258,8 @@ TEST_CASE("the force-only integrals equal every integral's force and moment on r
     const double t = 8.0 * u(rng);
     INFO("trial " << trial << ", t = " << t);
     const SubmergedProperties all = integrateSubmerged(hull, X, sea, t, ws);
-    const SubmergedProperties f = integrateSubmerged(hull, X, sea, t, ws, false, SubmergedIntegrals::Force);
+    const SubmergedProperties f =
+        integrateSubmerged(hull, X, sea, t, ws, false, SubmergedIntegrals::Force);
     CHECK(f.force == all.force);
     CHECK(f.moment == all.moment);
     if (all.volume > 0.0 && all.volume < 20.0 * 8.0 * 4.0 - 1e-9) ++wet;
@@ -263,7 +267,8 @@ TEST_CASE("the force-only integrals equal every integral's force and moment on r
   CHECK(wet > 20);  // most poses cut the hull at the surface
 }
 
-TEST_CASE("in waves a mesh edge that crosses the surface does so at one point for both its triangles") {
+TEST_CASE(
+    "in waves a mesh edge that crosses the surface does so at one point for both its triangles") {
   // (a heeled box in a two-component sea, the wetted pieces kept) => the distinct crossing points
   // (corners of the pieces that are not the hull's corners) are as many as the mesh edges whose
   // ends lie on either side of the surface: each edge's point the same double vector in the two
@@ -286,7 +291,8 @@ TEST_CASE("in waves a mesh edge that crosses the surface does so at one point fo
     }
     for (const auto& tri : hull.triangles)
       for (int e = 0; e < 3; ++e) {
-        const int i = tri[static_cast<std::size_t>(e)], j = tri[static_cast<std::size_t>((e + 1) % 3)];
+        const int i = tri[static_cast<std::size_t>(e)],
+                  j = tri[static_cast<std::size_t>((e + 1) % 3)];
         const auto depth = [&](int k) {
           const Vector3 w = X.actPoint(hull.vertices[static_cast<std::size_t>(k)]);
           return sea.elevation(w.x(), w.y(), t) - w.z();

@@ -161,9 +161,12 @@ double AiryWaves::pressureWith(const Vector3& p, double r, AmplitudeCos c) const
 }
 
 double AiryWaves::pressure(const Vector3& p, double t) const {
+  return pressure(p, t, rampOf(water_, t));
+}
+
+double AiryWaves::pressure(const Vector3& p, double t, double r) const {
   const double rg = water_.density * water_.gravity;
   // (calm water, or the waves not started: eta = level and r p_dyn = 0 exactly) => hydrostatic
-  const double r = rampOf(water_, t);
   if (waves_.empty() || r == 0.0) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
   // (up to kCached components, an irregular sea's usual 200 included) => each cos(theta) once,
   // for the surface and for the pressure, in a buffer on the stack (2 KB)
@@ -191,8 +194,11 @@ void AiryWaves::halfPhases(double x, double y, double t, double* h) const {
 }
 
 double AiryWaves::elevation(const double* h, double t) const {
+  return elevationRamped(h, rampOf(water_, t));
+}
+
+double AiryWaves::elevationRamped(const double* h, double r) const {
   // (half phases) => level + r sum a_i cos th_i, cos th = cos^2(th/2) - sin^2(th/2)
-  const double r = rampOf(water_, t);
   if (r == 0.0) return water_.level;
   double eta = 0.0;
   for (std::size_t i = 0; i < waves_.size(); ++i)
@@ -202,8 +208,12 @@ double AiryWaves::elevation(const double* h, double t) const {
 
 double AiryWaves::pressureBetween(const Vector3& p, const double* ha, const double* hb,
                                   double t) const {
-  const double r = rampOf(water_, t);
-  if (waves_.empty() || r == 0.0) return pressure(p, t);
+  return pressureBetween(p, ha, hb, t, rampOf(water_, t));
+}
+
+double AiryWaves::pressureBetween(const Vector3& p, const double* ha, const double* hb, double t,
+                                  double r) const {
+  if (waves_.empty() || r == 0.0) return pressure(p, t, r);
   // (half phases at a and b) => a_i cos((th_a + th_b) / 2), the phase at their midpoint p
   return pressureWith(p, r, [this, ha, hb](std::size_t i) {
     return waves_[i].a * (ha[2 * i] * hb[2 * i] - ha[2 * i + 1] * hb[2 * i + 1]);

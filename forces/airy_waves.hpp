@@ -53,6 +53,8 @@ class AiryWaves {
   double dynamicPressure(const dynamics::Vector3& p, double t) const;
   // (p_W, t) => total incident pressure rho g (level - z) + p_dyn below the surface, 0 above, Pa
   double pressure(const dynamics::Vector3& p, double t) const;
+  // (p_W, t, r = ramp(t), computed once for many points) => pressure(p, t), the same double, Pa
+  double pressure(const dynamics::Vector3& p, double t, double r) const;
   // (t) => the factor in [0, 1] every amplitude is multiplied by at t (water.start, water.ramp)
   double ramp(double t) const;
 
@@ -64,9 +66,14 @@ class AiryWaves {
   void halfPhases(double x, double y, double t, double* h) const;
   // (half phases at (x, y), t) => z of the free surface there, m (elevation(x, y, t) to round-off)
   double elevation(const double* h, double t) const;
+  // (half phases, r = ramp(t)) => elevation(h, t), the same double, m
+  double elevationRamped(const double* h, double r) const;
   // (p_W the midpoint of a and b, their half phases, t) => pressure(p, t) to round-off, Pa
   double pressureBetween(const dynamics::Vector3& p, const double* ha, const double* hb,
                          double t) const;
+  // (as pressureBetween, r = ramp(t)) => pressureBetween(p, ha, hb, t), the same double, Pa
+  double pressureBetween(const dynamics::Vector3& p, const double* ha, const double* hb, double t,
+                         double r) const;
 
  private:
   struct Wave {

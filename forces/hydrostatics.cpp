@@ -54,18 +54,28 @@ SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& sur
   std::unique_ptr<ProviderScratch> temporary;
   Scratch& scratch = scratchOf<Scratch>(s, temporary);
   const dynamics::Transform& X = s.data.X_WB[body_];
-  Scratch::Last& last = scratch.last[&surface == &calm_ ? 1 : 0];
+  // (the sea before its waves start, or without waves) => calm water, the same doubles
+  const AiryWaves& at =
+      &surface == sea_.get() && (sea_->calm() || sea_->ramp(s.t) == 0.0) ? calm_ : surface;
+  Scratch::Last(&ring)[2] = scratch.last[&at == &calm_ ? 1 : 0];
   // (the same surface, time and pose, bit for bit, and the integrals asked for) => the same
   // clipping
   const bool all = which == SubmergedIntegrals::All;
-  if (last.sea == &surface && std::memcmp(&last.t, &s.t, sizeof(double)) == 0 &&
-      std::memcmp(&last.X_WB, &X, sizeof X) == 0 && (last.all || !all))
-    return last.p;
-  last.sea = &surface;
+  for (const Scratch::Last& e : ring)
+    if (e.sea == &at && std::memcmp(&e.t, &s.t, sizeof(double)) == 0 &&
+        std::memcmp(&e.X_WB, &X, sizeof X) == 0 && (e.all || !all))
+      return e.p;
+  // (else) => clip, kept in place of an empty or force-only entry (the older of two), else of
+  // the older: a step's end clipping with every integral outlives the next step's stages
+  const auto rank = [](const Scratch::Last& e) { return e.sea == nullptr ? 0 : e.all ? 2 : 1; };
+  const int r0 = rank(ring[0]), r1 = rank(ring[1]);
+  Scratch::Last& last = r0 < r1 || (r0 == r1 && ring[0].when <= ring[1].when) ? ring[0] : ring[1];
+  last.sea = &at;
   last.t = s.t;
   last.X_WB = X;
-  last.p = integrateSubmerged(hull_, X, surface, s.t, scratch.ws, false, which);
+  last.p = integrateSubmerged(hull_, X, at, s.t, scratch.ws, false, which);
   last.all = all;
+  last.when = ++scratch.clippings;
   return last.p;
 }
 

@@ -52,9 +52,10 @@ class Hydrostatics final : public ForceProvider {
   // (stage) => the report there
   HydrostaticReport report(const Stage& s) const;
 
-  // the scratch: the workspace the hull is clipped in, and the last clipping at each surface (the
-  // sea, calm water) with the time and pose it was for, given again when asked for the same ones
-  // (the power at a step's end is asked again at the next step's start and first stage)
+  // the scratch: the workspace the hull is clipped in, and the last two clippings at each surface
+  // (the sea, calm water) with the time and pose they were for, given again when asked for the
+  // same ones (the power at a step's end is asked again at the next step's start and first stage;
+  // the energy of a step's end is read by the samples after the next step was computed)
   struct Scratch final : ProviderScratch {
     Scratch(const TriangleMesh& hull, std::size_t components) : ws(hull, components) {}
     SubmergedWorkspace ws;
@@ -63,9 +64,11 @@ class Hydrostatics final : public ForceProvider {
       double t = 0.0;
       dynamics::Transform X_WB;
       SubmergedProperties p;
-      bool all = false;  // p holds every integral, not the force and moment alone
+      bool all = false;        // p holds every integral, not the force and moment alone
+      unsigned long when = 0;  // the number of the clipping: the larger, the newer
     };
-    Last last[2];  // [0] the sea, [1] calm water
+    Last last[2][2];              // [0] the sea, [1] calm water (and the sea while it is calm)
+    unsigned long clippings = 0;  // clippings done in this scratch
   };
   std::unique_ptr<ProviderScratch> makeScratch() const override;
 
@@ -90,7 +93,8 @@ class Hydrostatics final : public ForceProvider {
   // (stage, surface: *sea_ or calm_, the integrals needed) => integrateSubmerged at the stage's
   // pose and time, or the scratch's copy when it was for the same time and pose (bit for bit) and
   // holds those integrals. The forces (evaluate, power in waves) need the force and moment alone;
-  // the potential energy and the report every integral.
+  // the potential energy and the report every integral. Before its waves start (ramp 0) and
+  // without waves the sea is calm water, whose clipping gives the same doubles: one cache for both.
   SubmergedProperties submerged(const Stage& s, const AiryWaves& surface,
                                 SubmergedIntegrals which = SubmergedIntegrals::All) const;
 };

@@ -43,7 +43,8 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   // corner's half phases first (the surface there from them, and later its edges' midpoints)
   const std::size_t nv = mesh.vertices.size();
   const std::size_t m2 = 2 * sea.size();
-  const bool waves = !sea.calm() && sea.ramp(t) > 0.0;
+  const double ramp = sea.ramp(t);  // once for every point of this call
+  const bool waves = !sea.calm() && ramp > 0.0;
   if (waves && ws.halfPhase.size() < m2 * nv) ws.halfPhase.resize(m2 * nv);
   for (std::size_t i = 0; i < nv; ++i) {
     const Vector3 p = X_WB.actPoint(mesh.vertices[i]);
@@ -51,7 +52,7 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     if (waves) {
       double* h = ws.halfPhase.data() + m2 * i;
       sea.halfPhases(p.x(), p.y(), t, h);
-      ws.depth[i] = sea.elevation(h, t) - p.z();
+      ws.depth[i] = sea.elevationRamped(h, ramp) - p.z();
     } else {
       ws.depth[i] = sea.water().level - p.z();
     }
@@ -69,10 +70,69 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   SubmergedProperties r;
   double vol6 = 0.0, wpA = 0.0, wpX = 0.0, wpY = 0.0, wpXX = 0.0, wpYY = 0.0, wpXY = 0.0;
   Vector3 first = Vector3::Zero(), F = Vector3::Zero(), M = Vector3::Zero();
+  // (wetted piece a, b, c; pressureOf(q, side) the pressure at the midpoint q of its side from
+  // a, b, c to b, c, a) => its share of every integral
+  const auto piece = [&](const Vector3& a, const Vector3& b, const Vector3& c, auto&& pressureOf) {
+    const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
+    const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+    if constexpr (kAll) {
+      const Vector3 ao = a - o, bo = b - o, co = c - o;
+      const double d6 = ao.dot(bo.cross(co));
+      vol6 += d6;
+      first += d6 * (ao + bo + co);  // / 24 later
+    }
+    for (int side = 0; side < 3; ++side) {
+      const Vector3& q = m[side];
+      // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
+      if constexpr (kAll) {
+        const double w = -S.z() / 3.0;
+        wpA += w;
+        wpX += w * q.x();
+        wpY += w * q.y();
+        wpXX += w * q.x() * q.x();
+        wpYY += w * q.y() * q.y();
+        wpXY += w * q.x() * q.y();
+      }
+      const double p = pressureOf(q, side);
+      F -= p / 3.0 * S;
+      M -= p / 3.0 * q.cross(S);
+    }
+    if constexpr (kAll) r.wettedArea += S.norm();
+    if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
+  };
   for (std::size_t ti = 0; ti < mesh.triangles.size(); ++ti) {
     const auto& tri = mesh.triangles[ti];
-    // (corner depths) => the wetted polygon (Sutherland-Hodgman against depth > 0), <= 4 corners,
-    // and for each the triangle's corner it is (-1: a point on a clipped edge)
+    // (mesh edge e of the triangle, midpoint q of its wet part, t) => the incident pressure there,
+    // once per call for every triangle on the edge: a wholly wet edge's midpoint 0.5 (a + b) in
+    // waves from its corners' half phases, a crossing one's (between its wet corner and the
+    // crossing, the same double vector in both triangles in waves) directly
+    const auto edgePressure = [&](const Vector3& q, int e, bool whole) {
+      const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
+      if (ws.edgeStamp[k] != ws.call) {
+        const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
+        const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
+        ws.edgePressure[k] = waves && whole
+                                 ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                       ws.halfPhase.data() + m2 * b, t, ramp)
+                                 : sea.pressure(q, t, ramp);
+        ws.edgeStamp[k] = ws.call;
+      }
+      return ws.edgePressure[k];
+    };
+    // (corner depths) => dry: nothing; wholly wet: the triangle itself, every side a mesh edge
+    const auto i0 = static_cast<std::size_t>(tri[0]), i1 = static_cast<std::size_t>(tri[1]),
+               i2 = static_cast<std::size_t>(tri[2]);
+    const bool w0 = ws.depth[i0] > 0.0, w1 = ws.depth[i1] > 0.0, w2 = ws.depth[i2] > 0.0;
+    if (!w0 && !w1 && !w2) continue;
+    if (w0 && w1 && w2) {
+      piece(ws.vertices[i0], ws.vertices[i1], ws.vertices[i2],
+            [&](const Vector3& q, int side) { return edgePressure(q, side, true); });
+      continue;
+    }
+    // (else) => the wetted polygon (Sutherland-Hodgman against depth > 0), 3 or 4 corners, and
+    // for each the triangle's corner e it is, or -1 - e for a point where edge e (from corner e
+    // to e + 1) crosses the surface. In waves the crossing is interpolated from the edge's end
+    // with the lower vertex number: the same double vector in both triangles on the edge
     Vector3 poly[4];
     int corner[4];
     int n = 0;
@@ -85,60 +145,32 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         poly[n++] = ws.vertices[i];
       }
       if ((di > 0.0) != (dj > 0.0)) {
-        corner[n] = -1;
-        poly[n++] = ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]);
+        corner[n] = -1 - e;
+        poly[n++] =
+            waves && j < i
+                ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
+                : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
       }
     }
-    // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure;
-    // a side between two of the triangle's own corners is a mesh edge: its midpoint 0.5 (a + b)
-    // is the same double vector in every triangle sharing it, so its pressure is computed once,
-    // in waves from its corners' half phases
+    // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure:
+    // per mesh edge as above for a side along one (a crossing's side in waves only: in calm water
+    // the two triangles' crossings differ in their last bits, and the pressure is cheap); the
+    // diagonal of a four-cornered polygon, a side of both its pieces, once
+    double diagonal = 0.0;
     const auto pressureAt = [&](const Vector3& q, int u, int w) {
-      if (corner[u] < 0 || corner[w] < 0) return sea.pressure(q, t);
-      const int e = (corner[u] + 1) % 3 == corner[w] ? corner[u] : corner[w];
-      const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
-      if (ws.edgeStamp[k] != ws.call) {
-        const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
-        const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] = waves ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
-                                                         ws.halfPhase.data() + m2 * b, t)
-                                   : sea.pressure(q, t);
-        ws.edgeStamp[k] = ws.call;
+      const int cu = corner[u], cw = corner[w];
+      if (cu >= 0 && cw >= 0) return edgePressure(q, (cu + 1) % 3 == cw ? cu : cw, true);
+      if (n == 4 && (u ^ w) == 2) {  // (0, 2) or (2, 0): the first piece's last side comes first
+        if (u == 2) diagonal = sea.pressure(q, t, ramp);
+        return diagonal;
       }
-      return ws.edgePressure[k];
+      if (waves && (cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
+      return sea.pressure(q, t, ramp);
     };
     for (int k = 1; k + 1 < n; ++k) {
-      // (wetted piece a, b, c) => its share of every integral
-      const Vector3& a = poly[0];
-      const Vector3& b = poly[k];
-      const Vector3& c = poly[k + 1];
-      const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
-      const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
       const int from[3] = {0, k, k + 1}, to[3] = {k, k + 1, 0};
-      if constexpr (kAll) {
-        const Vector3 ao = a - o, bo = b - o, co = c - o;
-        const double d6 = ao.dot(bo.cross(co));
-        vol6 += d6;
-        first += d6 * (ao + bo + co);  // / 24 later
-      }
-      for (int side = 0; side < 3; ++side) {
-        const Vector3& q = m[side];
-        // waterplane by the divergence theorem on (0, 0, f(x, y)): int_cap f = -sum f n_z dS
-        if constexpr (kAll) {
-          const double w = -S.z() / 3.0;
-          wpA += w;
-          wpX += w * q.x();
-          wpY += w * q.y();
-          wpXX += w * q.x() * q.x();
-          wpYY += w * q.y() * q.y();
-          wpXY += w * q.x() * q.y();
-        }
-        const double p = pressureAt(q, from[side], to[side]);
-        F -= p / 3.0 * S;
-        M -= p / 3.0 * q.cross(S);
-      }
-      if constexpr (kAll) r.wettedArea += S.norm();
-      if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
+      piece(poly[0], poly[k], poly[k + 1],
+            [&](const Vector3& q, int side) { return pressureAt(q, from[side], to[side]); });
     }
   }
   r.force = F;

@@ -39,9 +39,10 @@ struct SubmergedWorkspace {
   std::vector<double> depth;                // eta(x, y, t) - z, m (> 0: wet)
   std::vector<std::array<dynamics::Vector3, 3>> wet;  // wetted pieces, world, outward (first wetTriangles)
   // edge[3 t + e]: the number of triangle t's edge from its corner e to corner e + 1, the same for
-  // every triangle with those two corners; edgePressure[k] is the incident pressure (Pa) at edge
-  // k's midpoint, valid in the call whose number is edgeStamp[k] (one evaluation per wet edge,
-  // not one per triangle that shares it)
+  // every triangle with those two corners; edgePressure[k] is the incident pressure (Pa) at the
+  // midpoint of edge k's wet part (the whole edge, or in waves the part from its wet end to where
+  // it crosses the surface), valid in the call whose number is edgeStamp[k] (one evaluation per
+  // wet edge, not one per triangle that shares it)
   std::vector<int> edge;
   std::vector<double> edgePressure;
   std::vector<unsigned> edgeStamp;

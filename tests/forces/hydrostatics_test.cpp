@@ -262,3 +262,67 @@ TEST_CASE("the scratch's last clipping is given again only for the same time and
   CHECK(seen[0] == seen[2]);
   CHECK(seen[3] != seen[4]);  // another time, the same pose
 }
+
+TEST_CASE(
+    "before its waves start the sea is clipped once with calm water, and a step's end is kept") {
+  // (a heeled box in a sea whose waves start at t = 5 s, one scratch; a step's calls as the
+  // multibody model makes them: the power and energy at its end, the next step's stages, then the
+  // samples' energy at the end before) => the same doubles as fresh clippings (no scratch) and as
+  // integrateSubmerged at the sea itself, with the clippings the scratch counts
+  const double m = kRho * L * B * 1.8;
+  const dynamics::Model model = freeBox(m, 2.5, 3.0);
+  const auto sea =
+      std::make_shared<const AiryWaves>(WaterProperties{kRho, kG, 0.0, 40.0, 2.0, 5.0},
+                                        std::vector<WaveComponent>{{1.5, 7.0, 1.2, 0.3}});
+  const TriangleMesh hull = boxMesh(Vector3(L, B, D), 4, 2, 2);
+  Hydrostatics hydro("hull", model, 1, hull, sea);
+  const std::unique_ptr<ProviderScratch> scratch = hydro.makeScratch();
+  const auto& counted = static_cast<const Hydrostatics::Scratch&>(*scratch);
+  Rig r(model, {});
+  r.v << 0.05, -0.02, 0.01, 0.3, -0.2, 0.4;
+  // (t, heel) => the stage there, with the scratch or without
+  auto at = [&](double t, double heel, bool cached) {
+    r.t = t;
+    pose(r.q, 1.2, heel);
+    Stage s = r.stage();
+    if (cached) s.scratch = scratch.get();
+    return s;
+  };
+  auto force = [&](const Stage& s) {
+    dynamics::ExternalForces f(model);
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(model.nv);
+    hydro.evaluate(s, f, tau);
+    return dynamics::Force(f.worldFrame(1));
+  };
+  for (const double t : {3.0, 6.5}) {  // calm (ramp 0), then in waves (the ramp under way)
+    INFO("t = " << t);
+    const bool calm = sea->ramp(t) == 0.0;
+    // (a step's end: power, then the energy, then the next step's first stage) => one clipping
+    // before the waves start (calm water serves the sea), two in waves (calm water and the sea)
+    const unsigned long before = counted.clippings;
+    CHECK(hydro.power(at(t, 0.3, true)) == hydro.power(at(t, 0.3, false)));
+    CHECK(hydro.potentialEnergy(at(t, 0.3, true)) == hydro.potentialEnergy(at(t, 0.3, false)));
+    const dynamics::Force F = force(at(t, 0.3, true));
+    CHECK(counted.clippings - before == (calm ? 1U : 2U));
+    CHECK(F == force(at(t, 0.3, false)));
+    // (the sea's own clipping) => the same force and moment
+    SubmergedWorkspace ws(hull, sea->size());
+    const dynamics::Data& d = at(t, 0.3, false).data;
+    const SubmergedProperties direct = integrateSubmerged(hull, d.X_WB[1], *sea, t, ws);
+    CHECK(F.tail<3>() == direct.force);
+    CHECK(F.head<3>() == direct.moment);
+    // (the next step's stages at other poses, its end's power and energy) => the samples' energy
+    // and report at the step's end before clip nothing more, and are those of fresh clippings
+    for (double heel : {0.31, 0.32, 0.33}) force(at(t + 0.01, heel, true));
+    hydro.power(at(t + 0.02, 0.34, true));
+    hydro.potentialEnergy(at(t + 0.02, 0.34, true));
+    const unsigned long after = counted.clippings;
+    CHECK(hydro.potentialEnergy(at(t, 0.3, true)) == hydro.potentialEnergy(at(t, 0.3, false)));
+    CHECK(counted.clippings == after);
+    if (calm) {  // (the report clips at the sea: calm water's clipping before the waves start)
+      CHECK(hydro.report(at(t, 0.3, true)).submerged.volume ==
+            hydro.report(at(t, 0.3, false)).submerged.volume);
+      CHECK(counted.clippings == after);
+    }
+  }
+}

@@ -5,7 +5,12 @@
 // Froude-Krylov force of a small submerged box against the particle acceleration.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include "dynamics/rotation.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
@@ -225,6 +230,82 @@ TEST_CASE(
     CHECK(f.volume == 0.0);
     CHECK(f.waterplaneArea == 0.0);
     CHECK(f.wettedArea == 0.0);
+  }
+}
+
+TEST_CASE(
+    "the force-only integrals equal every integral's force and moment on random poses and seas") {
+  // (random poses of a box, random seas of one to three components, times before, during and
+  // after the ramp) => SubmergedIntegrals::Force's force and moment bit for bit All's
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
+  int wet = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<WaveComponent> waves;
+    const int components = 1 + trial % 3;
+    for (int i = 0; i < components; ++i)
+      waves.push_back(
+          {0.3 + 1.2 * u(rng), 4.0 + 8.0 * u(rng), 2.0 * M_PI * u(rng), 2.0 * M_PI * u(rng)});
+    const AiryWaves sea(WaterProperties{kRho, kG, 0.3, 30.0 + 100.0 * u(rng), 4.0, 2.0}, waves);
+    SubmergedWorkspace ws(hull, sea.size());
+    Transform X =
+        Transform::translation(Vector3(10.0 * u(rng), -10.0 * u(rng), 4.0 - 8.0 * u(rng)));
+    X.R = (Eigen::AngleAxisd(2.0 * M_PI * u(rng), Vector3::UnitZ()) *
+           Eigen::AngleAxisd(0.8 * (u(rng) - 0.5), Vector3::UnitY()) *
+           Eigen::AngleAxisd(3.0 * (u(rng) - 0.5), Vector3::UnitX()))
+              .toRotationMatrix();
+    const double t = 8.0 * u(rng);
+    INFO("trial " << trial << ", t = " << t);
+    const SubmergedProperties all = integrateSubmerged(hull, X, sea, t, ws);
+    const SubmergedProperties f =
+        integrateSubmerged(hull, X, sea, t, ws, false, SubmergedIntegrals::Force);
+    CHECK(f.force == all.force);
+    CHECK(f.moment == all.moment);
+    if (all.volume > 0.0 && all.volume < 20.0 * 8.0 * 4.0 - 1e-9) ++wet;
+  }
+  CHECK(wet > 20);  // most poses cut the hull at the surface
+}
+
+TEST_CASE(
+    "in waves a mesh edge that crosses the surface does so at one point for both its triangles") {
+  // (a heeled box in a two-component sea, the wetted pieces kept) => the distinct crossing points
+  // (corners of the pieces that are not the hull's corners) are as many as the mesh edges whose
+  // ends lie on either side of the surface: each edge's point the same double vector in the two
+  // triangles on it, so its side to the wet corner takes one pressure
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 50.0, 0.0},
+                      {{1.0, 5.0, 0.7, 0.3}, {0.4, 6.0, -1.0, 2.0}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
+  SubmergedWorkspace ws(hull, sea.size());
+  Transform X = Transform::translation(Vector3(1.0, -2.0, 0.3));
+  X.R = Eigen::AngleAxisd(0.15, Vector3::UnitX()).toRotationMatrix();
+  for (double t : {0.4, 2.9}) {
+    INFO("t = " << t);
+    const SubmergedProperties p = integrateSubmerged(hull, X, sea, t, ws, true);
+    // (the hull's corners in the world, their depth) => the crossed mesh edges
+    std::set<std::array<double, 3>> corners, crossings;
+    std::set<std::pair<int, int>> crossed;
+    for (const Vector3& v : hull.vertices) {
+      const Vector3 w = X.actPoint(v);
+      corners.insert({w.x(), w.y(), w.z()});
+    }
+    for (const auto& tri : hull.triangles)
+      for (int e = 0; e < 3; ++e) {
+        const int i = tri[static_cast<std::size_t>(e)],
+                  j = tri[static_cast<std::size_t>((e + 1) % 3)];
+        const auto depth = [&](int k) {
+          const Vector3 w = X.actPoint(hull.vertices[static_cast<std::size_t>(k)]);
+          return sea.elevation(w.x(), w.y(), t) - w.z();
+        };
+        const double di = depth(i), dj = depth(j);
+        CHECK(std::abs(di) > 1e-9);  // (no corner on the surface to round-off: the count is sharp)
+        if ((di > 0.0) != (dj > 0.0)) crossed.insert({std::min(i, j), std::max(i, j)});
+      }
+    for (int k = 0; k < p.wetTriangles; ++k)
+      for (const Vector3& c : ws.wet[static_cast<std::size_t>(k)])
+        if (!corners.count({c.x(), c.y(), c.z()})) crossings.insert({c.x(), c.y(), c.z()});
+    CHECK(crossed.size() > 10);
+    CHECK(crossings.size() == crossed.size());
   }
 }
 

@@ -1,8 +1,8 @@
 // The channels of a lumped mooring line (`mooring:` with `model: lumped`,
 // scene/providers/mooring_reader.cpp) that a catenary line also has: its fairlead and anchor
-// angles, its horizontal tension and its touchdown point, against the quasi-static elastic catenary of the same line
-// (forces/lines/catenary.hpp) at rest: a chain touching down on the bed, and one fully suspended
-// above it that lifts its anchor, each in a vertical plane at 30 degrees to x.
+// angles, its horizontal tension and its touchdown point, against the quasi-static elastic catenary
+// of the same line (forces/lines/catenary.hpp) at rest: a chain touching down on the bed, and one
+// fully suspended above it that lifts its anchor, each in a vertical plane at 30 degrees to x.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -20,7 +20,8 @@
 // bed, at every iterate when its bordered band factorisation makes that cheap: a semi-smooth
 // Newton on those rows; the other entries stay as formed. With such blocks a failed solve is
 // first continued from its last iterate with the current matrix, the fresh matrix at the
-// predictor is skipped, and only a solve slower still marks the matrix stale: docs/lines.md)
+// predictor is skipped, and only a solve slower still marks the matrix stale, or a slow rescue
+// with a matrix that has served kAgedSteps steps: docs/lines.md)
 // to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
 // is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration
 // starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0 ~ ddq(t_0 + (alpha_m - alpha_f) h), which

@@ -106,13 +106,15 @@ TEST_CASE("lumped lines: a fast rigid change after a long reuse of the Newton ma
       if (static_cast<double>(k) * kStep < kLoadAt) reusedMatrices += reused.matrices[k];
     CHECK(reusedMatrices < 20);
     // (trajectories) => alike to the solvers' tolerance over the whole run: HHT's Newton
-    // tolerance (1e-8 of a step's motion), CVODE's rtol 1e-6 on a motion of about 1 m
+    // tolerance (1e-8 of a step's motion: the same steps), CVODE's error control (rtol 1e-6 on a
+    // motion of about 1 m, its steps chosen anew by each run: ten times that)
+    const double tolerance = method == "hht" ? 1e-6 : 1e-5;
     double worst = 0.0;
     for (std::size_t k = 0; k < reused.x.size(); ++k)
       worst = std::max(worst, std::abs(reused.x[k] - fresh.x[k]));
     INFO("largest surge difference " << worst << " m");
-    CHECK(worst < 1e-6);
-    CHECK((reused.q - fresh.q).lpNorm<Eigen::Infinity>() < 1e-6);
+    CHECK(worst < tolerance);
+    CHECK((reused.q - fresh.q).lpNorm<Eigen::Infinity>() < tolerance);
     CHECK((reused.v - fresh.v).lpNorm<Eigen::Infinity>() < 1e-5);
     // (Newton, from a quarter second after the strike) => the run under test needs at most half
     // as many iterations again as the reference per step; HHT's steps stay below the seven

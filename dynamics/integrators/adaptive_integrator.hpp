@@ -39,6 +39,10 @@ class AdaptiveIntegrator : public Integrator {
   /// system with a Jacobian pattern (lumped lines), which otherwise gets the chart Newton system
   /// (chart_newton_system.hpp); before the first step (comparisons in tests and benches)
   void useDenseNewton(bool on) { denseNewton_ = on; }
+  /// (steps) => with the chart Newton system, a fresh Jacobian at least every that many steps
+  /// (CVODE; default 1000, docs/integrators.md); 1: at every step, the reuse's tests' reference.
+  /// Before the first step
+  void setLinesJacobianAge(long steps) { linesJacobianAge_ = steps; }
 
   /// Which part of dy/dt a right-hand side returns (IMEX splits kinematics from dynamics).
   enum class Part { All, Kinematic, Dynamic };
@@ -93,6 +97,7 @@ class AdaptiveIntegrator : public Integrator {
   SUNLinearSolver LS_ = nullptr;
   void* mem_ = nullptr;
   std::string error_;
+  long linesJacobianAge_ = 1000;  // steps between coloured Jacobians with lumped lines (CVODE)
 
  private:
   ChartState chart_;

@@ -6,7 +6,6 @@
 namespace yardsim::dynamics {
 
 namespace {
-constexpr long kLinesJacobianAge = 1000;  // steps between coloured Jacobians with lumped lines
 int rhs(double t, N_Vector y, N_Vector ydot, void* self) {
   return static_cast<AdaptiveIntegrator*>(self)->rightHandSide(t, y, ydot, AdaptiveIntegrator::Part::All);
 }
@@ -56,9 +55,10 @@ void Cvode::init(double t, int nroots) {
       CVodeSetLinSysFn(mem_, linSys);
       // (lumped lines: their blocks, and their end nodes' couplings to the bodies, are
       // re-evaluated in closed form at every setup, so only the rest of the rigid dofs' columns
-      // age) => a coloured Jacobian after a failed Newton solve or every kLinesJacobianAge
-      // steps, instead of CVODE's 51 (docs/performance.md, "The slope in nodes, third pass")
-      CVodeSetJacEvalFrequency(mem_, kLinesJacobianAge);
+      // age) => a coloured Jacobian after a failed Newton solve or every linesJacobianAge_
+      // (1000) steps, instead of CVODE's 51 (docs/performance.md, "The slope in nodes, third
+      // pass")
+      CVodeSetJacEvalFrequency(mem_, linesJacobianAge_);
     }
     if (spec_.maxOrder > 0) CVodeSetMaxOrd(mem_, spec_.maxOrder);
     if (spec_.maxStep > 0) CVodeSetMaxStep(mem_, spec_.maxStep);

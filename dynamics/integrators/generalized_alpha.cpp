@@ -174,6 +174,7 @@ void GeneralizedAlpha::jacobian(AccelerationSource& system, double t, const Eige
   }
   fresh_ = true;
   stale_ = false;
+  matrixSteps_ = 0;
   factorise(h);
 }
 
@@ -286,7 +287,7 @@ bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen
   fresh_ = false;
   chartBias(v);
   // (iteration matrix) => refreshed when stale, refactorised when h changed
-  if (stale_) {
+  if (stale_ || refreshEveryStep_) {
     ddq_ = ddqOld_;
     update(q, v, h);
     jacobian(system, t, q, h);
@@ -294,13 +295,21 @@ bool GeneralizedAlpha::attempt(AccelerationSource& system, double t, const Eigen
     factorise(h);
   }
   lambdaStart_ = lambda_;
+  const long iterations = stats_.newton_its;
   if (solve(system, t, q, v, h, true)) return true;
   ++stats_.err_fails;
   // (line blocks: the first correction from the predictor crossed a segment's slack/taut corner
   // and the next one came back; the blocks are current, a fresh matrix from the predictor would
-  // repeat it) => Newton continued from the last iterate with the current matrix
+  // repeat it) => Newton continued from the last iterate with the current matrix. When the two
+  // solves together were as slow as a stale matrix's and the matrix has served kAgedSteps steps,
+  // its rigid columns aged past a fast change of the rigid forces (a stop struck; a corner
+  // crossed just after a fresh matrix is the lines') => a fresh matrix for the next step
   if (lineBlocks() && ddq_.allFinite()) {
-    if (solve(system, t, q, v, h, false)) return true;
+    if (solve(system, t, q, v, h, false)) {
+      if (stats_.newton_its - iterations >= maxNewton_ - 1 && matrixSteps_ >= kAgedSteps)
+        stale_ = true;
+      return true;
+    }
     ++stats_.err_fails;
   }
   // (failed with an old matrix, no line blocks) => once more with a fresh one at the predictor
@@ -386,6 +395,7 @@ void GeneralizedAlpha::advance(AccelerationSource& system, double& t, Eigen::Vec
   aAlg_ = aNew_;
   t += h;
   ++stats_.steps;
+  ++matrixSteps_;
   system.afterStep(t, q, v);
 }
 

@@ -20,7 +20,8 @@
 // bed, at every iterate when its bordered band factorisation makes that cheap: a semi-smooth
 // Newton on those rows; the other entries stay as formed. With such blocks a failed solve is
 // first continued from its last iterate with the current matrix, the fresh matrix at the
-// predictor is skipped, and only a solve slower still marks the matrix stale: docs/lines.md)
+// predictor is skipped, and only a solve slower still marks the matrix stale, or a slow rescue
+// with a matrix that has served kAgedSteps steps: docs/lines.md)
 // to h/16; a sixteenth that still has no solution (a force that jumps: a damped rope going taut)
 // is crossed by one RK4 sub-step, and the method restarts after it. The algorithmic acceleration
 // starts at a_0 = ddq_0 + (alpha_m - alpha_f) h dddq_0 ~ ddq(t_0 + (alpha_m - alpha_f) h), which
@@ -60,6 +61,9 @@ class GeneralizedAlpha final : public Integrator {
   const GeneralizedAlphaParameters& parameters() const { return p_; }
   /// Lagrange multipliers of the last step (size rows of the loops).
   const Eigen::VectorXd& multipliers() const { return lambda_; }
+  /// (on) => a fresh iteration matrix at the start of every step instead of reusing it until
+  /// Newton slows: the reference of the reuse's tests (off by default)
+  void refreshEveryStep(bool on) { refreshEveryStep_ = on; }
 
  private:
   void resize(int nc);
@@ -107,7 +111,11 @@ class GeneralizedAlpha final : public Integrator {
   double newtonTol_;
   int maxNewton_;
   Rk4 explicitStep_;  // crosses a force jump where Newton has no solution
-  bool started_ = false, fresh_ = false, stale_ = true;
+  bool started_ = false, fresh_ = false, stale_ = true, refreshEveryStep_ = false;
+  // steps taken with the current iteration matrix; with line blocks a slow rescued solve
+  // refreshes a matrix older than kAgedSteps (attempt())
+  static constexpr long kAgedSteps = 20;
+  long matrixSteps_ = 0;
   int nc_ = -1;
   double hFactor_ = 0.0, tLast_ = 0.0;
   Eigen::VectorXd bias_, aAlg_, ddq_, ddqOld_, aNew_, delta_, qNew_, vNew_, f_, fp_, r_, dx_,

@@ -167,6 +167,12 @@ double LumpedLineProvider::fairleadTension(const Stage& s) const {
   return evaluated(s, temporary).f.col(line_->properties().segments).norm();
 }
 
+double LumpedLineProvider::horizontalTension(const Stage& s) const {
+  std::unique_ptr<ProviderScratch> temporary;
+  const Vector3 f = evaluated(s, temporary).f.col(line_->properties().segments);
+  return std::hypot(f.x(), f.y());
+}
+
 double LumpedLineProvider::anchorTension(const Stage& s) const {
   std::unique_ptr<ProviderScratch> temporary;
   return evaluated(s, temporary).tension[0];

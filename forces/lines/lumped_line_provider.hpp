@@ -80,6 +80,9 @@ class LumpedLineProvider final : public ForceProvider {
   // weight, drag and bed), and the tension of the first segment at the anchor, N
   double fairleadTension(const Stage& s) const;
   double anchorTension(const Stage& s) const;
+  // (stage) => the horizontal part of the line's force on the fairlead, |f_N| in the world's
+  // horizontal plane (x, y), N: the catenary's HF
+  double horizontalTension(const Stage& s) const;
   // (stage) => unstretched length of the nodes on the sea bed (0 without one), m: the nodes
   // within one diameter of it (onBed)
   double laidLength(const Stage& s) const;

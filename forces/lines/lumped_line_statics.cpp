@@ -16,10 +16,12 @@ using dynamics::Vector3;
 
 namespace {
 
+constexpr double kStart = -std::numeric_limits<double>::infinity();  // t: the start's length
+
 // (line, r) => the conservative forces on the inner nodes at the start's segment length (a
 // winch's before its first set-point), stacked (3 (N - 1))
 Eigen::VectorXd residual(const LumpedLine& line, const Eigen::Matrix3Xd& r, Eigen::Matrix3Xd& f) {
-  line.conservativeForces(r, -std::numeric_limits<double>::infinity(), f);
+  line.conservativeForces(r, kStart, f);
   const int inner = line.nodes() - 2;
   Eigen::VectorXd out(3 * inner);
   for (int i = 0; i < inner; ++i) out.segment<3>(3 * i) = f.col(i + 1);
@@ -83,10 +85,13 @@ bool lumpedLineStatics(const LumpedLine& line, Eigen::Matrix3Xd& r) {
   const double tol = 1e-9 * std::abs(line.weightPerLength()) * p.length;
   Eigen::Matrix3Xd f(3, line.nodes()), trial(3, line.nodes());
   Eigen::VectorXd res = residual(line, r, f);
-  for (int it = 0; it < 100; ++it) {
+  double energy = line.potentialEnergy(r, kStart);
+  for (int it = 0; it < 500; ++it) {
     if (res.lpNorm<Eigen::Infinity>() <= tol) return true;
-    // (K dx = residual) => a step that lowers the residual, halved up to 30 times
-    // (K, a band matrix) => factorised in O(nodes) (dynamics/integrators/bordered_band_lu.hpp)
+    // (K dx = residual) => a step that lowers the residual or the energy (Armijo), halved up to
+    // 30 times: the residual alone stalls where a node rests on the bed's kink under a stiff
+    // line's bending; (K, a band matrix) => factorised in O(nodes)
+    // (dynamics/integrators/bordered_band_lu.hpp)
     Eigen::SparseMatrix<double> K = stiffness(line, r);
     const double shift = 1e-9 * K.diagonal().cwiseAbs().maxCoeff() + 1e-12;
     for (int i = 0; i < K.rows(); ++i) K.coeffRef(i, i) += shift;
@@ -96,18 +101,21 @@ bool lumpedLineStatics(const LumpedLine& line, Eigen::Matrix3Xd& r) {
     lu.solve(res, dx);
     if (!dx.allFinite()) return false;
     double scale = 1.0;
-    const double before = res.norm();
-    for (int k = 0; k < 30; ++k, scale *= 0.5) {
+    const double before = res.norm(), slope = res.dot(dx);  // slope: -dV/ds along dx at s = 0
+    bool accepted = false;
+    for (int k = 0; k < 30 && !accepted; ++k, scale *= 0.5) {
       trial = r;
       for (int i = 0; i < inner; ++i) trial.col(i + 1) += scale * dx.segment<3>(3 * i);
       const Eigen::VectorXd next = residual(line, trial, f);
-      if (next.norm() < before) {
+      const double e = line.potentialEnergy(trial, kStart);
+      accepted = next.norm() < before || (slope > 0.0 && e <= energy - 1e-4 * scale * slope);
+      if (accepted) {
         r = trial;
         res = next;
-        break;
+        energy = e;
       }
     }
-    if (scale < 1e-9) return false;
+    if (!accepted) return false;
   }
   return res.lpNorm<Eigen::Infinity>() <= tol;
 }

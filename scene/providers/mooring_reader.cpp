@@ -3,8 +3,8 @@
 // their channels: fairlead and anchor tensions and angles, the horizontal tension, the touchdown
 // point and the laid length; or, with `model: lumped`, lumped-mass lines
 // (forces/lines/lumped_line_provider.hpp) whose inner nodes are bodies of the system (channels:
-// fairlead and anchor tensions and angles, laid length, touchdown point; the nodes' positions are
-// their bodies' channels).
+// fairlead, anchor and horizontal tensions, fairlead and anchor angles, laid length, touchdown
+// point; the nodes' positions are their bodies' channels).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -79,6 +79,7 @@ std::vector<ProviderOutput> lumpedOutputs(const forces::LumpedLineProvider& l) {
   return {
       {"fairlead_tension", "N", [&l](const Stage& s) { return l.fairleadTension(s); }},
       {"anchor_tension", "N", [&l](const Stage& s) { return l.anchorTension(s); }},
+      {"horizontal_tension", "N", [&l](const Stage& s) { return l.horizontalTension(s); }},
       {"laid_length", "m", [&l](const Stage& s) { return l.laidLength(s); }},
       // the catenary's names, units and conventions (mooringOutputs above); the touchdown point
       // is the last node of the run from the anchor on the bed (docs/lines.md)

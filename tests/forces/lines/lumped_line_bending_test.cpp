@@ -3,8 +3,9 @@
 // central differences; a taut line pinned at both ends rings at the tensioned beam's first
 // frequency f1 = (1 / 2L) sqrt(T / m') sqrt(1 + pi^2 EI / (T L^2)) within 1 % at 20 segments,
 // converging at second order; a line spanned between pinned ends sags under its own weight as the
-// beam's 5 w L^4 / (384 EI); RK4 conserves its energy with a drift falling at fourth order; a line
-// without bending (EI = 0) keeps the 3-block Jacobian layout.
+// beam's 5 w L^4 / (384 EI); a stiff chain lying on the sea bed starts at its own rest, a minimum
+// of its energy; RK4 conserves its energy with a drift falling at fourth order; a line without
+// bending (EI = 0) keeps the 3-block Jacobian layout.
 #include "forces/lines/lumped_line_bending.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,6 +19,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "forces/lines/lumped_line.hpp"
+#include "forces/lines/lumped_line_provider.hpp"
 #include "forces/lines/lumped_line_statics.hpp"
 
 using namespace yardsim;
@@ -223,6 +225,50 @@ TEST_CASE("bending: a line spanned between pinned ends sags as a beam under its 
     if (n == 20) CHECK(err < 0.01);
     CHECK(err < previous / 3.0);
     previous = err;
+  }
+}
+
+TEST_CASE("bending: a stiff chain lying on the sea bed starts at its own rest") {
+  // (the moored buoy's chain, tests/mechanics/mechanics_fixture.hpp: 314 m of 8 segments from an
+  // anchor on the bed to a fairlead 290 m away and 39 m up, about a third laid, EI from a wire's to
+  // a steel pipe's) => lumpedLineNodes finds the chain's own equilibrium from the catenary's points
+  // (until 2026-11-29 its Newton stalled on the bed's kink from EI ~ 1e8 N m^2 and the line
+  // started from the catenary's points, falling: HHT then failed dozens of Newton solves)
+  for (const double ei : {1e8, 1e10}) {
+    INFO("EI " << ei);
+    LumpedLineProperties p;
+    p.length = 314.0;
+    p.segments = 8;
+    p.diameter = 0.216;
+    p.massPerLength = 282.21;
+    p.ea = 1.2e9;
+    p.ei = ei;
+    p.seabed = true;
+    p.bedStiffness = 3e6;
+    p.bedDamping = 3e5;
+    const LumpedLine line(p, "chain");
+    const Vector3 pA(0.0, 0.0, 0.0), pB(290.0, 0.0, 39.0);
+    const std::vector<LumpedNodeBody> nodes = lumpedLineNodes(line, "chain", pA, pB);
+    Eigen::Matrix3Xd r(3, p.segments + 1), f(3, p.segments + 1);
+    r.col(0) = pA;
+    r.col(p.segments) = pB;
+    for (int i = 1; i < p.segments; ++i) r.col(i) = nodes[static_cast<std::size_t>(i - 1)].p_W;
+    // (at rest) => no node force beyond the statics' tolerance, 1e-9 of the line's weight
+    const double weight = line.weightPerLength() * p.length;
+    line.conservativeForces(r, 0.0, f);
+    CHECK(f.middleCols(1, p.segments - 1).cwiseAbs().maxCoeff() < 1e-9 * weight);
+    // (a rest a line can keep) => a minimum: moving any inner node 1 cm any way does not lower
+    // the energy (beyond its rounding)
+    const double v0 = line.potentialEnergy(r, 0.0);
+    for (int i = 1; i < p.segments; ++i)
+      for (int k = 0; k < 3; ++k)
+        for (const double d : {-0.01, 0.01}) {
+          Eigen::Matrix3Xd moved = r;
+          moved(k, i) += d;
+          CHECK(line.potentialEnergy(moved, 0.0) > v0 - 1e-9 * std::abs(v0));
+        }
+    // (some of it lies on the bed, within a diameter of it) => the laid part is there
+    CHECK(r(2, 1) < p.diameter);
   }
 }
 

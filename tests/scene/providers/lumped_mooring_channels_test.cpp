@@ -1,8 +1,8 @@
 // The channels of a lumped mooring line (`mooring:` with `model: lumped`,
 // scene/providers/mooring_reader.cpp) that a catenary line also has: its fairlead and anchor
-// angles and its touchdown point, against the quasi-static elastic catenary of the same line
-// (forces/lines/catenary.hpp) at rest: a chain touching down on the bed, and one fully suspended
-// above it that lifts its anchor, each in a vertical plane at 30 degrees to x.
+// angles, its horizontal tension and its touchdown point, against the quasi-static elastic catenary
+// of the same line (forces/lines/catenary.hpp) at rest: a chain touching down on the bed, and one
+// fully suspended above it that lifts its anchor, each in a vertical plane at 30 degrees to x.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -62,6 +62,19 @@ double last(const testing::CsvFile& csv, const std::string& name) {
   return csv.rows.back()[k];
 }
 
+// (csv, the catenary's solution) => the horizontal tension is the catenary's HF within the
+// tolerance the fairlead tension's (1.5 % at 20 segments: lumped_line_provider_test.cpp) and
+// angle's (1 %, above) imply for H = T cos(phi): |dH/H| <= |dT/T| + tan(phi) phi |dphi/phi|; and it
+// is the horizontal part of the fairlead force, |f_N| cos(its angle below the horizontal).
+// Returns its relative error
+double checkHorizontalTension(const testing::CsvFile& csv, const forces::CatenarySolution& c) {
+  const double h = last(csv, "line.horizontal_tension[N]"), phi = std::atan2(c.vf, c.hf);
+  CHECK(h == Approx(c.hf).epsilon(0.015 + std::tan(phi) * phi * 0.01));
+  const double t = last(csv, "line.fairlead_tension[N]");
+  CHECK(h == Approx(t * std::cos(last(csv, "line.fairlead_angle[rad]"))).epsilon(1e-12));
+  return std::abs(h / c.hf - 1.0);
+}
+
 }  // namespace
 
 TEST_CASE("lumped mooring: a chain touching down has the catenary's angles and touchdown") {
@@ -69,6 +82,7 @@ TEST_CASE("lumped mooring: a chain touching down has the catenary's angles and t
   const auto c = forces::solveCatenary(chain(314.0), 300.0, 39.0);
   REQUIRE(c.status == forces::CatenaryStatus::Converged);
   REQUIRE(c.profile == forces::CatenaryProfile::TouchingDown);
+  double error20 = 0.0;
   for (int n : {20, 40}) {
     INFO(n << " segments");
     testing::SceneDir dir;
@@ -89,6 +103,16 @@ TEST_CASE("lumped mooring: a chain touching down has the catenary's angles and t
     CHECK(d - c.touchdownX > rise - l - 0.5);
     CHECK(last(csv, "line.touchdown_x[m]") == Approx(d * std::cos(kAngle)).epsilon(1e-6));
     CHECK(last(csv, "line.touchdown_y[m]") == Approx(d * std::sin(kAngle)).epsilon(1e-6));
+    // (H) => converging at second order as the segments halve (as the fairlead tension does)
+    const double err = checkHorizontalTension(csv, c);
+    INFO("horizontal tension's error " << err);
+    if (n == 20) error20 = err;
+    if (n == 40) CHECK(err < error20 / 4.0);
+    // (a frictionless bed and the net weight push vertically, the line is at rest without drag)
+    // => every segment carries the same horizontal force: the first one, lying flat on the bed,
+    // carries its whole tension horizontally
+    CHECK(last(csv, "line.horizontal_tension[N]") ==
+          Approx(last(csv, "line.anchor_tension[N]")).epsilon(1e-6));
   }
 }
 
@@ -103,6 +127,7 @@ TEST_CASE("lumped mooring: a suspended chain has the catenary's angles and no to
   REQUIRE(csv.rows.size() >= 2);
   CHECK(last(csv, "line.fairlead_angle[rad]") == Approx(std::atan2(c.vf, c.hf)).epsilon(0.01));
   CHECK(last(csv, "line.anchor_angle[rad]") == Approx(std::atan2(c.va, c.ha)).epsilon(0.01));
+  checkHorizontalTension(csv, c);
   // (nothing on the bed past the anchor) => the touchdown is the anchor, as the catenary's
   CHECK(c.touchdownX == 0.0);
   CHECK(last(csv, "line.touchdown_distance[m]") == 0.0);

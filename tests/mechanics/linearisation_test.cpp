@@ -12,9 +12,7 @@
 #include "mechanics/linearisation.hpp"
 #include "mechanics/stiffness_estimate.hpp"
 #include "mechanics_fixture.hpp"
-#include "run/runner.hpp"
-#include "scene/assembler.hpp"
-#include "support/csv_file.hpp"
+#include "support/scene_run.hpp"
 
 using namespace yardsim;
 
@@ -42,14 +40,6 @@ double surgeStiffness(double x) {
 double surgeForce(double x) {
   return -forces::solveCatenary(kChain, 400.0 + x, 100.0).hf +
          forces::solveCatenary(kChain, 400.0 - x, 100.0).hf;
-}
-
-// (scene text, until) => its timeseries.csv after a run
-testing::CsvFile simulate(const testing::SceneDir& dir, const std::string& text, double until) {
-  auto scene = scene::loadSceneOrThrow(dir.write("s.yaml", text));
-  auto root = scene::assemble(*scene);
-  run::runScene(*scene, *root, {dir.path() / "out", until, {}, {}, 0.1});
-  return testing::CsvFile((dir.path() / "out" / "timeseries.csv").string());
 }
 
 }  // namespace
@@ -107,7 +97,7 @@ TEST_CASE("the implicit methods with the linearised Newton matrices follow an RK
   // (released 8 m off its equilibrium) => the surge at 0.5 s intervals over 20 s
   const double until = 20.0;
   testing::SceneDir ref;
-  const auto expected = simulate(ref, mooredBuoy("{method: rk4, dt: 0.005}", 8.0), until);
+  const auto expected = testing::simulateScene(ref, mooredBuoy("{method: rk4, dt: 0.005}", 8.0), until);
   const int q = expected.column("surge.q[m]");
   REQUIRE(q > 0);
   double swing = 0.0;
@@ -117,7 +107,7 @@ TEST_CASE("the implicit methods with the linearised Newton matrices follow an RK
                                  "{method: cvode_bdf, dt: 0.1, rtol: 1.0e-8, atol: 1.0e-9}",
                                  "{method: arkode_dirk, dt: 0.1, rtol: 1.0e-8, atol: 1.0e-9}"}) {
     testing::SceneDir dir;
-    const auto got = simulate(dir, mooredBuoy(integrator, 8.0), until);
+    const auto got = testing::simulateScene(dir, mooredBuoy(integrator, 8.0), until);
     REQUIRE(got.rows.size() == expected.rows.size());
     double worst = 0.0;
     for (std::size_t k = 0; k < got.rows.size(); ++k)

@@ -36,6 +36,31 @@ std::size_t stageAllocations(testing::StagedSystem& s, Eigen::VectorXd q, const 
   return n;
 }
 
+// (scene, method) => its staged system and integrator (dt 0.01 s) after 5 steps of set-up from
+// the scene's q0, v0 (a multistep start, CVODE's and ARKODE's first order and step size)
+struct SetUpRun {
+  testing::StagedSystem s;
+  dynamics::IntegratorSpec spec;
+  std::unique_ptr<dynamics::Integrator> integrator;
+  Eigen::VectorXd q, v;
+  double t = 0.0;
+  SetUpRun(const std::string& scene, std::string_view method)
+      : s(testing::buildFromScene(scene)),
+        spec(specOf(method)),
+        integrator(dynamics::makeIntegrator(spec, s.model())),
+        q(s.system.description().q0),
+        v(s.system.description().v0) {
+    for (int k = 0; k < 5; ++k) step();
+  }
+  static dynamics::IntegratorSpec specOf(std::string_view method) {
+    dynamics::IntegratorSpec spec;
+    spec.method = std::string(method);
+    spec.dt = 0.01;
+    return spec;
+  }
+  void step() { integrator->step(s.data.kernel, t, q, v, spec.dt); }
+};
+
 }  // namespace
 
 TEST_CASE("a stage, the energy and the power allocate nothing once the system is set up") {
@@ -87,19 +112,14 @@ TEST_CASE("every integrator steps a buoy moored by lumped lines without allocati
   // SUNDIALS included
   for (const dynamics::MethodInfo& method : dynamics::integratorMethods()) {
     INFO(method.name);
-    testing::StagedSystem s(testing::buildFromScene(testing::mooredBuoyScene()));
-    REQUIRE(s.data.kernel.jacobianPattern() != nullptr);
-    dynamics::IntegratorSpec spec;
-    spec.method = method.name;
-    spec.dt = 0.01;
-    const auto integrator = dynamics::makeIntegrator(spec, s.model());
-    Eigen::VectorXd q = s.system.description().q0, v = s.system.description().v0;
-    double t = 0.0;
-    for (int k = 0; k < 5; ++k) integrator->step(s.data.kernel, t, q, v, spec.dt);
+    SetUpRun run(testing::mooredBuoyScene(), method.name);
+    REQUIRE(run.s.data.kernel.jacobianPattern() != nullptr);
+    const auto& integrator = run.integrator;
+    const Eigen::VectorXd& q = run.q;
     const long jacobians = integrator->stats().jac_evals;
     const long factorisations = integrator->stats().factorisations;
     const std::size_t before = testing::allocationCount();
-    for (int k = 0; k < 10; ++k) integrator->step(s.data.kernel, t, q, v, spec.dt);
+    for (int k = 0; k < 10; ++k) run.step();
     const std::size_t blocks = testing::allocationCount() - before;
     INFO(blocks << " heap blocks in 10 steps, " << integrator->stats().jac_evals - jacobians
                 << " Jacobians among them");
@@ -124,23 +144,16 @@ TEST_CASE("every integrator steps a buoy moored by catenary lines without alloca
   // those up to CVODE's and ARKODE's next Jacobian
   for (const dynamics::MethodInfo& method : dynamics::integratorMethods()) {
     INFO(method.name);
-    testing::StagedSystem s(
-        testing::buildFromScene(testing::catenaryBuoyScene("{method: rk4, dt: 0.01}", 8.0)));
-    REQUIRE(s.data.kernel.linearises());
-    dynamics::IntegratorSpec spec;
-    spec.method = method.name;
-    spec.dt = 0.01;
-    const auto integrator = dynamics::makeIntegrator(spec, s.model());
-    Eigen::VectorXd q = s.system.description().q0, v = s.system.description().v0;
-    double t = 0.0;
-    for (int k = 0; k < 5; ++k) integrator->step(s.data.kernel, t, q, v, spec.dt);
+    SetUpRun run(testing::catenaryBuoyScene("{method: rk4, dt: 0.01}", 8.0), method.name);
+    REQUIRE(run.s.data.kernel.linearises());
+    const auto& integrator = run.integrator;
     const long jacobians = integrator->stats().jac_evals;
     const std::size_t before = testing::allocationCount();
     int steps = 0;
     const bool sundialsNewton = method.adaptive && method.implicit;
     while (steps < 10 ||
            (sundialsNewton && integrator->stats().jac_evals == jacobians && steps < 2000)) {
-      integrator->step(s.data.kernel, t, q, v, spec.dt);
+      run.step();
       ++steps;
     }
     const std::size_t blocks = testing::allocationCount() - before;
@@ -150,6 +163,6 @@ TEST_CASE("every integrator steps a buoy moored by catenary lines without alloca
     // (CVODE's and ARKODE's implicit methods) => a Jacobian was formed among them through
     // AdaptiveIntegrator::denseJacobian (HHT and generalized-alpha keep their first one here)
     if (sundialsNewton) CHECK(integrator->stats().jac_evals > jacobians);
-    CHECK(q[0] < 8.0 - 1e-3);  // (the buoy moved back toward its equilibrium)
+    CHECK(run.q[0] < 8.0 - 1e-3);  // (the buoy moved back toward its equilibrium)
   }
 }

@@ -97,7 +97,8 @@ TEST_CASE("the implicit methods with the linearised Newton matrices follow an RK
   // (released 8 m off its equilibrium) => the surge at 0.5 s intervals over 20 s
   const double until = 20.0;
   testing::SceneDir ref;
-  const auto expected = testing::simulateScene(ref, mooredBuoy("{method: rk4, dt: 0.005}", 8.0), until);
+  const auto expected =
+      testing::simulateScene(ref, mooredBuoy("{method: rk4, dt: 0.005}", 8.0), until);
   const int q = expected.column("surge.q[m]");
   REQUIRE(q > 0);
   double swing = 0.0;

@@ -69,19 +69,30 @@ std::vector<int> waterlineLoop(const PanelMesh& wetted) {
 
 namespace {
 
-// (settings, mean waterline radius) => ring distances d_0 = 0 < d_1 < ... = R - r_mean
-std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean) {
+// (settings, mean and least waterline radius) => ring distances d_0 = 0 < d_1 < ... = R - r_mean;
+// the beach spacing from where the ray of the least radius enters the zone (every ray has)
+std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean, double rMin) {
   const double span = s.truncationRadius - rMean;
+  const double zone = (s.truncationRadius - s.dampingWidth - rMin) * span / (s.truncationRadius - rMin);
+  const double beach = s.beachSpacing > 0.0 ? s.beachSpacing : s.maxSpacing;
   std::vector<double> d{0.0};
   double h = s.firstSpacing;
   while (d.back() + 0.5 * h < span) {
     d.push_back(d.back() + h);
-    h = std::min(h * s.growth, s.maxSpacing);
+    h = std::min(h * s.growth, d.back() < zone ? s.maxSpacing : beach);
   }
   // (rings) => stretched so that the last one lands on the truncation radius
   const double scale = span / d.back();
   for (double& x : d) x *= scale;
   return d;
+}
+
+// (edge length, limit) => the fewest equal parts 2^j with length / 2^j <= limit (1: no limit)
+int splitsFor(double length, double limit) {
+  int n = 1;
+  if (limit > 0.0)
+    while (length > n * limit && n < (1 << 20)) n *= 2;
+  return n;
 }
 
 }  // namespace
@@ -138,33 +149,78 @@ FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSetti
                            std::to_string(out.waterlineRadius) + " m, truncation radius " +
                            std::to_string(s.truncationRadius) + " m)");
   }
-  // (rings) => vertices: ring 0 on the waterline, ring m at r_k + t_m (R - r_k) along theta_k
-  const std::vector<double> d = ringDistances(s, rMean);
+  // (rings) => ray points: ring 0 on the waterline, ring m at r_k + t_m (R - r_k) along theta_k
+  const std::vector<double> d = ringDistances(s, rMean, *std::min_element(r.begin(), r.end()));
   const double span = s.truncationRadius - rMean;
-  for (std::size_t m = 0; m < d.size(); ++m) {
+  const auto rings = static_cast<int>(d.size());
+  std::vector<Vector3> ray(d.size() * static_cast<std::size_t>(nw));
+  for (int m = 0; m < rings; ++m) {
     for (int k = 0; k < nw; ++k) {
       const auto sk = static_cast<std::size_t>(k);
-      const double rr = r[sk] + d[m] / span * (s.truncationRadius - r[sk]);
-      out.mesh.vertices.push_back(out.centre +
-                                  Vector3(rr * std::cos(theta[sk]), rr * std::sin(theta[sk]), 0.0));
-      if (m == 0) out.mesh.vertices.back() = wetted.vertices[static_cast<std::size_t>(loop[sk])];
+      const double rr = r[sk] + d[static_cast<std::size_t>(m)] / span * (s.truncationRadius - r[sk]);
+      ray[static_cast<std::size_t>(m * nw + k)] =
+          m == 0 ? wetted.vertices[static_cast<std::size_t>(loop[sk])]
+                 : Vector3(out.centre + Vector3(rr * std::cos(theta[sk]), rr * std::sin(theta[sk]), 0.0));
     }
   }
-  // (rings m, m + 1) => quads with normal -z: (m,k) (m,k+1) (m+1,k+1) (m+1,k) turns clockwise
-  // seen from above (k counter-clockwise), i.e. counter-clockwise seen from the fluid below
+  const auto at = [&](int m, int k) -> const Vector3& {
+    return ray[static_cast<std::size_t>(m * nw + (k % nw))];
+  };
+  // (rows m between rings m, m + 1) => splits n(m, k): edges along the rings <= the row's limit
   const double zoneStart = s.truncationRadius - s.dampingWidth;
-  for (std::size_t m = 0; m + 1 < d.size(); ++m) {
+  const double beach = s.beachSpacing > 0.0 ? s.beachSpacing : s.azimuthSpacing;
+  std::vector<int> split(static_cast<std::size_t>((rings - 1) * nw), 1);
+  if (s.azimuthSpacing > 0.0) {
+    for (int m = 0; m + 1 < rings; ++m) {
+      for (int k = 0; k < nw; ++k) {
+        // (the row's corners) => in the zone when none lies inside its inner edge
+        bool inZone = true;
+        for (const Vector3& v : {at(m, k), at(m, k + 1)})
+          inZone = inZone && std::hypot(v.x() - out.centre.x(), v.y() - out.centre.y()) >= zoneStart;
+        const double edge = std::max((at(m, k + 1) - at(m, k)).norm(),
+                                     (at(m + 1, k + 1) - at(m + 1, k)).norm());
+        split[static_cast<std::size_t>(m * nw + k)] =
+            splitsFor(edge, inZone ? beach : s.azimuthSpacing);
+      }
+    }
+  }
+  // (splits) => vertices: ring m, ray k, then the points towards ray k + 1 at the finer of the
+  // two rows' splits (a ray's point first: unsplit, the rings' vertices in ray order)
+  std::vector<int> level(d.size() * static_cast<std::size_t>(nw), 1), first(level.size(), 0);
+  for (int m = 0; m < rings; ++m) {
     for (int k = 0; k < nw; ++k) {
-      const int a = static_cast<int>(m) * nw + k, b = static_cast<int>(m + 1) * nw + k;
-      const int a1 = static_cast<int>(m) * nw + (k + 1) % nw,
-                b1 = static_cast<int>(m + 1) * nw + (k + 1) % nw;
-      out.mesh.addQuad(a, a1, b1, b);
-      Vector3 c = Vector3::Zero();
-      for (const int v : {a, b, b1, a1}) c += out.mesh.vertices[static_cast<std::size_t>(v)] / 4.0;
-      const double rc = std::hypot(c.x() - out.centre.x(), c.y() - out.centre.y());
-      const double x =
-          s.dampingWidth > 0.0 ? std::max(0.0, (rc - zoneStart) / s.dampingWidth) : 0.0;
-      out.damping.push_back(s.dampingStrength * x * x + s.surfaceDamping);
+      const auto rowSplit = [&](int row) { return split[static_cast<std::size_t>(row * nw + k)]; };
+      const int n = std::max(m > 0 ? rowSplit(m - 1) : 1, m + 1 < rings ? rowSplit(m) : 1);
+      const auto ik = static_cast<std::size_t>(m * nw + k);
+      level[ik] = n;
+      first[ik] = static_cast<int>(out.mesh.vertices.size());
+      for (int j = 0; j < n; ++j)
+        out.mesh.vertices.push_back(at(m, k) + (at(m, k + 1) - at(m, k)) * (double(j) / n));
+    }
+  }
+  // (ring m, ray k, part j of n) => the vertex index (j = n: ray k + 1's point)
+  const auto vertex = [&](int m, int k, int j, int n) {
+    if (j == n) return first[static_cast<std::size_t>(m * nw + (k + 1) % nw)];
+    const auto ik = static_cast<std::size_t>(m * nw + k);
+    return first[ik] + j * (level[ik] / n);
+  };
+  // (rows m, parts j) => quads with normal -z: (m,j) (m,j+1) (m+1,j+1) (m+1,j) turns clockwise
+  // seen from above (k counter-clockwise), i.e. counter-clockwise seen from the fluid below
+  for (int m = 0; m + 1 < rings; ++m) {
+    for (int k = 0; k < nw; ++k) {
+      const int n = split[static_cast<std::size_t>(m * nw + k)];
+      for (int j = 0; j < n; ++j) {
+        const int a = vertex(m, k, j, n), a1 = vertex(m, k, j + 1, n);
+        const int b = vertex(m + 1, k, j, n), b1 = vertex(m + 1, k, j + 1, n);
+        out.mesh.addQuad(a, a1, b1, b);
+        Vector3 c = Vector3::Zero();
+        for (const int v : {a, b, b1, a1})
+          c += out.mesh.vertices[static_cast<std::size_t>(v)] / 4.0;
+        const double rc = std::hypot(c.x() - out.centre.x(), c.y() - out.centre.y());
+        const double x =
+            s.dampingWidth > 0.0 ? std::max(0.0, (rc - zoneStart) / s.dampingWidth) : 0.0;
+        out.damping.push_back(s.dampingStrength * x * x + s.surfaceDamping);
+      }
     }
   }
   return out;

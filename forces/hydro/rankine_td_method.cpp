@@ -21,7 +21,7 @@ namespace {
 const std::set<std::string> kSettings = {
     "truncation_radius", "first_spacing", "max_spacing", "growth", "longest_period",
     "damping_width", "damping_strength", "surface_damping", "cutoff", "band_start", "band_end",
-    "froude_krylov", "panel_step"};
+    "froude_krylov", "panel_step", "azimuth_spacing", "beach_spacing"};
 
 // (request, name, default; NaN: required) => the setting
 double setting(const HydrodynamicsRequest& q, const std::string& name, double fallback) {
@@ -63,12 +63,16 @@ ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
     fs.dampingStrength = setting(q, "damping_strength", 0.0);
   }
   fs.surfaceDamping = setting(q, "surface_damping", 0.0);
+  fs.azimuthSpacing = setting(q, "azimuth_spacing", 0.0);
+  fs.beachSpacing = setting(q, "beach_spacing", 0.0);
   if (!(fs.truncationRadius > 0 && fs.firstSpacing > 0 && fs.maxSpacing >= fs.firstSpacing &&
         fs.growth >= 1 && fs.dampingWidth >= 0 && fs.dampingWidth < fs.truncationRadius &&
-        fs.dampingStrength >= 0 && fs.surfaceDamping >= 0))
+        fs.dampingStrength >= 0 && fs.surfaceDamping >= 0 && fs.azimuthSpacing >= 0 &&
+        fs.beachSpacing >= 0))
     throw std::invalid_argument(
         "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= 1, "
-        "0 <= damping_width < truncation_radius, damping_strength >= 0, surface_damping >= 0");
+        "0 <= damping_width < truncation_radius, damping_strength >= 0, surface_damping >= 0, "
+        "azimuth_spacing >= 0, beach_spacing >= 0");
   s.solver.rho = q.water.density;
   s.solver.g = q.water.gravity;
   s.solver.depth = q.water.depth;

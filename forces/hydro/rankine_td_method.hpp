@@ -9,7 +9,10 @@
 //   default: the frequency the free-surface mesh resolves), band_start and band_end (rad/s, K's
 //   band limit; 0: none), froude_krylov (0: diffraction only, the default, since the body's
 //   hydrostatics integrates the incident pressure; 1: Froude-Krylov + diffraction), panel_step
-//   (s, the rankine_td method's own step; default: the request's dt).
+//   (s, the rankine_td method's own step; default: the request's dt), azimuth_spacing (m, the
+//   widest panel edge along a ring inside the damping zone's inner edge; 0, the default: the
+//   rays through the waterline vertices only), beach_spacing (m, ring width and azimuthal edge
+//   inside the damping zone; 0, the default: max_spacing and azimuth_spacing there too).
 // Units SI; the hull in the body frame, the mean pose the body's initial one.
 #include <memory>
 

@@ -266,6 +266,12 @@ std::string impulseResponseKey(const PanelMesh& hull_B, const dynamics::Transfor
     f.integer(-3);
     f.number(fs.surfaceDamping);
   }
+  // (a free surface refined in azimuth or with its own beach spacing) => another key
+  if (fs.azimuthSpacing > 0.0 || fs.beachSpacing > 0.0) {
+    f.integer(-4);
+    f.number(fs.azimuthSpacing);
+    f.number(fs.beachSpacing);
+  }
   f.integer(static_cast<std::int64_t>(s.headings.size()));
   for (const double b : s.headings) f.number(b);
   static const char* hex = "0123456789abcdef";

@@ -73,7 +73,17 @@ void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
   // (a, p) => R_b a + R_f p, then u = M^-1 rhs by the LU's back-substitution
   rhs.noalias() = fromBody_ * bodyNormal;
   rhs.noalias() += fromSurface_ * surfacePotential;
-  out = lu_->solve(rhs);
+  if (rhs.cols() != 1) {
+    out = lu_->solve(rhs);
+    return;
+  }
+  // (one column: a panel step) => P rhs, then the two triangles in place on that column: Eigen's
+  // vector substitutions work in the column itself, where its matrix solve packs blocks from the
+  // heap (a solve as PartialPivLU::solve does; the same to round-off)
+  auto u = out.col(0);
+  u = lu_->permutationP() * rhs.col(0);
+  lu_->matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(u);
+  lu_->matrixLU().triangularView<Eigen::Upper>().solveInPlace(u);
 }
 
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(

@@ -4,7 +4,7 @@
 #include <complex>
 #include <limits>
 
-#include <Eigen/Eigenvalues>
+#include "forces/hydro/blocked_hessenberg.hpp"
 
 namespace yardsim::forces::hydro {
 
@@ -15,8 +15,8 @@ SurfaceGrowth surfaceGrowth(const RankineTdModel& model, double dt) {
   // (phi = e_j on the free surface, hull at rest) => column j of L: phi -> phi_z = -phi_n
   const Eigen::MatrixXd u =
       pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf));
-  const Eigen::MatrixXd L = -u.bottomRows(nf);
-  const Eigen::VectorXcd lambda = Eigen::EigenSolver<Eigen::MatrixXd>(L, false).eigenvalues();
+  Eigen::MatrixXd L = -u.bottomRows(nf);
+  const Eigen::VectorXcd lambda = eigenvaluesByBlockedHessenberg(L);
   const double nu0 = model.settings().freeSurface.surfaceDamping;
   SurfaceGrowth out;
   out.panels = nf;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Eigenvalues>
 
 namespace yardsim::forces::hydro {
 
@@ -72,31 +71,142 @@ void reduceToHessenberg(Eigen::MatrixXd& A, int panel) {
   }
 }
 
-Eigen::VectorXcd eigenvaluesByBlockedHessenberg(Eigen::MatrixXd A) {
-  reduceToHessenberg(A);
-  const Eigen::Index n = A.rows();
-  const Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(n, n);  // (not used: computeU false)
-  Eigen::RealSchur<Eigen::MatrixXd> schur(n);
-  schur.computeFromHessenberg(A, Q, false);
-  if (schur.info() != Eigen::Success)
-    throw std::runtime_error("eigenvalues: the QR iteration did not converge");
-  // (the quasi-triangular T) => 1 x 1 blocks real eigenvalues, 2 x 2 blocks complex pairs
-  const Eigen::MatrixXd& S = schur.matrixT();
+namespace {
+
+// (upper Hessenberg H, overwritten) => its eigenvalues by the Francis double-shift QR iteration on
+// the active window only (the eigenvalues alone: rows and columns outside the window that a Schur
+// form would also update are left as they are), deflating at negligible subdiagonals; the
+// classic EISPACK hqr (Wilkinson and Reinsch, "Handbook for Automatic Computation II", II/14)
+Eigen::VectorXcd hessenbergEigenvalues(Eigen::MatrixXd& a) {
+  const Eigen::Index n = a.rows();
   Eigen::VectorXcd out(n);
-  for (Eigen::Index i = 0; i < n;) {
-    if (i + 1 < n && S(i + 1, i) != 0.0) {
-      const double p = 0.5 * (S(i, i) - S(i + 1, i + 1));
-      const double q = p * p + S(i + 1, i) * S(i, i + 1);  // < 0 for a standardised complex pair
-      const double re = S(i + 1, i + 1) + p, im = std::sqrt(std::abs(q));
-      out(i) = {re, im};
-      out(i + 1) = {re, -im};
-      i += 2;
-    } else {
-      out(i) = S(i, i);
-      ++i;
+  double norm = 0.0;  // (the Hessenberg part's entries) => the scale of a negligible subdiagonal
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i <= std::min(j + 1, n - 1); ++i) norm += std::abs(a(i, j));
+  double shift = 0.0;  // (exceptional shifts) => the sum taken out of the diagonal
+  int its = 0;
+  for (Eigen::Index nn = n - 1; nn >= 0;) {
+    // (window's end nn) => its start l: the last negligible subdiagonal above nn
+    Eigen::Index l = nn;
+    for (; l >= 1; --l) {
+      double s = std::abs(a(l - 1, l - 1)) + std::abs(a(l, l));
+      if (s == 0.0) s = norm;
+      if (std::abs(a(l, l - 1)) + s == s) {
+        a(l, l - 1) = 0.0;
+        break;
+      }
+    }
+    double x = a(nn, nn);
+    if (l == nn) {  // (1 x 1 block) => a real eigenvalue
+      out(nn) = x + shift;
+      --nn;
+      its = 0;
+      continue;
+    }
+    double y = a(nn - 1, nn - 1), w = a(nn, nn - 1) * a(nn - 1, nn);
+    if (l == nn - 1) {  // (2 x 2 block) => a real pair or a complex pair
+      const double p = 0.5 * (y - x), q = p * p + w;
+      double z = std::sqrt(std::abs(q));
+      x += shift;
+      if (q >= 0.0) {
+        z = p + (p >= 0.0 ? z : -z);
+        out(nn - 1) = x + z;
+        out(nn) = z != 0.0 ? x - w / z : x + z;
+      } else {
+        out(nn - 1) = {x + p, z};
+        out(nn) = {x + p, -z};
+      }
+      nn -= 2;
+      its = 0;
+      continue;
+    }
+    if (its == 60) throw std::runtime_error("eigenvalues: the QR iteration did not converge");
+    if (its == 10 || its == 20 || its == 40) {  // (slow convergence) => an exceptional shift
+      shift += x;
+      for (Eigen::Index i = 0; i <= nn; ++i) a(i, i) -= x;
+      const double s = std::abs(a(nn, nn - 1)) + std::abs(a(nn - 1, nn - 2));
+      x = y = 0.75 * s;
+      w = -0.4375 * s * s;
+    }
+    ++its;
+    // (shifts from the trailing 2 x 2: x, y, w) => the first column of the double-shift
+    // polynomial, started at m where two consecutive small subdiagonals allow it
+    Eigen::Index m = nn - 2;
+    double p = 0.0, q = 0.0, r = 0.0;
+    for (;; --m) {
+      const double z = a(m, m), rr = x - z, ss = y - z;
+      p = (rr * ss - w) / a(m + 1, m) + a(m, m + 1);
+      q = a(m + 1, m + 1) - z - rr - ss;
+      r = a(m + 2, m + 1);
+      const double s = std::abs(p) + std::abs(q) + std::abs(r);
+      p /= s;
+      q /= s;
+      r /= s;
+      if (m == l) break;
+      const double u = std::abs(a(m, m - 1)) * (std::abs(q) + std::abs(r));
+      const double v = std::abs(p) * (std::abs(a(m - 1, m - 1)) + std::abs(z) + std::abs(a(m + 1, m + 1)));
+      if (u + v == v) break;
+    }
+    for (Eigen::Index i = m + 2; i <= nn; ++i) {
+      a(i, i - 2) = 0.0;
+      if (i != m + 2) a(i, i - 3) = 0.0;
+    }
+    // (bulge) => chased down the window by 3 x 3 reflectors, applied within the window
+    for (Eigen::Index k = m; k <= nn - 1; ++k) {
+      if (k != m) {
+        p = a(k, k - 1);
+        q = a(k + 1, k - 1);
+        r = k != nn - 1 ? a(k + 2, k - 1) : 0.0;
+        x = std::abs(p) + std::abs(q) + std::abs(r);
+        if (x != 0.0) {
+          p /= x;
+          q /= x;
+          r /= x;
+        }
+      }
+      const double norm3 = std::sqrt(p * p + q * q + r * r);
+      const double s = p >= 0.0 ? norm3 : -norm3;
+      if (s == 0.0) continue;
+      if (k == m) {
+        if (l != m) a(k, k - 1) = -a(k, k - 1);
+      } else {
+        a(k, k - 1) = -s * x;
+      }
+      p += s;
+      x = p / s;
+      y = q / s;
+      const double z = r / s;
+      q /= p;
+      r /= p;
+      for (Eigen::Index j = k; j <= nn; ++j) {  // (rows k .. k + 2) => from the left
+        double t = a(k, j) + q * a(k + 1, j);
+        if (k != nn - 1) {
+          t += r * a(k + 2, j);
+          a(k + 2, j) -= t * z;
+        }
+        a(k + 1, j) -= t * y;
+        a(k, j) -= t * x;
+      }
+      const Eigen::Index last = std::min(nn, k + 3);
+      for (Eigen::Index i = l; i <= last; ++i) {  // (columns k .. k + 2) => from the right
+        double t = x * a(i, k) + y * a(i, k + 1);
+        if (k != nn - 1) {
+          t += z * a(i, k + 2);
+          a(i, k + 2) -= t * r;
+        }
+        a(i, k + 1) -= t * q;
+        a(i, k) -= t;
+      }
     }
   }
   return out;
+}
+
+}  // namespace
+
+Eigen::VectorXcd eigenvaluesByBlockedHessenberg(Eigen::MatrixXd A) {
+  reduceToHessenberg(A);
+  return hessenbergEigenvalues(A);
 }
 
 }  // namespace yardsim::forces::hydro

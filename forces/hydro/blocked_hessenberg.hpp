@@ -7,7 +7,9 @@
 // gathered as I - V T V^T (V unit lower trapezoidal, T upper triangular) with Y = A V T, and the
 // trailing matrix is updated once per panel by matrix products (the algorithm of LAPACK's
 // xGEHRD / xLAHR2: Golub and Van Loan, "Matrix Computations", 4th ed., 7.4.7 and 5.1.7). The
-// Hessenberg matrix then goes to Eigen's RealSchur (computeFromHessenberg) for the eigenvalues.
+// Hessenberg matrix then goes through the Francis double-shift QR iteration on its active window
+// only (EISPACK's hqr): Eigen's RealSchur updates the whole quasi-triangular matrix at every step,
+// which a Schur form needs and the eigenvalues do not (about 70 % of the check's time before).
 // No units: a matrix in, its eigenvalues out.
 #include <Eigen/Core>
 
@@ -17,9 +19,9 @@ namespace yardsim::forces::hydro {
 /// exactly 0), Q orthogonal (not formed); A is overwritten by H.
 void reduceToHessenberg(Eigen::MatrixXd& A, int panel = 32);
 
-/// (square A) => its eigenvalues (in the order of the real Schur form's diagonal): A reduced by
-/// reduceToHessenberg, then Eigen's Francis QR on the Hessenberg matrix. Throws
-/// std::runtime_error when the QR iteration does not converge.
+/// (square A) => its eigenvalues (complex pairs next to each other, in the order the iteration
+/// deflates them): A reduced by reduceToHessenberg, then the windowed Francis QR. Throws
+/// std::runtime_error when the QR iteration does not converge (60 iterations on one eigenvalue).
 Eigen::VectorXcd eigenvaluesByBlockedHessenberg(Eigen::MatrixXd A);
 
 }  // namespace yardsim::forces::hydro

@@ -37,6 +37,7 @@ const dynamics::ExternalForces* MultibodyModel::evaluateCommitted() const {
   // providers at the same state in the same order: the same doubles)
   const auto& s = state();
   ws_.accelTime = s.tx;
+  ws_.stageRead = true;
   if (keptStageHere()) {
     const auto& kept = ws_.data.kernel.keptStage();
     ws_.accel = kept.a;
@@ -66,9 +67,19 @@ double MultibodyModel::energy() const {
   // (committed state) => its energy, cached by time, q and v (the energy and energy_balance
   // channels of one row read it twice)
   const auto& s = state();
+  ws_.energyRead = true;
   if (ws_.energyTime != s.tx || ws_.energyQ.size() != s.x.q.size() || ws_.energyQ != s.x.q ||
       ws_.energyV.size() != s.x.v.size() || ws_.energyV != s.x.v) {
-    ws_.energy = mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
+    // (a step's end that is this state) => the blow-up check's energy there, else computed
+    const auto here = [&s](const Workspace::StepEnd& e) {
+      return e.valid && e.t == s.tx && sameBits(e.q, s.x.q) && sameBits(e.v, s.x.v);
+    };
+    const Workspace::StepEnd* end = here(ws_.stepEnds[ws_.lastStepEnd])       ? &ws_.stepEnds[ws_.lastStepEnd]
+                                    : here(ws_.stepEnds[1 - ws_.lastStepEnd]) ? &ws_.stepEnds[1 - ws_.lastStepEnd]
+                                                                              : nullptr;
+    ws_.energy = end != nullptr
+                     ? end->energy
+                     : mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
     ws_.energyTime = s.tx;
     ws_.energyQ = s.x.q;
     ws_.energyV = s.x.v;

@@ -213,7 +213,7 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   double time = t;
   // (a stage that may be shared) => the kernel keeps the step's first stage: at (t, x.q, x.v)
   // with these set-points, it is the committed state's stage when x is committed at t
-  if (ws_.shareStage) {
+  if (ws_.shareStage && ws_.stageRead) {
     d.kernel.keepNextStage();
     ws_.keptStepStart = t;
   }
@@ -248,7 +248,16 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 
 void MultibodyModel::checkBlowUp(const MultibodyState& x, double t) const {
   try {
-    mechanics::checkBlowUp(system_, ws_.data, x.q, x.v, x.work, t, limits_);
+    const double energy = mechanics::checkBlowUp(system_, ws_.data, x.q, x.v, x.work, t, limits_);
+    if (!ws_.shareStage || !ws_.energyRead) return;
+    // (energy at (t, q, v)) => kept in the slot used less recently
+    ws_.lastStepEnd = 1 - ws_.lastStepEnd;
+    auto& end = ws_.stepEnds[ws_.lastStepEnd];
+    end.valid = true;
+    end.t = t;
+    end.energy = energy;
+    end.q = x.q;
+    end.v = x.v;
   } catch (const mechanics::BlowUp& b) {
     throw NumericalError("multibody '" + path() + "'" + b.element, t, b.what(), b.suggestion);
   }
@@ -434,6 +443,7 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   ws_.accelTime = ws_.viewTime = ws_.reactionTime = ws_.energyTime = -1.0;
   ws_.viewState = nullptr;
   ws_.data.kernel.dropKeptStage();
+  ws_.stepEnds[0].valid = ws_.stepEnds[1].valid = false;
   ws_.integrator->reset();
 }
 

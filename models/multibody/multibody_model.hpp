@@ -116,6 +116,7 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     ws_.powerState = nullptr;
     ws_.events.valid = false;
     ws_.data.kernel.dropKeptStage();
+    ws_.stepEnds[0].valid = ws_.stepEnds[1].valid = false;
   }
   // (committed state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
@@ -125,7 +126,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void floatingChannels(std::vector<Channel>& out) const;
   // (hydrostatics k) => its report at the committed state, computed once per time and q
   const forces::HydrostaticReport& hydrostaticReport(std::size_t k) const;
-  // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one
+  // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one;
+  // else its energy, kept for the energy channels when the stage may be shared (stepEnds)
   void checkBlowUp(const MultibodyState& x, double t) const;
 
   MultibodyOptions opt_;
@@ -145,9 +147,21 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     // state's reactions (mechanics/shared_stage.hpp); the step start of the stage the kernel keeps
     bool shareStage = false;
     double keptStepStart = 0.0;
+    // a reader asked for the committed state's stage (evaluateCommitted) or energy (energy())
+    // once: from then on the steps keep them (a run that never reads them pays no copies)
+    bool stageRead = false, energyRead = false;
     double accelTime = -1.0, viewTime = -1.0, reactionTime = -1.0, energyTime = -1.0;
     double energy = 0.0;               // the committed state's energy, at energyTime
     Eigen::VectorXd energyQ, energyV;  // ... and at these q and v
+    // the energies of the last two steps' ends, from the blow-up check at (t, q, v): a step's end
+    // is the committed state that the next rows read (kept when shareStage: then the energy is
+    // a function of t, q and v alone, the same doubles)
+    struct StepEnd {
+      bool valid = false;
+      double t = 0.0, energy = 0.0;
+      Eigen::VectorXd q, v;
+    } stepEnds[2];
+    int lastStepEnd = 0;
     const MultibodyState* viewState = nullptr;
     // the power at the end of the last step, reused at the start of the next one
     const MultibodyState* powerState = nullptr;

@@ -1,6 +1,7 @@
 // The multibody model's readers of the committed state (models/multibody/multibody_committed.cpp):
-// the joint reactions and accelerations there are the committed state's own stage, whether the
-// kernel kept the look-ahead step's first stage at that state or the stage is evaluated again.
+// the joint reactions, accelerations and energy there are the committed state's own, whether they
+// come from the look-ahead step (its first stage, the blow-up check's energy at a step's end) or
+// are evaluated again.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "dynamics/rnea.hpp"
 #include "mechanics/build.hpp"
 #include "mechanics/data.hpp"
+#include "mechanics/energy.hpp"
 #include "mechanics/stage.hpp"
 #include "models/multibody/multibody_model.hpp"
 #include "scene/mechanics_reader.hpp"
@@ -68,9 +70,9 @@ struct Driver final : devs::Atomic<bool> {
   devs::Time at_;
 };
 
-// At every state the model records: its accelerations and joint reactions against the stage
-// evaluated anew at the committed state in a workspace of its own (the same providers, the
-// set-points in force), bit for bit.
+// At every state the model records: its accelerations, joint reactions and energy against the
+// stage and the energy evaluated anew at the committed state in a workspace of its own (the same
+// providers, the set-points in force), bit for bit.
 struct CommittedCheck final : devs::Listener {
   explicit CommittedCheck(const MultibodyModel& m) : mb(m), ref(m.system()) {
     mechanics::connectStage(m.system(), ref);
@@ -84,18 +86,21 @@ struct CommittedCheck final : devs::Listener {
     Eigen::VectorXd a(model.nv);
     ref.kernel.acceleration(s.tx, s.x.q, s.x.v, a);
     dynamics::rneaWorld(model, ref.reaction, s.x.q, s.x.v, a, ref.kernel.stageExternalForces());
+    dynamics::Data kin(model);
+    const double e = mechanics::energy(mb.system(), ref, kin, s.x.q, s.x.v, s.tx);
     ++states;
     if (mb.jointForces()[1] != ref.reaction.F_W[1]) ++staleReactions;
     if (mb.acceleration() != a) ++staleAccelerations;
+    if (mb.energy() != e) ++staleEnergies;
   }
   const MultibodyModel& mb;
   mechanics::Data ref;
-  int states = 0, staleReactions = 0, staleAccelerations = 0;
+  int states = 0, staleReactions = 0, staleAccelerations = 0, staleEnergies = 0;
 };
 
 }  // namespace
 
-TEST_CASE("the committed state's reactions and accelerations are its own stage's, for every method") {
+TEST_CASE("the committed state's reactions, accelerations and energy are its own, for every method") {
   // rk4, ab2 and semi-implicit Euler evaluate each step's first stage at the committed state (the
   // kept stage is read); HHT evaluates the tree without the kept call (it is evaluated again);
   // ARKODE and CVODE continue their own history across steps, so their first evaluation in a step
@@ -117,6 +122,7 @@ TEST_CASE("the committed state's reactions and accelerations are its own stage's
     CHECK(check.states > 60);
     CHECK(check.staleReactions == 0);
     CHECK(check.staleAccelerations == 0);
+    CHECK(check.staleEnergies == 0);
     CHECK(mb.state().x.setPoints.drives[1].active);
   }
 }

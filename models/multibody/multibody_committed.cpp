@@ -27,8 +27,9 @@ const Eigen::VectorXd& MultibodyModel::acceleration() const {
 bool MultibodyModel::keptStageHere() const {
   const auto& s = state();
   const auto& kept = ws_.data.kernel.keptStage();
-  return ws_.shareStage && kept.valid && kept.t == s.tx && ws_.keptStepStart == ws_.data.stepStart &&
-         sameBits(kept.q, s.x.q) && sameBits(kept.v, s.x.v);
+  return ws_.shareStage && kept.valid && kept.t == s.tx &&
+         ws_.keptStepStart == ws_.data.stepStart && sameBits(kept.q, s.x.q) &&
+         sameBits(kept.v, s.x.v);
 }
 
 const dynamics::ExternalForces* MultibodyModel::evaluateCommitted() const {
@@ -74,9 +75,10 @@ double MultibodyModel::energy() const {
     const auto here = [&s](const Workspace::StepEnd& e) {
       return e.valid && e.t == s.tx && sameBits(e.q, s.x.q) && sameBits(e.v, s.x.v);
     };
-    const Workspace::StepEnd* end = here(ws_.stepEnds[ws_.lastStepEnd])       ? &ws_.stepEnds[ws_.lastStepEnd]
-                                    : here(ws_.stepEnds[1 - ws_.lastStepEnd]) ? &ws_.stepEnds[1 - ws_.lastStepEnd]
-                                                                              : nullptr;
+    const Workspace::StepEnd* end =
+        here(ws_.stepEnds[ws_.lastStepEnd])       ? &ws_.stepEnds[ws_.lastStepEnd]
+        : here(ws_.stepEnds[1 - ws_.lastStepEnd]) ? &ws_.stepEnds[1 - ws_.lastStepEnd]
+                                                  : nullptr;
     ws_.energy = end != nullptr
                      ? end->energy
                      : mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);

@@ -71,8 +71,8 @@ TEST_CASE("a kept stage is the first acceleration after keepNextStage, with its 
   const Model m = randomTree(rng, 5);
   MultibodySystem sys(m);
   const Force F = randomVectorX(rng, 6);
-  sys.setForces([&](double t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data&, ExternalForces& f,
-                    Eigen::VectorXd&) { f.addWorldFrame(2, t * F); });
+  sys.setForces([&](double t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data&,
+                    ExternalForces& f, Eigen::VectorXd&) { f.addWorldFrame(2, t * F); });
   const Eigen::VectorXd q1 = randomConfiguration(m, rng), v1 = randomVectorX(rng, m.nv);
   const Eigen::VectorXd q2 = randomConfiguration(m, rng), v2 = randomVectorX(rng, m.nv);
   Eigen::VectorXd a1(m.nv), a2(m.nv), a3(m.nv);

@@ -19,7 +19,7 @@ TEST_CASE("lumped mooring lines keep a scratch between stages: their stage is no
   CHECK_FALSE(mechanics::stageShareable(s.system, s.data));
 }
 
-TEST_CASE("a rope with mass under a winch (a scratch, and node masses that follow the payout) is not shared") {
+TEST_CASE("a rope with mass under a winch (a scratch, masses that follow it) is not shared") {
   StagedSystem s(testing::buildFromScene(testing::hangingRopeScene(19.0)));
   REQUIRE_FALSE(s.system.winchedLines().empty());
   CHECK_FALSE(mechanics::stageShareable(s.system, s.data));

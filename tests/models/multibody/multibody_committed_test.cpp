@@ -100,13 +100,15 @@ struct CommittedCheck final : devs::Listener {
 
 }  // namespace
 
-TEST_CASE("the committed state's reactions, accelerations and energy are its own, for every method") {
+TEST_CASE(
+    "the committed state's reactions, accelerations and energy are its own, for every method") {
   // rk4, ab2 and semi-implicit Euler evaluate each step's first stage at the committed state (the
   // kept stage is read); HHT evaluates the tree without the kept call (it is evaluated again);
   // ARKODE and CVODE continue their own history across steps, so their first evaluation in a step
   // is at a state of their own (a stage kept there must not be read). The set-point arrives
   // between grid points (a partial step) and changes the forces from then on.
-  for (const char* method : {"rk4", "ab2", "semi_implicit_euler", "hht", "arkode_erk", "cvode_adams"}) {
+  for (const char* method :
+       {"rk4", "ab2", "semi_implicit_euler", "hht", "arkode_erk", "cvode_adams"}) {
     CAPTURE(method);
     devs::Coupled root("root");
     models::MultibodyOptions opt;

@@ -20,7 +20,8 @@ MultibodySystem::MultibodySystem(const Model& model)
       tauStage_(Eigen::VectorXd::Zero(model.nv)),
       hybrid_(model),
       aPrescribed_(Eigen::VectorXd::Zero(model.nv)),
-      effort_(Eigen::VectorXd::Zero(model.nv)) {}
+      effort_(Eigen::VectorXd::Zero(model.nv)),
+      kept_(model) {}
 
 void MultibodySystem::prescribe(const std::vector<char>& mask, const Eigen::VectorXd& aPrescribed) {
   hybrid_.setPrescribed(mask);
@@ -76,6 +77,17 @@ void MultibodySystem::acceleration(double t, const Eigen::VectorXd& q, const Eig
   }
   // (a) => the body whose acceleration is not finite, if any
   if (!a.allFinite()) diverged(model_, t, "the acceleration", model_.dofBody[firstNonFinite(a)]);
+  // (asked to keep this stage, not linearised) => its state, accelerations and forces copied
+  if (keep_) {
+    keep_ = false;
+    if (linearised_) return;
+    kept_.t = t;
+    kept_.q = q;
+    kept_.v = v;
+    kept_.a = a;
+    kept_.forces = forces_;
+    kept_.valid = true;
+  }
 }
 
 std::uint64_t MultibodySystem::regime(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {

@@ -92,6 +92,25 @@ class MultibodySystem final : public AccelerationSource {
   /// The external forces of the last stage evaluated (acceleration() or
   /// unconstrainedAcceleration()): nullptr when it had none. Valid until the next evaluation.
   const ExternalForces* stageExternalForces() const { return forces_.empty() ? nullptr : &forces_; }
+
+  /// One stage kept for a caller that reads the same stage later (a step's first stage, read again
+  /// at the committed state for the joint reactions): its t, q, v, accelerations and forces.
+  struct KeptStage {
+    explicit KeptStage(const Model& m) : q(m.nq), v(m.nv), a(m.nv), forces(m) {}
+    bool valid = false;  // false: nothing kept since keepNextStage()
+    double t = 0.0;      // s
+    Eigen::VectorXd q, v, a;
+    ExternalForces forces;  // the stage's external forces (empty: it had none)
+  };
+  /// () => the kept stage is dropped, and the next acceleration() (not while linearised) is kept
+  /// in it; allocation-free. stopKeeping(): no later evaluation is kept.
+  void keepNextStage() {
+    kept_.valid = false;
+    keep_ = true;
+  }
+  void stopKeeping() { keep_ = false; }
+  void dropKeptStage() { kept_.valid = false; }
+  const KeptStage& keptStage() const { return kept_; }
   Eigen::VectorXd& tau() { return tau_; }  ///< constant joint forces used when no callback is set
 
  private:
@@ -108,6 +127,8 @@ class MultibodySystem final : public AccelerationSource {
   BlockCallback blockCallback_;
   LinearisationCallback linearisation_;
   bool linearised_ = false;
+  bool keep_ = false;  // the next acceleration() is kept in kept_
+  KeptStage kept_;
   // (t, q, v) => forces_ and tauStage_ from tau_ and the callback; refuses a non-finite state
   const ExternalForces* stageForces(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v);
   Baumgarte stab_;

@@ -54,8 +54,8 @@ std::string likelyCause(const System& s, const std::string& method, double dt) {
   return o.str();
 }
 
-void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                 double work, double t, const BlowUpLimits& limits) {
+double checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                   double work, double t, const BlowUpLimits& limits) {
   const auto& m = s.model();
   // (non-finite state) => the first body whose joint went bad
   if (!q.allFinite() || !v.allFinite()) {
@@ -71,7 +71,8 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
   }
   // (energy balance) => a rise beyond the bound, naming the most energetic body and element
   dynamics::Data& kin = d.scratchKinematics(s, q, v);
-  const double rise = energyAfterKinematics(s, d, kin, q, v, t) - work - limits.balance0;
+  const double energy = energyAfterKinematics(s, d, kin, q, v, t);
+  const double rise = energy - work - limits.balance0;
   if (rise > limits.energyBound) {
     int body = 1;
     double most = -1.0;
@@ -95,7 +96,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
                  likelyCause(s, limits.method, limits.dt));
   }
   // (loops) => the loop with the largest residual, if beyond the bound
-  if (m.nc == 0) return;
+  if (m.nc == 0) return energy;
   d.scratchWritten();  // (the residual places the bodies in scratch)
   const Eigen::VectorXd& r = dynamics::loopResidual(m, d.scratch, q);
   for (const auto& loop : m.loops) {
@@ -110,6 +111,7 @@ void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen
                      ? "a smaller dt, or an implicit integrator"
                      : "turn loop projection on (project_loops: true), or a smaller dt");
   }
+  return energy;
 }
 
 }  // namespace yardsim::mechanics

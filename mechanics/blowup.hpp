@@ -39,8 +39,8 @@ double energyScale(const System& s, Data& d, const Eigen::VectorXd& q, const Eig
 std::string likelyCause(const System& s, const std::string& method, double dt);
 
 // (state after a step to t, the work so far) => throws BlowUp when it is not finite, its energy
-// balance grew beyond the bound or a loop opened
-void checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                 double work, double t, const BlowUpLimits& limits);
+// balance grew beyond the bound or a loop opened; else its energy (energyAfterKinematics), J
+double checkBlowUp(const System& s, Data& d, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                   double work, double t, const BlowUpLimits& limits);
 
 }  // namespace yardsim::mechanics

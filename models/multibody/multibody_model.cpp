@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include "devs/general_text.hpp"
 #include "dynamics/energy.hpp"
@@ -13,7 +12,9 @@
 #include "dynamics/static_equilibrium.hpp"
 #include "mechanics/energy.hpp"
 #include "mechanics/follow_mass.hpp"
+#include "mechanics/shared_stage.hpp"
 #include "mechanics/stage.hpp"
+#include "models/multibody/same_bits.hpp"
 #include "models/numerical_error.hpp"
 
 namespace yardsim::models {
@@ -122,6 +123,7 @@ MultibodyModel::MultibodyModel(std::string name, mechanics::BuiltMechanics mecha
   ws_.integrator = dynamics::makeIntegrator(opt_.integrator, model);
   if (model.nc > 0) dynamics::configureLoopStabilization(opt_.integrator, ws_.data.kernel);
   mechanics::connectStage(system_, ws_.data);
+  ws_.shareStage = mechanics::stageShareable(system_, ws_.data);
   // (initial state) => a force provider that gives up on it (a catenary line whose solve does
   // not converge at t = 0) is a numerical failure of the run (exit 2), not an internal error
   try {
@@ -209,14 +211,23 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
   ws_.powerState = nullptr;
   d.setPoints = &x.setPoints;
   double time = t;
+  // (a stage that may be shared) => the kernel keeps the step's first stage: at (t, x.q, x.v)
+  // with these set-points, it is the committed state's stage when x is committed at t
+  if (ws_.shareStage && ws_.stageRead) {
+    d.kernel.keepNextStage();
+    ws_.keptStepStart = t;
+  }
   try {
     ws_.integrator->step(d.kernel, time, x.q, x.v, dt);
   } catch (const devs::SimulationError&) {
+    d.kernel.stopKeeping();
     throw;
   } catch (const std::runtime_error& e) {  // the kernel or a force provider gave up: its diagnosis
+    d.kernel.stopKeeping();
     throw NumericalError("multibody '" + path() + "'", t, e.what(),
                          "a smaller dt, softer drives (bandwidth), or an implicit integrator");
   }
+  d.kernel.stopKeeping();
   if (x.q.allFinite() && x.v.allFinite()) {
     const double p1 = mechanics::nonConservativePower(system_, d, x.setPoints, x.q, x.v, t + dt);
     x.work += 0.5 * dt * (p0 + p1);
@@ -237,7 +248,16 @@ void MultibodyModel::advance(MultibodyState& x, devs::Time t, devs::Time dt) con
 
 void MultibodyModel::checkBlowUp(const MultibodyState& x, double t) const {
   try {
-    mechanics::checkBlowUp(system_, ws_.data, x.q, x.v, x.work, t, limits_);
+    const double energy = mechanics::checkBlowUp(system_, ws_.data, x.q, x.v, x.work, t, limits_);
+    if (!ws_.shareStage || !ws_.energyRead) return;
+    // (energy at (t, q, v)) => kept in the slot used less recently
+    ws_.lastStepEnd = 1 - ws_.lastStepEnd;
+    auto& end = ws_.stepEnds[ws_.lastStepEnd];
+    end.valid = true;
+    end.t = t;
+    end.energy = energy;
+    end.q = x.q;
+    end.v = x.v;
   } catch (const mechanics::BlowUp& b) {
     throw NumericalError("multibody '" + path() + "'" + b.element, t, b.what(), b.suggestion);
   }
@@ -345,13 +365,8 @@ void MultibodyModel::eventFunctions(const MultibodyState& x, devs::Time t,
   // (x, t) => g, from the last evaluation when (t, q, v) are the same bit for bit and the
   // set-points have not changed since (dropStepCaches), else computed and kept
   auto& memo = ws_.events;
-  auto same = [](const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return a.size() == b.size() &&
-           (a.size() == 0 || std::memcmp(a.data(), b.data(),
-                                         sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
-  };
-  if (memo.valid && t == memo.t && memo.g.size() == g.size() && same(x.q, memo.q) &&
-      same(x.v, memo.v)) {
+  if (memo.valid && t == memo.t && memo.g.size() == g.size() && sameBits(x.q, memo.q) &&
+      sameBits(x.v, memo.v)) {
     std::copy(memo.g.begin(), memo.g.end(), g.begin());
     return;
   }
@@ -385,68 +400,6 @@ void MultibodyModel::onStateEvent(MultibodyState& x, devs::Time, int e) const {
   if (slot.kind == mechanics::EventSlot::Kind::DriveReached)
     x.setPoints.drives[static_cast<std::size_t>(slot.index)].reported =
         true;  // keeps holding the target
-}
-
-const dynamics::Data& MultibodyModel::kinematicsOf(const MultibodyState& x) const {
-  if (ws_.viewState != &x || ws_.viewTime != state().tx) {
-    dynamics::forwardKinematics(system_.model(), ws_.data.view, x.q, x.v);
-    ws_.viewState = &x;
-    ws_.viewTime = state().tx;
-  }
-  return ws_.data.view;
-}
-
-const Eigen::VectorXd& MultibodyModel::acceleration() const {
-  // (committed state, set-points in force) => accelerations, cached by time
-  const auto& s = state();
-  if (ws_.accelTime != s.tx || ws_.accel.size() != s.x.v.size()) evaluateCommitted();
-  return ws_.accel;
-}
-
-void MultibodyModel::evaluateCommitted() const {
-  // (committed state, set-points in force) => the kernel's stage: accelerations, and the forces
-  // of that stage kept in the kernel until its next evaluation
-  const auto& s = state();
-  ws_.accel.resize(s.x.v.size());
-  ws_.data.setPoints = &s.x.setPoints;
-  ws_.data.kernel.acceleration(s.tx, s.x.q, s.x.v, ws_.accel);
-  ws_.accelTime = s.tx;
-}
-
-const std::vector<dynamics::Force>& MultibodyModel::jointForces() const {
-  // (committed state, its accelerations, every force) => RNEA's joint forces, cached by time. The
-  // stage is evaluated here, not taken from acceleration()'s cache, so that the kernel's forces
-  // are this stage's: RNEA reuses them instead of evaluating the providers a second time
-  const auto& s = state();
-  auto& d = ws_.data;
-  if (ws_.reactionTime != s.tx) {
-    evaluateCommitted();
-    dynamics::rneaWorld(system_.model(), d.reaction, s.x.q, s.x.v, ws_.accel,
-                        d.kernel.stageExternalForces());
-    ws_.reactionTime = s.tx;
-  }
-  return d.reaction.F_W;
-}
-
-double MultibodyModel::energy() const {
-  // (committed state) => its energy, cached by time, q and v (the energy and energy_balance
-  // channels of one row read it twice)
-  const auto& s = state();
-  if (ws_.energyTime != s.tx || ws_.energyQ.size() != s.x.q.size() || ws_.energyQ != s.x.q ||
-      ws_.energyV.size() != s.x.v.size() || ws_.energyV != s.x.v) {
-    ws_.energy = mechanics::energy(system_, ws_.data, ws_.data.view, s.x.q, s.x.v, s.tx);
-    ws_.energyTime = s.tx;
-    ws_.energyQ = s.x.q;
-    ws_.energyV = s.x.v;
-  }
-  return ws_.energy;
-}
-
-forces::Stage MultibodyModel::committedStage(const forces::ForceProvider* p) const {
-  const auto& s = state();
-  forces::Stage stage = ws_.data.stage(system_, s.tx, kinematicsOf(s.x), s.x.q, s.x.v);
-  if (p != nullptr) stage.scratch = ws_.data.scratchOf(system_, *p);
-  return stage;
 }
 
 void MultibodyModel::saveWorkspace(devs::CheckpointWriter& w) const {
@@ -489,6 +442,8 @@ void MultibodyModel::loadWorkspace(devs::CheckpointReader& r) {
   }
   ws_.accelTime = ws_.viewTime = ws_.reactionTime = ws_.energyTime = -1.0;
   ws_.viewState = nullptr;
+  ws_.data.kernel.dropKeptStage();
+  ws_.stepEnds[0].valid = ws_.stepEnds[1].valid = false;
   ws_.integrator->reset();
 }
 

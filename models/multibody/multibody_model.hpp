@@ -103,13 +103,20 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   // (x, new velocity of the prescribed dofs in dv, t) => x.v after the impulse, its work in
   // x.work
   void prescribedVelocityStep(MultibodyState& x, const Eigen::VectorXd& dv, double t) const;
-  // (committed state) => the kernel's stage there: ws_.accel, and its forces in the kernel
-  void evaluateCommitted() const;
+  // (committed state) => the kernel's stage there: ws_.accel, and its external forces (nullptr:
+  // none), valid until the kernel's next evaluation; the look-ahead step's first stage when it was
+  // kept at this state (keptStageHere()), else evaluated
+  const dynamics::ExternalForces* evaluateCommitted() const;
+  // (committed state) => the kernel kept the look-ahead step's first stage at this (t, q, v) bit
+  // for bit, with this step start, and the system's stage may be shared (stageShareable)
+  bool keptStageHere() const;
   // (set-points or the state changed outside a step) => the power and event functions of the
-  // last step's end are not reused
+  // last step's end, and the kept first stage, are not reused
   void dropStepCaches() const {
     ws_.powerState = nullptr;
     ws_.events.valid = false;
+    ws_.data.kernel.dropKeptStage();
+    ws_.stepEnds[0].valid = ws_.stepEnds[1].valid = false;
   }
   // (committed state) => data holds its forward kinematics (cached by time)
   const dynamics::Data& kinematicsOf(const MultibodyState& x) const;
@@ -119,7 +126,8 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
   void floatingChannels(std::vector<Channel>& out) const;
   // (hydrostatics k) => its report at the committed state, computed once per time and q
   const forces::HydrostaticReport& hydrostaticReport(std::size_t k) const;
-  // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one
+  // (state after a step to t) => throws NumericalError when mechanics::checkBlowUp finds one;
+  // else its energy, kept for the energy channels when the stage may be shared (stepEnds)
   void checkBlowUp(const MultibodyState& x, double t) const;
 
   MultibodyOptions opt_;
@@ -135,9 +143,25 @@ class MultibodyModel final : public dtss::Atomic<MultibodyState>,
     mechanics::Data data;
     std::unique_ptr<dynamics::Integrator> integrator;
     Eigen::VectorXd accel;  // accelerations of the committed state, for channels
+    // the system's stage may be evaluated once for a step's first stage and the committed
+    // state's reactions (mechanics/shared_stage.hpp); the step start of the stage the kernel keeps
+    bool shareStage = false;
+    double keptStepStart = 0.0;
+    // a reader asked for the committed state's stage (evaluateCommitted) or energy (energy())
+    // once: from then on the steps keep them (a run that never reads them pays no copies)
+    bool stageRead = false, energyRead = false;
     double accelTime = -1.0, viewTime = -1.0, reactionTime = -1.0, energyTime = -1.0;
     double energy = 0.0;               // the committed state's energy, at energyTime
     Eigen::VectorXd energyQ, energyV;  // ... and at these q and v
+    // the energies of the last two steps' ends, from the blow-up check at (t, q, v): a step's end
+    // is the committed state that the next rows read (kept when shareStage: then the energy is
+    // a function of t, q and v alone, the same doubles)
+    struct StepEnd {
+      bool valid = false;
+      double t = 0.0, energy = 0.0;
+      Eigen::VectorXd q, v;
+    } stepEnds[2];
+    int lastStepEnd = 0;
     const MultibodyState* viewState = nullptr;
     // the power at the end of the last step, reused at the start of the next one
     const MultibodyState* powerState = nullptr;

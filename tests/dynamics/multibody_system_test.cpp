@@ -64,3 +64,47 @@ TEST_CASE("a diverging integration stops with a diagnosis naming the body") {
   t = 0.0;
   CHECK_THROWS_WITH(run(), Catch::Matchers::Contains("body 'hook'") && Catch::Matchers::Contains("smaller step"));
 }
+
+TEST_CASE("a kept stage is the first acceleration after keepNextStage, with its own forces") {
+  // forces that change with t: each stage's differ, so a stage kept from another call would show
+  std::mt19937 rng(47);
+  const Model m = randomTree(rng, 5);
+  MultibodySystem sys(m);
+  const Force F = randomVectorX(rng, 6);
+  sys.setForces([&](double t, const Eigen::VectorXd&, const Eigen::VectorXd&, const Data&,
+                    ExternalForces& f, Eigen::VectorXd&) { f.addWorldFrame(2, t * F); });
+  const Eigen::VectorXd q1 = randomConfiguration(m, rng), v1 = randomVectorX(rng, m.nv);
+  const Eigen::VectorXd q2 = randomConfiguration(m, rng), v2 = randomVectorX(rng, m.nv);
+  Eigen::VectorXd a1(m.nv), a2(m.nv), a3(m.nv);
+  sys.acceleration(0.5, q2, v2, a3);  // (not asked to keep) => nothing kept
+  CHECK_FALSE(sys.keptStage().valid);
+  sys.keepNextStage();
+  sys.acceleration(1.5, q1, v1, a1);  // kept
+  sys.acceleration(2.5, q2, v2, a2);  // a later stage of the same step: not kept
+  const MultibodySystem::KeptStage& kept = sys.keptStage();
+  REQUIRE(kept.valid);
+  CHECK(kept.t == 1.5);
+  CHECK(kept.q == q1);
+  CHECK(kept.v == v1);
+  CHECK(kept.a == a1);  // bit for bit: the copy of the stage's result
+  CHECK(kept.forces.worldFrame(2) == 1.5 * F);
+  CHECK(kept.forces.worldFrame(1).isZero());
+  // (the same stage evaluated again) => the same accelerations as kept, and its forces
+  Eigen::VectorXd again(m.nv);
+  sys.acceleration(1.5, q1, v1, again);
+  CHECK(again == kept.a);
+  CHECK(sys.stageExternalForces()->worldFrame(2) == kept.forces.worldFrame(2));
+  // (asked again, or dropped) => what was kept is gone until the next evaluation
+  sys.keepNextStage();
+  CHECK_FALSE(sys.keptStage().valid);
+  sys.acceleration(2.5, q2, v2, a3);
+  CHECK(sys.keptStage().t == 2.5);
+  CHECK(sys.keptStage().forces.worldFrame(2) == 2.5 * F);
+  sys.dropKeptStage();
+  CHECK_FALSE(sys.keptStage().valid);
+  // (asked, then stopped before any evaluation) => nothing kept
+  sys.keepNextStage();
+  sys.stopKeeping();
+  sys.acceleration(1.5, q1, v1, a1);
+  CHECK_FALSE(sys.keptStage().valid);
+}

@@ -1,6 +1,7 @@
 #include "forces/geometry/submerged_mesh.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace yardsim::forces {
@@ -40,23 +41,40 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
                               const AiryWaves& sea, double t, SubmergedWorkspace& ws,
                               bool keepWet) {
   // (X_WB, surface) => corners in the world and their depth below the surface; in waves, each
-  // corner's half phases first (the surface there from them, and later its edges' midpoints)
+  // corner's half phases first (the surface there from them, and later its edges' midpoints),
+  // except for a corner above the highest crest the sea can reach at t (with a margin for
+  // round-off): dry, its depth kAbove until a crossing edge asks for it (depthOf)
   const std::size_t nv = mesh.vertices.size();
   const std::size_t m2 = 2 * sea.size();
   const double ramp = sea.ramp(t);  // once for every point of this call
   const bool waves = !sea.calm() && ramp > 0.0;
   if (waves && ws.halfPhase.size() < m2 * nv) ws.halfPhase.resize(m2 * nv);
+  constexpr double kAbove = -std::numeric_limits<double>::infinity();
+  double crest = std::numeric_limits<double>::infinity();
+  if (waves) {
+    double amplitudes = 0.0;
+    for (std::size_t i = 0; i < sea.size(); ++i) amplitudes += 0.5 * sea.component(i).height;
+    crest = sea.water().level + ramp * amplitudes * (1.0 + 1e-12) + 1e-9;
+  }
+  // (corner i in the world, waves) => its half phases and its depth
+  const auto waveDepth = [&](std::size_t i, const Vector3& p) {
+    double* h = ws.halfPhase.data() + m2 * i;
+    sea.halfPhases(p.x(), p.y(), t, h);
+    return sea.elevationRamped(h, ramp) - p.z();
+  };
   for (std::size_t i = 0; i < nv; ++i) {
     const Vector3 p = X_WB.actPoint(mesh.vertices[i]);
     ws.vertices[i] = p;
-    if (waves) {
-      double* h = ws.halfPhase.data() + m2 * i;
-      sea.halfPhases(p.x(), p.y(), t, h);
-      ws.depth[i] = sea.elevationRamped(h, ramp) - p.z();
-    } else {
+    if (!waves)
       ws.depth[i] = sea.water().level - p.z();
-    }
+    else
+      ws.depth[i] = p.z() > crest ? kAbove : waveDepth(i, p);
   }
+  // (corner i) => its depth, computed now for a corner above the crests
+  const auto depthOf = [&](std::size_t i) {
+    if (ws.depth[i] == kAbove) ws.depth[i] = waveDepth(i, ws.vertices[i]);
+    return ws.depth[i];
+  };
   // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
   // where the waterplane's own tetrahedra vanish)
   const Vector3 o(
@@ -145,11 +163,11 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         poly[n++] = ws.vertices[i];
       }
       if ((di > 0.0) != (dj > 0.0)) {
+        const double a = depthOf(i), b = depthOf(j);
         corner[n] = -1 - e;
-        poly[n++] =
-            waves && j < i
-                ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
-                : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
+        poly[n++] = waves && j < i
+                        ? Vector3(ws.vertices[j] + b / (b - a) * (ws.vertices[i] - ws.vertices[j]))
+                        : Vector3(ws.vertices[i] + a / (a - b) * (ws.vertices[j] - ws.vertices[i]));
       }
     }
     // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure:

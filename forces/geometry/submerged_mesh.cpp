@@ -89,10 +89,14 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   double vol6 = 0.0, wpA = 0.0, wpX = 0.0, wpY = 0.0, wpXX = 0.0, wpYY = 0.0, wpXY = 0.0;
   Vector3 first = Vector3::Zero(), F = Vector3::Zero(), M = Vector3::Zero();
   // (wetted piece a, b, c; pressureOf(q, side) the pressure at the midpoint q of its side from
-  // a, b, c to b, c, a) => its share of every integral
+  // a, b, c to b, c, a) => its share of every integral. The force and moment: in calm water
+  // -p_i / 3 S and -p_i / 3 q_i x S for each side; in waves, where the pressures cost more than
+  // these products, 3 F = -(sum p_i) S and 3 M = -(sum p_i q_i) x S (one cross product)
   const auto piece = [&](const Vector3& a, const Vector3& b, const Vector3& c, auto&& pressureOf) {
     const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
     const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+    double pSum = 0.0;
+    Vector3 pq = Vector3::Zero();
     if constexpr (kAll) {
       const Vector3 ao = a - o, bo = b - o, co = c - o;
       const double d6 = ao.dot(bo.cross(co));
@@ -112,8 +116,17 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         wpXY += w * q.x() * q.y();
       }
       const double p = pressureOf(q, side);
-      F -= p / 3.0 * S;
-      M -= p / 3.0 * q.cross(S);
+      if (!waves) {
+        F -= p / 3.0 * S;
+        M -= p / 3.0 * q.cross(S);
+      } else {
+        pSum += p;
+        pq += p * q;
+      }
+    }
+    if (waves) {
+      F -= pSum * S;
+      M -= pq.cross(S);
     }
     if constexpr (kAll) r.wettedArea += S.norm();
     if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
@@ -125,11 +138,12 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     // waves from its corners' half phases, a crossing one's (between its wet corner and the
     // crossing, the same double vector in both triangles in waves) directly
     const auto edgePressure = [&](const Vector3& q, int e, bool whole) {
+      if (!waves) return sea.hydrostaticPressure(q);
       const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
       if (ws.edgeStamp[k] != ws.call) {
         const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
         const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] = waves && whole
+        ws.edgePressure[k] = whole
                                  ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
                                                        ws.halfPhase.data() + m2 * b, t, ramp)
                                  : sea.pressure(q, t, ramp);
@@ -176,13 +190,14 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     // diagonal of a four-cornered polygon, a side of both its pieces, once
     double diagonal = 0.0;
     const auto pressureAt = [&](const Vector3& q, int u, int w) {
+      if (!waves) return sea.hydrostaticPressure(q);
       const int cu = corner[u], cw = corner[w];
       if (cu >= 0 && cw >= 0) return edgePressure(q, (cu + 1) % 3 == cw ? cu : cw, true);
       if (n == 4 && (u ^ w) == 2) {  // (0, 2) or (2, 0): the first piece's last side comes first
         if (u == 2) diagonal = sea.pressure(q, t, ramp);
         return diagonal;
       }
-      if (waves && (cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
+      if ((cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
       return sea.pressure(q, t, ramp);
     };
     for (int k = 1; k + 1 < n; ++k) {
@@ -191,8 +206,8 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
             [&](const Vector3& q, int side) { return pressureAt(q, from[side], to[side]); });
     }
   }
-  r.force = F;
-  r.moment = M;
+  r.force = waves ? Vector3(F / 3.0) : F;
+  r.moment = waves ? Vector3(M / 3.0) : M;
   if constexpr (!kAll) return r;
   r.volume = vol6 / 6.0;
   r.centreOfBuoyancy = r.volume > 0.0 ? Vector3(o + first / (4.0 * vol6)) : o;

@@ -343,3 +343,59 @@ TEST_CASE(
     }
   }
 }
+
+TEST_CASE("in waves the corners above the crests wait for a crossing, and the rest clip as before") {
+  // (a box whose top row is above the highest crest the two-component sea reaches (ramp
+  // included), whose middle row lies between the level and that crest, heeled, at times during
+  // and after the ramp) => its wetted pieces' hull corners are the corners below the surface
+  // (depth from AiryWaves::elevation here), and their crossing points those of the mesh edges
+  // between a wet and a dry corner, interpolated from the edge's end with the lower number at
+  // these depths: the deferred top corners' depths are the surface's, and no middle corner wet
+  // under a crest (above the first component's alone) is taken for dry
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 40.0, 4.0, 0.0},
+                      {{1.0, 5.0, 0.4, 0.3}, {0.4, 6.0, -0.8, 2.0}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 1.9), 6, 3, 2);  // rows z = -0.95, 0, 0.95
+  SubmergedWorkspace ws(hull, sea.size());
+  Transform X = Transform::translation(Vector3(2.0, -1.0, 0.45));
+  X.R = Eigen::AngleAxisd(0.05, Vector3::UnitX()).toRotationMatrix();
+  int highWet = 0, lowWet = 0;  // middle corners wet above 0.5 r (the first component's crest), below
+  for (double t = 1.0; t < 30.0; t += 0.25) {
+    INFO("t = " << t);
+    const double r = sea.ramp(t);
+    const SubmergedProperties p = integrateSubmerged(hull, X, sea, t, ws, true);
+    std::vector<Vector3> w;
+    std::vector<double> d;
+    std::set<std::array<double, 3>> wetCorners, pieceCorners, pieceCrossings;
+    for (const Vector3& v : hull.vertices) {
+      w.push_back(X.actPoint(v));
+      d.push_back(sea.elevation(w.back().x(), w.back().y(), t) - w.back().z());
+      CHECK(std::abs(d.back()) > 1e-9);  // (no corner on the surface to round-off)
+      if (d.back() > 0.0) wetCorners.insert({w.back().x(), w.back().y(), w.back().z()});
+      if (d.back() > 0.0 && std::abs(v.z()) < 0.1) ++(w.back().z() > 0.5 * r ? highWet : lowWet);
+    }
+    // (mesh edges between a wet and a dry corner) => their crossing points
+    std::vector<Vector3> expected;
+    std::set<std::pair<int, int>> crossed;
+    for (const auto& tri : hull.triangles)
+      for (std::size_t e = 0; e < 3; ++e) {
+        const int i = std::min(tri[e], tri[(e + 1) % 3]), j = std::max(tri[e], tri[(e + 1) % 3]);
+        const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
+        if ((d[a] > 0.0) != (d[b] > 0.0) && crossed.insert({i, j}).second)
+          expected.push_back(w[a] + d[a] / (d[a] - d[b]) * (w[b] - w[a]));
+      }
+    for (int k = 0; k < p.wetTriangles; ++k)
+      for (const Vector3& c : ws.wet[static_cast<std::size_t>(k)])
+        (wetCorners.count({c.x(), c.y(), c.z()}) ? pieceCorners : pieceCrossings)
+            .insert({c.x(), c.y(), c.z()});
+    CHECK(pieceCorners == wetCorners);
+    CHECK(pieceCrossings.size() == expected.size());
+    for (const auto& c : pieceCrossings) {
+      double nearest = INFINITY;
+      for (const Vector3& e : expected)
+        nearest = std::min(nearest, (e - Vector3(c[0], c[1], c[2])).norm());
+      CHECK(nearest < 1e-9);
+    }
+  }
+  CHECK(highWet > 0);
+  CHECK(lowWet > 0);
+}

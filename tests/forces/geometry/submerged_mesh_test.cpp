@@ -399,3 +399,34 @@ TEST_CASE("in waves the corners above the crests wait for a crossing, and the re
   CHECK(highWet > 0);
   CHECK(lowWet > 0);
 }
+
+TEST_CASE("in calm water the force and moment are the midpoint rule of rho g (level - z), bit for bit") {
+  // (a heeled box across the level of a calm sea and of a wavy one before its waves start, the
+  // wetted pieces kept) => the force and moment equal -sum p(q) / 3 S and -sum p(q) / 3 q x S
+  // over the pieces' side midpoints in their order, p = rho g (level - z) below the level, to the
+  // last bit: calm water's clipping does the same operations as before the waves' shortcuts
+  const WaterProperties water{kRho, kG, 0.4, 30.0, 5.0, 100.0};
+  const AiryWaves calm(water), later(water, {{1.0, 5.0, 0.7, 0.3}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
+  for (const AiryWaves* sea : {&calm, &later}) {
+    SubmergedWorkspace ws(hull, sea->size());
+    Transform X = Transform::translation(Vector3(3.0, -2.0, 0.9));
+    X.R = (Eigen::AngleAxisd(0.3, Vector3::UnitZ()) * Eigen::AngleAxisd(0.2, Vector3::UnitX()))
+              .toRotationMatrix();
+    const SubmergedProperties got = integrateSubmerged(hull, X, *sea, 50.0, ws, true);
+    Vector3 F = Vector3::Zero(), M = Vector3::Zero();
+    for (int i = 0; i < got.wetTriangles; ++i) {
+      const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
+      const Vector3 S = 0.5 * (b - a).cross(c - a);
+      for (const Vector3& q :
+           {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
+        const double p = q.z() < water.level ? kRho * kG * (water.level - q.z()) : 0.0;
+        F -= p / 3.0 * S;
+        M -= p / 3.0 * q.cross(S);
+      }
+    }
+    CHECK(got.wetTriangles > 20);
+    CHECK(got.force == F);
+    CHECK(got.moment == M);
+  }
+}

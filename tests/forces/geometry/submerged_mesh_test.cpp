@@ -344,7 +344,8 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("in waves the corners above the crests wait for a crossing, and the rest clip as before") {
+TEST_CASE(
+    "in waves the corners above the crests wait for a crossing, and the rest clip as before") {
   // (a box whose top row is above the highest crest the two-component sea reaches (ramp
   // included), whose middle row lies between the level and that crest, heeled, at times during
   // and after the ramp) => its wetted pieces' hull corners are the corners below the surface
@@ -358,7 +359,8 @@ TEST_CASE("in waves the corners above the crests wait for a crossing, and the re
   SubmergedWorkspace ws(hull, sea.size());
   Transform X = Transform::translation(Vector3(2.0, -1.0, 0.45));
   X.R = Eigen::AngleAxisd(0.05, Vector3::UnitX()).toRotationMatrix();
-  int highWet = 0, lowWet = 0;  // middle corners wet above 0.5 r (the first component's crest), below
+  // (middle corners wet above 0.5 r, the first component's crest, and below it) => counts
+  int highWet = 0, lowWet = 0;
   for (double t = 1.0; t < 30.0; t += 0.25) {
     INFO("t = " << t);
     const double r = sea.ramp(t);
@@ -400,7 +402,8 @@ TEST_CASE("in waves the corners above the crests wait for a crossing, and the re
   CHECK(lowWet > 0);
 }
 
-TEST_CASE("in calm water the force and moment are the midpoint rule of rho g (level - z), bit for bit") {
+TEST_CASE(
+    "in calm water the force and moment are the midpoint rule of rho g (level - z), bit for bit") {
   // (a heeled box across the level of a calm sea and of a wavy one before its waves start, the
   // wetted pieces kept) => the force and moment equal -sum p(q) / 3 S and -sum p(q) / 3 q x S
   // over the pieces' side midpoints in their order, p = rho g (level - z) below the level, to the

@@ -143,10 +143,9 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
       if (ws.edgeStamp[k] != ws.call) {
         const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
         const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] = whole
-                                 ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
-                                                       ws.halfPhase.data() + m2 * b, t, ramp)
-                                 : sea.pressure(q, t, ramp);
+        ws.edgePressure[k] = whole ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                         ws.halfPhase.data() + m2 * b, t, ramp)
+                                   : sea.pressure(q, t, ramp);
         ws.edgeStamp[k] = ws.call;
       }
       return ws.edgePressure[k];

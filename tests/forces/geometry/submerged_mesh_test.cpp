@@ -25,6 +25,23 @@ namespace {
 constexpr double kRho = 1025.0, kG = 9.81;
 const AiryWaves calmSea{WaterProperties{kRho, kG, 0.0}};
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+// (the first n wetted pieces kept in ws, pressure(q)) => the edge-midpoint rule written out,
+// piece by piece and side by side: -sum p(q) / 3 S and -sum p(q) / 3 q x S
+template <class Pressure>
+std::pair<Vector3, Vector3> midpointRule(const SubmergedWorkspace& ws, int n, Pressure pressure) {
+  Vector3 F = Vector3::Zero(), M = Vector3::Zero();
+  for (int i = 0; i < n; ++i) {
+    const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
+    const Vector3 S = 0.5 * (b - a).cross(c - a);
+    for (const Vector3& q :
+         {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
+      const double p = pressure(q);
+      F -= p / 3.0 * S;
+      M -= p / 3.0 * q.cross(S);
+    }
+  }
+  return {F, M};
+}
 }  // namespace
 
 TEST_CASE("box barge at several drafts: volume, buoyancy, waterplane exact to round-off") {
@@ -326,17 +343,8 @@ TEST_CASE(
       INFO("z = " << z << " t = " << t);
       const SubmergedProperties got = integrateSubmerged(hull, X, sea, t, ws, true);
       // (the wetted pieces it kept) => sum over each piece's sides of -p(midpoint) / 3 S
-      Vector3 F = Vector3::Zero(), M = Vector3::Zero();
-      for (int i = 0; i < got.wetTriangles; ++i) {
-        const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
-        const Vector3 S = 0.5 * (b - a).cross(c - a);
-        for (const Vector3& q :
-             {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
-          const double p = sea.pressure(q, t);
-          F -= p / 3.0 * S;
-          M -= p / 3.0 * q.cross(S);
-        }
-      }
+      const auto [F, M] =
+          midpointRule(ws, got.wetTriangles, [&](const Vector3& q) { return sea.pressure(q, t); });
       CHECK(got.wetTriangles > 0);
       CHECK((got.force - F).norm() < 1e-10 * F.norm());
       CHECK((got.moment - M).norm() < 1e-10 * (M.norm() + 20.0 * F.norm()));
@@ -417,17 +425,9 @@ TEST_CASE(
     X.R = (Eigen::AngleAxisd(0.3, Vector3::UnitZ()) * Eigen::AngleAxisd(0.2, Vector3::UnitX()))
               .toRotationMatrix();
     const SubmergedProperties got = integrateSubmerged(hull, X, *sea, 50.0, ws, true);
-    Vector3 F = Vector3::Zero(), M = Vector3::Zero();
-    for (int i = 0; i < got.wetTriangles; ++i) {
-      const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
-      const Vector3 S = 0.5 * (b - a).cross(c - a);
-      for (const Vector3& q :
-           {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
-        const double p = q.z() < water.level ? kRho * kG * (water.level - q.z()) : 0.0;
-        F -= p / 3.0 * S;
-        M -= p / 3.0 * q.cross(S);
-      }
-    }
+    const auto [F, M] = midpointRule(ws, got.wetTriangles, [&](const Vector3& q) {
+      return q.z() < water.level ? kRho * kG * (water.level - q.z()) : 0.0;
+    });
     CHECK(got.wetTriangles > 20);
     CHECK(got.force == F);
     CHECK(got.moment == M);

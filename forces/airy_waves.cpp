@@ -165,9 +165,9 @@ double AiryWaves::pressure(const Vector3& p, double t) const {
 }
 
 double AiryWaves::pressure(const Vector3& p, double t, double r) const {
-  const double rg = water_.density * water_.gravity;
   // (calm water, or the waves not started: eta = level and r p_dyn = 0 exactly) => hydrostatic
-  if (waves_.empty() || r == 0.0) return p.z() < water_.level ? rg * (water_.level - p.z()) : 0.0;
+  if (waves_.empty() || r == 0.0) return hydrostaticPressure(p);
+  const double rg = water_.density * water_.gravity;
   // (up to kCached components, an irregular sea's usual 200 included) => each cos(theta) once,
   // for the surface and for the pressure, in a buffer on the stack (2 KB)
   constexpr std::size_t kCached = 256;

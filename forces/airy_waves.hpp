@@ -55,6 +55,11 @@ class AiryWaves {
   double pressure(const dynamics::Vector3& p, double t) const;
   // (p_W, t, r = ramp(t), computed once for many points) => pressure(p, t), the same double, Pa
   double pressure(const dynamics::Vector3& p, double t, double r) const;
+  // (p_W) => the still water's pressure rho g (level - z) below the level, 0 above, Pa: the
+  // same double as pressure(p, t, r) in calm water or with r = 0 (inline: hot in the clipping)
+  double hydrostaticPressure(const dynamics::Vector3& p) const {
+    return p.z() < water_.level ? water_.density * water_.gravity * (water_.level - p.z()) : 0.0;
+  }
   // (t) => the factor in [0, 1] every amplitude is multiplied by at t (water.start, water.ramp)
   double ramp(double t) const;
 

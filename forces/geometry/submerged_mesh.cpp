@@ -1,6 +1,7 @@
 #include "forces/geometry/submerged_mesh.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace yardsim::forces {
@@ -40,23 +41,40 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
                               const AiryWaves& sea, double t, SubmergedWorkspace& ws,
                               bool keepWet) {
   // (X_WB, surface) => corners in the world and their depth below the surface; in waves, each
-  // corner's half phases first (the surface there from them, and later its edges' midpoints)
+  // corner's half phases first (the surface there from them, and later its edges' midpoints),
+  // except for a corner above the highest crest the sea can reach at t (with a margin for
+  // round-off): dry, its depth kAbove until a crossing edge asks for it (depthOf)
   const std::size_t nv = mesh.vertices.size();
   const std::size_t m2 = 2 * sea.size();
   const double ramp = sea.ramp(t);  // once for every point of this call
   const bool waves = !sea.calm() && ramp > 0.0;
   if (waves && ws.halfPhase.size() < m2 * nv) ws.halfPhase.resize(m2 * nv);
+  constexpr double kAbove = -std::numeric_limits<double>::infinity();
+  double crest = std::numeric_limits<double>::infinity();
+  if (waves) {
+    double amplitudes = 0.0;
+    for (std::size_t i = 0; i < sea.size(); ++i) amplitudes += 0.5 * sea.component(i).height;
+    crest = sea.water().level + ramp * amplitudes * (1.0 + 1e-12) + 1e-9;
+  }
+  // (corner i in the world, waves) => its half phases and its depth
+  const auto waveDepth = [&](std::size_t i, const Vector3& p) {
+    double* h = ws.halfPhase.data() + m2 * i;
+    sea.halfPhases(p.x(), p.y(), t, h);
+    return sea.elevationRamped(h, ramp) - p.z();
+  };
   for (std::size_t i = 0; i < nv; ++i) {
     const Vector3 p = X_WB.actPoint(mesh.vertices[i]);
     ws.vertices[i] = p;
-    if (waves) {
-      double* h = ws.halfPhase.data() + m2 * i;
-      sea.halfPhases(p.x(), p.y(), t, h);
-      ws.depth[i] = sea.elevationRamped(h, ramp) - p.z();
-    } else {
+    if (!waves)
       ws.depth[i] = sea.water().level - p.z();
-    }
+    else
+      ws.depth[i] = p.z() > crest ? kAbove : waveDepth(i, p);
   }
+  // (corner i) => its depth, computed now for a corner above the crests
+  const auto depthOf = [&](std::size_t i) {
+    if (ws.depth[i] == kAbove) ws.depth[i] = waveDepth(i, ws.vertices[i]);
+    return ws.depth[i];
+  };
   // apex of the tetrahedra: on the surface above the body origin (on the plane in calm water,
   // where the waterplane's own tetrahedra vanish)
   const Vector3 o(
@@ -71,10 +89,14 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   double vol6 = 0.0, wpA = 0.0, wpX = 0.0, wpY = 0.0, wpXX = 0.0, wpYY = 0.0, wpXY = 0.0;
   Vector3 first = Vector3::Zero(), F = Vector3::Zero(), M = Vector3::Zero();
   // (wetted piece a, b, c; pressureOf(q, side) the pressure at the midpoint q of its side from
-  // a, b, c to b, c, a) => its share of every integral
+  // a, b, c to b, c, a) => its share of every integral. The force and moment: in calm water
+  // -p_i / 3 S and -p_i / 3 q_i x S for each side; in waves, where the pressures cost more than
+  // these products, 3 F = -(sum p_i) S and 3 M = -(sum p_i q_i) x S (one cross product)
   const auto piece = [&](const Vector3& a, const Vector3& b, const Vector3& c, auto&& pressureOf) {
     const Vector3 S = 0.5 * (b - a).cross(c - a);  // outward area vector
     const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
+    double pSum = 0.0;
+    Vector3 pq = Vector3::Zero();
     if constexpr (kAll) {
       const Vector3 ao = a - o, bo = b - o, co = c - o;
       const double d6 = ao.dot(bo.cross(co));
@@ -94,8 +116,17 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         wpXY += w * q.x() * q.y();
       }
       const double p = pressureOf(q, side);
-      F -= p / 3.0 * S;
-      M -= p / 3.0 * q.cross(S);
+      if (!waves) {
+        F -= p / 3.0 * S;
+        M -= p / 3.0 * q.cross(S);
+      } else {
+        pSum += p;
+        pq += p * q;
+      }
+    }
+    if (waves) {
+      F -= pSum * S;
+      M -= pq.cross(S);
     }
     if constexpr (kAll) r.wettedArea += S.norm();
     if (keepWet) ws.wet[static_cast<std::size_t>(r.wetTriangles++)] = {a, b, c};
@@ -107,14 +138,14 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     // waves from its corners' half phases, a crossing one's (between its wet corner and the
     // crossing, the same double vector in both triangles in waves) directly
     const auto edgePressure = [&](const Vector3& q, int e, bool whole) {
+      if (!waves) return sea.hydrostaticPressure(q);
       const auto k = static_cast<std::size_t>(ws.edge[3 * ti + static_cast<std::size_t>(e)]);
       if (ws.edgeStamp[k] != ws.call) {
         const auto a = static_cast<std::size_t>(tri[static_cast<std::size_t>(e)]);
         const auto b = static_cast<std::size_t>(tri[static_cast<std::size_t>((e + 1) % 3)]);
-        ws.edgePressure[k] = waves && whole
-                                 ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
-                                                       ws.halfPhase.data() + m2 * b, t, ramp)
-                                 : sea.pressure(q, t, ramp);
+        ws.edgePressure[k] = whole ? sea.pressureBetween(q, ws.halfPhase.data() + m2 * a,
+                                                         ws.halfPhase.data() + m2 * b, t, ramp)
+                                   : sea.pressure(q, t, ramp);
         ws.edgeStamp[k] = ws.call;
       }
       return ws.edgePressure[k];
@@ -145,11 +176,11 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
         poly[n++] = ws.vertices[i];
       }
       if ((di > 0.0) != (dj > 0.0)) {
+        const double a = depthOf(i), b = depthOf(j);
         corner[n] = -1 - e;
-        poly[n++] =
-            waves && j < i
-                ? Vector3(ws.vertices[j] + dj / (dj - di) * (ws.vertices[i] - ws.vertices[j]))
-                : Vector3(ws.vertices[i] + di / (di - dj) * (ws.vertices[j] - ws.vertices[i]));
+        poly[n++] = waves && j < i
+                        ? Vector3(ws.vertices[j] + b / (b - a) * (ws.vertices[i] - ws.vertices[j]))
+                        : Vector3(ws.vertices[i] + a / (a - b) * (ws.vertices[j] - ws.vertices[i]));
       }
     }
     // (midpoint q of the piece's side from polygon corner u to w, at t) => the incident pressure:
@@ -158,13 +189,14 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     // diagonal of a four-cornered polygon, a side of both its pieces, once
     double diagonal = 0.0;
     const auto pressureAt = [&](const Vector3& q, int u, int w) {
+      if (!waves) return sea.hydrostaticPressure(q);
       const int cu = corner[u], cw = corner[w];
       if (cu >= 0 && cw >= 0) return edgePressure(q, (cu + 1) % 3 == cw ? cu : cw, true);
       if (n == 4 && (u ^ w) == 2) {  // (0, 2) or (2, 0): the first piece's last side comes first
         if (u == 2) diagonal = sea.pressure(q, t, ramp);
         return diagonal;
       }
-      if (waves && (cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
+      if ((cu >= 0) != (cw >= 0)) return edgePressure(q, -1 - std::min(cu, cw), false);
       return sea.pressure(q, t, ramp);
     };
     for (int k = 1; k + 1 < n; ++k) {
@@ -173,8 +205,8 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
             [&](const Vector3& q, int side) { return pressureAt(q, from[side], to[side]); });
     }
   }
-  r.force = F;
-  r.moment = M;
+  r.force = waves ? Vector3(F / 3.0) : F;
+  r.moment = waves ? Vector3(M / 3.0) : M;
   if constexpr (!kAll) return r;
   r.volume = vol6 / 6.0;
   r.centreOfBuoyancy = r.volume > 0.0 ? Vector3(o + first / (4.0 * vol6)) : o;

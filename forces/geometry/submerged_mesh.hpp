@@ -36,7 +36,9 @@ struct SubmergedWorkspace {
   // (mesh, the sea's wave components) => buffers and the edge numbering of its triangles
   explicit SubmergedWorkspace(const TriangleMesh& mesh, std::size_t components = 0);
   std::vector<dynamics::Vector3> vertices;  // world, m
-  std::vector<double> depth;                // eta(x, y, t) - z, m (> 0: wet)
+  // eta(x, y, t) - z, m (> 0: wet); in waves -inf for a corner above the highest crest at t
+  // (dry) whose depth no crossing edge asked for
+  std::vector<double> depth;
   std::vector<std::array<dynamics::Vector3, 3>> wet;  // wetted pieces, world, outward (first wetTriangles)
   // edge[3 t + e]: the number of triangle t's edge from its corner e to corner e + 1, the same for
   // every triangle with those two corners; edgePressure[k] is the incident pressure (Pa) at the

@@ -116,6 +116,15 @@ TEST_CASE("before the waves start the sea is calm water exactly") {
     for (const double z : {-12.0, -0.25, 0.5, 0.75})
       CHECK(sea.pressure(Vector3(3.0, -7.0, z), t) == calm.pressure(Vector3(3.0, -7.0, z), t));
   }
+  // (the still water's pressure, inline for the hull clipping) => rho g (level - z) below the
+  // level, 0 above, as the calm sea's pressure
+  for (const double z : {-12.0, -0.25, 0.5, 0.75}) {
+    const Vector3 p(3.0, -7.0, z);
+    CHECK(calm.hydrostaticPressure(p) ==
+          Approx(z < water.level ? 1025.0 * 9.81 * (water.level - z) : 0.0).epsilon(1e-15));
+    CHECK(calm.hydrostaticPressure(p) == calm.pressure(p, 61.0));
+    CHECK(sea.hydrostaticPressure(p) == sea.pressure(p, 30.0));
+  }
   CHECK(sea.elevation(3.0, -7.0, 61.0) != water.level);
   CHECK(sea.pressure(Vector3(3.0, -7.0, -0.25), 61.0) !=
         calm.pressure(Vector3(3.0, -7.0, -0.25), 61.0));

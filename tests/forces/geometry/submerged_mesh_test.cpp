@@ -25,6 +25,23 @@ namespace {
 constexpr double kRho = 1025.0, kG = 9.81;
 const AiryWaves calmSea{WaterProperties{kRho, kG, 0.0}};
 double rel(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+// (the first n wetted pieces kept in ws, pressure(q)) => the edge-midpoint rule written out,
+// piece by piece and side by side: -sum p(q) / 3 S and -sum p(q) / 3 q x S
+template <class Pressure>
+std::pair<Vector3, Vector3> midpointRule(const SubmergedWorkspace& ws, int n, Pressure pressure) {
+  Vector3 F = Vector3::Zero(), M = Vector3::Zero();
+  for (int i = 0; i < n; ++i) {
+    const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
+    const Vector3 S = 0.5 * (b - a).cross(c - a);
+    for (const Vector3& q :
+         {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
+      const double p = pressure(q);
+      F -= p / 3.0 * S;
+      M -= p / 3.0 * q.cross(S);
+    }
+  }
+  return {F, M};
+}
 }  // namespace
 
 TEST_CASE("box barge at several drafts: volume, buoyancy, waterplane exact to round-off") {
@@ -326,20 +343,93 @@ TEST_CASE(
       INFO("z = " << z << " t = " << t);
       const SubmergedProperties got = integrateSubmerged(hull, X, sea, t, ws, true);
       // (the wetted pieces it kept) => sum over each piece's sides of -p(midpoint) / 3 S
-      Vector3 F = Vector3::Zero(), M = Vector3::Zero();
-      for (int i = 0; i < got.wetTriangles; ++i) {
-        const auto& [a, b, c] = ws.wet[static_cast<std::size_t>(i)];
-        const Vector3 S = 0.5 * (b - a).cross(c - a);
-        for (const Vector3& q :
-             {Vector3(0.5 * (a + b)), Vector3(0.5 * (b + c)), Vector3(0.5 * (c + a))}) {
-          const double p = sea.pressure(q, t);
-          F -= p / 3.0 * S;
-          M -= p / 3.0 * q.cross(S);
-        }
-      }
+      const auto [F, M] =
+          midpointRule(ws, got.wetTriangles, [&](const Vector3& q) { return sea.pressure(q, t); });
       CHECK(got.wetTriangles > 0);
       CHECK((got.force - F).norm() < 1e-10 * F.norm());
       CHECK((got.moment - M).norm() < 1e-10 * (M.norm() + 20.0 * F.norm()));
     }
+  }
+}
+
+TEST_CASE(
+    "in waves the corners above the crests wait for a crossing, and the rest clip as before") {
+  // (a box whose top row is above the highest crest the two-component sea reaches (ramp
+  // included), whose middle row lies between the level and that crest, heeled, at times during
+  // and after the ramp) => its wetted pieces' hull corners are the corners below the surface
+  // (depth from AiryWaves::elevation here), and their crossing points those of the mesh edges
+  // between a wet and a dry corner, interpolated from the edge's end with the lower number at
+  // these depths: the deferred top corners' depths are the surface's, and no middle corner wet
+  // under a crest (above the first component's alone) is taken for dry
+  const AiryWaves sea(WaterProperties{kRho, kG, 0.0, 40.0, 4.0, 0.0},
+                      {{1.0, 5.0, 0.4, 0.3}, {0.4, 6.0, -0.8, 2.0}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 1.9), 6, 3, 2);  // rows z = -0.95, 0, 0.95
+  SubmergedWorkspace ws(hull, sea.size());
+  Transform X = Transform::translation(Vector3(2.0, -1.0, 0.45));
+  X.R = Eigen::AngleAxisd(0.05, Vector3::UnitX()).toRotationMatrix();
+  // (middle corners wet above 0.5 r, the first component's crest, and below it) => counts
+  int highWet = 0, lowWet = 0;
+  for (double t = 1.0; t < 30.0; t += 0.25) {
+    INFO("t = " << t);
+    const double r = sea.ramp(t);
+    const SubmergedProperties p = integrateSubmerged(hull, X, sea, t, ws, true);
+    std::vector<Vector3> w;
+    std::vector<double> d;
+    std::set<std::array<double, 3>> wetCorners, pieceCorners, pieceCrossings;
+    for (const Vector3& v : hull.vertices) {
+      w.push_back(X.actPoint(v));
+      d.push_back(sea.elevation(w.back().x(), w.back().y(), t) - w.back().z());
+      CHECK(std::abs(d.back()) > 1e-9);  // (no corner on the surface to round-off)
+      if (d.back() > 0.0) wetCorners.insert({w.back().x(), w.back().y(), w.back().z()});
+      if (d.back() > 0.0 && std::abs(v.z()) < 0.1) ++(w.back().z() > 0.5 * r ? highWet : lowWet);
+    }
+    // (mesh edges between a wet and a dry corner) => their crossing points
+    std::vector<Vector3> expected;
+    std::set<std::pair<int, int>> crossed;
+    for (const auto& tri : hull.triangles)
+      for (std::size_t e = 0; e < 3; ++e) {
+        const int i = std::min(tri[e], tri[(e + 1) % 3]), j = std::max(tri[e], tri[(e + 1) % 3]);
+        const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
+        if ((d[a] > 0.0) != (d[b] > 0.0) && crossed.insert({i, j}).second)
+          expected.push_back(w[a] + d[a] / (d[a] - d[b]) * (w[b] - w[a]));
+      }
+    for (int k = 0; k < p.wetTriangles; ++k)
+      for (const Vector3& c : ws.wet[static_cast<std::size_t>(k)])
+        (wetCorners.count({c.x(), c.y(), c.z()}) ? pieceCorners : pieceCrossings)
+            .insert({c.x(), c.y(), c.z()});
+    CHECK(pieceCorners == wetCorners);
+    CHECK(pieceCrossings.size() == expected.size());
+    for (const auto& c : pieceCrossings) {
+      double nearest = INFINITY;
+      for (const Vector3& e : expected)
+        nearest = std::min(nearest, (e - Vector3(c[0], c[1], c[2])).norm());
+      CHECK(nearest < 1e-9);
+    }
+  }
+  CHECK(highWet > 0);
+  CHECK(lowWet > 0);
+}
+
+TEST_CASE(
+    "in calm water the force and moment are the midpoint rule of rho g (level - z), bit for bit") {
+  // (a heeled box across the level of a calm sea and of a wavy one before its waves start, the
+  // wetted pieces kept) => the force and moment equal -sum p(q) / 3 S and -sum p(q) / 3 q x S
+  // over the pieces' side midpoints in their order, p = rho g (level - z) below the level, to the
+  // last bit: calm water's clipping does the same operations as before the waves' shortcuts
+  const WaterProperties water{kRho, kG, 0.4, 30.0, 5.0, 100.0};
+  const AiryWaves calm(water), later(water, {{1.0, 5.0, 0.7, 0.3}});
+  const TriangleMesh hull = boxMesh(Vector3(20.0, 8.0, 4.0), 6, 3, 2);
+  for (const AiryWaves* sea : {&calm, &later}) {
+    SubmergedWorkspace ws(hull, sea->size());
+    Transform X = Transform::translation(Vector3(3.0, -2.0, 0.9));
+    X.R = (Eigen::AngleAxisd(0.3, Vector3::UnitZ()) * Eigen::AngleAxisd(0.2, Vector3::UnitX()))
+              .toRotationMatrix();
+    const SubmergedProperties got = integrateSubmerged(hull, X, *sea, 50.0, ws, true);
+    const auto [F, M] = midpointRule(ws, got.wetTriangles, [&](const Vector3& q) {
+      return q.z() < water.level ? kRho * kG * (water.level - q.z()) : 0.0;
+    });
+    CHECK(got.wetTriangles > 20);
+    CHECK(got.force == F);
+    CHECK(got.moment == M);
   }
 }

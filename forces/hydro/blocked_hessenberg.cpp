@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-
 namespace yardsim::forces::hydro {
 
 void reduceToHessenberg(Eigen::MatrixXd& A, int panel) {
@@ -37,8 +36,8 @@ void reduceToHessenberg(Eigen::MatrixXd& A, int panel) {
       double tau = 0.0;
       V(j + 1, i) = 1.0;
       if (sigma > 0.0) {
-        const double beta = alpha >= 0.0 ? -std::sqrt(alpha * alpha + sigma)
-                                         : std::sqrt(alpha * alpha + sigma);
+        const double beta =
+            alpha >= 0.0 ? -std::sqrt(alpha * alpha + sigma) : std::sqrt(alpha * alpha + sigma);
         tau = (beta - alpha) / beta;
         V.col(i).tail(m - 1) = a.tail(m - 1) / (alpha - beta);
         a(j + 1) = beta;
@@ -144,7 +143,8 @@ Eigen::VectorXcd hessenbergEigenvalues(Eigen::MatrixXd& a) {
       r /= s;
       if (m == l) break;
       const double u = std::abs(a(m, m - 1)) * (std::abs(q) + std::abs(r));
-      const double v = std::abs(p) * (std::abs(a(m - 1, m - 1)) + std::abs(z) + std::abs(a(m + 1, m + 1)));
+      const double v =
+          std::abs(p) * (std::abs(a(m - 1, m - 1)) + std::abs(z) + std::abs(a(m + 1, m + 1)));
       if (u + v == v) break;
     }
     for (Eigen::Index i = m + 2; i <= nn; ++i) {

@@ -73,7 +73,8 @@ namespace {
 // the beach spacing from where the ray of the least radius enters the zone (every ray has)
 std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean, double rMin) {
   const double span = s.truncationRadius - rMean;
-  const double zone = (s.truncationRadius - s.dampingWidth - rMin) * span / (s.truncationRadius - rMin);
+  const double zone =
+      (s.truncationRadius - s.dampingWidth - rMin) * span / (s.truncationRadius - rMin);
   const double beach = s.beachSpacing > 0.0 ? s.beachSpacing : s.maxSpacing;
   std::vector<double> d{0.0};
   double h = s.firstSpacing;
@@ -157,10 +158,12 @@ FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSetti
   for (int m = 0; m < rings; ++m) {
     for (int k = 0; k < nw; ++k) {
       const auto sk = static_cast<std::size_t>(k);
-      const double rr = r[sk] + d[static_cast<std::size_t>(m)] / span * (s.truncationRadius - r[sk]);
+      const double rr =
+          r[sk] + d[static_cast<std::size_t>(m)] / span * (s.truncationRadius - r[sk]);
       ray[static_cast<std::size_t>(m * nw + k)] =
           m == 0 ? wetted.vertices[static_cast<std::size_t>(loop[sk])]
-                 : Vector3(out.centre + Vector3(rr * std::cos(theta[sk]), rr * std::sin(theta[sk]), 0.0));
+                 : Vector3(out.centre +
+                           Vector3(rr * std::cos(theta[sk]), rr * std::sin(theta[sk]), 0.0));
     }
   }
   const auto at = [&](int m, int k) -> const Vector3& {
@@ -176,9 +179,10 @@ FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSetti
         // (the row's corners) => in the zone when none lies inside its inner edge
         bool inZone = true;
         for (const Vector3& v : {at(m, k), at(m, k + 1)})
-          inZone = inZone && std::hypot(v.x() - out.centre.x(), v.y() - out.centre.y()) >= zoneStart;
-        const double edge = std::max((at(m, k + 1) - at(m, k)).norm(),
-                                     (at(m + 1, k + 1) - at(m + 1, k)).norm());
+          inZone =
+              inZone && std::hypot(v.x() - out.centre.x(), v.y() - out.centre.y()) >= zoneStart;
+        const double edge =
+            std::max((at(m, k + 1) - at(m, k)).norm(), (at(m + 1, k + 1) - at(m + 1, k)).norm());
         split[static_cast<std::size_t>(m * nw + k)] =
             splitsFor(edge, inZone ? beach : s.azimuthSpacing);
       }

@@ -16,10 +16,10 @@
 // far from the hull a panel between two rays grows wide in azimuth. A row's panel between rays k
 // and k + 1 is then split into 2^j equal panels along its edges, the fewest that make its edges
 // no longer than azimuthSpacing (inside the damping zone's inner edge) or beachSpacing (inside the
-// zone; azimuthSpacing there too without it). The split panels cover exactly the unsplit one; where the splits
-// of two neighbouring rows differ, the finer row's corners lie on the coarser row's straight edge
-// (hanging corners: the constant-strength panels need no shared corners). Without azimuthSpacing
-// the mesh is the unrefined one, vertex for vertex.
+// zone; azimuthSpacing there too without it). The split panels cover exactly the unsplit one; where
+// the splits of two neighbouring rows differ, the finer row's corners lie on the coarser row's
+// straight edge (hanging corners: the constant-strength panels need no shared corners). Without
+// azimuthSpacing the mesh is the unrefined one, vertex for vertex.
 //
 // Damping zone: over the outer annulus of width dampingWidth the free-surface conditions become
 //   zeta_t = phi_z - 2 nu zeta + nu^2 phi / g,   phi_t = -g zeta,
@@ -44,8 +44,9 @@ struct FreeSurfaceSettings {
   double dampingWidth = 0.0;      ///< m, width of the damping annulus (0: none)
   double dampingStrength = 0.0;   ///< nu at the truncation radius, 1/s
   double surfaceDamping = 0.0;    ///< nu0 added on every panel, 1/s (0: none)
-  double azimuthSpacing = 0.0;    ///< m, widest panel edge along a ring inside the zone (0: no split)
-  double beachSpacing = 0.0;      ///< m, ring width (and azimuthal edge) inside the zone (0: maxSpacing)
+  double azimuthSpacing = 0.0;  ///< m, widest panel edge along a ring inside the zone (0: no split)
+  double beachSpacing =
+      0.0;  ///< m, ring width (and azimuthal edge) inside the zone (0: maxSpacing)
 };
 
 /// (period of the longest relevant wave T, s; g) => a damping zone one deep-water wavelength

@@ -19,9 +19,9 @@ namespace yardsim::forces::hydro {
 namespace {
 
 const std::set<std::string> kSettings = {
-    "truncation_radius", "first_spacing", "max_spacing", "growth", "longest_period",
-    "damping_width", "damping_strength", "surface_damping", "cutoff", "band_start", "band_end",
-    "froude_krylov", "panel_step", "azimuth_spacing", "beach_spacing"};
+    "truncation_radius", "first_spacing",    "max_spacing",     "growth",          "longest_period",
+    "damping_width",     "damping_strength", "surface_damping", "cutoff",          "band_start",
+    "band_end",          "froude_krylov",    "panel_step",      "azimuth_spacing", "beach_spacing"};
 
 // (request, name, default; NaN: required) => the setting
 double setting(const HydrodynamicsRequest& q, const std::string& name, double fallback) {
@@ -70,7 +70,8 @@ ImpulseResponseSettings rankineTdSettings(const HydrodynamicsRequest& q) {
         fs.dampingStrength >= 0 && fs.surfaceDamping >= 0 && fs.azimuthSpacing >= 0 &&
         fs.beachSpacing >= 0))
     throw std::invalid_argument(
-        "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= 1, "
+        "rankine_td: expected truncation_radius > 0, 0 < first_spacing <= max_spacing, growth >= "
+        "1, "
         "0 <= damping_width < truncation_radius, damping_strength >= 0, surface_damping >= 0, "
         "azimuth_spacing >= 0, beach_spacing >= 0");
   s.solver.rho = q.water.density;

@@ -1,6 +1,7 @@
 // The hydrodynamic providers allocate nothing once built: the rankine_td provider at a stage and
 // at a panel step, the impulse-response force at a stage and a commit of its memory; every heap
-// allocation counted. (The added mass following a draft: tests/mechanics/stage_allocation_test.cpp.)
+// allocation counted. (The added mass following a draft:
+// tests/mechanics/stage_allocation_test.cpp.)
 #include <catch2/catch.hpp>
 
 #include "support/allocation_counter.hpp"

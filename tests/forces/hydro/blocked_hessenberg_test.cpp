@@ -56,7 +56,8 @@ TEST_CASE("the blocked reduction is upper Hessenberg and orthogonally similar to
       CHECK(H.trace() == Approx(A.trace()).margin(1e-12 * n));
       CHECK(H.norm() == Approx(A.norm()).epsilon(1e-13));
       // (orthogonal similarity) => the same characteristic polynomial: the same eigenvalues
-      const Eigen::VectorXcd reference = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
+      const Eigen::VectorXcd reference =
+          Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
       CHECK(spectrumDistance(eigenvaluesByBlockedHessenberg(A), reference, A.norm()) < 1e-11);
       // (A H^k) => the same traces of powers: tr(A^2), tr(A^3)
       CHECK((H * H).trace() == Approx((A * A).trace()).margin(1e-11 * A.squaredNorm()));
@@ -87,7 +88,8 @@ TEST_CASE("a block-diagonal matrix of rotations has its complex pairs back") {
     expected(2 * k + 1) = {a, -b};
   }
   std::srand(11);
-  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(2 * m, 2 * m)).householderQ();
+  const Eigen::MatrixXd Q =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(2 * m, 2 * m)).householderQ();
   const Eigen::MatrixXd A = Q * D * Q.transpose();
   CHECK(spectrumDistance(eigenvaluesByBlockedHessenberg(A), expected, 1.0) < 1e-12);
 }

@@ -157,7 +157,8 @@ double rayEdge(const PanelMesh& mesh, const std::array<int, 4>& ix) {
 // (mesh, panel) => the largest distance of a corner from the z axis
 double outerRadius(const PanelMesh& mesh, const std::array<int, 4>& ix) {
   double r = 0.0;
-  for (const int i : ix) r = std::max(r, mesh.vertices[static_cast<std::size_t>(i)].head<2>().norm());
+  for (const int i : ix)
+    r = std::max(r, mesh.vertices[static_cast<std::size_t>(i)].head<2>().norm());
   return r;
 }
 
@@ -172,7 +173,8 @@ TEST_CASE("without refinement the rings are the rays' mesh: one vertex per ray a
 }
 
 TEST_CASE(
-    "azimuthal refinement splits the panels wide along the rings and covers the same annulus once") {
+    "azimuthal refinement splits the panels wide along the rings and covers the same annulus "
+    "once") {
   const PanelMesh wet = elongatedHull();
   FreeSurfaceSettings s = settings();
   const FreeSurfaceMesh plain = buildFreeSurface(wet, s);
@@ -229,7 +231,8 @@ TEST_CASE("the beach spacing widens the rings inside the damping zone only") {
   double innerRay = 0.0, innerRing = 0.0, zoneRay = 0.0, zoneRing = 0.0;
   for (const auto& ix : fs.mesh.panels) {
     double rMin = 1e9;
-    for (const int i : ix) rMin = std::min(rMin, fs.mesh.vertices[static_cast<std::size_t>(i)].head<2>().norm());
+    for (const int i : ix)
+      rMin = std::min(rMin, fs.mesh.vertices[static_cast<std::size_t>(i)].head<2>().norm());
     if (outerRadius(fs.mesh, ix) < 14.0) {
       innerRay = std::max(innerRay, rayEdge(fs.mesh, ix));
       innerRing = std::max(innerRing, ringEdge(fs.mesh, ix));

@@ -79,6 +79,11 @@ std::vector<double> ringDistances(const FreeSurfaceSettings& s, double rMean, do
   std::vector<double> d{0.0};
   double h = s.firstSpacing;
   while (d.back() + 0.5 * h < span) {
+    if (d.size() > static_cast<std::size_t>(kMaxFreeSurfacePanels))
+      throw FreeSurfaceError("free surface: more than " + std::to_string(kMaxFreeSurfacePanels) +
+                             " rings of " + std::to_string(h) + " m out to " +
+                             std::to_string(s.truncationRadius) +
+                             " m (the dense solver's limit): raise maxSpacing");
     d.push_back(d.back() + h);
     h = std::min(h * s.growth, d.back() < zone ? s.maxSpacing : beach);
   }
@@ -188,6 +193,14 @@ FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSetti
       }
     }
   }
+  // (splits) => the panel count against the dense solver's limit, before anything is made
+  long long panels = 0;
+  for (const int n : split) panels += n;
+  if (panels > kMaxFreeSurfacePanels)
+    throw FreeSurfaceError("free surface: " + std::to_string(panels) + " panels, more than " +
+                           std::to_string(kMaxFreeSurfacePanels) +
+                           " (the dense solver's limit: its matrices take 3 N^2 doubles): raise "
+                           "maxSpacing or azimuthSpacing");
   // (splits) => vertices: ring m, ray k, then the points towards ray k + 1 at the finer of the
   // two rows' splits (a ray's point first: unsplit, the rings' vertices in ray order)
   std::vector<int> level(d.size() * static_cast<std::size_t>(nw), 1), first(level.size(), 0);

@@ -36,6 +36,10 @@
 
 namespace yardsim::forces::hydro {
 
+/// The most free-surface panels a mesh may have: the dense mixed problem keeps 3 N^2 doubles
+/// (about 10 GB at 20,000); a setting that asks for more is refused before the mesh is made.
+inline constexpr int kMaxFreeSurfacePanels = 20000;
+
 struct FreeSurfaceSettings {
   double truncationRadius = 0.0;  ///< R, m, from the waterline centre
   double firstSpacing = 0.0;      ///< m, width of the ring next to the hull
@@ -72,8 +76,8 @@ class FreeSurfaceError : public std::invalid_argument {
 std::vector<int> waterlineLoop(const PanelMesh& wetted);
 
 /// (wetted hull, settings) => the free-surface panels and their damping; throws
-/// FreeSurfaceError with the numbers when the hull reaches the truncation radius or the
-/// waterline is not star-shaped about its centre.
+/// FreeSurfaceError with the numbers when the hull reaches the truncation radius, the waterline
+/// is not star-shaped about its centre, or the settings ask for more than kMaxFreeSurfacePanels.
 FreeSurfaceMesh buildFreeSurface(const PanelMesh& wetted, const FreeSurfaceSettings& settings);
 
 }  // namespace yardsim::forces::hydro

@@ -250,3 +250,18 @@ TEST_CASE("the beach spacing widens the rings inside the damping zone only") {
   CHECK(zoneRing < 2.5 + 1e-12);
   CHECK(zoneRing > 1.25);
 }
+
+TEST_CASE("spacings that ask for more panels than the dense solver holds are refused first") {
+  const PanelMesh wet = elongatedHull();
+  FreeSurfaceSettings s = settings();
+  s.azimuthSpacing = 1e-6;  // (a typo for 1 m) => about 2^20 parts per ray
+  CHECK_THROWS_WITH(buildFreeSurface(wet, s), Catch::Contains("panels, more than 20000") &&
+                                                  Catch::Contains("azimuthSpacing"));
+  s = settings();
+  s.firstSpacing = s.maxSpacing = 1e-9;
+  CHECK_THROWS_WITH(buildFreeSurface(wet, s), Catch::Contains("rings of") &&
+                                                  Catch::Contains("raise maxSpacing"));
+  s = settings();
+  s.azimuthSpacing = 0.2;  // (within the limit) => built
+  CHECK(buildFreeSurface(wet, s).mesh.panels.size() <= 20000);
+}

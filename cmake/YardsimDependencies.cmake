@@ -28,6 +28,15 @@ if(NOT SQLite3_FOUND)
   message(FATAL_ERROR "yardsim: SQLite3 not found. Install the Debian package 'libsqlite3-dev' "
     "(sudo apt-get install --no-install-recommends libsqlite3-dev), or run scripts/setup.sh.")
 endif()
+# Dense eigenvalues of a few thousand rows (the time-domain Rankine solver's growth check,
+# forces/hydro/dense_eigenvalues): LAPACK's DGEEV from OpenBLAS, through CMake's own find module
+set(BLA_VENDOR OpenBLAS)
+find_package(LAPACK QUIET)
+unset(BLA_VENDOR)
+if(NOT LAPACK_FOUND)
+  message(FATAL_ERROR "yardsim: OpenBLAS's LAPACK not found. Install the Debian package 'libopenblas-dev' "
+    "(sudo apt-get install --no-install-recommends libopenblas-dev), or run scripts/setup.sh.")
+endif()
 # STEP import (forces/geometry/step_reader) through OpenCASCADE 7.6: large, so behind an option;
 # ON by default (CI and scripts/setup.sh install it); OFF builds a yardsim that refuses .step files.
 option(YARDSIM_WITH_STEP "Read STEP files through OpenCASCADE (libocct-data-exchange-dev)" ON)

@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
   libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev libssl-dev
   libsqlite3-dev  # the yard's database (yard/)
+  libopenblas-dev  # LAPACK's dense eigenvalues for the time-domain Rankine solver's growth check (forces/hydro)
   # STEP import (YARDSIM_WITH_STEP): OpenCASCADE 7.6, about 37 MB download, 188 MB installed
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev libocct-foundation-dev
   libtbb-dev  # OCCT's CMake targets name libtbb.so, which only the -dev package has

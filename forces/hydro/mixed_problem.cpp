@@ -6,6 +6,13 @@
 
 #include "forces/hydro/rankine_integrals.hpp"
 
+extern "C" {
+// BLAS (Fortran calling convention): B <- alpha op(A)^-1 B for a triangular A, on the left
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m,
+            const int* n, const double* alpha, const double* a, const int* lda, double* b,
+            const int* ldb);
+}
+
 namespace yardsim::forces::hydro {
 
 namespace {
@@ -84,6 +91,19 @@ void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
   u = lu_->permutationP() * rhs.col(0);
   lu_->matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(u);
   lu_->matrixLU().triangularView<Eigen::Upper>().solveInPlace(u);
+}
+
+Eigen::MatrixXd MixedProblem::surfaceMap() const {
+  // (R_f) => L^-1 P R_f over all rows, then U_ff^-1 on its last N_f rows
+  const int n = size(), nf = surfaceCount(), nb = bodyCount(), columns = nf;
+  if (nf == 0) return Eigen::MatrixXd::Zero(0, 0);
+  Eigen::MatrixXd x = lu_->permutationP() * fromSurface_;
+  const Eigen::MatrixXd& lu = lu_->matrixLU();
+  const double one = 1.0;
+  dtrsm_("L", "L", "N", "U", &n, &columns, &one, lu.data(), &n, x.data(), &n);
+  dtrsm_("L", "U", "N", "N", &nf, &columns, &one, lu.data() + static_cast<Eigen::Index>(nb) * (n + 1),
+         &n, x.data() + nb, &n);
+  return x.bottomRows(nf);
 }
 
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(

@@ -57,6 +57,14 @@ class MixedProblem {
   /// same factorisation (then a functional of the solution costs m (Nb + Nf) per step, not N^2).
   std::pair<Eigen::MatrixXd, Eigen::MatrixXd> adjointMaps(const Eigen::MatrixXd& w) const;
 
+  /// (hull at rest, a = 0) => the N_f x N_f map p => phi_n,f: the last N_f rows of M^-1 R_f, for
+  /// every free-surface column at once (the growth check, surface_growth.hpp). P R_f, then BLAS's
+  /// DTRSM (OpenBLAS): the unit lower triangle over all N rows, and of the upper triangle only its
+  /// trailing N_f x N_f block (the last rows of an upper-triangular solve need only its last rows).
+  /// N^2 N_f + N_f^3 multiply-adds, where solve(0, I) would form R_f I and the whole back-
+  /// substitution (three times as many). Allocates an N x N_f matrix.
+  Eigen::MatrixXd surfaceMap() const;
+
   int bodyCount() const { return static_cast<int>(body_.size()); }
   int surfaceCount() const { return static_cast<int>(surface_.size()); }
   int size() const { return bodyCount() + surfaceCount(); }

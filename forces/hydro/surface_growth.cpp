@@ -3,20 +3,19 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <utility>
 
-#include "forces/hydro/blocked_hessenberg.hpp"
+#include "forces/hydro/dense_eigenvalues.hpp"
 
 namespace yardsim::forces::hydro {
 
 SurfaceGrowth surfaceGrowth(const RankineTdModel& model, double dt) {
   const MixedProblem& pb = model.problem();
-  const int nb = pb.bodyCount(), nf = pb.surfaceCount();
+  const int nf = pb.surfaceCount();
   const double g = model.settings().g;
   // (phi = e_j on the free surface, hull at rest) => column j of L: phi -> phi_z = -phi_n
-  const Eigen::MatrixXd u =
-      pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf));
-  Eigen::MatrixXd L = -u.bottomRows(nf);
-  const Eigen::VectorXcd lambda = eigenvaluesByBlockedHessenberg(L);
+  Eigen::MatrixXd L = -pb.surfaceMap();
+  const Eigen::VectorXcd lambda = denseEigenvalues(std::move(L));
   const double nu0 = model.settings().freeSurface.surfaceDamping;
   SurfaceGrowth out;
   out.panels = nf;

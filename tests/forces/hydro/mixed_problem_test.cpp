@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "forces/hydro/free_surface_mesh.hpp"
 #include "forces/hydro/hull_shapes.hpp"
@@ -113,6 +114,25 @@ TEST_CASE("the adjoint maps give the direct solve's functionals") {
   const Eigen::MatrixXd direct = w.transpose() * pb.solve(a, p);
   const Eigen::MatrixXd viaMaps = qb * a + qf * p;
   CHECK((direct - viaMaps).norm() < 1e-10 * direct.norm());
+}
+
+TEST_CASE("the surface map is the free-surface block of the direct solve, and maps the source") {
+  // (p = e_j, a = 0) => column j of the direct solve's last N_f rows; with the sea-bed image too
+  const Case c = hemisphere(4, 8.0);
+  for (const double depth : {std::numeric_limits<double>::infinity(), 3.0}) {
+    const MixedProblem pb(c.body, c.surface, depth);
+    const int nb = pb.bodyCount(), nf = pb.surfaceCount();
+    const Eigen::MatrixXd map = pb.surfaceMap();
+    REQUIRE(map.rows() == nf);
+    REQUIRE(map.cols() == nf);
+    const Eigen::MatrixXd direct =
+        pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf)).bottomRows(nf);
+    CHECK((map - direct).norm() < 1e-12 * direct.norm());
+    // (any p, a = 0) => the direct solve's phi_n,f: one random combination of the columns
+    const Eigen::VectorXd p = Eigen::VectorXd::Random(nf);
+    const Eigen::MatrixXd u = pb.solve(Eigen::MatrixXd::Zero(nb, 1), p);
+    CHECK((map * p - u.bottomRows(nf)).norm() < 1e-12 * u.bottomRows(nf).norm());
+  }
 }
 
 TEST_CASE("a hull reaching the sea bed is refused") {

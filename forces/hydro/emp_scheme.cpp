@@ -12,9 +12,7 @@ FreeSurfaceState quietSurface(const RankineTdModel& model) {
 
 EmpScratch makeEmpScratch(const RankineTdModel& model) {
   const MixedProblem& pb = model.problem();
-  return {Eigen::MatrixXd::Zero(pb.bodyCount(), 1), Eigen::MatrixXd::Zero(pb.surfaceCount(), 1),
-          Eigen::MatrixXd::Zero(pb.size(), 1), Eigen::MatrixXd::Zero(pb.size(), 1),
-          Eigen::VectorXd::Zero(pb.surfaceCount())};
+  return {Eigen::VectorXd::Zero(pb.surfaceCount()), Eigen::VectorXd::Zero(pb.surfaceCount())};
 }
 
 Vector6 empStep(const RankineTdModel& model, double dt,
@@ -24,11 +22,12 @@ Vector6 empStep(const RankineTdModel& model, double dt,
   const MixedProblem& pb = model.problem();
   const int nb = pb.bodyCount(), nf = pb.surfaceCount();
   const double g = model.settings().g;
-  // (a^n, phi^n) => u = [phi_b; phi_n,f]; phi_z = -phi_n on the free surface (normal -z)
-  scratch.a.col(0) = bodyNormalVelocity;
-  scratch.p.col(0) = state.phi;
-  pb.solve(scratch.a, scratch.p, scratch.rhs, scratch.u);
-  const auto phiZ = -scratch.u.col(0).tail(nf).array();
+  // (a^n, phi^n) => phi_n,f, the last Nf rows of the solution map's product (phi_b is not
+  // needed); phi_z = -phi_n on the free surface (normal -z)
+  const Eigen::MatrixXd& map = pb.solutionMap();
+  scratch.phiN.noalias() = map.bottomLeftCorner(nf, nb) * bodyNormalVelocity;
+  scratch.phiN.noalias() += map.bottomRightCorner(nf, nf) * state.phi;
+  const auto phiZ = -scratch.phiN.array();
   const auto nu = model.damping().array();
   // (phi_z^n, zeta^n, phi^n) => zeta^n+1 (kinematic, explicit)
   scratch.zetaOld = state.zeta;
@@ -46,23 +45,22 @@ Vector6 empStep(const RankineTdModel& model, double dt,
 
 EmpLimit empLimit(const RankineTdModel& model, int iterations) {
   const MixedProblem& pb = model.problem();
-  const int nb = pb.bodyCount(), nf = pb.surfaceCount();
+  const int nf = pb.surfaceCount();
   EmpLimit out;
   out.smallestPanel = std::numeric_limits<double>::infinity();
   for (const Panel& p : pb.surface())
     out.smallestPanel = std::min(out.smallestPanel, std::sqrt(p.area));
-  // (phi on the free surface, hull at rest) => phi_z; power iteration from a deterministic
-  // alternating start (rich in the shortest waves the mesh carries)
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(nb, 1), p(nf, 1), rhs(pb.size(), 1), u(pb.size(), 1);
-  for (int k = 0; k < nf; ++k)
-    p(k, 0) = (k % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.1 * std::sin(1.7 * k));
+  // (phi on the free surface, hull at rest) => phi_z = -A_ff phi; power iteration from a
+  // deterministic alternating start (rich in the shortest waves the mesh carries)
+  const auto toPhiN = pb.solutionMap().bottomRightCorner(nf, nf);
+  Eigen::VectorXd p(nf), w(nf);
+  for (int k = 0; k < nf; ++k) p(k) = (k % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.1 * std::sin(1.7 * k));
   p /= p.norm();
   double lambda = 0.0;
   for (int it = 0; it < iterations; ++it) {
-    pb.solve(a, p, rhs, u);
-    const Eigen::VectorXd w = -u.col(0).tail(nf);
-    lambda = p.col(0).dot(w);
-    p.col(0) = w / w.norm();
+    w.noalias() = -(toPhiN * p);
+    lambda = p.dot(w);
+    p = w / w.norm();
   }
   out.lambdaMax = lambda;
   out.dtMax = lambda > 0.0 ? 2.0 / std::sqrt(model.settings().g * lambda) : 0.0;

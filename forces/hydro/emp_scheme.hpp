@@ -30,8 +30,8 @@ FreeSurfaceState quietSurface(const RankineTdModel& model);
 
 /// Buffers one emp step writes; made once per model.
 struct EmpScratch {
-  Eigen::MatrixXd a, p, rhs, u;  ///< Nb x 1, Nf x 1, N x 1, N x 1
-  Eigen::VectorXd zetaOld;       ///< Nf
+  Eigen::VectorXd phiN;     ///< Nf, phi_n on the free surface, m/s
+  Eigen::VectorXd zetaOld;  ///< Nf
 };
 EmpScratch makeEmpScratch(const RankineTdModel& model);
 

@@ -13,11 +13,10 @@ namespace yardsim::forces::hydro {
 using Complex = std::complex<double>;
 
 FrequencyDomainSolver::FrequencyDomainSolver(const RankineTdModel& model) : model_(model) {
-  // (the factorised mixed problem) => M^-1 R_b and M^-1 R_f by solves with unit data
+  // (the mixed problem's solution map) => M^-1 R_b and M^-1 R_f
   const MixedProblem& pb = model.problem();
-  const int nb = pb.bodyCount(), nf = pb.surfaceCount();
-  fromBody_ = pb.solve(Eigen::MatrixXd::Identity(nb, nb), Eigen::MatrixXd::Zero(nf, nb));
-  fromSurface_ = pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf));
+  fromBody_ = pb.solutionMap().leftCols(pb.bodyCount());
+  fromSurface_ = pb.solutionMap().rightCols(pb.surfaceCount());
   fromModes_ = fromBody_ * model.modes();
 }
 

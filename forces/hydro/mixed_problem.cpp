@@ -3,11 +3,16 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "forces/hydro/rankine_integrals.hpp"
 
 extern "C" {
-// BLAS (Fortran calling convention): B <- alpha op(A)^-1 B for a triangular A, on the left
+// LAPACK and BLAS (Fortran calling convention): the LU factorisation with partial pivoting, its
+// row interchanges applied to other columns, B <- alpha op(A)^-1 B for a triangular A on the left
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2,
+             const int* ipiv, const int* incx);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m,
             const int* n, const double* alpha, const double* a, const int* lda, double* b,
             const int* ldb);
@@ -41,10 +46,9 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
     }
   }
   const auto t0 = std::chrono::steady_clock::now();
-  system_.resize(n, n);
-  fromBody_.resize(n, nb);
-  fromSurface_.resize(n, nf);
-  // (panel j, collocation points x_i and their sea-bed images) => column j of M and of R_b or R_f
+  Eigen::MatrixXd system(n, n);
+  map_.resize(n, n);  // (first R = [R_b R_f], then A = M^-1 R in its place)
+  // (panel j, collocation points x_i and their sea-bed images) => column j of M and of R
   const auto panel = [&](Eigen::Index j) -> const Panel& {
     return j < nb ? body_[static_cast<std::size_t>(j)] : surface_[static_cast<std::size_t>(j - nb)];
   };
@@ -60,63 +64,52 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
       }
       const double self = i == j ? 2.0 * std::numbers::pi : 0.0;
       if (j < nb) {
-        system_(i, j) = self - v.dipole;
-        fromBody_(i, j) = -v.source;
+        system(i, j) = self - v.dipole;
+        map_(i, j) = -v.source;
       } else {
-        system_(i, j) = v.source;
-        fromSurface_(i, j - nb) = v.dipole - self;
+        system(i, j) = v.source;
+        map_(i, j) = v.dipole - self;
       }
     }
   }
   assemblySeconds_ = seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  lu_.emplace(system_);
+  if (n > 0) {
+    // (M) => P M = L U in place; (R) => P R, then L^-1, then U^-1: A
+    const int size = static_cast<int>(n), first = 1;
+    std::vector<int> pivots(static_cast<std::size_t>(n));
+    int info = 0;
+    dgetrf_(&size, &size, system.data(), &size, pivots.data(), &info);
+    if (info != 0)
+      throw PanelError("mixed problem: the influence matrix is singular (pivot " +
+                       std::to_string(info) + " of " + std::to_string(n) +
+                       " is zero: coincident or degenerate panels)");
+    dlaswp_(&size, map_.data(), &size, &first, &size, pivots.data(), &first);
+    const double one = 1.0;
+    dtrsm_("L", "L", "N", "U", &size, &size, &one, system.data(), &size, map_.data(), &size);
+    dtrsm_("L", "U", "N", "N", &size, &size, &one, system.data(), &size, map_.data(), &size);
+  }
   factorSeconds_ = seconds(t1);
 }
 
 void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
                          const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
-                         Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const {
-  // (a, p) => R_b a + R_f p, then u = M^-1 rhs by the LU's back-substitution
-  rhs.noalias() = fromBody_ * bodyNormal;
-  rhs.noalias() += fromSurface_ * surfacePotential;
-  if (rhs.cols() != 1) {
-    out = lu_->solve(rhs);
-    return;
-  }
-  // (one column: a panel step) => P rhs, then the two triangles in place on that column: Eigen's
-  // vector substitutions work in the column itself, where its matrix solve packs blocks from the
-  // heap (a solve as PartialPivLU::solve does; the same to round-off)
-  auto u = out.col(0);
-  u = lu_->permutationP() * rhs.col(0);
-  lu_->matrixLU().triangularView<Eigen::UnitLower>().solveInPlace(u);
-  lu_->matrixLU().triangularView<Eigen::Upper>().solveInPlace(u);
-}
-
-Eigen::MatrixXd MixedProblem::surfaceMap() const {
-  // (R_f) => L^-1 P R_f over all rows, then U_ff^-1 on its last N_f rows
-  const int n = size(), nf = surfaceCount(), nb = bodyCount(), columns = nf;
-  if (nf == 0) return Eigen::MatrixXd::Zero(0, 0);
-  Eigen::MatrixXd x = lu_->permutationP() * fromSurface_;
-  const Eigen::MatrixXd& lu = lu_->matrixLU();
-  const double one = 1.0;
-  dtrsm_("L", "L", "N", "U", &n, &columns, &one, lu.data(), &n, x.data(), &n);
-  dtrsm_("L", "U", "N", "N", &nf, &columns, &one, lu.data() + static_cast<Eigen::Index>(nb) * (n + 1),
-         &n, x.data() + nb, &n);
-  return x.bottomRows(nf);
+                         Eigen::Ref<Eigen::MatrixXd> out) const {
+  // (a, p) => u = A_b a + A_f p
+  out.noalias() = map_.leftCols(bodyCount()) * bodyNormal;
+  out.noalias() += map_.rightCols(surfaceCount()) * surfacePotential;
 }
 
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(
     const Eigen::MatrixXd& w) const {
-  // (w) => z = M^-T w, then (z^T R_b, z^T R_f)
-  const Eigen::MatrixXd z = lu_->transpose().solve(w);
-  return {z.transpose() * fromBody_, z.transpose() * fromSurface_};
+  // (w) => (w^T A_b, w^T A_f)
+  return {w.transpose() * map_.leftCols(bodyCount()), w.transpose() * map_.rightCols(surfaceCount())};
 }
 
 Eigen::MatrixXd MixedProblem::solve(const Eigen::MatrixXd& bodyNormal,
                                     const Eigen::MatrixXd& surfacePotential) const {
-  Eigen::MatrixXd rhs(size(), bodyNormal.cols()), out(size(), bodyNormal.cols());
-  solve(bodyNormal, surfacePotential, rhs, out);
+  Eigen::MatrixXd out(size(), bodyNormal.cols());
+  solve(bodyNormal, surfacePotential, out);
   return out;
 }
 

@@ -14,18 +14,18 @@
 //   sum_{j in b} (2 pi d_ij - D_ij) phi_j + sum_{j in f} S_ij phi_n,j
 //       = - sum_{j in b} S_ij phi_n,j + sum_{j in f} (D_ij - 2 pi d_ij) phi_j
 // i.e. M u = R_b a + R_f p with u = [phi_b; phi_n,f], a = phi_n,b, p = phi_f. M is assembled and
-// LU-factorised once for the fixed geometry (Eigen partial-pivot LU, in place); every time step
-// then needs the right-hand side (one pass over R_b and R_f, N^2 multiply-adds) and one
-// back-substitution (2 N^2), for as many columns as it has cases. D_ij = 0 between two free-
-// surface panels (coplanar).
+// factorised once for the fixed geometry (LAPACK's DGETRF, partial pivoting: OpenBLAS), and the
+// solution map A = M^-1 [R_b R_f] (N x N) formed from the factors by two triangular solves with N
+// columns (DTRSM); M's factors and R are then dropped. Every time step then needs one matrix-
+// vector product u = A_b a + A_f p (N^2 multiply-adds over N^2 doubles), where a right-hand side
+// and a back-substitution per step read 2 N^2 (docs/hydrodynamics.md, "Limits of the time-domain
+// solver"). D_ij = 0 between two free-surface panels (coplanar).
 #include <chrono>
 #include <limits>
-#include <optional>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "forces/hydro/panel_geometry.hpp"
 
@@ -34,36 +34,32 @@ namespace yardsim::forces::hydro {
 class MixedProblem {
  public:
   /// (body panels, free-surface panels, water depth h in m: infinity for deep water) => M, R_b,
-  /// R_f assembled and M factorised. Throws PanelError when h does not lie below the hull.
+  /// R_f assembled, M factorised and the solution map formed. Throws PanelError when h does not
+  /// lie below the hull or M is singular.
   MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurface,
                double depth = std::numeric_limits<double>::infinity());
-  /// Not copyable or movable: the LU factors refer to the matrix they overwrite.
+  /// Not copyable: the solution map is N x N doubles.
   MixedProblem(const MixedProblem&) = delete;
   MixedProblem& operator=(const MixedProblem&) = delete;
 
   /// (phi_n on the body, Nb x m; phi on the free surface, Nf x m) => u = [phi_b; phi_n,f], N x m,
-  /// written into out through rhs (N x m scratch). For preallocated rhs and out nothing is
-  /// allocated but Eigen's packing blocks of the triangular solves, from the heap when larger than
-  /// EIGEN_STACK_ALLOCATION_LIMIT (docs/performance.md, "Allocation-free steady state").
+  /// written into out (u = A_b a + A_f p). For a preallocated out nothing is allocated.
   void solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
              const Eigen::Ref<const Eigen::MatrixXd>& surfacePotential,
-             Eigen::Ref<Eigen::MatrixXd> rhs, Eigen::Ref<Eigen::MatrixXd> out) const;
+             Eigen::Ref<Eigen::MatrixXd> out) const;
   /// The same, allocating its result.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& bodyNormal,
                         const Eigen::MatrixXd& surfacePotential) const;
 
-  /// (w, N x m: m functionals u => w^T u of the solution) => (w^T M^-1 R_b, m x Nb; w^T M^-1 R_f,
-  /// m x Nf): the same functionals as maps of the data a, p, through one transposed solve with the
-  /// same factorisation (then a functional of the solution costs m (Nb + Nf) per step, not N^2).
+  /// (w, N x m: m functionals u => w^T u of the solution) => (w^T A_b, m x Nb; w^T A_f, m x Nf):
+  /// the same functionals as maps of the data a, p (then a functional of the solution costs
+  /// m (Nb + Nf) per step, not N^2).
   std::pair<Eigen::MatrixXd, Eigen::MatrixXd> adjointMaps(const Eigen::MatrixXd& w) const;
 
-  /// (hull at rest, a = 0) => the N_f x N_f map p => phi_n,f: the last N_f rows of M^-1 R_f, for
-  /// every free-surface column at once (the growth check, surface_growth.hpp). P R_f, then BLAS's
-  /// DTRSM (OpenBLAS): the unit lower triangle over all N rows, and of the upper triangle only its
-  /// trailing N_f x N_f block (the last rows of an upper-triangular solve need only its last rows).
-  /// N^2 N_f + N_f^3 multiply-adds, where solve(0, I) would form R_f I and the whole back-
-  /// substitution (three times as many). Allocates an N x N_f matrix.
-  Eigen::MatrixXd surfaceMap() const;
+  /// The solution map A = M^-1 [R_b R_f], N x N: columns 0 .. Nb - 1 map a, the rest p. Its last
+  /// Nf rows and columns are the map p => phi_n,f with the hull at rest (the growth check,
+  /// surface_growth.hpp).
+  const Eigen::MatrixXd& solutionMap() const { return map_; }
 
   int bodyCount() const { return static_cast<int>(body_.size()); }
   int surfaceCount() const { return static_cast<int>(surface_.size()); }
@@ -71,17 +67,15 @@ class MixedProblem {
   const std::vector<Panel>& body() const { return body_; }
   const std::vector<Panel>& surface() const { return surface_; }
   double depth() const { return depth_; }
-  /// Wall-clock seconds the influence assembly and the LU took (measured in the constructor).
+  /// Wall-clock seconds the influence assembly and the factorisation with the solution map took
+  /// (measured in the constructor).
   double assemblySeconds() const { return assemblySeconds_; }
   double factorSeconds() const { return factorSeconds_; }
 
  private:
   std::vector<Panel> body_, surface_;
   double depth_;
-  Eigen::MatrixXd system_;       ///< M, overwritten by its LU factors
-  Eigen::MatrixXd fromBody_;     ///< R_b, N x Nb
-  Eigen::MatrixXd fromSurface_;  ///< R_f, N x Nf
-  std::optional<Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>> lu_;
+  Eigen::MatrixXd map_;  ///< A = M^-1 [R_b R_f], N x N
   double assemblySeconds_ = 0.0, factorSeconds_ = 0.0;
 };
 

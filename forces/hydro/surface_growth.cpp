@@ -14,7 +14,7 @@ SurfaceGrowth surfaceGrowth(const RankineTdModel& model, double dt) {
   const int nf = pb.surfaceCount();
   const double g = model.settings().g;
   // (phi = e_j on the free surface, hull at rest) => column j of L: phi -> phi_z = -phi_n
-  Eigen::MatrixXd L = -pb.surfaceMap();
+  Eigen::MatrixXd L = -pb.solutionMap().bottomRightCorner(nf, nf);
   const Eigen::VectorXcd lambda = denseEigenvalues(std::move(L));
   const double nu0 = model.settings().freeSurface.surfaceDamping;
   SurfaceGrowth out;

@@ -8,10 +8,14 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
+
+#include <Eigen/LU>
 
 #include "forces/hydro/free_surface_mesh.hpp"
 #include "forces/hydro/hull_shapes.hpp"
 #include "forces/hydro/mixed_problem.hpp"
+#include "forces/hydro/rankine_integrals.hpp"
 #include "forces/hydro/wetted_surface.hpp"
 
 using namespace yardsim::forces::hydro;
@@ -116,22 +120,44 @@ TEST_CASE("the adjoint maps give the direct solve's functionals") {
   CHECK((direct - viaMaps).norm() < 1e-10 * direct.norm());
 }
 
-TEST_CASE("the surface map is the free-surface block of the direct solve, and maps the source") {
-  // (p = e_j, a = 0) => column j of the direct solve's last N_f rows; with the sea-bed image too
+TEST_CASE("the solution map solves the assembled system, with and without the sea-bed image") {
+  // (A = M^-1 [R_b R_f]) => M A = R, with M and R assembled here from the panel integrals on
+  // their own; and A's last Nf rows and columns are the direct solve's phi_n,f for a = 0
   const Case c = hemisphere(4, 8.0);
   for (const double depth : {std::numeric_limits<double>::infinity(), 3.0}) {
     const MixedProblem pb(c.body, c.surface, depth);
-    const int nb = pb.bodyCount(), nf = pb.surfaceCount();
-    const Eigen::MatrixXd map = pb.surfaceMap();
-    REQUIRE(map.rows() == nf);
-    REQUIRE(map.cols() == nf);
-    const Eigen::MatrixXd direct =
-        pb.solve(Eigen::MatrixXd::Zero(nb, nf), Eigen::MatrixXd::Identity(nf, nf)).bottomRows(nf);
-    CHECK((map - direct).norm() < 1e-12 * direct.norm());
-    // (any p, a = 0) => the direct solve's phi_n,f: one random combination of the columns
-    const Eigen::VectorXd p = Eigen::VectorXd::Random(nf);
-    const Eigen::MatrixXd u = pb.solve(Eigen::MatrixXd::Zero(nb, 1), p);
-    CHECK((map * p - u.bottomRows(nf)).norm() < 1e-12 * u.bottomRows(nf).norm());
+    const int nb = pb.bodyCount(), nf = pb.surfaceCount(), n = pb.size();
+    Eigen::MatrixXd M(n, n), R(n, n);
+    for (int j = 0; j < n; ++j) {
+      const Panel& pj = j < nb ? c.body[static_cast<std::size_t>(j)]
+                               : c.surface[static_cast<std::size_t>(j - nb)];
+      for (int i = 0; i < n; ++i) {
+        const Vector3 x = i < nb ? c.body[static_cast<std::size_t>(i)].centroid
+                                 : c.surface[static_cast<std::size_t>(i - nb)].centroid;
+        PanelIntegrals v = panelIntegrals(pj, x);
+        if (std::isfinite(depth)) {
+          const PanelIntegrals w = panelIntegrals(pj, Vector3(x.x(), x.y(), -2.0 * depth - x.z()));
+          v.source += w.source;
+          v.dipole += w.dipole;
+        }
+        const double self = i == j ? 2.0 * std::numbers::pi : 0.0;
+        M(i, j) = j < nb ? self - v.dipole : v.source;
+        R(i, j) = j < nb ? -v.source : v.dipole - self;
+      }
+    }
+    const Eigen::MatrixXd& A = pb.solutionMap();
+    REQUIRE(A.rows() == n);
+    REQUIRE(A.cols() == n);
+    CHECK((M * A - R).norm() < 1e-12 * M.norm() * A.norm());
+    // (any a, p) => solve is A [a; p]
+    const Eigen::VectorXd a = Eigen::VectorXd::Random(nb), p = Eigen::VectorXd::Random(nf);
+    Eigen::VectorXd ap(n);
+    ap << a, p;
+    const Eigen::VectorXd reference = M.partialPivLu().solve(R * ap);
+    CHECK((pb.solve(a, p) - reference).norm() < 1e-11 * reference.norm());
+    CHECK((A.bottomRightCorner(nf, nf) * p -
+           pb.solve(Eigen::VectorXd::Zero(nb), p).bottomRows(nf))
+              .norm() < 1e-12 * p.norm() * A.norm());
   }
 }
 

@@ -36,8 +36,9 @@
 
 namespace yardsim::forces::hydro {
 
-/// The most free-surface panels a mesh may have: the dense mixed problem keeps 3 N^2 doubles
-/// (about 10 GB at 20,000); a setting that asks for more is refused before the mesh is made.
+/// The most free-surface panels a mesh may have: the dense mixed problem holds 2 N^2 doubles
+/// while it is set up (about 7 GB at 20,000); a setting that asks for more is refused before the
+/// mesh is made.
 inline constexpr int kMaxFreeSurfacePanels = 20000;
 
 struct FreeSurfaceSettings {

@@ -5,18 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "forces/hydro/dense_solve.hpp"
 #include "forces/hydro/rankine_integrals.hpp"
-
-extern "C" {
-// LAPACK and BLAS (Fortran calling convention): the LU factorisation with partial pivoting, its
-// row interchanges applied to other columns, B <- alpha op(A)^-1 B for a triangular A on the left
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2,
-             const int* ipiv, const int* incx);
-void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m,
-            const int* n, const double* alpha, const double* a, const int* lda, double* b,
-            const int* ldb);
-}
 
 namespace yardsim::forces::hydro {
 
@@ -74,20 +64,12 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
   }
   assemblySeconds_ = seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  if (n > 0) {
-    // (M) => P M = L U in place; (R) => P R, then L^-1, then U^-1: A
-    const int size = static_cast<int>(n), first = 1;
-    std::vector<int> pivots(static_cast<std::size_t>(n));
-    int info = 0;
-    dgetrf_(&size, &size, system.data(), &size, pivots.data(), &info);
-    if (info != 0)
-      throw PanelError("mixed problem: the influence matrix is singular (pivot " +
-                       std::to_string(info) + " of " + std::to_string(n) +
-                       " is zero: coincident or degenerate panels)");
-    dlaswp_(&size, map_.data(), &size, &first, &size, pivots.data(), &first);
-    const double one = 1.0;
-    dtrsm_("L", "L", "N", "U", &size, &size, &one, system.data(), &size, map_.data(), &size);
-    dtrsm_("L", "U", "N", "N", &size, &size, &one, system.data(), &size, map_.data(), &size);
+  try {
+    solveInPlace(system, map_);  // (M, R) => A = M^-1 R
+  } catch (const std::runtime_error& e) {
+    throw PanelError(std::string("mixed problem: the influence matrix is singular (coincident or "
+                                 "degenerate panels): ") +
+                     e.what());
   }
   factorSeconds_ = seconds(t1);
 }

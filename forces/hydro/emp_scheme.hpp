@@ -2,13 +2,13 @@
 // Time marching of the linear free surface by the explicit-kinematic / implicit-dynamic scheme
 // ("emp", symplectic Euler) on the panels of a RankineTdModel. Per step t_n -> t_n+1 = t_n + dt:
 //   1. phi_z^n on the free surface from the mixed problem with phi^n there and the hull's
-//      normal velocity a^n (one right-hand side, one back-substitution);
+//      normal velocity a^n (the last Nf rows of the solution map's product, mixed_problem.hpp);
 //   2. zeta^n+1 = zeta^n + dt (phi_z^n - 2 nu zeta^n + nu^2 phi^n / g)      (explicit, kinematic)
 //   3. phi^n+1  = phi^n - dt g zeta^n+1                                     (implicit, dynamic)
 // zeta lives at the half steps (zeta^n ~ zeta(t_n - dt/2), the Stormer-Verlet reading of
 // symplectic Euler), so the memory force at t_n takes the Dirichlet value -g (zeta^n + zeta^n+1)/2:
 //   F^M(t_n) = forceFromSurface (-g (zeta^n + zeta^n+1) / 2) + forceFromBody a_t^n
-// (the dphi^M/dt problem through the adjoint maps of the same factorisation; a_t the Neumann
+// (the dphi^M/dt problem through the adjoint maps of the same solution map; a_t the Neumann
 // value of dphi^M/dt on the hull: 0 for radiation, -d^2 phi_I/(dn dt) for diffraction).
 // Without damping the scheme is stable for g lambda_max dt^2 <= 4, lambda_max the largest
 // eigenvalue of the discrete operator phi -> phi_z on the free surface (hull at rest).

@@ -18,8 +18,8 @@
 // solution map A = M^-1 [R_b R_f] (N x N) formed from the factors by two triangular solves with N
 // columns (DTRSM); M's factors and R are then dropped. Every time step then needs one matrix-
 // vector product u = A_b a + A_f p (N^2 multiply-adds over N^2 doubles), where a right-hand side
-// and a back-substitution per step read 2 N^2 (docs/hydrodynamics.md, "Limits of the time-domain
-// solver"). D_ij = 0 between two free-surface panels (coplanar).
+// and a back-substitution per step read 2 N^2 (docs/hydrodynamics.md, "Mixed boundary-value
+// problem"). D_ij = 0 between two free-surface panels (coplanar).
 #include <chrono>
 #include <limits>
 #include <utility>

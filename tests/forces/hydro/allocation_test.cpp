@@ -21,7 +21,7 @@ using namespace yardsim::forces;
 using namespace yardsim::forces::testing;
 
 TEST_CASE("the rankine_td provider allocates nothing at a stage or a panel step") {
-  // (a stage, a panel step: MixedProblem::solve's back-substitution of one column) => no heap block
+  // (a stage, a panel step: the product with the mixed problem's solution map) => no heap block
   // (before 2026-11-29 PartialPivLU::solve on an N x 1 matrix took Eigen's blocked triangular
   // solves, whose packing blocks above EIGEN_STACK_ALLOCATION_LIMIT came from the heap)
   dynamics::ModelBuilder b;

@@ -6,10 +6,10 @@
 #include <vector>
 
 extern "C" {
-// LAPACK (Fortran calling convention): eigenvalues, and optionally eigenvectors, of a general matrix
-void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* wr,
-            double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr, double* work,
-            const int* lwork, int* info);
+// LAPACK (Fortran calling convention): the eigenvalues (and eigenvectors) of a general matrix
+void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda,
+            double* wr, double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr,
+            double* work, const int* lwork, int* info);
 }
 
 namespace yardsim::forces::hydro {

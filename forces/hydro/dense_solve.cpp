@@ -8,8 +8,8 @@ extern "C" {
 // LAPACK and BLAS (Fortran calling convention): the LU factorisation with partial pivoting, its
 // row interchanges applied to other columns, B <- alpha op(A)^-1 B for a triangular A on the left
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2,
-             const int* ipiv, const int* incx);
+void dlaswp_(const int* n, double* a, const int* lda, const int* k1, const int* k2, const int* ipiv,
+             const int* incx);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m,
             const int* n, const double* alpha, const double* a, const int* lda, double* b,
             const int* ldb);
@@ -19,10 +19,11 @@ namespace yardsim::forces::hydro {
 
 void solveInPlace(Eigen::MatrixXd& M, Eigen::MatrixXd& B) {
   if (M.rows() != M.cols() || B.rows() != M.rows())
-    throw std::invalid_argument("solveInPlace: expected a square matrix and as many rows of "
-                                "right-hand sides (" +
-                                std::to_string(M.rows()) + " x " + std::to_string(M.cols()) +
-                                " and " + std::to_string(B.rows()) + " rows)");
+    throw std::invalid_argument(
+        "solveInPlace: expected a square matrix and as many rows of "
+        "right-hand sides (" +
+        std::to_string(M.rows()) + " x " + std::to_string(M.cols()) + " and " +
+        std::to_string(B.rows()) + " rows)");
   const int n = static_cast<int>(M.rows()), m = static_cast<int>(B.cols()), first = 1;
   if (n == 0 || m == 0) return;
   // (M) => P M = L U in place; (B) => P B, then L^-1, then U^-1

@@ -85,7 +85,8 @@ void MixedProblem::solve(const Eigen::Ref<const Eigen::MatrixXd>& bodyNormal,
 std::pair<Eigen::MatrixXd, Eigen::MatrixXd> MixedProblem::adjointMaps(
     const Eigen::MatrixXd& w) const {
   // (w) => (w^T A_b, w^T A_f)
-  return {w.transpose() * map_.leftCols(bodyCount()), w.transpose() * map_.rightCols(surfaceCount())};
+  return {w.transpose() * map_.leftCols(bodyCount()),
+          w.transpose() * map_.rightCols(surfaceCount())};
 }
 
 Eigen::MatrixXd MixedProblem::solve(const Eigen::MatrixXd& bodyNormal,

@@ -128,8 +128,10 @@ TEST_CASE(
     std::string line;
     bool inSea = false;
     while (std::getline(in, line)) {
-      if (line.rfind("  sea:", 0) == 0) inSea = true;
-      else if (inSea && line.rfind("    ", 0) != 0) inSea = false;
+      if (line.rfind("  sea:", 0) == 0)
+        inSea = true;
+      else if (inSea && line.rfind("    ", 0) != 0)
+        inSea = false;
       if (inSea) out.push_back(line);
     }
     return out;

@@ -155,8 +155,7 @@ TEST_CASE("the solution map solves the assembled system, with and without the se
     ap << a, p;
     const Eigen::VectorXd reference = M.partialPivLu().solve(R * ap);
     CHECK((pb.solve(a, p) - reference).norm() < 1e-11 * reference.norm());
-    CHECK((A.bottomRightCorner(nf, nf) * p -
-           pb.solve(Eigen::VectorXd::Zero(nb), p).bottomRows(nf))
+    CHECK((A.bottomRightCorner(nf, nf) * p - pb.solve(Eigen::VectorXd::Zero(nb), p).bottomRows(nf))
               .norm() < 1e-12 * p.norm() * A.norm());
   }
 }

@@ -59,6 +59,17 @@ std::vector<std::string> body(const std::string& file) {
   return out;
 }
 
+// (variant file) => its body() is scene.yaml's, line for line
+void checkSameBody(const std::string& file) {
+  const auto variant = body(kDir + file), scene = body(kDir + "scene.yaml");
+  REQUIRE(scene.size() > 150);
+  REQUIRE(variant.size() == scene.size());
+  for (std::size_t k = 0; k < scene.size(); ++k) {
+    INFO(file << ": line " << k << " after the header");
+    CHECK(variant[k] == scene[k]);
+  }
+}
+
 // One run of a scene in calm water to 40 s: the rope tensions at rest (4 s) and every 0.5 s, the
 // barge's added mass and the energy balance's drift
 struct Run {
@@ -102,25 +113,13 @@ Run run(const std::string& file) {
 TEST_CASE(
     "megablock rankine_td: the variant is the main scene but for the sea and the crane's "
     "hydrodynamics") {
-  const auto variant = body(kDir + "rankine_td.yaml"), scene = body(kDir + "scene.yaml");
-  REQUIRE(scene.size() > 150);
-  REQUIRE(variant.size() == scene.size());
-  for (std::size_t k = 0; k < scene.size(); ++k) {
-    INFO("line " << k << " after the header");
-    CHECK(variant[k] == scene[k]);
-  }
+  checkSameBody("rankine_td.yaml");
 }
 
 TEST_CASE(
     "megablock rankine_td_sea: the variant is the main scene, sea included, but for the crane's "
     "hydrodynamics") {
-  const auto variant = body(kDir + "rankine_td_sea.yaml"), scene = body(kDir + "scene.yaml");
-  REQUIRE(scene.size() > 150);
-  REQUIRE(variant.size() == scene.size());
-  for (std::size_t k = 0; k < scene.size(); ++k) {
-    INFO("line " << k << " after the header");
-    CHECK(variant[k] == scene[k]);
-  }
+  checkSameBody("rankine_td_sea.yaml");
   // (the sea parameter itself, which body() leaves out) => the same lines in both files
   const auto seaLines = [](const std::string& file) {
     std::ifstream in(file);

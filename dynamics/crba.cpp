@@ -38,10 +38,13 @@ void worldCompact(const SpatialInertia& I, bool diagonal, const Transform& X, do
   } else {
     const double* J = I.inertiaCom.data();
     for (int col = 0; col < 3; ++col) {
-      for (int r = 0; r < 3; ++r) G[r + 3 * col] = R[r] * J[3 * col] + R[r + 3] * J[3 * col + 1] + R[r + 6] * J[3 * col + 2];
+      for (int r = 0; r < 3; ++r)
+        G[r + 3 * col] = R[r] * J[3 * col] + R[r + 3] * J[3 * col + 1] + R[r + 6] * J[3 * col + 2];
     }
   }
-  const auto gr = [&](int r, int s) { return G[r] * R[s] + G[r + 3] * R[s + 3] + G[r + 6] * R[s + 6]; };
+  const auto gr = [&](int r, int s) {
+    return G[r] * R[s] + G[r + 3] * R[s + 3] + G[r + 6] * R[s + 6];
+  };
   const double m = I.mass, mc2 = m * (c0 * c0 + c1 * c1 + c2 * c2);
   k[0] = m;
   k[1] = m * c0;
@@ -74,7 +77,8 @@ void placeWithSubspace(const Model& m, Data& d, int i, const Eigen::VectorXd& q)
   if (m.jointNv[i] == 1) {
     d.S_W.col(m.idxV[i]) = worldSubspaceColumn(m, d, i);
   } else {
-    for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
+    for (int k = 0; k < m.jointNv[i]; ++k)
+      d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
   }
 }
 
@@ -134,7 +138,8 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const double* k = d.IC_W[i].data();
     const int iv = m.idxV[i];
-    for (int c = iv; c < iv + m.jointNv[i]; ++c) applyCompact(k, d.S_W.col(c).data(), d.Fcrb.col(c).data());
+    for (int c = iv; c < iv + m.jointNv[i]; ++c)
+      applyCompact(k, d.S_W.col(c).data(), d.Fcrb.col(c).data());
     for (int c = iv; c < iv + m.jointNv[i]; ++c) {
       const int ns = m.dofSubtree[c];
       if (ns >= kGemvRows) {

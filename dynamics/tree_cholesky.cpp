@@ -74,7 +74,8 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const double inv = 1.0 / lii;
     if (ns < kGemvRows) {
       // (few subtree rows) => one dot product per ancestor j, found by walking the parents
-      for (int j = parent[static_cast<std::size_t>(i)]; j >= 0; j = parent[static_cast<std::size_t>(j)]) {
+      for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;
+           j = parent[static_cast<std::size_t>(j)]) {
         const double* lj = l + j * ld + i + 1;  // L(sub i, j)
         double s = ai[j];
         for (int k = 0; k < ns; ++k) s -= li[k] * lj[k];

@@ -66,8 +66,11 @@ TEST_CASE("CRBA's compact composites against RNEA and ABA column by column, and 
   // chains and floating-base trees of revolute, prismatic and free joints (the kernels' axis and
   // diagonal-inertia shortcuts and the general path), no added mass: M from 10-number composites
   std::mt19937 rng(2811);
-  std::vector<Model> models = {planarChain(8), planarChain(33), randomAxisTree(rng, 9, false, true),
-                               randomAxisTree(rng, 33, false, false), randomAxisTree(rng, 70, false, true),
+  std::vector<Model> models = {planarChain(8),
+                               planarChain(33),
+                               randomAxisTree(rng, 9, false, true),
+                               randomAxisTree(rng, 33, false, false),
+                               randomAxisTree(rng, 70, false, true),
                                randomTree(rng, 20)};
   for (Model& m : models) {
     INFO("bodies " << m.nbodies - 1 << " dofs " << m.nv);

@@ -58,6 +58,34 @@ void worldCompact(const SpatialInertia& I, bool diagonal, const Transform& X, do
   k[9] = gr(2, 2) + (mc2 - m * c2 * c2);
 }
 
+// (added mass A, [angular; linear] about the body origin) => whether A is a point mass there:
+// dm 1 in the linear block and zero elsewhere (mechanics::followMass's share of a winched rope's
+// node), which the 10 numbers can carry
+bool pointAddedMass(const Matrix6& A) {
+  const double dm = A(3, 3);
+  for (int c = 0; c < 6; ++c) {
+    for (int r = 0; r < 6; ++r) {
+      if (A(r, c) != (r == c && r >= 3 ? dm : 0.0)) return false;
+    }
+  }
+  return true;
+}
+
+// (10 numbers k, point mass dm at the world position p) => k + its 10 numbers
+void addPointMass(double dm, const Vector3& p, double* k) {
+  const double p2 = dm * p.squaredNorm();
+  k[0] += dm;
+  k[1] += dm * p.x();
+  k[2] += dm * p.y();
+  k[3] += dm * p.z();
+  k[4] += p2 - dm * p.x() * p.x();
+  k[5] -= dm * p.y() * p.x();
+  k[6] -= dm * p.z() * p.x();
+  k[7] += p2 - dm * p.y() * p.y();
+  k[8] -= dm * p.z() * p.y();
+  k[9] += p2 - dm * p.z() * p.z();
+}
+
 // (10 numbers k, motion s = (w, v)) => f = k s = (I_o w + h x v, m v - h x w)
 void applyCompact(const double* k, const double* s, double* f) {
   const double w0 = s[0], w1 = s[1], w2 = s[2], v0 = s[3], v1 = s[4], v2 = s[5];
@@ -119,15 +147,17 @@ void crbaMatrices(const Model& m, Data& d, const Eigen::VectorXd& q) {
 YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
   YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "crba");
   for (int i = 1; i < m.nbodies; ++i) {
-    if (d.hasAddedMass[i]) {
+    if (d.hasAddedMass[i] && !pointAddedMass(d.addedMass[i])) {
       crbaMatrices(m, d, q);
       return d.M;
     }
   }
-  // (q) => X_WB, S_W and each body's inertia as 10 numbers in world axes about the world origin
+  // (q) => X_WB, S_W and each body's inertia (and added point mass) as 10 numbers in world axes
+  // about the world origin
   for (int i = 1; i < m.nbodies; ++i) {
     placeWithSubspace(m, d, i, q);
     worldCompact(m.inertias[i], m.inertiaDiagonal[i] != 0, d.X_WB[i], d.IC_W[i].data());
+    if (d.hasAddedMass[i]) addPointMass(d.addedMass[i](3, 3), d.X_WB[i].p, d.IC_W[i].data());
   }
   // (bodies from the leaves: body i's composite complete, and F of every dof below it) => per
   // dof k of body i F_k = IC_i S_k, then M(j, k) = F_j . S_k for the dofs j of k's subtree (k

@@ -1,9 +1,9 @@
 #pragma once
-// The joint-space mass matrix by the composite-rigid-body algorithm, computed in the world frame
-// (composite inertias summed in world coordinates; H_ki = S_k^T IC_k S_i for k in the subtree of i,
-// one product per degree of freedom over its contiguous subtree rows). Without added mass a
-// composite inertia is kept as its 10 numbers (mass, first moment, rotational inertia about the
-// world origin); a body with added mass makes every composite a 6x6 matrix (crba.cpp).
+// The joint-space mass matrix by the composite-rigid-body algorithm in the world frame (H_ki =
+// S_k^T IC_k S_i for k in the subtree of i, one product per dof over its contiguous subtree rows).
+// A composite inertia is kept as its 10 numbers (mass, first moment, rotational inertia about the
+// world origin), a point mass written as added mass at a body origin included; any other added
+// mass makes every composite a 6x6 matrix (crba.cpp).
 
 #include <Eigen/Core>
 

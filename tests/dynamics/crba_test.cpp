@@ -67,7 +67,8 @@ namespace {
 // (model, two Data with the same added mass, q) => M of crba against RNEA's force for a unit
 // acceleration of each dof, M times ABA's acceleration for a unit force, and the tree solve
 // against Eigen's dense LLT
-void checkColumns(const Model& m, Data& d, Data& other, const Eigen::VectorXd& q, std::mt19937& rng) {
+void checkColumns(const Model& m, Data& d, Data& other, const Eigen::VectorXd& q,
+                  std::mt19937& rng) {
   const Eigen::MatrixXd M = crba(m, d, q);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.nv);
   for (int k = 0; k < m.nv; ++k) {
@@ -90,13 +91,16 @@ void checkColumns(const Model& m, Data& d, Data& other, const Eigen::VectorXd& q
 
 TEST_CASE("CRBA's compact composites against RNEA and ABA column by column, and the tree solve") {
   // chains and floating-base trees of revolute, prismatic and free joints (the kernels' axis and
-  // diagonal-inertia shortcuts and the general path): M from 10-number composites; then the
-  // floating trees again with point masses at some body origins written as added mass (as
+  // diagonal-inertia shortcuts and the general path): M from 10-number composites; then each
+  // again with point masses at every third body origin written as added mass (as
   // mechanics::followMass writes a winched rope's node masses), which the 10 numbers carry too
   std::mt19937 rng(2811);
-  std::vector<Model> models = {planarChain(8), planarChain(33), randomAxisTree(rng, 9, false, true),
+  std::vector<Model> models = {planarChain(8),
+                               planarChain(33),
+                               randomAxisTree(rng, 9, false, true),
                                randomAxisTree(rng, 33, false, false),
-                               randomAxisTree(rng, 70, false, true), randomTree(rng, 20)};
+                               randomAxisTree(rng, 70, false, true),
+                               randomTree(rng, 20)};
   for (Model& m : models) {
     m.gravity.setZero();
     for (bool pointMasses : {false, true}) {

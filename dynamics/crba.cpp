@@ -6,20 +6,116 @@
 
 namespace yardsim::dynamics {
 
-// flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products as
-// calls)
-YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
-  YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "crba");
-  // (q) => X_WB, S_W, IC_W = X_WB^* (I + A) X_WB^-1 (A: added mass)
-  // (placeBody, worldSubspaceColumn, matrixIn<true>: the shortcuts of RNEA and ABA for
-  // coordinate-axis joints and diagonal inertias, equal in value to the general products)
-  for (int i = 1; i < m.nbodies; ++i) {
-    placeBody(m, d, i, q);
-    if (m.jointNv[i] == 1) {
-      d.S_W.col(m.idxV[i]) = worldSubspaceColumn(m, d, i);
-    } else {
-      for (int k = 0; k < m.jointNv[i]; ++k) d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
+namespace {
+
+// The composite inertia of a subtree as its 10 numbers, in world axes about the world origin:
+// k[0] = m (kg), k[1..3] = h = m c (kg m, c the centre of mass), k[4..9] = the rotational inertia
+// about the origin (kg m^2) xx, yx, zx, yy, zy, zz. Kept in the first 10 entries of IC_W[i]'s
+// storage (Data has no other per-body buffer for it; nothing reads IC_W besides crba).
+using Compact = Eigen::Map<Eigen::Matrix<double, 10, 1>>;
+
+// From this many subtree dofs a column of M is one matrix-vector product (Eigen's, vectorised).
+constexpr int kGemvRows = 12;
+
+// (body inertia, X_WB) => its 10 numbers in world axes about the world origin (the values of
+// SpatialInertia::matrixIn, without forming the 6x6 matrix: 10 numbers to sum per body instead of
+// 36)
+void worldCompact(const SpatialInertia& I, bool diagonal, const Transform& X, double* k) {
+  const double* R = X.R.data();  // column-major: R(r, c) = R[r + 3 c]
+  const double* b = I.com.data();
+  const double c0 = R[0] * b[0] + R[3] * b[1] + R[6] * b[2] + X.p[0];
+  const double c1 = R[1] * b[0] + R[4] * b[1] + R[7] * b[2] + X.p[1];
+  const double c2 = R[2] * b[0] + R[5] * b[1] + R[8] * b[2] + X.p[2];
+  // (R, Ic) => G = R Ic (column-major), then R Ic R^T's lower triangle as rows of G . rows of R
+  double G[9];
+  if (diagonal) {
+    for (int col = 0; col < 3; ++col) {
+      const double ic = I.inertiaCom(col, col);
+      G[3 * col] = R[3 * col] * ic;
+      G[3 * col + 1] = R[3 * col + 1] * ic;
+      G[3 * col + 2] = R[3 * col + 2] * ic;
     }
+  } else {
+    const double* J = I.inertiaCom.data();
+    for (int col = 0; col < 3; ++col) {
+      for (int r = 0; r < 3; ++r)
+        G[r + 3 * col] = R[r] * J[3 * col] + R[r + 3] * J[3 * col + 1] + R[r + 6] * J[3 * col + 2];
+    }
+  }
+  const auto gr = [&](int r, int s) {
+    return G[r] * R[s] + G[r + 3] * R[s + 3] + G[r + 6] * R[s + 6];
+  };
+  const double m = I.mass, mc2 = m * (c0 * c0 + c1 * c1 + c2 * c2);
+  k[0] = m;
+  k[1] = m * c0;
+  k[2] = m * c1;
+  k[3] = m * c2;
+  k[4] = gr(0, 0) + (mc2 - m * c0 * c0);
+  k[5] = gr(1, 0) - m * c1 * c0;
+  k[6] = gr(2, 0) - m * c2 * c0;
+  k[7] = gr(1, 1) + (mc2 - m * c1 * c1);
+  k[8] = gr(2, 1) - m * c2 * c1;
+  k[9] = gr(2, 2) + (mc2 - m * c2 * c2);
+}
+
+// (added mass A, [angular; linear] about the body origin) => whether A is a point mass there:
+// dm 1 in the linear block and zero elsewhere (mechanics::followMass's share of a winched rope's
+// node), which the 10 numbers can carry
+bool pointAddedMass(const Matrix6& A) {
+  const double dm = A(3, 3);
+  for (int c = 0; c < 6; ++c) {
+    for (int r = 0; r < 6; ++r) {
+      if (A(r, c) != (r == c && r >= 3 ? dm : 0.0)) return false;
+    }
+  }
+  return true;
+}
+
+// (10 numbers k, point mass dm at the world position p) => k + its 10 numbers
+void addPointMass(double dm, const Vector3& p, double* k) {
+  const double p2 = dm * p.squaredNorm();
+  k[0] += dm;
+  k[1] += dm * p.x();
+  k[2] += dm * p.y();
+  k[3] += dm * p.z();
+  k[4] += p2 - dm * p.x() * p.x();
+  k[5] -= dm * p.y() * p.x();
+  k[6] -= dm * p.z() * p.x();
+  k[7] += p2 - dm * p.y() * p.y();
+  k[8] -= dm * p.z() * p.y();
+  k[9] += p2 - dm * p.z() * p.z();
+}
+
+// (10 numbers k, motion s = (w, v)) => f = k s = (I_o w + h x v, m v - h x w)
+void applyCompact(const double* k, const double* s, double* f) {
+  const double w0 = s[0], w1 = s[1], w2 = s[2], v0 = s[3], v1 = s[4], v2 = s[5];
+  const double h0 = k[1], h1 = k[2], h2 = k[3];
+  f[0] = k[4] * w0 + k[5] * w1 + k[6] * w2 + (h1 * v2 - h2 * v1);
+  f[1] = k[5] * w0 + k[7] * w1 + k[8] * w2 + (h2 * v0 - h0 * v2);
+  f[2] = k[6] * w0 + k[8] * w1 + k[9] * w2 + (h0 * v1 - h1 * v0);
+  f[3] = k[0] * v0 - (h1 * w2 - h2 * w1);
+  f[4] = k[0] * v1 - (h2 * w0 - h0 * w2);
+  f[5] = k[0] * v2 - (h0 * w1 - h1 * w0);
+}
+
+// (q) => X_WB, S_W of body i (the shortcuts of RNEA and ABA for coordinate-axis joints, equal in
+// value to the general products)
+void placeWithSubspace(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
+  placeBody(m, d, i, q);
+  if (m.jointNv[i] == 1) {
+    d.S_W.col(m.idxV[i]) = worldSubspaceColumn(m, d, i);
+  } else {
+    for (int k = 0; k < m.jointNv[i]; ++k)
+      d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
+  }
+}
+
+// (q, added mass on some body) => M with the composite inertias as 6x6 matrices (an added mass is
+// a general symmetric 6x6, not a rigid body's 10 numbers)
+void crbaMatrices(const Model& m, Data& d, const Eigen::VectorXd& q) {
+  // (q) => X_WB, S_W, IC_W = X_WB^* (I + A) X_WB^-1 (A: added mass)
+  for (int i = 1; i < m.nbodies; ++i) {
+    placeWithSubspace(m, d, i, q);
     d.IC_W[i] = m.inertiaDiagonal[i] ? m.inertias[i].matrixIn<true>(d.X_WB[i]) : m.inertias[i].matrixIn(d.X_WB[i]);
     if (d.hasAddedMass[i]) d.IC_W[i] += actInertia(d.X_WB[i], d.addedMass[i]);
   }
@@ -41,6 +137,50 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   // (lower triangle) => upper triangle; entries between bodies on different branches stay zero
   for (int c = 1; c < m.nv; ++c) {
     for (int r = 0; r < c; ++r) d.M(r, c) = d.M(c, r);
+  }
+}
+
+}  // namespace
+
+// flatten (YARDSIM_FLATTEN): inline every Eigen helper (GCC otherwise leaves small products as
+// calls)
+YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen::VectorXd& q) {
+  YARDSIM_DYNAMICS_CHECK(m, d, q, nullptr, nullptr, "crba");
+  for (int i = 1; i < m.nbodies; ++i) {
+    if (d.hasAddedMass[i] && !pointAddedMass(d.addedMass[i])) {
+      crbaMatrices(m, d, q);
+      return d.M;
+    }
+  }
+  // (q) => X_WB, S_W and each body's inertia (and added point mass) as 10 numbers in world axes
+  // about the world origin
+  for (int i = 1; i < m.nbodies; ++i) {
+    placeWithSubspace(m, d, i, q);
+    worldCompact(m.inertias[i], m.inertiaDiagonal[i] != 0, d.X_WB[i], d.IC_W[i].data());
+    if (d.hasAddedMass[i]) addPointMass(d.addedMass[i](3, 3), d.X_WB[i].p, d.IC_W[i].data());
+  }
+  // (bodies from the leaves: body i's composite complete, and F of every dof below it) => per
+  // dof k of body i F_k = IC_i S_k, then M(j, k) = F_j . S_k for the dofs j of k's subtree (k
+  // itself included; Featherstone, RBDA eq. 6.21, world frame: F needs no transform) and
+  // M(k, j) = M(j, k); then IC_parent += IC_i. Entries between dofs on different branches are
+  // never written (zero from Data).
+  const double* F = d.Fcrb.data();
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    const double* k = d.IC_W[i].data();
+    const int iv = m.idxV[i];
+    for (int c = iv; c < iv + m.jointNv[i]; ++c)
+      applyCompact(k, d.S_W.col(c).data(), d.Fcrb.col(c).data());
+    for (int c = iv; c < iv + m.jointNv[i]; ++c) {
+      const int ns = m.dofSubtree[c];
+      if (ns >= kGemvRows) {
+        d.M.col(c).segment(c, ns).noalias() = d.Fcrb.middleCols(c, ns).transpose() * d.S_W.col(c);
+      } else {
+        const Motion s = d.S_W.col(c);
+        for (int j = c; j < c + ns; ++j) d.M(j, c) = Eigen::Map<const Motion>(F + 6 * j).dot(s);
+      }
+      for (int j = c + 1; j < c + ns; ++j) d.M(c, j) = d.M(j, c);
+    }
+    if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
   }
   return d.M;
 }

@@ -72,22 +72,24 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const double lii = std::sqrt(pivot);
     l[i * ld + i] = lii;
     const double inv = 1.0 / lii;
+    if (ns < kGemvRows) {
+      // (few subtree rows) => one dot product per ancestor j, found by walking the parents
+      for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;
+           j = parent[static_cast<std::size_t>(j)]) {
+        const double* lj = l + j * ld + i + 1;  // L(sub i, j)
+        double s = ai[j];
+        for (int k = 0; k < ns; ++k) s -= li[k] * lj[k];
+        l[j * ld + i] = s * inv;
+      }
+      continue;
+    }
     for (int hi = parent[static_cast<std::size_t>(i)]; hi >= 0;) {
       int lo = hi;  // (parent) => the run lo .. hi of ancestors, each the parent of the next
       while (lo > 0 && parent[static_cast<std::size_t>(lo)] == lo - 1) --lo;
-      if (ns >= kGemvRows) {
-        const int len = hi - lo + 1;
-        auto w = work.head(len);
-        w.noalias() = L.block(i + 1, lo, ns, len).transpose() * L.col(i).segment(i + 1, ns);
-        for (int j = lo; j <= hi; ++j) l[j * ld + i] = (ai[j] - w[j - lo]) * inv;
-      } else {
-        for (int j = lo; j <= hi; ++j) {
-          const double* lj = l + j * ld + i + 1;  // L(sub i, j)
-          double s = ai[j];
-          for (int k = 0; k < ns; ++k) s -= li[k] * lj[k];
-          l[j * ld + i] = s * inv;
-        }
-      }
+      const int len = hi - lo + 1;
+      auto w = work.head(len);
+      w.noalias() = L.block(i + 1, lo, ns, len).transpose() * L.col(i).segment(i + 1, ns);
+      for (int j = lo; j <= hi; ++j) l[j * ld + i] = (ai[j] - w[j - lo]) * inv;
       hi = parent[static_cast<std::size_t>(lo)];
     }
   }

@@ -1,10 +1,11 @@
 #include "run/timeseries_writer.hpp"
 
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+
+#include "devs/shortest_text.hpp"
 
 namespace yardsim::run {
 
@@ -18,9 +19,8 @@ void appendCsvNumber(std::string& out, double value) {
     out += "nan";
     return;
   }
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-  out.append(buf, ec == std::errc() ? end : buf);
+  char buf[devs::kShortestTextSize];
+  out.append(buf, devs::writeShortest(buf, value));
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,

@@ -16,7 +16,8 @@ class JsonlTraceSink final : public RecordSink {
 
  private:
   std::string line_;
-  std::string modelPath_, modelJson_;  // the last model's path and its JSON string
+  // the last record's model path and kind, and its text from ",\"model\":" to the kind's closing quote
+  std::string modelPath_, kind_, middle_;
 };
 
 }  // namespace yardsim::devs

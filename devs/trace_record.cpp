@@ -5,8 +5,8 @@
 namespace yardsim::devs {
 
 TraceStream::TraceStream(const std::filesystem::path& path)
-    : file_(std::make_unique<std::ofstream>(path)), os_(file_.get()) {
-  if (!*file_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
+    : file_(std::make_unique<BufferedFile>(path)), os_(&file_->stream()) {
+  if (!*os_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
 }
 
 std::string_view transitionName(Transition kind) {

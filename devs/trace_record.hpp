@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "devs/buffered_file.hpp"
 #include "devs/listener.hpp"
 
 namespace yardsim::devs {
@@ -28,12 +29,13 @@ struct TraceRecord {
 class TraceStream {
  public:
   explicit TraceStream(std::ostream& os) : os_(&os) {}
-  // (path) => file opened for writing; throws std::runtime_error naming the path otherwise
+  // (path) => file opened for writing, with a large buffer (BufferedFile); throws
+  // std::runtime_error naming the path otherwise
   explicit TraceStream(const std::filesystem::path& path);
   std::ostream& out() { return *os_; }
 
  private:
-  std::unique_ptr<std::ofstream> file_;
+  std::unique_ptr<BufferedFile> file_;
   std::ostream* os_;
 };
 

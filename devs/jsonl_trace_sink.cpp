@@ -7,18 +7,18 @@ void JsonlTraceSink::write(const TraceRecord& r) {
   appendJsonNumber(line_, r.t);
   line_ += ",\"seq\":";
   appendJsonInteger(line_, r.seq);
-  // (model path, kind) => ,"model":<its JSON string>,"kind":"<kind>", made again only when either
-  // differs from the last record's (the kinds out, in, int, ext, conf and state need no escape)
-  if (r.model != modelPath_ || r.kind != kind_) {
+  line_ += ",\"model\":";
+  // (model path) => its JSON string, escaped once per run of records from one model
+  if (r.model != modelPath_) {
     modelPath_.assign(r.model);
-    kind_.assign(r.kind);
-    middle_.assign(",\"model\":");
-    appendJsonString(middle_, r.model);
-    middle_ += ",\"kind\":\"";
-    middle_ += r.kind;
-    middle_ += '"';
+    modelJson_.clear();
+    appendJsonString(modelJson_, r.model);
   }
-  line_ += middle_;
+  line_ += modelJson_;
+  // (kind: out, in, int, ext, conf or state) => quoted as it is, none needs an escape
+  line_ += ",\"kind\":\"";
+  line_ += r.kind;
+  line_ += '"';
   if (!r.port.empty()) {
     line_ += ",\"port\":";
     appendJsonString(line_, r.port);

@@ -16,8 +16,7 @@ class JsonlTraceSink final : public RecordSink {
 
  private:
   std::string line_;
-  // the last record's model path and kind, and its text from ",\"model\":" to the kind's closing quote
-  std::string modelPath_, kind_, middle_;
+  std::string modelPath_, modelJson_;  // the last model's path and its JSON string
 };
 
 }  // namespace yardsim::devs

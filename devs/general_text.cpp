@@ -28,21 +28,27 @@ double scale10(double a, int p) {
 
 // (value) => "%g" through std::to_chars: the reference, and the way for values the fast path
 // leaves (zero, non-finite, far exponents, a rounding too close to call)
-void general6Slow(std::string& out, double value) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 6);
-  out.append(buf, ec == std::errc() ? end : buf);
+char* general6Slow(char* buf, double value) {
+  const auto [end, ec] =
+      std::to_chars(buf, buf + kGeneral6TextSize, value, std::chars_format::general, 6);
+  return ec == std::errc() ? end : buf;
 }
 
 }  // namespace
 
 void appendGeneral6(std::string& out, double value) {
+  char buf[kGeneral6TextSize];
+  out.append(buf, writeGeneral6(buf, value));
+}
+
+char* writeGeneral6(char* buf, double value) {
   const double a = std::fabs(value);
-  if (a == 0.0) {
-    out += std::signbit(value) ? "-0" : "0";
-    return;
+  if (a == 0.0) {  // "0", "-0"
+    if (std::signbit(value)) *buf++ = '-';
+    *buf = '0';
+    return buf + 1;
   }
-  if (!(a >= 1e-38 && a < 1e38)) return general6Slow(out, value);  // tiny, huge, nan, inf
+  if (!(a >= 1e-38 && a < 1e38)) return general6Slow(buf, value);  // tiny, huge, nan, inf
   // (a) => its decimal exponent x and the six digits n = round(a 10^(5 - x)), 1e5 <= n < 1e6;
   // the binary exponent's estimate of x (floor(E log10 2), a in [2^E, 2^(E+1)), from the bits)
   // is off by at most one, corrected by the range of y
@@ -54,10 +60,10 @@ void appendGeneral6(std::string& out, double value) {
   // (y within 3 ulps, < 1e-9, of a 10^(5 - x)) => rounded as printf rounds the exact value,
   // unless y is too near a half to tell. Near the ends of the range either exponent gives the
   // same text (99999.99... at x and 999999.9... at x - 1 both round to 1 followed by zeros at x).
-  if (y < 99999.9 || y >= 1000000.1) return general6Slow(out, value);
+  if (y < 99999.9 || y >= 1000000.1) return general6Slow(buf, value);
   auto n = static_cast<std::uint32_t>(y);  // floor: y > 0
   const double fraction = y - n;           // exact: y < 2^20
-  if (std::fabs(fraction - 0.5) < 1e-6) return general6Slow(out, value);
+  if (std::fabs(fraction - 0.5) < 1e-6) return general6Slow(buf, value);
   n += fraction > 0.5 ? 1 : 0;
   if (n == 1000000) {
     n = 100000;
@@ -69,7 +75,6 @@ void appendGeneral6(std::string& out, double value) {
   std::memcpy(digits + 4, kPairs + 2 * (n % 100), 2);
   int last = 5;  // the last digit kept: trailing zeros go
   while (last > 0 && digits[last] == '0') --last;
-  char buf[32];
   char* p = buf;
   if (value < 0) *p++ = '-';
   if (x < -4 || x >= 6) {
@@ -100,7 +105,7 @@ void appendGeneral6(std::string& out, double value) {
     std::memcpy(p, digits, 6);
     p += last + 1;
   }
-  out.append(buf, p);
+  return p;
 }
 
 }  // namespace yardsim::devs

@@ -80,6 +80,6 @@ void ChromeTraceSink::onTransition(Time t, const AtomicBase& m, Transition kind,
   finish();
 }
 
-void ChromeTraceSink::onEnd(Time /*t*/) { stream_.out().flush(); }
+void ChromeTraceSink::onEnd(Time /*t*/) { stream_.flushAtRunEnd(); }
 
 }  // namespace yardsim::devs

@@ -9,6 +9,15 @@ TraceStream::TraceStream(const std::filesystem::path& path)
   if (!*os_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
 }
 
+void TraceStream::flushAtRunEnd() {
+  if (file_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastFlush_ < std::chrono::milliseconds(200)) return;
+    lastFlush_ = now;
+  }
+  os_->flush();
+}
+
 std::string_view transitionName(Transition kind) {
   switch (kind) {
     case Transition::Internal: return "int";
@@ -46,6 +55,6 @@ void RecordSink::onState(Time t, const AtomicBase& m) {
   write({t, seq_++, m.path(), "state", {}, value_});
 }
 
-void RecordSink::onEnd(Time /*t*/) { out().flush(); }
+void RecordSink::onEnd(Time /*t*/) { stream_.flushAtRunEnd(); }
 
 }  // namespace yardsim::devs

@@ -80,6 +80,8 @@ void ChromeTraceSink::onTransition(Time t, const AtomicBase& m, Transition kind,
   finish();
 }
 
-void ChromeTraceSink::onEnd(Time /*t*/) { stream_.flushAtRunEnd(); }
+void ChromeTraceSink::onEnd(Time /*t*/) {
+  stream_.flushAtRunEnd();
+}
 
 }  // namespace yardsim::devs

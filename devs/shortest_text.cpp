@@ -40,7 +40,8 @@ constexpr char kPairs[] =
 
 // (n > 0) => its number of decimal digits (1 to 20)
 int digitCount(std::uint64_t n) {
-  const int guess = (static_cast<int>(std::bit_width(n)) * 1233) >> 12;  // floor(log10(2^bits)), off by one at most
+  // floor(log10(2^bits)): the count or one less
+  const int guess = (static_cast<int>(std::bit_width(n)) * 1233) >> 12;
   return guess + (n >= kPow10Int[guess] ? 1 : 0);
 }
 

@@ -55,6 +55,8 @@ void RecordSink::onState(Time t, const AtomicBase& m) {
   write({t, seq_++, m.path(), "state", {}, value_});
 }
 
-void RecordSink::onEnd(Time /*t*/) { stream_.flushAtRunEnd(); }
+void RecordSink::onEnd(Time /*t*/) {
+  stream_.flushAtRunEnd();
+}
 
 }  // namespace yardsim::devs

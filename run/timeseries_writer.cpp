@@ -24,8 +24,7 @@ void appendCsvNumber(std::string& out, double value) {
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,
-                                   std::vector<Channel> channels,
-                                   const std::string& restartedFrom)
+                                   std::vector<Channel> channels, const std::string& restartedFrom)
     : file_(file), channels_(std::move(channels)), lastFlush_(std::chrono::steady_clock::now()) {
   if (!out_) throw std::runtime_error("cannot write '" + file.string() + "'");
   last_.assign(channels_.size(), {});

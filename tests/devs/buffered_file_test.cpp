@@ -27,8 +27,8 @@ TEST_CASE("a BufferedFile writes every byte in order, through and past its buffe
     BufferedFile file(path);
     REQUIRE(file.stream());
     while (expected.size() < 3 * BufferedFile::kBufferBytes + 12345) {
-      const std::size_t n = next() % 3 == 0 ? next() % (BufferedFile::kBufferBytes * 3 / 2) + 1
-                                            : next() % 300 + 1;
+      const std::size_t n =
+          next() % 3 == 0 ? next() % (BufferedFile::kBufferBytes * 3 / 2) + 1 : next() % 300 + 1;
       std::string piece(n, ' ');
       for (char& c : piece) c = static_cast<char>('a' + next() % 26);
       if (next() % 2 == 0)

@@ -4,9 +4,9 @@
 
 #include <bit>
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
-#include <cfloat>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -30,7 +30,8 @@ bool same(double v) {
     const auto [end, ec] = std::from_chars(a.data(), a.data() + a.size(), r);
     back = ec == std::errc() && end == a.data() + a.size() &&
            std::bit_cast<std::uint64_t>(r) == std::bit_cast<std::uint64_t>(v);
-    if (!back) UNSCOPED_INFO("value " << std::hexfloat << v << ": " << a << " reads back otherwise");
+    if (!back)
+      UNSCOPED_INFO("value " << std::hexfloat << v << ": " << a << " reads back otherwise");
   }
   return a == b && back;
 }
@@ -82,7 +83,8 @@ TEST_CASE("writeShortest writes std::to_chars' text for every kind of double and
   CHECK(bad == 0);
 }
 
-TEST_CASE("writeShortest writes std::to_chars' text for 17-digit values, every exponent and subnormals") {
+TEST_CASE(
+    "writeShortest writes std::to_chars' text for 17-digit values, every exponent and subnormals") {
   // Dragonbox's way (everything finite and non-zero below 1e15): random significands at every
   // binary exponent, subnormals, every power of two and its neighbours, m 10^e for m of 1 to 17
   // digits and e from -30 to 20 (the turns between fixed and scientific at each length, trailing
@@ -124,15 +126,32 @@ TEST_CASE("writeShortest writes std::to_chars' text for 17-digit values, every e
       const double v = static_cast<double>(m) * std::pow(10.0, e);
       for (double w : {v, -v, std::nextafter(v, 0.0), std::nextafter(v, HUGE_VAL)}) bad += !same(w);
     }
-  const double edges[] = {0x1p53,       0x1p53 + 2.0,  0x1p53 - 1.0, 1e15,           999999999999999.9,
-                          1e15 - 0.125, 1e16,          1e300,        1e-300,         123456789012345.6,
-                          DBL_MAX,      DBL_MIN,       DBL_TRUE_MIN, 5e-324,         2.2250738585072009e-308,
-                          1e22,         1e23,          9007199254740993.0, 0.1, 1.0 - DBL_EPSILON / 2};
+  const double edges[] = {0x1p53,
+                          0x1p53 + 2.0,
+                          0x1p53 - 1.0,
+                          1e15,
+                          999999999999999.9,
+                          1e15 - 0.125,
+                          1e16,
+                          1e300,
+                          1e-300,
+                          123456789012345.6,
+                          DBL_MAX,
+                          DBL_MIN,
+                          DBL_TRUE_MIN,
+                          5e-324,
+                          2.2250738585072009e-308,
+                          1e22,
+                          1e23,
+                          9007199254740993.0,
+                          0.1,
+                          1.0 - DBL_EPSILON / 2};
   for (double v : edges)
     for (double w : {v, -v, std::nextafter(v, 0.0), std::nextafter(v, HUGE_VAL)}) bad += !same(w);
-  for (double v : {0.0, -0.0, std::numeric_limits<double>::infinity(),
-                   -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
-                   -std::numeric_limits<double>::quiet_NaN()})
+  for (double v :
+       {0.0, -0.0, std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
+        -std::numeric_limits<double>::quiet_NaN()})
     bad += !same(v);
   CHECK(bad == 0);
 }

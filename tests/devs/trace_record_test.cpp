@@ -60,7 +60,8 @@ TEST_CASE("a trace file holds every record once its sink is gone, after many run
     devs::ChromeTraceSink chromeFile{devs::TraceStream(dir / "trace.json")};
     devs::JsonlTraceSink textSink{devs::TraceStream(jsonl)};
     devs::ChromeTraceSink chromeText{devs::TraceStream(chrome)};
-    for (devs::Listener* l : std::initializer_list<devs::Listener*>{&fileSink, &chromeFile, &textSink, &chromeText})
+    for (devs::Listener* l :
+         std::initializer_list<devs::Listener*>{&fileSink, &chromeFile, &textSink, &chromeText})
       sim.addListener(*l);
     for (int k = 1; k <= 40; ++k) sim.runUntil(0.25 * k);
   }

@@ -18,18 +18,25 @@ void ChromeTraceSink::close() {
   stream_.out().flush();
 }
 
-// (phase, name, t, model) => the common head of one event object in ev_
+// (phase, name, t, model) => the common head of one event object in ev_; the text before the
+// time made again only when the phase, name or model differ from the last event's
 void ChromeTraceSink::begin(std::string_view phase, std::string_view name, Time t,
                             const AtomicBase& m) {
+  if (&m != headModel_ || phase != headPhase_ || name != headName_) {
+    headModel_ = &m;
+    headPhase_.assign(phase);
+    headName_.assign(name);
+    head_.assign("{\"ph\":\"");
+    head_ += phase;  // X, i or M: no escapes
+    head_ += "\",\"name\":";
+    appendJsonString(head_, name);
+    head_ += ",\"pid\":1,\"tid\":";
+    appendJsonInteger(head_, static_cast<std::uint64_t>(m.simIndex()) + 1);
+    head_ += ",\"ts\":";
+  }
   ev_.assign(first_ ? "" : ",\n");
   first_ = false;
-  ev_ += "{\"ph\":\"";
-  ev_ += phase;  // X, i or M: no escapes
-  ev_ += "\",\"name\":";
-  appendJsonString(ev_, name);
-  ev_ += ",\"pid\":1,\"tid\":";
-  appendJsonInteger(ev_, static_cast<std::uint64_t>(m.simIndex()) + 1);
-  ev_ += ",\"ts\":";
+  ev_ += head_;
   appendJsonNumber(ev_, t * kMicro);
 }
 
@@ -73,6 +80,8 @@ void ChromeTraceSink::onTransition(Time t, const AtomicBase& m, Transition kind,
   finish();
 }
 
-void ChromeTraceSink::onEnd(Time /*t*/) { stream_.out().flush(); }
+void ChromeTraceSink::onEnd(Time /*t*/) {
+  stream_.flushAtRunEnd();
+}
 
 }  // namespace yardsim::devs

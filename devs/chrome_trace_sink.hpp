@@ -26,6 +26,11 @@ class ChromeTraceSink final : public Listener {
 
   TraceStream stream_;
   std::string ev_;
+  // the last event head's phase, name and model, and its text up to "ts": (a DTSS model's steps
+  // repeat one head)
+  std::string headPhase_, headName_;
+  const AtomicBase* headModel_ = nullptr;
+  std::string head_;
   bool first_ = true;
   bool closed_ = false;
 };

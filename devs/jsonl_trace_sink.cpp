@@ -1,13 +1,20 @@
 #include "devs/jsonl_trace_sink.hpp"
 
+#include <charconv>
+#include <cstring>
+
 namespace yardsim::devs {
 
 void JsonlTraceSink::write(const TraceRecord& r) {
   line_.assign("{\"t\":");
   appendJsonNumber(line_, r.t);
-  line_ += ",\"seq\":";
-  appendJsonInteger(line_, r.seq);
-  line_ += ",\"model\":";
+  // (seq) => ,"seq":N,"model": put together in a local buffer, appended at once
+  char buf[64];
+  char* p = buf;
+  std::memcpy(p, ",\"seq\":", 7);
+  p = std::to_chars(p + 7, buf + 40, r.seq).ptr;  // 20 digits at most
+  std::memcpy(p, ",\"model\":", 9);
+  line_.append(buf, p + 9);
   // (model path) => its JSON string, escaped once per run of records from one model
   if (r.model != modelPath_) {
     modelPath_.assign(r.model);
@@ -16,9 +23,16 @@ void JsonlTraceSink::write(const TraceRecord& r) {
   }
   line_ += modelJson_;
   // (kind: out, in, int, ext, conf or state) => quoted as it is, none needs an escape
-  line_ += ",\"kind\":\"";
-  line_ += r.kind;
-  line_ += '"';
+  if (r.kind.size() <= 16) {
+    std::memcpy(buf, ",\"kind\":\"", 9);
+    std::memcpy(buf + 9, r.kind.data(), r.kind.size());
+    buf[9 + r.kind.size()] = '"';
+    line_.append(buf, 10 + r.kind.size());
+  } else {
+    line_ += ",\"kind\":\"";
+    line_ += r.kind;
+    line_ += '"';
+  }
   if (!r.port.empty()) {
     line_ += ",\"port\":";
     appendJsonString(line_, r.port);

@@ -1,71 +1,134 @@
 #include "devs/shortest_text.hpp"
 
+#include <fmt/format.h>
+
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace yardsim::devs {
 
 namespace {
-// 10^0 ... 10^6, exact as doubles
-constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
+// 10^0 ... 10^19, the powers below 2^64
+constexpr std::uint64_t kPow10Int[] = {1ULL,
+                                       10ULL,
+                                       100ULL,
+                                       1000ULL,
+                                       10000ULL,
+                                       100000ULL,
+                                       1000000ULL,
+                                       10000000ULL,
+                                       100000000ULL,
+                                       1000000000ULL,
+                                       10000000000ULL,
+                                       100000000000ULL,
+                                       1000000000000ULL,
+                                       10000000000000ULL,
+                                       100000000000000ULL,
+                                       1000000000000000ULL,
+                                       10000000000000000ULL,
+                                       100000000000000000ULL,
+                                       1000000000000000000ULL,
+                                       10000000000000000000ULL};
+// "00" "01" ... "99": two digits at once
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
 
-// (a > 0 with at most six decimals, as n / 10^k) => n's digits with the point k digits from the
-// right, "0." and zeros first when n < 10^k
-char* writeFixed(char* p, std::uint64_t n, int k) {
-  char digits[24];
-  int len = 0;
-  do {
-    digits[len++] = static_cast<char>('0' + n % 10);
-    n /= 10;
-  } while (n != 0);
-  if (len <= k) {  // 0.0ddd
-    *p++ = '0';
-    *p++ = '.';
-    for (int z = len; z < k; ++z) *p++ = '0';
-    while (len > 0) *p++ = digits[--len];
-    return p;
-  }
-  for (int i = len - 1; i >= 0; --i) {
-    *p++ = digits[i];
-    if (i == k && k > 0) *p++ = '.';
-  }
-  return p;
+// (n > 0) => its number of decimal digits (1 to 20)
+int digitCount(std::uint64_t n) {
+  // floor(log10(2^bits)): the count or one less
+  const int guess = (static_cast<int>(std::bit_width(n)) * 1233) >> 12;
+  return guess + (n >= kPow10Int[guess] ? 1 : 0);
 }
 
-// (whole number 1e5 <= n < 1e9) => whether std::to_chars writes it fixed: its D digits are no
-// more than scientific's s digits, point (when s > 1) and "e+0X" (s: D less its trailing zeros)
-bool fixedIsShorter(std::uint64_t n) {
-  int digits = 0, zeros = 0;
-  bool trailing = true;
-  for (; n != 0; n /= 10, ++digits) {
-    trailing = trailing && n % 10 == 0;
-    zeros += trailing;
+// (n < 10^8) => its eight digits, leading zeros included, at p[0..8)
+void writeEight(char* p, std::uint32_t n) {
+  const std::uint32_t hi = n / 10000, lo = n % 10000;
+  std::memcpy(p, kPairs + 2 * (hi / 100), 2);
+  std::memcpy(p + 2, kPairs + 2 * (hi % 100), 2);
+  std::memcpy(p + 4, kPairs + 2 * (lo / 100), 2);
+  std::memcpy(p + 6, kPairs + 2 * (lo % 100), 2);
+}
+
+// (n with len digits) => its digits at p[0..len), in 32-bit pieces of eight
+void writeDigits(char* p, std::uint64_t n, int len) {
+  char* q = p + len;
+  while (len >= 8) {
+    q -= 8;
+    writeEight(q, static_cast<std::uint32_t>(n % 100000000));
+    n /= 100000000;
+    len -= 8;
   }
-  const int significant = digits - zeros;
-  return digits <= significant + (significant > 1 ? 1 : 0) + 4;
+  auto m = static_cast<std::uint32_t>(n);
+  for (; len >= 2; len -= 2, m /= 100) {
+    q -= 2;
+    std::memcpy(q, kPairs + 2 * (m % 100), 2);
+  }
+  if (len == 1) *--q = static_cast<char>('0' + m);
+}
+
+// (0 < a < 1e15, finite, the sign already written at p) => a's shortest round-trip text in
+// std::to_chars' form. Dragonbox (fmt's) gives the shortest digits m and exponent e with a = m
+// 10^e read back, the nearest to a of that length, ties to even: the digits the standard asks of
+// std::to_chars. Fixed when no longer than scientific; whole numbers fixed are m and e zeros,
+// which is a's exact value below 2^53 (its rounding interval holds one integer)
+char* writeDragonbox(char* p, double a) {
+  const auto d = fmt::detail::dragonbox::to_decimal(a);
+  const std::uint64_t m = d.significand;
+  const int len = digitCount(m);
+  const int e = d.exponent;
+  const int sci = e + len - 1;  // the scientific exponent
+  const int sciAbs = sci < 0 ? -sci : sci;
+  const int sciLength = len + (len > 1 ? 1 : 0) + 2 + (sciAbs >= 100 ? 3 : 2);
+  const int fixedLength = e >= 0 ? len + e : (sci >= 0 ? len + 1 : len + 1 - sci);
+  if (fixedLength <= sciLength) {
+    if (e >= 0) {  // ddd000
+      writeDigits(p, m, len);
+      std::memcpy(p + len, "00000000", 8);  // e <= 5: fixed is no longer than scientific
+      return p + len + e;
+    }
+    if (sci >= 0) {  // dd.ddd: the digits one place on, the leading ones moved back over
+      writeDigits(p + 1, m, len);
+      std::memmove(p, p + 1, static_cast<std::size_t>(sci + 1));
+      p[sci + 1] = '.';
+      return p + len + 1;
+    }
+    *p++ = '0';  // 0.00ddd
+    *p++ = '.';
+    std::memcpy(p, "0000", 4);  // -sci - 1 <= 3: fixed is no longer than scientific
+    p += -sci - 1;
+    writeDigits(p, m, len);
+    return p + len;
+  }
+  // d.ddde-XX: the first digit moved before the point
+  writeDigits(p + 1, m, len);
+  p[0] = p[1];
+  if (len > 1) {
+    p[1] = '.';
+    p += len + 1;
+  } else {
+    p += 1;
+  }
+  *p++ = 'e';
+  *p++ = sci < 0 ? '-' : '+';
+  if (sciAbs >= 100) *p++ = static_cast<char>('0' + sciAbs / 100);
+  std::memcpy(p, kPairs + 2 * (sciAbs % 100), 2);
+  return p + 2;
 }
 }  // namespace
 
 char* writeShortest(char* buf, double value) {
-  // (0.001 <= |v| < 1e9) => the fewest decimals k <= 6 whose nearest n = round(|v| 10^k) gives v
-  // back as n / 10^k (one correctly rounded division: the double strtod reads from that text).
-  // That text is the shortest round trip: a shorter one would have fewer decimals, and its n is
-  // the nearest integer to |v| 10^k, which the product finds (|v| 10^k < 2^50: its rounding is
-  // below 1/8); and the only one of its length: v's rounding interval (about 2.2e-7 wide below
-  // 1e9) holds one multiple of 10^-6 at most. Fixed is std::to_chars' choice there: shorter than
-  // scientific with decimals when |v| >= 1, as short or shorter for 0.001 <= |v| < 1 (two zeros
-  // after the point at most) and for whole numbers below 1e5; above, when fixedIsShorter
+  // (finite non-zero value below 1e15) => Dragonbox; zero, 1e15 and above, nan and inf =>
+  // std::to_chars
   const double a = std::fabs(value);
-  if (a >= 1e-3 && a < 1e9) {
-    for (int k = 0; k <= 6; ++k) {
-      const double n = std::nearbyint(a * kPow10[k]);
-      if (n / kPow10[k] != a) continue;
-      if (k == 0 && n >= 1e5 && !fixedIsShorter(static_cast<std::uint64_t>(n))) break;
-      char* p = buf;
-      if (std::signbit(value)) *p++ = '-';
-      return writeFixed(p, static_cast<std::uint64_t>(n), k);
-    }
+  if (a > 0.0 && a < 1e15) {
+    char* p = buf;
+    if (std::signbit(value)) *p++ = '-';
+    return writeDragonbox(p, a);
   }
   return std::to_chars(buf, buf + kShortestTextSize, value).ptr;
 }

@@ -52,7 +52,8 @@ namespace {
 // (a transition's record, the state's record and the time inside the state), and the shortest
 // round-trip conversion costs some 550 instructions. Keyed by the bits, so -0.0 and 0.0 (equal
 // as doubles, written "-0" and "0") stay apart; the least recently used entry is replaced, so
-// that a number written at every step (a fixed step's duration) stays; one cache per thread.
+// that a number written at every step (a fixed step's duration) stays; one cache per thread
+// (initial-exec: the library is linked, not opened with dlopen, so no __tls_get_addr per use).
 struct NumberCache {
   static constexpr std::size_t kSize = 4;
   std::uint64_t bits[kSize] = {};
@@ -61,7 +62,7 @@ struct NumberCache {
   std::uint64_t used[kSize] = {};    // when each entry was last written or hit (0: never)
   std::uint64_t clock = 0;
 };
-thread_local NumberCache tCache;
+[[gnu::tls_model("initial-exec")]] thread_local NumberCache tCache;
 
 }  // namespace
 

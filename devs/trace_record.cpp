@@ -5,8 +5,17 @@
 namespace yardsim::devs {
 
 TraceStream::TraceStream(const std::filesystem::path& path)
-    : file_(std::make_unique<std::ofstream>(path)), os_(file_.get()) {
-  if (!*file_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
+    : file_(std::make_unique<BufferedFile>(path)), os_(&file_->stream()) {
+  if (!*os_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
+}
+
+void TraceStream::flushAtRunEnd() {
+  if (file_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastFlush_ < std::chrono::milliseconds(200)) return;
+    lastFlush_ = now;
+  }
+  os_->flush();
 }
 
 std::string_view transitionName(Transition kind) {
@@ -46,6 +55,8 @@ void RecordSink::onState(Time t, const AtomicBase& m) {
   write({t, seq_++, m.path(), "state", {}, value_});
 }
 
-void RecordSink::onEnd(Time /*t*/) { out().flush(); }
+void RecordSink::onEnd(Time /*t*/) {
+  stream_.flushAtRunEnd();
+}
 
 }  // namespace yardsim::devs

@@ -3,6 +3,7 @@
 // hooks into records (t, seq, model path, kind, port, value) and hands each to write().
 // kind is one of out, in, int, ext, conf, state; port and value are set for out and in
 // (one record per message), value alone for state (the state's JSON form).
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "devs/buffered_file.hpp"
 #include "devs/listener.hpp"
 
 namespace yardsim::devs {
@@ -28,13 +30,19 @@ struct TraceRecord {
 class TraceStream {
  public:
   explicit TraceStream(std::ostream& os) : os_(&os) {}
-  // (path) => file opened for writing; throws std::runtime_error naming the path otherwise
+  // (path) => file opened for writing, with a large buffer (BufferedFile); throws
+  // std::runtime_error naming the path otherwise
   explicit TraceStream(const std::filesystem::path& path);
   std::ostream& out() { return *os_; }
+  // (a run call's end) => flushed: a borrowed stream every time, a file of its own when 0.2 s of
+  // wall time or more have passed since its last flush (the runner ends a run call at every
+  // recorded row; the file's destructor writes the rest, also when a run fails)
+  void flushAtRunEnd();
 
  private:
-  std::unique_ptr<std::ofstream> file_;
+  std::unique_ptr<BufferedFile> file_;
   std::ostream* os_;
+  std::chrono::steady_clock::time_point lastFlush_ = std::chrono::steady_clock::now();
 };
 
 class RecordSink : public Listener {

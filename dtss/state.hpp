@@ -59,7 +59,7 @@ struct TraceFormat<dtss::State<X>> {
     out += "{\"t\":";
     appendJsonNumber(out, s.tx);
     out += ",\"steps\":";
-    out += std::to_string(s.steps);
+    appendJsonInteger(out, static_cast<std::uint64_t>(s.steps));  // counted up from 0
     out += ",\"x\":";
     TraceFormat<X>::write(out, s.x);
     out += '}';

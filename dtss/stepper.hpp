@@ -4,6 +4,7 @@
 // look-ahead, has the event locator move it to the earliest state event in between, and at the
 // target commits it with the model's reactions to what was reached. The grid is never shifted.
 #include <algorithm>
+#include <utility>
 
 #include "dtss/event_locator.hpp"
 #include "dtss/grid.hpp"
@@ -31,9 +32,12 @@ class Stepper {
     locator_.locate(sys, s, t);
   }
 
-  // (look-ahead) => committed state, with the reactions to what it reached applied
+  // (look-ahead) => committed state, with the reactions to what it reached applied; the look-ahead
+  // is swapped in, not copied: s.xNext holds the old state until the lookAhead that always follows
+  // a commit (atomic.hpp) sets it again, and nothing reads it in between
   void commit(const System<X>& sys, State<X>& s) const {
-    s.x = s.xNext;
+    using std::swap;
+    swap(s.x, s.xNext);
     s.tx = s.tNext;
     if (s.reached.grid) ++s.steps;
     if (s.reached.timeEvent) sys.onTimeEvent(s.x, s.tx);

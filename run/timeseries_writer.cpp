@@ -1,10 +1,11 @@
 #include "run/timeseries_writer.hpp"
 
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+
+#include "devs/shortest_text.hpp"
 
 namespace yardsim::run {
 
@@ -18,15 +19,13 @@ void appendCsvNumber(std::string& out, double value) {
     out += "nan";
     return;
   }
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, value);
-  out.append(buf, ec == std::errc() ? end : buf);
+  char buf[devs::kShortestTextSize];
+  out.append(buf, devs::writeShortest(buf, value));
 }
 
 TimeseriesWriter::TimeseriesWriter(const std::filesystem::path& file, const Scene& scene,
-                                   std::vector<Channel> channels,
-                                   const std::string& restartedFrom)
-    : out_(file), channels_(std::move(channels)), lastFlush_(std::chrono::steady_clock::now()) {
+                                   std::vector<Channel> channels, const std::string& restartedFrom)
+    : file_(file), channels_(std::move(channels)), lastFlush_(std::chrono::steady_clock::now()) {
   if (!out_) throw std::runtime_error("cannot write '" + file.string() + "'");
   last_.assign(channels_.size(), {});
   out_ << "# yardsim " << kVersion << "\n"

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "devs/buffered_file.hpp"
 #include "models/channels.hpp"
 #include "scene/scene.hpp"
 
@@ -30,7 +31,8 @@ class TimeseriesWriter {
   std::size_t rows() const { return rows_; }
 
  private:
-  std::ofstream out_;
+  devs::BufferedFile file_;
+  std::ofstream& out_ = file_.stream();
   std::vector<Channel> channels_;
   std::string line_;
   // per channel, the last value written and its text (a channel often holds still for many rows;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "devs/general_text.hpp"
 #include "dynamics/energy.hpp"
@@ -20,12 +21,19 @@
 namespace yardsim::models {
 
 void appendStateText(std::string& out, const MultibodyState& s) {
-  out += "q=[";
+  // (state) => its text written straight into out: room for every coordinate first, then out cut
+  // to what was written
+  const std::size_t at = out.size();
+  out.resize(at + 4 + static_cast<std::size_t>(s.q.size()) * (devs::kGeneral6TextSize + 1));
+  char* p = out.data() + at;
+  std::memcpy(p, "q=[", 3);
+  p += 3;
   for (Eigen::Index i = 0; i < s.q.size(); ++i) {
-    if (i) out += ',';
-    devs::appendGeneral6(out, s.q[i]);  // "%g"
+    if (i) *p++ = ',';
+    p = devs::writeGeneral6(p, s.q[i]);  // "%g"
   }
-  out += ']';
+  *p++ = ']';
+  out.resize(static_cast<std::size_t>(p - out.data()));
 }
 
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {

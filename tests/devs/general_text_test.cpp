@@ -49,6 +49,12 @@ TEST_CASE("appendGeneral6 writes printf's g text for every kind of double") {
         bad += !check(-v);
       }
   }
+  for (int e = -130; e <= 130; ++e)  // every binary exponent of the quick range and past its ends
+    for (int i = 0; i < 200; ++i) {
+      const double v = std::ldexp(1.0 + static_cast<double>(next() >> 11) * 0x1p-53, e);
+      bad += !check(v);
+      bad += !check(-v);
+    }
   for (int i = -3000; i <= 3000; ++i) {  // integers and short decimals: exact round numbers
     bad += !check(i);
     bad += !check(i / 8.0);
@@ -70,6 +76,12 @@ TEST_CASE("appendGeneral6 writes printf's g text for every kind of double") {
                    999999.5,
                    1e6,
                    123456.5,
+                   1e-38,
+                   9.99999e37,
+                   9.999995e37,
+                   1e38,
+                   0.0001,
+                   0.00099999949,
                    5e-324,
                    2.2250738585072014e-308,
                    1.7976931348623157e308,

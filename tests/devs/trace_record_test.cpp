@@ -1,0 +1,72 @@
+// TraceStream (devs/trace_record.hpp): a borrowed stream is flushed at every run call's end; a
+// file of its own, flushed at most every 0.2 s there, still holds every record once its sink is
+// gone, whatever the run calls.
+#include "devs/trace_record.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <streambuf>
+#include <string>
+
+#include "devs/chrome_trace_sink.hpp"
+#include "devs/jsonl_trace_sink.hpp"
+#include "devs/simulator.hpp"
+#include "support/gpt_builders.hpp"
+
+using namespace yardsim;
+
+namespace {
+// A stream buffer that keeps what it is given and counts its flushes (sync)
+struct CountingBuffer : std::stringbuf {
+  int syncs = 0;
+  int sync() override {
+    ++syncs;
+    return std::stringbuf::sync();
+  }
+};
+
+// (file) => its bytes
+std::string contents(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST_CASE("a borrowed trace stream is flushed at the end of every run call") {
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
+  devs::Simulator sim(*gpt);
+  CountingBuffer buffer;
+  std::ostream os(&buffer);
+  devs::JsonlTraceSink sink{devs::TraceStream(os)};
+  sim.addListener(sink);
+  for (int k = 1; k <= 25; ++k) sim.runUntil(0.5 * k);
+  CHECK(buffer.syncs == 25);
+  CHECK_FALSE(buffer.str().empty());
+}
+
+TEST_CASE("a trace file holds every record once its sink is gone, after many run calls") {
+  // the same records through a file of the sink's own and through a string, the run cut into
+  // many short run calls (each ends with a flush request the file may defer)
+  const auto dir = std::filesystem::temp_directory_path() / "yardsim_trace_record_test";
+  std::filesystem::create_directories(dir);
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
+  devs::Simulator sim(*gpt);
+  std::ostringstream jsonl, chrome;
+  {
+    devs::JsonlTraceSink fileSink{devs::TraceStream(dir / "trace.jsonl")};
+    devs::ChromeTraceSink chromeFile{devs::TraceStream(dir / "trace.json")};
+    devs::JsonlTraceSink textSink{devs::TraceStream(jsonl)};
+    devs::ChromeTraceSink chromeText{devs::TraceStream(chrome)};
+    for (devs::Listener* l :
+         std::initializer_list<devs::Listener*>{&fileSink, &chromeFile, &textSink, &chromeText})
+      sim.addListener(*l);
+    for (int k = 1; k <= 40; ++k) sim.runUntil(0.25 * k);
+  }
+  CHECK(jsonl.str().size() > 1000);
+  CHECK(contents(dir / "trace.jsonl") == jsonl.str());
+  CHECK(contents(dir / "trace.json") == chrome.str());
+  std::filesystem::remove_all(dir);
+}

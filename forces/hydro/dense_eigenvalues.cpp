@@ -17,6 +17,8 @@ namespace yardsim::forces::hydro {
 Eigen::VectorXcd denseEigenvalues(Eigen::MatrixXd A) {
   if (A.rows() != A.cols())
     throw std::invalid_argument("denseEigenvalues: the matrix is not square");
+  if (!A.allFinite())
+    throw std::invalid_argument("denseEigenvalues: the matrix has a NaN or infinite entry");
   const int n = static_cast<int>(A.rows());
   if (n == 0) return {};
   Eigen::VectorXd wr(n), wi(n);

@@ -13,7 +13,8 @@
 namespace yardsim::forces::hydro {
 
 /// (square A) => its eigenvalues (complex pairs next to each other, the positive imaginary part
-/// first, in LAPACK's order). Throws std::invalid_argument for a matrix that is not square and
+/// first, in LAPACK's order). Throws std::invalid_argument for a matrix that is not square or has
+/// a NaN or infinite entry, and
 /// std::runtime_error when the QR iteration does not converge (LAPACK's INFO > 0).
 Eigen::VectorXcd denseEigenvalues(Eigen::MatrixXd A);
 

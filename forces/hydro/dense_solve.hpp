@@ -9,8 +9,8 @@
 namespace yardsim::forces::hydro {
 
 /// (square M, n x m right-hand sides B) => B overwritten by M^-1 B, M by its LU factors (P M = L
-/// U). Throws std::invalid_argument for mismatched sizes and std::runtime_error naming the pivot
-/// when M is singular.
+/// U). Throws std::invalid_argument for mismatched sizes or a NaN or infinite entry, and
+/// std::runtime_error naming the pivot when M is singular (or when the solution overflows).
 void solveInPlace(Eigen::MatrixXd& M, Eigen::MatrixXd& B);
 
 }  // namespace yardsim::forces::hydro

@@ -13,11 +13,9 @@ namespace yardsim::forces::hydro {
 using Complex = std::complex<double>;
 
 FrequencyDomainSolver::FrequencyDomainSolver(const RankineTdModel& model) : model_(model) {
-  // (the mixed problem's solution map) => M^-1 R_b and M^-1 R_f
+  // (the mixed problem's solution map: M^-1 R_b, M^-1 R_f) => M^-1 R_b N
   const MixedProblem& pb = model.problem();
-  fromBody_ = pb.solutionMap().leftCols(pb.bodyCount());
-  fromSurface_ = pb.solutionMap().rightCols(pb.surfaceCount());
-  fromModes_ = fromBody_ * model.modes();
+  fromModes_ = pb.solutionMap().leftCols(pb.bodyCount()) * model.modes();
 }
 
 FrequencyResponse FrequencyDomainSolver::solve(double omega,
@@ -28,8 +26,10 @@ FrequencyResponse FrequencyDomainSolver::solve(double omega,
   const RankineTdSettings& set = model_.settings();
   const double g = set.g, rho = set.rho, h = set.depth;
   const Complex i(0.0, 1.0);
+  const auto fromBody = pb.solutionMap().leftCols(nb);      // M^-1 R_b
+  const auto fromSurface = pb.solutionMap().rightCols(nf);  // M^-1 R_f
   // (G_ff, nu) => G_ff + diag((w - i nu)^2 / g), factorised
-  Eigen::MatrixXcd system = fromSurface_.bottomRows(nf).cast<Complex>();
+  Eigen::MatrixXcd system = fromSurface.bottomRows(nf).cast<Complex>();
   for (int k = 0; k < nf; ++k) {
     const Complex w(omega, -model_.damping()[k]);
     system(k, k) += w * w / g;
@@ -54,9 +54,9 @@ FrequencyResponse FrequencyDomainSolver::solve(double omega,
       fk(p, c) = i * (g / omega) * cc * phase;
     }
   }
-  gA.rightCols(nh) = fromBody_.cast<Complex>() * a;
+  gA.rightCols(nh) = fromBody.cast<Complex>() * a;
   const Eigen::MatrixXcd p = lu.solve(-gA.bottomRows(nf));
-  const Eigen::MatrixXcd phiB = gA.topRows(nb) + fromSurface_.topRows(nb).cast<Complex>() * p;
+  const Eigen::MatrixXcd phiB = gA.topRows(nb) + fromSurface.topRows(nb).cast<Complex>() * p;
   // (phi on the hull) => F = i w rho sum phi N A
   Eigen::MatrixXd weights(nb, 6);
   for (int q = 0; q < nb; ++q)

@@ -45,9 +45,8 @@ class FrequencyDomainSolver {
 
  private:
   const RankineTdModel& model_;
-  Eigen::MatrixXd fromModes_;    ///< M^-1 R_b N, N x 6
-  Eigen::MatrixXd fromSurface_;  ///< M^-1 R_f, N x Nf
-  Eigen::MatrixXd fromBody_;     ///< M^-1 R_b, N x Nb (for the diffraction conditions)
+  Eigen::MatrixXd fromModes_;  ///< M^-1 R_b N, N x 6 (M^-1 R_b and M^-1 R_f: the model's
+                               ///< solution map, read in place)
 };
 
 /// (rigid-body mass 6x6 M about the body origin, C the 6x6 restoring matrix, an added linear

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <complex>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -93,4 +94,10 @@ TEST_CASE("a real spectrum spread over eight decades stays real and exact to its
 TEST_CASE("a matrix that is not square is refused, an empty one has no eigenvalues") {
   CHECK_THROWS_AS(denseEigenvalues(Eigen::MatrixXd::Zero(3, 4)), std::invalid_argument);
   CHECK(denseEigenvalues(Eigen::MatrixXd(0, 0)).size() == 0);
+  // (a NaN or an infinity) => refused before LAPACK sees it
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(4, 4);
+  A(2, 1) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(denseEigenvalues(A), std::invalid_argument);
+  A(2, 1) = -std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(denseEigenvalues(A), std::invalid_argument);
 }

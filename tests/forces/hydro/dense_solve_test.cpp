@@ -4,6 +4,7 @@
 // and the refusals (a singular matrix, mismatched sizes).
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/LU>
@@ -52,4 +53,15 @@ TEST_CASE("a singular matrix and mismatched sizes are refused") {
                   notSquare = Eigen::MatrixXd::Ones(3, 4), B3 = Eigen::MatrixXd::Ones(3, 1);
   CHECK_THROWS_AS(solveInPlace(M, wrong), std::invalid_argument);
   CHECK_THROWS_AS(solveInPlace(notSquare, B3), std::invalid_argument);
+  // (a NaN in the matrix or the right-hand sides) => refused before LAPACK sees it
+  Eigen::MatrixXd withNaN = Eigen::MatrixXd::Identity(3, 3), rhs = Eigen::MatrixXd::Ones(3, 1);
+  withNaN(1, 2) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(solveInPlace(withNaN, rhs), std::invalid_argument);
+  Eigen::MatrixXd I = Eigen::MatrixXd::Identity(3, 3);
+  rhs(2, 0) = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(solveInPlace(I, rhs), std::invalid_argument);
+  // (a pivot of 1e-300 against entries of 1e10) => the solution overflows: refused
+  Eigen::MatrixXd tiny = Eigen::MatrixXd::Identity(2, 2), big = Eigen::MatrixXd::Constant(2, 1, 1e300);
+  tiny(1, 1) = 1e-300;
+  CHECK_THROWS_AS(solveInPlace(tiny, big), std::runtime_error);
 }

@@ -164,3 +164,12 @@ TEST_CASE("a hull reaching the sea bed is refused") {
   const Case c = hemisphere(4, 8.0);
   CHECK_THROWS_WITH(MixedProblem(c.body, c.surface, 0.9), Catch::Contains("reaches the sea bed"));
 }
+
+TEST_CASE("a panel with non-finite geometry is refused, naming it") {
+  // (a free-surface panel's centroid at NaN, as a degenerate panel would give) => PanelError
+  // naming that panel, before any factorisation
+  Case c = hemisphere(4, 8.0);
+  c.surface[3].centroid.x() = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(MixedProblem(c.body, c.surface),
+                    Catch::Contains("free-surface panel 3") && Catch::Contains("not finite"));
+}

@@ -25,8 +25,9 @@ void solveInPlace(Eigen::MatrixXd& M, Eigen::MatrixXd& B) {
         std::to_string(M.rows()) + " x " + std::to_string(M.cols()) + " and " +
         std::to_string(B.rows()) + " rows)");
   if (!M.allFinite() || !B.allFinite())
-    throw std::invalid_argument("solveInPlace: the matrix or the right-hand sides have a NaN or "
-                                "infinite entry");
+    throw std::invalid_argument(
+        "solveInPlace: the matrix or the right-hand sides have a NaN or "
+        "infinite entry");
   const int n = static_cast<int>(M.rows()), m = static_cast<int>(B.cols()), first = 1;
   if (n == 0 || m == 0) return;
   // (M) => P M = L U in place; (B) => P B, then L^-1, then U^-1
@@ -41,8 +42,9 @@ void solveInPlace(Eigen::MatrixXd& M, Eigen::MatrixXd& B) {
   dtrsm_("L", "L", "N", "U", &n, &m, &one, M.data(), &n, B.data(), &n);
   dtrsm_("L", "U", "N", "N", &n, &m, &one, M.data(), &n, B.data(), &n);
   if (!B.allFinite())
-    throw std::runtime_error("solveInPlace: the solution overflows (the matrix is numerically "
-                             "singular)");
+    throw std::runtime_error(
+        "solveInPlace: the solution overflows (the matrix is numerically "
+        "singular)");
 }
 
 }  // namespace yardsim::forces::hydro

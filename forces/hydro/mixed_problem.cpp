@@ -64,13 +64,15 @@ MixedProblem::MixedProblem(std::vector<Panel> body, std::vector<Panel> freeSurfa
   }
   // (a degenerate panel: NaN or infinite integrals) => refused, naming the two panels
   const auto name = [&](Eigen::Index k) {
-    return k < nb ? "hull panel " + std::to_string(k) : "free-surface panel " + std::to_string(k - nb);
+    return k < nb ? "hull panel " + std::to_string(k)
+                  : "free-surface panel " + std::to_string(k - nb);
   };
   for (Eigen::Index j = 0; j < n; ++j)
     for (Eigen::Index i = 0; i < n; ++i)
       if (!std::isfinite(system(i, j)) || !std::isfinite(map_(i, j)))
-        throw PanelError("mixed problem: the influence integral of " + name(j) + " at the centroid of " +
-                         name(i) + " is not finite (a degenerate panel: zero area or coincident vertices)");
+        throw PanelError("mixed problem: the influence integral of " + name(j) +
+                         " at the centroid of " + name(i) +
+                         " is not finite (a degenerate panel: zero area or coincident vertices)");
   assemblySeconds_ = seconds(t0);
   const auto t1 = std::chrono::steady_clock::now();
   try {

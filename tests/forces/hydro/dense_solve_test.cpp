@@ -61,7 +61,8 @@ TEST_CASE("a singular matrix and mismatched sizes are refused") {
   rhs(2, 0) = std::numeric_limits<double>::infinity();
   CHECK_THROWS_AS(solveInPlace(I, rhs), std::invalid_argument);
   // (a pivot of 1e-300 against entries of 1e10) => the solution overflows: refused
-  Eigen::MatrixXd tiny = Eigen::MatrixXd::Identity(2, 2), big = Eigen::MatrixXd::Constant(2, 1, 1e300);
+  Eigen::MatrixXd tiny = Eigen::MatrixXd::Identity(2, 2),
+                  big = Eigen::MatrixXd::Constant(2, 1, 1e300);
   tiny(1, 1) = 1e-300;
   CHECK_THROWS_AS(solveInPlace(tiny, big), std::runtime_error);
 }

@@ -4,6 +4,10 @@
 #include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
 
+#if defined(EIGEN_VECTORIZE_SSE2)
+#include <emmintrin.h>
+#endif
+
 namespace yardsim::dynamics {
 
 namespace {
@@ -13,9 +17,6 @@ namespace {
 // about the origin (kg m^2) xx, yx, zx, yy, zy, zz. Kept in the first 10 entries of IC_W[i]'s
 // storage (Data has no other per-body buffer for it; nothing reads IC_W besides crba).
 using Compact = Eigen::Map<Eigen::Matrix<double, 10, 1>>;
-
-// From this many subtree dofs a column of M is one matrix-vector product (Eigen's, vectorised).
-constexpr int kGemvRows = 12;
 
 // (body inertia, X_WB) => its 10 numbers in world axes about the world origin (the values of
 // SpatialInertia::matrixIn, without forming the 6x6 matrix: 10 numbers to sum per body instead of
@@ -98,6 +99,32 @@ void applyCompact(const double* k, const double* s, double* f) {
   f[5] = k[0] * v2 - (h0 * w1 - h1 * w0);
 }
 
+// (n force columns F_j (6 each, contiguous), motion s) => out_j = F_j . s. With SSE2 two rows
+// at a time: per row three products of pairs, the two lanes added at the end for both rows in
+// one instruction (the row's sum (f0 s0 + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5)).
+void columnDots(const double* F, const double* s, int n, double* out) {
+#if defined(EIGEN_VECTORIZE_SSE2)
+  const __m128d s0 = _mm_loadu_pd(s), s1 = _mm_loadu_pd(s + 2), s2 = _mm_loadu_pd(s + 4);
+  // (F_j) => the lanes (f0 s0 + f2 s2 + f4 s4, f1 s1 + f3 s3 + f5 s5)
+  const auto lanes = [&](const double* f) {
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_loadu_pd(f), s0), _mm_mul_pd(_mm_loadu_pd(f + 2), s1)),
+                      _mm_mul_pd(_mm_loadu_pd(f + 4), s2));
+  };
+  int j = 0;
+  for (; j + 1 < n; j += 2) {
+    const __m128d a = lanes(F + 6 * j), b = lanes(F + 6 * j + 6);
+    _mm_storeu_pd(out + j, _mm_add_pd(_mm_unpacklo_pd(a, b), _mm_unpackhi_pd(a, b)));
+  }
+  if (j < n) {
+    const __m128d a = lanes(F + 6 * j);
+    out[j] = _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a)));
+  }
+#else
+  const Eigen::Map<const Motion> sm(s);
+  for (int j = 0; j < n; ++j) out[j] = Eigen::Map<const Motion>(F + 6 * j).dot(sm);
+#endif
+}
+
 // (q) => X_WB, S_W of body i (the shortcuts of RNEA and ABA for coordinate-axis joints, equal in
 // value to the general products)
 void placeWithSubspace(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
@@ -165,6 +192,9 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   // M(k, j) = M(j, k); then IC_parent += IC_i. Entries between dofs on different branches are
   // never written (zero from Data).
   const double* F = d.Fcrb.data();
+  const double* S = d.S_W.data();
+  double* M = d.M.data();
+  const Eigen::Index ld = d.M.outerStride();
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const double* k = d.IC_W[i].data();
     const int iv = m.idxV[i];
@@ -172,13 +202,10 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
       applyCompact(k, d.S_W.col(c).data(), d.Fcrb.col(c).data());
     for (int c = iv; c < iv + m.jointNv[i]; ++c) {
       const int ns = m.dofSubtree[c];
-      if (ns >= kGemvRows) {
-        d.M.col(c).segment(c, ns).noalias() = d.Fcrb.middleCols(c, ns).transpose() * d.S_W.col(c);
-      } else {
-        const Motion s = d.S_W.col(c);
-        for (int j = c; j < c + ns; ++j) d.M(j, c) = Eigen::Map<const Motion>(F + 6 * j).dot(s);
-      }
-      for (int j = c + 1; j < c + ns; ++j) d.M(c, j) = d.M(j, c);
+      double* col = M + c * ld + c;  // M(c.., c)
+      columnDots(F + 6 * c, S + 6 * c, ns, col);
+      double* row = M + (c + 1) * ld + c;  // M(c, c + 1 ..): ld apart
+      for (int j = 1; j < ns; ++j, row += ld) *row = col[j];
     }
     if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
   }

@@ -8,9 +8,6 @@
 namespace yardsim::dynamics {
 
 namespace {
-// Below this many subtree rows a dot product is a plain loop; from it on one matrix-vector
-// product per run of ancestors (Eigen's, vectorised) pays for its set-up.
-constexpr int kGemvRows = 12;
 // From this many dofs a single chain (a dense matrix) is factorised by Eigen's cache-blocked LLT.
 constexpr int kDenseChain = 64;
 
@@ -39,6 +36,97 @@ bool denseChainFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, Eigen::Ref<Eig
   return llt.info() == Eigen::Success;
 }
 
+// (NS subtree rows below row i, L(sub i, i) = li, A(., i) = ai, 1 / L_ii) => L(i, j) = out[j ld]
+// for every ancestor j of i, found by walking the parents: (A_ji - L(sub i, i) . L(sub i, j)) /
+// L_ii, the terms subtracted in the order of k; NS fixed at compile time (the loop unrolled)
+template <int NS>
+void ancestorRowFixed(std::span<const int> parent, int i, const double* li, const double* ai,
+                      double inv, double* out, Eigen::Index ld) {
+  double x[NS > 0 ? NS : 1];
+  for (int k = 0; k < NS; ++k) x[k] = li[k];
+  for (int j = parent[static_cast<std::size_t>(i)]; j >= 0; j = parent[static_cast<std::size_t>(j)]) {
+    const double* lj = out + j * ld + 1;  // L(sub i, j)
+    double s = ai[j];
+    for (int k = 0; k < NS; ++k) s -= x[k] * lj[k];
+    out[j * ld] = s * inv;
+  }
+}
+
+// Eigen's vector register of doubles (2 lanes with SSE2, 4 with AVX) for the long dot products
+using Packet = Eigen::internal::packet_traits<double>::type;
+constexpr int kLanes = Eigen::internal::packet_traits<double>::size;
+// From this many subtree rows a row's dot products run in vector registers (ancestorRowLong);
+// below it, one unrolled scalar loop per count of rows (ancestorRowFixed), summed term by term
+constexpr int kLongRow = 8;
+// ancestorRowLong takes up to this many consecutive ancestor columns per pass over L(sub i, i)
+// (two: four spilled registers in GCC 12's code and cost more instructions)
+constexpr int kMaxRun = 2;
+
+// (x of length n, C columns y_c = y0 - c ld) => s_c = x . y_c, C dot products sharing each load
+// of x, summed lane by lane in vector registers (Eigen's packets), then the lanes and the tail.
+template <int C>
+void dotColumns(const double* x, const double* y0, Eigen::Index ld, int n,
+                double* s) {
+  namespace ei = Eigen::internal;
+  const double* y[C];
+  Packet acc[C];
+  for (int c = 0; c < C; ++c) {
+    y[c] = y0 - c * ld;
+    acc[c] = ei::pset1<Packet>(0.0);
+  }
+  int k = 0;
+  for (; k + kLanes <= n; k += kLanes) {
+    const Packet xk = ei::ploadu<Packet>(x + k);
+    for (int c = 0; c < C; ++c) acc[c] = ei::pmadd(xk, ei::ploadu<Packet>(y[c] + k), acc[c]);
+  }
+  for (int c = 0; c < C; ++c) {
+    double t = ei::predux(acc[c]);
+    for (int r = k; r < n; ++r) t += x[r] * y[c][r];
+    s[c] = t;
+  }
+}
+
+// (as ancestorRowFixed, any ns) => row i of L; where ancestors run (each the parent of the next:
+// columns ld apart) two ancestor columns share each load of L(sub i, i)
+void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* li,
+                     const double* ai, double inv, double* out, Eigen::Index ld) {
+  for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;) {
+    // (j) => the run j, j - 1, ..., j - len + 1 (len <= kMaxRun) and the ancestor after it
+    int len = 1, next = parent[static_cast<std::size_t>(j)];
+    while (len < kMaxRun && next >= 0 && next == j - len) {
+      ++len;
+      next = parent[static_cast<std::size_t>(next)];
+    }
+    const double* y0 = out + j * ld + 1;  // L(sub i, j)
+    double s[kMaxRun];
+    if (len == 2) {
+      dotColumns<2>(li, y0, ld, ns, s);
+    } else {
+      dotColumns<1>(li, y0, ld, ns, s);
+    }
+    for (int c = 0; c < len; ++c) out[(j - c) * ld] = (ai[j - c] - s[c]) * inv;
+    j = next;
+  }
+}
+
+// (ns subtree rows, as ancestorRowFixed) => row i of L left of the diagonal
+static_assert(kLongRow == 8, "ancestorRow unrolls the counts 0 .. kLongRow - 1");
+void ancestorRow(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
+                 double inv, double* out, Eigen::Index ld) {
+  switch (ns) {
+    case 0: return ancestorRowFixed<0>(parent, i, li, ai, inv, out, ld);
+    case 1: return ancestorRowFixed<1>(parent, i, li, ai, inv, out, ld);
+    case 2: return ancestorRowFixed<2>(parent, i, li, ai, inv, out, ld);
+    case 3: return ancestorRowFixed<3>(parent, i, li, ai, inv, out, ld);
+    case 4: return ancestorRowFixed<4>(parent, i, li, ai, inv, out, ld);
+    case 5: return ancestorRowFixed<5>(parent, i, li, ai, inv, out, ld);
+    case 6: return ancestorRowFixed<6>(parent, i, li, ai, inv, out, ld);
+    case 7: return ancestorRowFixed<7>(parent, i, li, ai, inv, out, ld);
+    default: break;
+  }
+  ancestorRowLong(ns, parent, i, li, ai, inv, out, ld);
+}
+
 // (parent) => whether dof i's parent is i - 1 for every i (one chain: every entry non-zero)
 bool singleChain(std::span<const int> parent) {
   for (std::size_t i = 0; i < parent.size(); ++i) {
@@ -50,7 +138,7 @@ bool singleChain(std::span<const int> parent) {
 
 bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<const int> parent,
                         std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L,
-                        Eigen::VectorXd& work) {
+                        [[maybe_unused]] Eigen::VectorXd& work) {
   const int n = static_cast<int>(A.rows());
   if (n >= kDenseChain && singleChain(parent.first(static_cast<std::size_t>(n))))
     return denseChainFactor(A, L);
@@ -67,31 +155,18 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const double* li = l + i * ld + i + 1;  // L(sub i, i)
     const double* ai = a + i * lda;         // A(., i)
     double pivot = ai[i];
-    for (int k = 0; k < ns; ++k) pivot -= li[k] * li[k];
+    if (ns < kLongRow) {
+      for (int k = 0; k < ns; ++k) pivot -= li[k] * li[k];
+    } else {
+      double sq = 0.0;
+      dotColumns<1>(li, li, 0, ns, &sq);
+      pivot -= sq;
+    }
     if (!(pivot > 0.0)) ok = false;
     const double lii = std::sqrt(pivot);
     l[i * ld + i] = lii;
     const double inv = 1.0 / lii;
-    if (ns < kGemvRows) {
-      // (few subtree rows) => one dot product per ancestor j, found by walking the parents
-      for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;
-           j = parent[static_cast<std::size_t>(j)]) {
-        const double* lj = l + j * ld + i + 1;  // L(sub i, j)
-        double s = ai[j];
-        for (int k = 0; k < ns; ++k) s -= li[k] * lj[k];
-        l[j * ld + i] = s * inv;
-      }
-      continue;
-    }
-    for (int hi = parent[static_cast<std::size_t>(i)]; hi >= 0;) {
-      int lo = hi;  // (parent) => the run lo .. hi of ancestors, each the parent of the next
-      while (lo > 0 && parent[static_cast<std::size_t>(lo)] == lo - 1) --lo;
-      const int len = hi - lo + 1;
-      auto w = work.head(len);
-      w.noalias() = L.block(i + 1, lo, ns, len).transpose() * L.col(i).segment(i + 1, ns);
-      for (int j = lo; j <= hi; ++j) l[j * ld + i] = (ai[j] - w[j - lo]) * inv;
-      hi = parent[static_cast<std::size_t>(lo)];
-    }
+    ancestorRow(ns, parent, i, li, ai, inv, l + i, ld);
   }
   return ok;
 }

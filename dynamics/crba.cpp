@@ -107,8 +107,9 @@ void columnDots(const double* F, const double* s, int n, double* out) {
   const __m128d s0 = _mm_loadu_pd(s), s1 = _mm_loadu_pd(s + 2), s2 = _mm_loadu_pd(s + 4);
   // (F_j) => the lanes (f0 s0 + f2 s2 + f4 s4, f1 s1 + f3 s3 + f5 s5)
   const auto lanes = [&](const double* f) {
-    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_loadu_pd(f), s0), _mm_mul_pd(_mm_loadu_pd(f + 2), s1)),
-                      _mm_mul_pd(_mm_loadu_pd(f + 4), s2));
+    return _mm_add_pd(
+        _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(f), s0), _mm_mul_pd(_mm_loadu_pd(f + 2), s1)),
+        _mm_mul_pd(_mm_loadu_pd(f + 4), s2));
   };
   int j = 0;
   for (; j + 1 < n; j += 2) {

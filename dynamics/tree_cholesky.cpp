@@ -44,7 +44,8 @@ void ancestorRowFixed(std::span<const int> parent, int i, const double* li, cons
                       double inv, double* out, Eigen::Index ld) {
   double x[NS > 0 ? NS : 1];
   for (int k = 0; k < NS; ++k) x[k] = li[k];
-  for (int j = parent[static_cast<std::size_t>(i)]; j >= 0; j = parent[static_cast<std::size_t>(j)]) {
+  for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;
+       j = parent[static_cast<std::size_t>(j)]) {
     const double* lj = out + j * ld + 1;  // L(sub i, j)
     double s = ai[j];
     for (int k = 0; k < NS; ++k) s -= x[k] * lj[k];
@@ -65,8 +66,7 @@ constexpr int kMaxRun = 2;
 // (x of length n, C columns y_c = y0 - c ld) => s_c = x . y_c, C dot products sharing each load
 // of x, summed lane by lane in vector registers (Eigen's packets), then the lanes and the tail.
 template <int C>
-void dotColumns(const double* x, const double* y0, Eigen::Index ld, int n,
-                double* s) {
+void dotColumns(const double* x, const double* y0, Eigen::Index ld, int n, double* s) {
   namespace ei = Eigen::internal;
   const double* y[C];
   Packet acc[C];
@@ -88,8 +88,8 @@ void dotColumns(const double* x, const double* y0, Eigen::Index ld, int n,
 
 // (as ancestorRowFixed, any ns) => row i of L; where ancestors run (each the parent of the next:
 // columns ld apart) two ancestor columns share each load of L(sub i, i)
-void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* li,
-                     const double* ai, double inv, double* out, Eigen::Index ld) {
+void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
+                     double inv, double* out, Eigen::Index ld) {
   for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;) {
     // (j) => the run j, j - 1, ..., j - len + 1 (len <= kMaxRun) and the ancestor after it
     int len = 1, next = parent[static_cast<std::size_t>(j)];
@@ -114,15 +114,24 @@ static_assert(kLongRow == 8, "ancestorRow unrolls the counts 0 .. kLongRow - 1")
 void ancestorRow(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
                  double inv, double* out, Eigen::Index ld) {
   switch (ns) {
-    case 0: return ancestorRowFixed<0>(parent, i, li, ai, inv, out, ld);
-    case 1: return ancestorRowFixed<1>(parent, i, li, ai, inv, out, ld);
-    case 2: return ancestorRowFixed<2>(parent, i, li, ai, inv, out, ld);
-    case 3: return ancestorRowFixed<3>(parent, i, li, ai, inv, out, ld);
-    case 4: return ancestorRowFixed<4>(parent, i, li, ai, inv, out, ld);
-    case 5: return ancestorRowFixed<5>(parent, i, li, ai, inv, out, ld);
-    case 6: return ancestorRowFixed<6>(parent, i, li, ai, inv, out, ld);
-    case 7: return ancestorRowFixed<7>(parent, i, li, ai, inv, out, ld);
-    default: break;
+    case 0:
+      return ancestorRowFixed<0>(parent, i, li, ai, inv, out, ld);
+    case 1:
+      return ancestorRowFixed<1>(parent, i, li, ai, inv, out, ld);
+    case 2:
+      return ancestorRowFixed<2>(parent, i, li, ai, inv, out, ld);
+    case 3:
+      return ancestorRowFixed<3>(parent, i, li, ai, inv, out, ld);
+    case 4:
+      return ancestorRowFixed<4>(parent, i, li, ai, inv, out, ld);
+    case 5:
+      return ancestorRowFixed<5>(parent, i, li, ai, inv, out, ld);
+    case 6:
+      return ancestorRowFixed<6>(parent, i, li, ai, inv, out, ld);
+    case 7:
+      return ancestorRowFixed<7>(parent, i, li, ai, inv, out, ld);
+    default:
+      break;
   }
   ancestorRowLong(ns, parent, i, li, ai, inv, out, ld);
 }

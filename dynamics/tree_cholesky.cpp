@@ -53,9 +53,10 @@ void ancestorRowFixed(std::span<const int> parent, int i, const double* li, cons
   }
 }
 
-// Eigen's vector register of doubles (2 lanes with SSE2, 4 with AVX) for the long dot products
-using Packet = Eigen::internal::packet_traits<double>::type;
-constexpr int kLanes = Eigen::internal::packet_traits<double>::size;
+// Eigen's vector register of at most 4 doubles (2 lanes with SSE2, 4 with AVX and AVX-512: its
+// 8-lane predux trips GCC 12's -Wuninitialized in the intrinsics' header) for the long dot products
+using Packet = Eigen::internal::find_best_packet<double, 4>::type;
+constexpr int kLanes = Eigen::internal::unpacket_traits<Packet>::size;
 // From this many subtree rows a row's dot products run in vector registers (ancestorRowLong);
 // below it, one unrolled scalar loop per count of rows (ancestorRowFixed), summed term by term
 constexpr int kLongRow = 8;
@@ -109,31 +110,14 @@ void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* l
   }
 }
 
-// (ns subtree rows, as ancestorRowFixed) => row i of L left of the diagonal
-static_assert(kLongRow == 8, "ancestorRow unrolls the counts 0 .. kLongRow - 1");
-void ancestorRow(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
-                 double inv, double* out, Eigen::Index ld) {
-  switch (ns) {
-    case 0:
-      return ancestorRowFixed<0>(parent, i, li, ai, inv, out, ld);
-    case 1:
-      return ancestorRowFixed<1>(parent, i, li, ai, inv, out, ld);
-    case 2:
-      return ancestorRowFixed<2>(parent, i, li, ai, inv, out, ld);
-    case 3:
-      return ancestorRowFixed<3>(parent, i, li, ai, inv, out, ld);
-    case 4:
-      return ancestorRowFixed<4>(parent, i, li, ai, inv, out, ld);
-    case 5:
-      return ancestorRowFixed<5>(parent, i, li, ai, inv, out, ld);
-    case 6:
-      return ancestorRowFixed<6>(parent, i, li, ai, inv, out, ld);
-    case 7:
-      return ancestorRowFixed<7>(parent, i, li, ai, inv, out, ld);
-    default:
-      break;
-  }
-  ancestorRowLong(ns, parent, i, li, ai, inv, out, ld);
+// (ns subtree rows, as ancestorRowFixed) => row i of L left of the diagonal: ancestorRowFixed<ns>
+// for ns in NS... (one comparison each, inlined), ancestorRowLong from kLongRow rows
+template <int... NS>
+void ancestorRow(std::integer_sequence<int, NS...>, int ns, std::span<const int> parent, int i,
+                 const double* li, const double* ai, double inv, double* out, Eigen::Index ld) {
+  const bool fixed =
+      ((ns == NS && (ancestorRowFixed<NS>(parent, i, li, ai, inv, out, ld), true)) || ...);
+  if (!fixed) ancestorRowLong(ns, parent, i, li, ai, inv, out, ld);
 }
 
 // (parent) => whether dof i's parent is i - 1 for every i (one chain: every entry non-zero)
@@ -175,7 +159,7 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const double lii = std::sqrt(pivot);
     l[i * ld + i] = lii;
     const double inv = 1.0 / lii;
-    ancestorRow(ns, parent, i, li, ai, inv, l + i, ld);
+    ancestorRow(std::make_integer_sequence<int, kLongRow>{}, ns, parent, i, li, ai, inv, l + i, ld);
   }
   return ok;
 }

@@ -20,7 +20,9 @@ TraceStream::TraceStream(TraceStream&& o) noexcept
       capacity_(std::exchange(o.capacity_, 0)),
       lastFlush_(o.lastFlush_) {}
 
-TraceStream::~TraceStream() { drain(); }
+TraceStream::~TraceStream() {
+  drain();
+}
 
 void TraceStream::drain() {
   if (used_ == 0) return;

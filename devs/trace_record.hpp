@@ -28,7 +28,8 @@ struct TraceRecord {
 
 // An output stream that is either borrowed or a file this object opened (and flushes). Sinks
 // write their records into its chunk (room(), then wrote()): a file's chunk goes to the file when
-// full (kChunkBytes) and when the stream is flushed or gone, a borrowed stream's after every record.
+// full (kChunkBytes) and when the stream is flushed or gone, a borrowed stream's after every
+// record.
 class TraceStream {
  public:
   // Bytes a file's chunk holds before they go to the file (BufferedFile's size: one write each).

@@ -1,11 +1,11 @@
 #include "dtss/atomic.hpp"
 
+#include <yaml-cpp/yaml.h>
 #include <catch2/catch.hpp>
 #include <charconv>
-#include <set>
 #include <cmath>
+#include <set>
 #include <sstream>
-#include <yaml-cpp/yaml.h>
 
 #include "devs/chrome_trace_sink.hpp"
 #include "devs/coupled.hpp"

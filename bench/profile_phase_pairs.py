@@ -3,22 +3,16 @@
 --profile` line of two yardsim builds on one scene, interleaved (old, new, new, old, ...), pinned;
 the medians and minimums of the output and total seconds and the median output share. On a
 loaded host the minimums are the runs least disturbed by other work."""
-import argparse
 import re
 import statistics
 import subprocess
 import tempfile
 
+from scene_pairs import pair_arguments
+
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("old")
-    ap.add_argument("new")
-    ap.add_argument("scene")
-    ap.add_argument("-n", type=int, default=31, help="pairs")
-    ap.add_argument("--pin", type=int, default=1, help="core for taskset -c")
-    ap.add_argument("extra", nargs="*", help="more `yardsim run` arguments (after --)")
-    a = ap.parse_args()
+    a = pair_arguments(__doc__, 31)
     seen = {"old": ([], []), "new": ([], [])}
     with tempfile.TemporaryDirectory() as out:
         for r in range(a.n):

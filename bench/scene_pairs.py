@@ -18,15 +18,20 @@ def command(exe):
     return (["env", f"LD_LIBRARY_PATH={lib}"] if os.path.isdir(lib) else []) + [exe]
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__)
+def pair_arguments(description, pairs):
+    """(description, default pairs) => the parsed arguments OLD NEW SCENE [-n] [--pin] [-- extra]"""
+    ap = argparse.ArgumentParser(description=description)
     ap.add_argument("old")
     ap.add_argument("new")
     ap.add_argument("scene")
-    ap.add_argument("-n", type=int, default=5, help="pairs")
+    ap.add_argument("-n", type=int, default=pairs, help="pairs")
     ap.add_argument("--pin", type=int, default=1, help="core for taskset -c")
     ap.add_argument("extra", nargs="*", help="more `yardsim run` arguments (after --)")
-    a = ap.parse_args()
+    return ap.parse_args()
+
+
+def main():
+    a = pair_arguments(__doc__, 5)
     sides = {"old": command(a.old), "new": command(a.new)}
     cpu = {"old": [], "new": []}
     with tempfile.TemporaryDirectory() as out:

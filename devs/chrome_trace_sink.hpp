@@ -4,6 +4,10 @@
 // transition to this one; other transitions and every output message as instants.
 // Timestamps are microseconds of simulation time. The file is a JSON object
 // {"traceEvents":[...],"displayTimeUnit":"ms"} closed by close() or the destructor.
+#include <array>
+#include <cstdint>
+
+#include "devs/json_number.hpp"
 #include "devs/trace_record.hpp"
 
 namespace yardsim::devs {
@@ -21,8 +25,18 @@ class ChromeTraceSink final : public Listener {
   void close();
 
  private:
+  void setHead(std::string_view phase, std::string_view name, const AtomicBase& m);
   void begin(std::string_view phase, std::string_view name, Time t, const AtomicBase& m);
   void finish();
+  void step(Time start, Time e, const AtomicBase& m);
+  char* writeDuration(char* p, Time e);
+
+  // A step duration's bits and its text in microseconds (a fixed step's few roundings of dt)
+  struct DurationText {
+    std::uint64_t bits = 0;
+    unsigned char length = 0;  // 0: empty
+    char text[kJsonNumberSize] = {};
+  };
 
   TraceStream stream_;
   std::string ev_;
@@ -31,6 +45,8 @@ class ChromeTraceSink final : public Listener {
   std::string headPhase_, headName_;
   const AtomicBase* headModel_ = nullptr;
   std::string head_;
+  std::array<DurationText, 4> durations_;
+  std::size_t nextDuration_ = 0;  // the entry replaced next
   bool first_ = true;
   bool closed_ = false;
 };

@@ -15,8 +15,8 @@ class JsonlTraceSink final : public RecordSink {
   void write(const TraceRecord& r) override;
 
  private:
-  std::string line_;
   std::string modelPath_, modelJson_;  // the last model's path and its JSON string
+  std::string portJson_;               // scratch: a record's port as a JSON string
 };
 
 }  // namespace yardsim::devs

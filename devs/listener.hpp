@@ -20,7 +20,8 @@ class Listener {
   // (t, model, which transition, elapsed time e since the previous one) => after it ran
   virtual void onTransition(Time /*t*/, const AtomicBase& /*m*/, Transition /*kind*/,
                             Time /*e*/) {}
-  // (t, model) => its state after a transition (and at start)
+  // (t, model) => its state after a transition (and at start); after a transition the Simulator
+  // calls it on each listener right after that listener's onTransition, nothing in between
   virtual void onState(Time /*t*/, const AtomicBase& /*m*/) {}
   // (t) => when a run call returns
   virtual void onEnd(Time /*t*/) {}

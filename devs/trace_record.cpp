@@ -1,6 +1,9 @@
 #include "devs/trace_record.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <stdexcept>
+#include <utility>
 
 namespace yardsim::devs {
 
@@ -9,12 +12,46 @@ TraceStream::TraceStream(const std::filesystem::path& path)
   if (!*os_) throw std::runtime_error("cannot open trace file '" + path.string() + "'");
 }
 
+TraceStream::TraceStream(TraceStream&& o) noexcept
+    : file_(std::move(o.file_)),
+      os_(o.os_),
+      chunk_(std::move(o.chunk_)),
+      used_(std::exchange(o.used_, 0)),
+      capacity_(std::exchange(o.capacity_, 0)),
+      lastFlush_(o.lastFlush_) {}
+
+TraceStream::~TraceStream() {
+  drain();
+}
+
+void TraceStream::drain() {
+  if (used_ == 0) return;
+  os_->rdbuf()->sputn(chunk_.get(), static_cast<std::streamsize>(used_));
+  used_ = 0;
+}
+
+void TraceStream::makeRoom(std::size_t n) {
+  drain();
+  if (n <= capacity_) return;
+  // (a file) => its chunk at full size from the first record; (a borrowed stream) => the largest
+  // record so far
+  capacity_ = std::max(n, file_ ? kChunkBytes : std::size_t{256});
+  chunk_ = std::make_unique_for_overwrite<char[]>(capacity_);
+}
+
+void TraceStream::put(std::string_view text) {
+  char* p = room(text.size());
+  std::memcpy(p, text.data(), text.size());
+  wrote(p + text.size());
+}
+
 void TraceStream::flushAtRunEnd() {
   if (file_) {
     const auto now = std::chrono::steady_clock::now();
     if (now - lastFlush_ < std::chrono::milliseconds(200)) return;
     lastFlush_ = now;
   }
+  drain();
   os_->flush();
 }
 

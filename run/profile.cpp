@@ -4,6 +4,12 @@
 
 namespace yardsim::run {
 
+std::int64_t steadyNanoseconds() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
 std::string formatProfile(const PhaseTimes& p) {
   const double total = p.read + p.validation + p.stiffness + p.build + p.simulate + p.output;
   char buf[320];

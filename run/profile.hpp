@@ -2,6 +2,7 @@
 // Where a run's time goes (`yardsim run --profile`): wall-clock seconds per phase, and a trace
 // sink wrapper that books the time spent in a sink's hooks as output.
 #include <chrono>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,12 +36,22 @@ class Stopwatch {
 /// s"
 std::string formatProfile(const PhaseTimes& p);
 
+/// Nanoseconds on steady_clock (a monotonic clock): what a TimedListener reads by default.
+std::int64_t steadyNanoseconds();
+
 /// Forwards every hook to each of `inner` in turn and adds the time they took to `seconds` (the
-/// sinks' output time): one pair of clock reads per hook, however many sinks there are.
+/// sinks' output time): one pair of clock reads per hook, however many sinks there are, and one
+/// pair for a transition's two hooks: the Simulator calls a listener's onState right after its
+/// onTransition (devs/listener.hpp), so the clock is read at the transition hook's start and at
+/// the state hook's end, and the call from one to the other is all that lies between them. A
+/// transition hook that another hook follows instead is closed at that hook's start (counted up
+/// to there: more output, never less). `clock` is for tests (a counter of their own).
 class TimedListener final : public devs::Listener {
  public:
-  TimedListener(std::vector<devs::Listener*> inner, double& seconds)
-      : inner_(std::move(inner)), seconds_(seconds) {}
+  using Clock = std::int64_t (*)();
+  TimedListener(std::vector<devs::Listener*> inner, double& seconds,
+                Clock clock = steadyNanoseconds)
+      : inner_(std::move(inner)), seconds_(seconds), clock_(clock) {}
   void onStart(devs::Time t, std::span<devs::AtomicBase* const> a) override {
     timed([&](devs::Listener& l) { l.onStart(t, a); });
   }
@@ -50,12 +61,21 @@ class TimedListener final : public devs::Listener {
   void onInput(devs::Time t, const devs::AtomicBase& m, const devs::PortBase& p) override {
     timed([&](devs::Listener& l) { l.onInput(t, m, p); });
   }
+  // (transition) => the pair's clock started, the hooks forwarded; its state hook stops it
   void onTransition(devs::Time t, const devs::AtomicBase& m, devs::Transition k,
                     devs::Time e) override {
-    timed([&](devs::Listener& l) { l.onTransition(t, m, k, e); });
+    const std::int64_t start = clock_();
+    closePair(start);
+    pairStart_ = start;
+    pairOpen_ = true;
+    for (devs::Listener* l : inner_) l->onTransition(t, m, k, e);
   }
+  // (state) => forwarded; timed from its transition hook's start when it follows one
   void onState(devs::Time t, const devs::AtomicBase& m) override {
-    timed([&](devs::Listener& l) { l.onState(t, m); });
+    const std::int64_t start = pairOpen_ ? pairStart_ : clock_();
+    pairOpen_ = false;
+    for (devs::Listener* l : inner_) l->onState(t, m);
+    book(start, clock_());
   }
   void onEnd(devs::Time t) override {
     timed([&](devs::Listener& l) { l.onEnd(t); });
@@ -64,12 +84,25 @@ class TimedListener final : public devs::Listener {
  private:
   template <class F>
   void timed(F&& f) {
-    const Stopwatch w;
+    const std::int64_t start = clock_();
+    closePair(start);
     for (devs::Listener* l : inner_) f(*l);
-    seconds_ += w.seconds();
+    book(start, clock_());
+  }
+  // (clock at a hook's start) => a transition hook still open counted up to there
+  void closePair(std::int64_t now) {
+    if (!pairOpen_) return;
+    pairOpen_ = false;
+    book(pairStart_, now);
+  }
+  void book(std::int64_t start, std::int64_t end) {
+    seconds_ += 1e-9 * static_cast<double>(end - start);
   }
   std::vector<devs::Listener*> inner_;
   double& seconds_;
+  Clock clock_;
+  std::int64_t pairStart_ = 0;
+  bool pairOpen_ = false;
 };
 
 }  // namespace yardsim::run

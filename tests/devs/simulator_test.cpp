@@ -100,6 +100,64 @@ TEST_CASE("internal and external events at the same time make a confluent transi
   CHECK(s.bags[1].first == 2.5);
 }
 
+namespace {
+// One hook a listener received: which listener, 'S'tart, 'O'utput, 'I'nput, 'T'ransition, state
+// 'X' or 'E'nd, and the model of a transition or state.
+struct Hook {
+  int listener;
+  char kind;
+  const devs::AtomicBase* model;
+};
+// Logs each hook it receives into a log shared with other listeners.
+struct HookLog : devs::Listener {
+  HookLog(int i, std::vector<Hook>& l) : id(i), log(l) {}
+  int id;
+  std::vector<Hook>& log;
+  void onStart(devs::Time, std::span<devs::AtomicBase* const>) override {
+    log.push_back({id, 'S', nullptr});
+  }
+  void onOutput(devs::Time, const devs::AtomicBase&, const devs::PortBase&) override {
+    log.push_back({id, 'O', nullptr});
+  }
+  void onInput(devs::Time, const devs::AtomicBase&, const devs::PortBase&) override {
+    log.push_back({id, 'I', nullptr});
+  }
+  void onTransition(devs::Time, const devs::AtomicBase& m, devs::Transition, devs::Time) override {
+    log.push_back({id, 'T', &m});
+  }
+  void onState(devs::Time, const devs::AtomicBase& m) override { log.push_back({id, 'X', &m}); }
+  void onEnd(devs::Time) override { log.push_back({id, 'E', nullptr}); }
+};
+}  // namespace
+
+TEST_CASE("a listener hears a transition's state right after the transition, nothing between") {
+  // (internal, external and confluent transitions, two listeners) => every 'T' is followed at once
+  // by the 'X' of the same listener and model, no other listener's hook between them
+  // (run/profile.hpp times the two hooks as one)
+  Coupled root("root");
+  auto& gen = root.add<Emitter>("gen", std::vector<devs::Time>{1.0, 2.5}, 2);
+  auto& col = root.add<Collector>("col", 1.0);
+  root.couple(gen.out, col.in);
+  Simulator sim(root);
+  std::vector<Hook> log;
+  HookLog first(1, log), second(2, log);
+  sim.addListener(first);
+  sim.addListener(second);
+  sim.runUntil(4.0);
+  CHECK(col.state().confluent == 1);
+  CHECK(col.state().external == 1);
+  int transitions = 0;
+  for (std::size_t i = 0; i < log.size(); ++i) {
+    if (log[i].kind != 'T') continue;
+    ++transitions;
+    REQUIRE(i + 1 < log.size());
+    CHECK(log[i + 1].kind == 'X');
+    CHECK(log[i + 1].listener == log[i].listener);
+    CHECK(log[i + 1].model == log[i].model);
+  }
+  CHECK(transitions >= 2 * 7);  // gen at 1 and 2.5, col at 1 (conf), 2, 2.5 (ext), 3 and 4
+}
+
 TEST_CASE("several messages on one port arrive in one bag") {
   Coupled root("root");
   auto& a = root.add<Emitter>("a", std::vector<devs::Time>{2.0}, 3);

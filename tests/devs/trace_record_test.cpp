@@ -3,7 +3,9 @@
 // gone, whatever the run calls.
 #include "devs/trace_record.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -68,5 +70,63 @@ TEST_CASE("a trace file holds every record once its sink is gone, after many run
   CHECK(jsonl.str().size() > 1000);
   CHECK(contents(dir / "trace.jsonl") == jsonl.str());
   CHECK(contents(dir / "trace.json") == chrome.str());
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a borrowed trace stream holds each record as soon as its hook returns") {
+  // (hooks called one by one, no run call's end) => the stream has every line so far
+  std::ostringstream text;
+  devs::JsonlTraceSink sink{devs::TraceStream(text)};
+  auto gpt = testing::makeGpt({1.0, 1.5, 10.0});
+  devs::Simulator sim(*gpt);  // flattened: the atomics have their places
+  REQUIRE(!sim.atomics().empty());
+  const devs::AtomicBase* genr = sim.atomics().front();
+  devs::Listener& l = sink;
+  for (int k = 1; k <= 5; ++k) {
+    l.onTransition(k, *genr, devs::Transition::Internal, 1.0);
+    const std::string now = text.str();
+    CHECK(std::count(now.begin(), now.end(), '\n') == 2 * k - 1);
+    CHECK(now.ends_with("\"kind\":\"int\"}\n"));
+    l.onState(k, *genr);
+    const std::string after = text.str();
+    CHECK(std::count(after.begin(), after.end(), '\n') == 2 * k);
+    CHECK(after.find("\"kind\":\"state\",\"value\":\"", after.rfind("{\"t\":")) !=
+          std::string::npos);
+  }
+}
+
+TEST_CASE("a trace file's chunks keep every byte in order, across chunks and beyond one") {
+  // pieces of 1 byte to more than a whole chunk, and text written to the stream itself (a
+  // header) between them, through a file of its own: the file is their concatenation
+  const auto dir = std::filesystem::temp_directory_path() / "yardsim_trace_chunk_test";
+  std::filesystem::create_directories(dir);
+  std::string expected;
+  {
+    devs::TraceStream stream(dir / "chunks.txt");
+    stream.out() << "head\n";
+    expected += "head\n";
+    std::size_t size = 1;
+    for (int k = 0; k < 60; ++k) {
+      std::string piece(size, static_cast<char>('a' + k % 26));
+      piece.back() = '\n';
+      if (k % 2) {
+        stream.put(piece);
+      } else {
+        char* p = stream.room(piece.size() + 100);  // more room asked than used
+        std::memcpy(p, piece.data(), piece.size());
+        stream.wrote(p + piece.size());
+      }
+      expected += piece;
+      if (k == 30) {
+        stream.out() << "middle\n";
+        expected += "middle\n";
+      }
+      size = size * 3 / 2 + 1;
+      if (size > 3 * devs::TraceStream::kChunkBytes / 2) size = 7;
+    }
+    stream.flushAtRunEnd();
+  }
+  CHECK(expected.size() > 3 * devs::TraceStream::kChunkBytes);
+  CHECK(contents(dir / "chunks.txt") == expected);
   std::filesystem::remove_all(dir);
 }

@@ -1,9 +1,11 @@
 #include "dtss/atomic.hpp"
 
-#include <catch2/catch.hpp>
-#include <cmath>
-#include <sstream>
 #include <yaml-cpp/yaml.h>
+#include <catch2/catch.hpp>
+#include <charconv>
+#include <cmath>
+#include <set>
+#include <sstream>
 
 #include "devs/chrome_trace_sink.hpp"
 #include "devs/coupled.hpp"
@@ -186,6 +188,49 @@ TEST_CASE("DTSS steps are spans in the Chrome trace") {
     CHECK(ev["name"].as<std::string>() == "step");
   }
   CHECK(spans == 8);
+}
+
+TEST_CASE("each DTSS span starts where its step starts and lasts as long, number for number") {
+  // time events between grid points at irregular offsets: more step lengths than the sink keeps
+  // texts of (four), each coming back now and then
+  std::vector<Time> schedule;
+  const double offsets[] = {0.01, 0.02, 0.03, 0.05, 0.07, 0.011, 0.013};
+  for (int k = 0; k < 60; ++k) schedule.push_back(0.1 * k + offsets[k % 7]);
+  devs::Coupled root("root");
+  root.add<Clock>(0.1, schedule);
+  devs::Simulator sim(root);
+  std::ostringstream text;
+  testing::RecordCollector rec(false);
+  {
+    devs::ChromeTraceSink chrome{devs::TraceStream(text)};
+    sim.addListener(chrome);
+    sim.addListener(rec);
+    sim.runUntil(6.0);
+  }
+  // (value) => std::to_chars' shortest text: what the trace writes
+  const auto shortest = [](double v) {
+    char buf[64];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+  };
+  // (the clock's transitions, each from the one before) => the spans expected, in order
+  std::vector<std::pair<std::string, std::string>> expected;
+  std::set<std::string> lengths;
+  Time previous = 0.0;
+  for (const auto& r : rec.records) {
+    if (r.kind != "int" && r.kind != "conf") continue;
+    const Time e = r.t - previous;
+    previous = r.t;
+    if (e <= 0.0) continue;
+    expected.emplace_back(shortest((r.t - e) * 1e6), shortest(e * 1e6));
+    lengths.insert(expected.back().second);
+  }
+  std::vector<std::pair<std::string, std::string>> spans;
+  for (const auto& ev : YAML::Load(text.str())["traceEvents"])
+    if (ev["ph"].as<std::string>() == "X")
+      spans.emplace_back(ev["ts"].as<std::string>(), ev["dur"].as<std::string>());
+  CHECK(expected.size() > 100);
+  CHECK(lengths.size() > 8);
+  CHECK(spans == expected);
 }
 
 TEST_CASE("a non-positive step is refused") {

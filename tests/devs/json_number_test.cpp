@@ -1,0 +1,81 @@
+// writeJsonNumber (devs/json_number.hpp): std::to_chars' shortest text, "null" for a value JSON
+// cannot hold, the end returned exactly, repeated numbers (kept texts) the same as new ones.
+#include "devs/json_number.hpp"
+
+#include <bit>
+#include <catch2/catch.hpp>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "support/split_mix.hpp"
+
+using namespace yardsim::devs;
+
+namespace {
+// (value) => std::to_chars' shortest text, "null" when not finite: the reference
+std::string reference(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[64];
+  return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
+}
+
+// (value) => writeJsonNumber's text, from a buffer of exactly kJsonNumberSize chars followed by a
+// guard that must stay untouched (reported when not)
+std::string written(double v) {
+  char buf[kJsonNumberSize + 8];
+  std::memset(buf, '#', sizeof buf);
+  char* end = writeJsonNumber(buf, v);
+  for (std::size_t i = kJsonNumberSize; i < sizeof buf; ++i)
+    if (buf[i] != '#') FAIL("written past the buffer for " << v);
+  return {buf, end};
+}
+}  // namespace
+
+TEST_CASE("writeJsonNumber writes the shortest text and ends where the text ends") {
+  // a long text then short ones that repeat (a kept text is copied whole: its end must still be
+  // its own length), zeros' signs, values JSON has no number for
+  const std::vector<double> values = {-2.2250738585072014e-308,
+                                      0.002,
+                                      0.002,
+                                      -2.2250738585072014e-308,
+                                      7.0,
+                                      0.0,
+                                      -0.0,
+                                      0.0,
+                                      1999.9999999999998,
+                                      2000.0,
+                                      1999.9999999999998,
+                                      1e21,
+                                      123456789012345.0,
+                                      5e-324,
+                                      std::numeric_limits<double>::infinity(),
+                                      -std::numeric_limits<double>::infinity(),
+                                      std::numeric_limits<double>::quiet_NaN(),
+                                      7.0,
+                                      0.002};
+  for (int round = 0; round < 3; ++round)
+    for (double v : values) CHECK(written(v) == reference(v));
+}
+
+TEST_CASE("writeJsonNumber on random doubles, new and repeated, is std::to_chars") {
+  yardsim::test::SplitMix64 rng{29};
+  std::vector<double> recent;
+  for (int i = 0; i < 20000; ++i) {
+    // (every third value) => one of the last six again; otherwise random bits
+    double v;
+    if (i % 3 == 2 && !recent.empty()) {
+      v = recent[rng() % recent.size()];
+    } else {
+      v = std::bit_cast<double>(rng());
+      recent.push_back(v);
+      if (recent.size() > 6) recent.erase(recent.begin());
+    }
+    const std::string a = written(v), b = reference(v);
+    if (a != b) FAIL(std::hexfloat << v << ": " << a << " against " << b);
+  }
+}

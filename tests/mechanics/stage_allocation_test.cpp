@@ -64,6 +64,20 @@ struct SetUpRun {
     return spec;
   }
   void step() { integrator->step(s.data.kernel, t, q, v, spec.dt); }
+  // (wait for a Jacobian) => 10 steps, then more until the integrator's next Jacobian (2000 at
+  // most); the heap blocks they allocated, their count in steps
+  int steps = 0;
+  std::size_t blocksInSteps(bool waitForJacobian) {
+    const long jacobians = integrator->stats().jac_evals;
+    const std::size_t before = testing::allocationCount();
+    steps = 0;
+    while (steps < 10 ||
+           (waitForJacobian && integrator->stats().jac_evals == jacobians && steps < 2000)) {
+      step();
+      ++steps;
+    }
+    return testing::allocationCount() - before;
+  }
 };
 
 }  // namespace
@@ -152,14 +166,8 @@ TEST_CASE("SUNDIALS' dense Newton steps a buoy moored by lumped lines without al
     SetUpRun run(testing::mooredBuoyScene(), method.name, true);
     const auto& integrator = run.integrator;
     const long jacobians = integrator->stats().jac_evals;
-    const std::size_t before = testing::allocationCount();
-    int steps = 0;
-    while (steps < 10 || (integrator->stats().jac_evals == jacobians && steps < 2000)) {
-      run.step();
-      ++steps;
-    }
-    const std::size_t blocks = testing::allocationCount() - before;
-    INFO(blocks << " heap blocks in " << steps << " steps, "
+    const std::size_t blocks = run.blocksInSteps(true);
+    INFO(blocks << " heap blocks in " << run.steps << " steps, "
                 << integrator->stats().jac_evals - jacobians << " Jacobians among them");
     CHECK(blocks == 0);
     CHECK(integrator->stats().jac_evals > jacobians);
@@ -177,16 +185,9 @@ TEST_CASE("every integrator steps a buoy moored by catenary lines without alloca
     REQUIRE(run.s.data.kernel.linearises());
     const auto& integrator = run.integrator;
     const long jacobians = integrator->stats().jac_evals;
-    const std::size_t before = testing::allocationCount();
-    int steps = 0;
     const bool sundialsNewton = method.adaptive && method.implicit;
-    while (steps < 10 ||
-           (sundialsNewton && integrator->stats().jac_evals == jacobians && steps < 2000)) {
-      run.step();
-      ++steps;
-    }
-    const std::size_t blocks = testing::allocationCount() - before;
-    INFO(blocks << " heap blocks in " << steps << " steps, "
+    const std::size_t blocks = run.blocksInSteps(sundialsNewton);
+    INFO(blocks << " heap blocks in " << run.steps << " steps, "
                 << integrator->stats().jac_evals - jacobians << " Jacobians among them");
     CHECK(blocks == 0);
     // (CVODE's and ARKODE's implicit methods) => a Jacobian was formed among them through

@@ -65,6 +65,16 @@ void checkAgainstFresh(const Matrix& A, SparseLuRefactor& lu) {
   CHECK((dense * X - B).norm() <= 1e-10 * X.norm());
 }
 
+// (lu, n, pattern, rng, diagonal weight) => a matrix with values, analysed and factorised by lu
+Matrix firstFactorisation(SparseLuRefactor& lu, int n,
+                          const std::vector<Eigen::Triplet<double>>& pattern, std::mt19937& rng,
+                          double diagonal) {
+  Matrix A = withValues(n, pattern, rng, diagonal);
+  lu.analyzePattern(A);
+  lu.refactorize(A);
+  return A;
+}
+
 }  // namespace
 
 TEST_CASE("a SparseLU refactorisation is the fresh SparseLU of the new values, pivots changed") {
@@ -72,9 +82,7 @@ TEST_CASE("a SparseLU refactorisation is the fresh SparseLU of the new values, p
   const int n = 60;
   const auto pattern = randomPattern(n, rng);
   SparseLuRefactor lu;
-  Matrix A = withValues(n, pattern, rng, 10.0);
-  lu.analyzePattern(A);
-  lu.refactorize(A);
+  Matrix A = firstFactorisation(lu, n, pattern, rng, 10.0);
   checkAgainstFresh(A, lu);
   CHECK(lu.fullFactorisations() == 1);
   // (diagonally dominant, then not: partial pivoting picks other rows) => every refactorisation
@@ -100,9 +108,7 @@ TEST_CASE("a refactorisation that fills beyond the first grows L and U as Sparse
   const int n = 1500;
   const auto pattern = randomPattern(n, rng);
   SparseLuRefactor lu;
-  Matrix A = withValues(n, pattern, rng, 10.0);
-  lu.analyzePattern(A);
-  lu.refactorize(A);
+  Matrix A = firstFactorisation(lu, n, pattern, rng, 10.0);
   const Eigen::Index firstL = lu.nnzL();
   A = withValues(n, pattern, rng, 0.0);
   lu.refactorize(A);
@@ -119,9 +125,7 @@ TEST_CASE("a zero pivot fails the refactorisation, the next matrix factorises") 
   std::mt19937 rng(5);
   const auto pattern = randomPattern(30, rng);
   SparseLuRefactor lu;
-  Matrix A = withValues(30, pattern, rng, 10.0);
-  lu.analyzePattern(A);
-  lu.refactorize(A);
+  Matrix A = firstFactorisation(lu, 30, pattern, rng, 10.0);
   REQUIRE(lu.info() == Eigen::Success);
   // (a column of zeros) => singular
   Matrix S = A;

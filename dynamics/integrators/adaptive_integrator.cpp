@@ -24,8 +24,11 @@ AdaptiveIntegrator::AdaptiveIntegrator(const Model& model, const IntegratorSpec&
       qOut_(model.nq),
       vOut_(model.nv) {
   if (SUNContext_Create(nullptr, &ctx_) != 0) throw std::runtime_error("SUNDIALS: cannot create a context");
-  y_ = N_VNew_Serial(chart_.size(), ctx_);
-  atol_ = N_VNew_Serial(chart_.size(), ctx_);
+  // (the state's length) => y_, atol_ and, through their clones, every vector of the solver, with
+  // the pool's empty clones for SUNDIALS' difference-quotient Jacobian (sundials_vector_pool.hpp)
+  pool_ = std::make_unique<SundialsVectorPool>(ctx_, chart_.size());
+  y_ = pool_->makeVector();
+  atol_ = pool_->makeVector();
   N_VConst(spec.atol, atol_);
 }
 
@@ -34,6 +37,7 @@ AdaptiveIntegrator::~AdaptiveIntegrator() {
   if (A_ != nullptr) SUNMatDestroy(A_);
   if (atol_ != nullptr) N_VDestroy(atol_);
   if (y_ != nullptr) N_VDestroy(y_);
+  pool_.reset();  // (after every vector using it: the solver's, freed by the derived class)
   if (ctx_ != nullptr) SUNContext_Free(&ctx_);
 }
 
@@ -175,6 +179,9 @@ void AdaptiveIntegrator::step(AccelerationSource& system, double& t, Eigen::Vect
   // (solver) => y at t + h, or at the first root before it
   IntegratorStats c0, c1;
   counters(c0);
+  // (re-initialised) => the linear solver's Jacobian count restarts from 0 inside the next advance
+  // (cvLsInitialize, arkLsInitialize, at the solver's first step), not at the re-initialisation
+  if (!continues) c0.jac_evals = 0;
   double tret = t;
   error_.clear();
   const int flag = advance(t + h, tret);

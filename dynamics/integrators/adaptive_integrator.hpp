@@ -21,6 +21,7 @@
 #include "dynamics/integrators/chart_state.hpp"
 #include "dynamics/integrators/factory.hpp"
 #include "dynamics/integrators/integrator.hpp"
+#include "dynamics/integrators/sundials_vector_pool.hpp"
 
 namespace yardsim::dynamics {
 
@@ -43,6 +44,10 @@ class AdaptiveIntegrator : public Integrator {
   /// (CVODE; default 1000, docs/integrators.md); 1: at every step, the reuse's tests' reference.
   /// Before the first step
   void setLinesJacobianAge(long steps) { linesJacobianAge_ = steps; }
+
+  /// The pool of the solver's empty vectors (sundials_vector_pool.hpp): how many SUNDIALS' dense
+  /// difference-quotient Jacobians took from it (one each), for tests
+  const SundialsVectorPool& vectorPool() const { return *pool_; }
 
   /// Which part of dy/dt a right-hand side returns (IMEX splits kinematics from dynamics).
   enum class Part { All, Kinematic, Dynamic };
@@ -89,6 +94,7 @@ class AdaptiveIntegrator : public Integrator {
   const Model& model_;
   IntegratorSpec spec_;
   SUNContext ctx_ = nullptr;
+  std::unique_ptr<SundialsVectorPool> pool_;  // y_'s, atol_'s and their clones' empty clones
   N_Vector y_ = nullptr;
   /// Absolute tolerance per component: atol, plus rtol |q*| for the chart coordinate of a joint
   /// whose q is a plain coordinate, so that rtol acts on positions, not on displacements from q*.

@@ -189,7 +189,7 @@ bool SparseNewtonMatrix::factoriseValues() {
     ok_ = band_.factorise(A_);
     return ok_;
   }
-  lu_.factorize(A_);
+  lu_.refactorize(A_);
   ok_ = lu_.info() == Eigen::Success;
   return ok_;
 }

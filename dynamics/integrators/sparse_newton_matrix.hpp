@@ -6,7 +6,8 @@
 // (compressed columns), and factorised as a band matrix with a border (bordered_band_lu.hpp:
 // lines hanging from a few rigid bodies have that shape; linear in the nodes, where a dense LU
 // is cubic) or, for any other pattern, by Eigen's SparseLU with the COLAMD ordering analysed once
-// at construction (docs/performance.md).
+// at construction, refactorised in the storage of the first factorisation (sparse_lu_refactor.hpp:
+// the same LU, without allocating; docs/performance.md).
 // The blocks a system gives in closed form (JacobianBlocks: a lumped line's nodes among
 // themselves) are written from the system's blockJacobian instead, and a column all of whose
 // entries lie in such blocks is left out of the colours: the differences are then needed only for
@@ -26,6 +27,7 @@
 #include "dynamics/configuration.hpp"
 #include "dynamics/integrators/bordered_band_lu.hpp"
 #include "dynamics/integrators/column_colouring.hpp"
+#include "dynamics/integrators/sparse_lu_refactor.hpp"
 #include "dynamics/model.hpp"
 
 namespace yardsim::dynamics {
@@ -98,6 +100,8 @@ class SparseNewtonMatrix {
   void solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
   // true when A is factorised as a bordered band matrix (bordered_band_lu.hpp), false: SparseLU
   bool banded() const { return banded_; }
+  // the SparseLU path's factorisation (its counts of full and grown factorisations; tests)
+  const SparseLuRefactor& sparseLu() const { return lu_; }
 
   // F_q and F_v as dense matrices (tests)
   Eigen::MatrixXd denseFq() const;
@@ -126,7 +130,7 @@ class SparseNewtonMatrix {
   bool ok_ = false;
   BorderedBandLu band_;  // when A is a band matrix but for a few rows and columns
   bool banded_ = false;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu_;
+  SparseLuRefactor lu_;  // SparseLU, refactorised in its first factorisation's storage
 };
 
 }  // namespace yardsim::dynamics

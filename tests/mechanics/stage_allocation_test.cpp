@@ -2,9 +2,11 @@
 // scratch is made once in mechanics::Data and handed over at every stage; nor does a stage that
 // writes the added mass following a hull's draft or the node masses of a lumped rope under a
 // winch, nor a step of any integrator on a system with lumped lines (HHT and generalized-alpha
-// through their sparse Newton matrix, the SUNDIALS methods through the chart Newton system).
+// through their sparse Newton matrix, the SUNDIALS methods through the chart Newton system, and
+// through SUNDIALS' own dense difference-quotient Jacobian).
 #include <catch2/catch.hpp>
 
+#include "dynamics/integrators/adaptive_integrator.hpp"
 #include "dynamics/integrators/factory.hpp"
 #include "forces/geometry/mesh_io.hpp"
 #include "forces/geometry/primitive_meshes.hpp"
@@ -36,20 +38,23 @@ std::size_t stageAllocations(testing::StagedSystem& s, Eigen::VectorXd q, const 
   return n;
 }
 
-// (scene, method) => its staged system and integrator (dt 0.01 s) after 5 steps of set-up from
-// the scene's q0, v0 (a multistep start, CVODE's and ARKODE's first order and step size)
+// (scene, method, SUNDIALS' dense Newton) => its staged system and integrator (dt 0.01 s) after 5
+// steps of set-up from the scene's q0, v0 (a multistep start, CVODE's and ARKODE's first order
+// and step size)
 struct SetUpRun {
   testing::StagedSystem s;
   dynamics::IntegratorSpec spec;
   std::unique_ptr<dynamics::Integrator> integrator;
   Eigen::VectorXd q, v;
   double t = 0.0;
-  SetUpRun(const std::string& scene, std::string_view method)
+  SetUpRun(const std::string& scene, std::string_view method, bool denseNewton = false)
       : s(testing::buildFromScene(scene)),
         spec(specOf(method)),
         integrator(dynamics::makeIntegrator(spec, s.model())),
         q(s.system.description().q0),
         v(s.system.description().v0) {
+    if (auto* adaptive = dynamic_cast<dynamics::AdaptiveIntegrator*>(integrator.get()))
+      adaptive->useDenseNewton(denseNewton);
     for (int k = 0; k < 5; ++k) step();
   }
   static dynamics::IntegratorSpec specOf(std::string_view method) {
@@ -59,6 +64,20 @@ struct SetUpRun {
     return spec;
   }
   void step() { integrator->step(s.data.kernel, t, q, v, spec.dt); }
+  // (wait for a Jacobian) => 10 steps, then more until the integrator's next Jacobian (2000 at
+  // most); the heap blocks they allocated, their count in steps
+  int steps = 0;
+  std::size_t blocksInSteps(bool waitForJacobian) {
+    const long jacobians = integrator->stats().jac_evals;
+    const std::size_t before = testing::allocationCount();
+    steps = 0;
+    while (steps < 10 ||
+           (waitForJacobian && integrator->stats().jac_evals == jacobians && steps < 2000)) {
+      step();
+      ++steps;
+    }
+    return testing::allocationCount() - before;
+  }
 };
 
 }  // namespace
@@ -127,13 +146,31 @@ TEST_CASE("every integrator steps a buoy moored by lumped lines without allocati
     // (SUNDIALS' implicit methods) => Jacobians were formed in those steps (ARKODE's), or the
     // linear system was set up again with the lines' blocks (CVODE's, which with lumped lines
     // forms a coloured Jacobian only after a failed Newton solve or every 1000 steps; its
-    // formation is ARKODE's, ChartNewtonSystem::form): the dense path allocated at each
-    // (support/step_allocations.hpp), this one does not
+    // formation is ARKODE's, ChartNewtonSystem::form)
     if (method.adaptive && method.implicit)
       CHECK((integrator->stats().jac_evals > jacobians ||
              (method.name.starts_with("cvode") &&
               integrator->stats().factorisations > factorisations)));
     CHECK(q[0] > 0.07);  // (the buoy moved: 0.15 s at about 0.5 m/s)
+  }
+}
+
+TEST_CASE("SUNDIALS' dense Newton steps a buoy moored by lumped lines without allocating") {
+  // (the moored buoy, CVODE's and ARKODE's implicit methods kept on SUNDIALS' dense path:
+  // difference-quotient Jacobians, one empty N_Vector each from the integrator's pool, and dense
+  // LU) => after 5 steps of set-up, the next 10 steps allocate nothing, nor those up to the next
+  // Jacobian
+  for (const dynamics::MethodInfo& method : dynamics::integratorMethods()) {
+    if (!(method.adaptive && method.implicit)) continue;
+    INFO(method.name);
+    SetUpRun run(testing::mooredBuoyScene(), method.name, true);
+    const auto& integrator = run.integrator;
+    const long jacobians = integrator->stats().jac_evals;
+    const std::size_t blocks = run.blocksInSteps(true);
+    INFO(blocks << " heap blocks in " << run.steps << " steps, "
+                << integrator->stats().jac_evals - jacobians << " Jacobians among them");
+    CHECK(blocks == 0);
+    CHECK(integrator->stats().jac_evals > jacobians);
   }
 }
 
@@ -148,16 +185,9 @@ TEST_CASE("every integrator steps a buoy moored by catenary lines without alloca
     REQUIRE(run.s.data.kernel.linearises());
     const auto& integrator = run.integrator;
     const long jacobians = integrator->stats().jac_evals;
-    const std::size_t before = testing::allocationCount();
-    int steps = 0;
     const bool sundialsNewton = method.adaptive && method.implicit;
-    while (steps < 10 ||
-           (sundialsNewton && integrator->stats().jac_evals == jacobians && steps < 2000)) {
-      run.step();
-      ++steps;
-    }
-    const std::size_t blocks = testing::allocationCount() - before;
-    INFO(blocks << " heap blocks in " << steps << " steps, "
+    const std::size_t blocks = run.blocksInSteps(sundialsNewton);
+    INFO(blocks << " heap blocks in " << run.steps << " steps, "
                 << integrator->stats().jac_evals - jacobians << " Jacobians among them");
     CHECK(blocks == 0);
     // (CVODE's and ARKODE's implicit methods) => a Jacobian was formed among them through

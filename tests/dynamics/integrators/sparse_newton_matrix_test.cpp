@@ -228,6 +228,19 @@ TEST_CASE("the sparse LU solves A x = b as the dense LU does, banded and by Spar
   Eigen::MatrixXd B = Eigen::MatrixXd::Random(s.model.nv, 3), X(s.model.nv, 3);
   sparse->solve(B, X);
   CHECK((A * X - B).norm() <= 1e-12 * B.norm());
+  // (refactorised for other c_q, c_v: Newton's later steps, up to c_q, c_v large enough for other
+  // pivots; SparseLU in the first factorisation's storage) => each solves as the dense LU does
+  for (const double scale : {2.0, 0.5, 1e3, 1e5, 1.0}) {
+    INFO("c_q, c_v scaled by " << scale);
+    REQUIRE(sparse->factorise(scale * cq, scale * cv));
+    const Eigen::MatrixXd As = Eigen::MatrixXd::Identity(s.model.nv, s.model.nv) -
+                               scale * cq * sparse->denseFq() - scale * cv * sparse->denseFv();
+    sparse->solve(b, x);
+    const Eigen::VectorXd y = As.partialPivLu().solve(b);
+    CHECK((x - y).norm() <= 1e-10 * y.norm());
+    CHECK((As * x - b).norm() <= 1e-10 * b.norm());
+  }
+  if (!band) CHECK(sparse->sparseLu().fullFactorisations() == 1);
 }
 
 TEST_CASE("generalized-alpha follows the same motion with the sparse and the dense Newton matrix") {

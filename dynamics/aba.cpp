@@ -19,53 +19,53 @@ namespace {
 // form (Featherstone, table 7.1) to round-off: IA_i A0_i sums I_i A0_i (10 numbers, not a 6x6
 // product) over the subtree, and the textbook's IA c of every body is not formed.
 
-// (body inertia, X_WB) => its 10 numbers in world axes about the world origin: k[0] = m,
-// k[1..3] = h = m c (c its centre of mass in the world), k[4..9] the rotational inertia about
-// the origin, xx, yx, zx, yy, zy, zz (the values of SpatialInertia::matrixIn without the 6x6)
-inline void rigidInWorld(const SpatialInertia& I, bool diagonal, const Transform& X, double* k) {
-  const Vector3 c = X.R * I.com + X.p;
+// (body inertia, X_WB, V = (w, v) and A0 = (al, a) of the body, world frame) => I, its 6x6 inertia
+// about the world origin in world axes (the values of SpatialInertia::matrixIn), and
+// I A0 + V x* I V from its centre of mass c and rotational inertia J = R Ic R^T there (the
+// Newton-Euler form): f = m (a + al x c + w x (v + w x c)), n = c x f + J al + w x J w
+inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transform& X,
+                            const Motion& V, const Motion& A0, Matrix6& M) {
+  const Matrix3& R = X.R;
+  using Vector2 = Eigen::Vector2d;
+  const Vector3& b = I.com;
+  // (R, b, p) => c = R b + p: rows 0-1 as one pair (SSE2's width), row 2 alone
+  const Vector2 c01 = (R.col(0).head<2>() * b[0] + R.col(1).head<2>() * b[1]) + (R.col(2).head<2>() * b[2] + X.p.head<2>());
+  const Vector3 c(c01[0], c01[1], (R(2, 0) * b[0] + R(2, 1) * b[1]) + (R(2, 2) * b[2] + X.p[2]));
   Matrix3 G;  // R Ic
   if (diagonal) {
-    G = X.R * I.inertiaCom.diagonal().asDiagonal();
+    G = R * I.inertiaCom.diagonal().asDiagonal();
   } else {
-    G = X.R * I.inertiaCom;
+    G = R * I.inertiaCom;
   }
+  // (G, R) => J = G R^T's lower triangle: (j00, j10) = sum_k G(0:1, k) R(0, k), (j20, j21) =
+  // sum_k G(2, k) R(0:1, k), j11 and j22 alone
+  const Vector2 j0 = (G.col(0).head<2>() * R(0, 0) + G.col(1).head<2>() * R(0, 1)) + G.col(2).head<2>() * R(0, 2);
+  const Vector2 j2 = (R.col(0).head<2>() * G(2, 0) + R.col(1).head<2>() * G(2, 1)) + R.col(2).head<2>() * G(2, 2);
+  const double j00 = j0[0], j10 = j0[1], j20 = j2[0], j21 = j2[1];
+  const double j11 = (G(1, 0) * R(1, 0) + G(1, 1) * R(1, 1)) + G(1, 2) * R(1, 2);
+  const double j22 = (G(2, 0) * R(2, 0) + G(2, 1) * R(2, 1)) + G(2, 2) * R(2, 2);
   const double m = I.mass;
   const Vector3 h = m * c;
-  // (G, R, c, h) => R Ic R^T + m (|c|^2 1 - c c^T), lower triangle: row a of G . row b of R
-  const auto io = [&](int a, int b) { return G.row(a).dot(X.R.row(b)); };
-  k[0] = m;
-  k[1] = h[0];
-  k[2] = h[1];
-  k[3] = h[2];
-  k[4] = io(0, 0) + (h[1] * c[1] + h[2] * c[2]);
-  k[5] = io(1, 0) - h[1] * c[0];
-  k[6] = io(2, 0) - h[2] * c[0];
-  k[7] = io(1, 1) + (h[0] * c[0] + h[2] * c[2]);
-  k[8] = io(2, 1) - h[2] * c[1];
-  k[9] = io(2, 2) + (h[0] * c[0] + h[1] * c[1]);
-}
-
-// (10 numbers k) => the 6x6 [[I_o, [h]x], [-[h]x, m 1]] column by column
-inline void rigidMatrix(const double* k, Matrix6& I) {
-  const double m = k[0], h0 = k[1], h1 = k[2], h2 = k[3];
-  I.col(0) << k[4], k[5], k[6], 0.0, -h2, h1;
-  I.col(1) << k[5], k[7], k[8], h2, 0.0, -h0;
-  I.col(2) << k[6], k[8], k[9], -h1, h0, 0.0;
-  I.col(3) << 0.0, h2, -h1, m, 0.0, 0.0;
-  I.col(4) << -h2, 0.0, h0, 0.0, m, 0.0;
-  I.col(5) << h1, -h0, 0.0, 0.0, 0.0, m;
-}
-
-// (10 numbers k, motion s = (w, v)) => k s = (I_o w + h x v, m v - h x w)
-inline Force rigidApply(const double* k, const Motion& s) {
-  const Vector3 w = s.head<3>(), v = s.tail<3>(), h(k[1], k[2], k[3]);
+  // (J, m, c) => [[O, [h]x], [-[h]x, m 1]], O = J + m (|c|^2 1 - c c^T), column by column
+  const double o00 = j00 + (h[1] * c[1] + h[2] * c[2]), o10 = j10 - h[1] * c[0], o20 = j20 - h[2] * c[0];
+  const double o11 = j11 + (h[0] * c[0] + h[2] * c[2]), o21 = j21 - h[2] * c[1];
+  const double o22 = j22 + (h[0] * c[0] + h[1] * c[1]);
+  M.col(0) << o00, o10, o20, 0.0, -h[2], h[1];
+  M.col(1) << o10, o11, o21, h[2], 0.0, -h[0];
+  M.col(2) << o20, o21, o22, -h[1], h[0], 0.0;
+  M.col(3) << 0.0, h[2], -h[1], m, 0.0, 0.0;
+  M.col(4) << -h[2], 0.0, h[0], 0.0, m, 0.0;
+  M.col(5) << h[1], -h[0], 0.0, 0.0, 0.0, m;
+  // (V, A0, c, J) => the Newton-Euler force and moment about the origin
+  const Vector3 w = V.head<3>(), al = A0.head<3>();
+  const auto J = [&](const Vector3& x) {
+    return Vector3(j00 * x[0] + j10 * x[1] + j20 * x[2], j10 * x[0] + j11 * x[1] + j21 * x[2],
+                   j20 * x[0] + j21 * x[1] + j22 * x[2]);
+  };
+  const Vector3 vc = V.tail<3>() + w.cross(c);
   Force f;
-  f[0] = k[4] * w[0] + k[5] * w[1] + k[6] * w[2];
-  f[1] = k[5] * w[0] + k[7] * w[1] + k[8] * w[2];
-  f[2] = k[6] * w[0] + k[8] * w[1] + k[9] * w[2];
-  f.head<3>() += h.cross(v);
-  f.tail<3>() = k[0] * v - h.cross(w);
+  f.tail<3>() = m * (A0.tail<3>() + al.cross(c) + w.cross(vc));
+  f.head<3>() = c.cross(f.tail<3>()) + J(al) + w.cross(J(w));
   return f;
 }
 
@@ -148,8 +148,9 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
 inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
   const Motion s = d.S_W.col(iv);
   const Matrix6& IA = d.IA_W[i];
-  Vector6 U = IA.col(0) * s[0];
-  for (int k = 1; k < 6; ++k) U += IA.col(k) * s[k];
+  // (pairs summed first: a shorter chain of dependent additions)
+  const Vector6 U = (IA.col(0) * s[0] + IA.col(1) * s[1]) + (IA.col(2) * s[2] + IA.col(3) * s[3]) +
+                    (IA.col(4) * s[4] + IA.col(5) * s[5]);
   const double Dinv = 1.0 / s.dot(U);
   const double ui = tau - s.dot(d.PA_W[i]);
   d.U[i].col(0) = U;
@@ -210,17 +211,15 @@ inline void abaBodyTerms(const Model& m, Data& d, int i, const Eigen::VectorXd& 
     d.C_W[i] += crossMotion(V, vJ);
   }
   const Motion& A0 = d.A_W[i] = d.A_W[p] + d.C_W[i];
-  double k[10];
-  rigidInWorld(m.inertias[i], m.inertiaDiagonal[i] != 0, X, k);
-  rigidMatrix(k, d.IA_W[i]);
+  const Force f = rigidBodyTerms(m.inertias[i], m.inertiaDiagonal[i] != 0, X, V, A0, d.IA_W[i]);
   if (d.hasAddedMass[i]) {
     // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
     // not act on it: its share A_W (0, -g) goes back as an external force
     const Matrix6 A_W = actInertia(X, d.addedMass[i]);
     d.IA_W[i] += A_W;
-    d.PA_W[i] = d.IA_W[i] * A0 + crossForce(V, d.IA_W[i] * V) + A_W.rightCols<3>() * m.gravity;
+    d.PA_W[i] = f + A_W * A0 + crossForce(V, A_W * V) + A_W.rightCols<3>() * m.gravity;
   } else {
-    d.PA_W[i] = rigidApply(k, A0) + crossForce(V, rigidApply(k, V));
+    d.PA_W[i] = f;
   }
   if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
 }

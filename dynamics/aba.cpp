@@ -29,7 +29,8 @@ inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transf
   using Vector2 = Eigen::Vector2d;
   const Vector3& b = I.com;
   // (R, b, p) => c = R b + p: rows 0-1 as one pair (SSE2's width), row 2 alone
-  const Vector2 c01 = (R.col(0).head<2>() * b[0] + R.col(1).head<2>() * b[1]) + (R.col(2).head<2>() * b[2] + X.p.head<2>());
+  const Vector2 c01 = (R.col(0).head<2>() * b[0] + R.col(1).head<2>() * b[1]) +
+                      (R.col(2).head<2>() * b[2] + X.p.head<2>());
   const Vector3 c(c01[0], c01[1], (R(2, 0) * b[0] + R(2, 1) * b[1]) + (R(2, 2) * b[2] + X.p[2]));
   Matrix3 G;  // R Ic
   if (diagonal) {
@@ -39,15 +40,18 @@ inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transf
   }
   // (G, R) => J = G R^T's lower triangle: (j00, j10) = sum_k G(0:1, k) R(0, k), (j20, j21) =
   // sum_k G(2, k) R(0:1, k), j11 and j22 alone
-  const Vector2 j0 = (G.col(0).head<2>() * R(0, 0) + G.col(1).head<2>() * R(0, 1)) + G.col(2).head<2>() * R(0, 2);
-  const Vector2 j2 = (R.col(0).head<2>() * G(2, 0) + R.col(1).head<2>() * G(2, 1)) + R.col(2).head<2>() * G(2, 2);
+  const Vector2 j0 =
+      (G.col(0).head<2>() * R(0, 0) + G.col(1).head<2>() * R(0, 1)) + G.col(2).head<2>() * R(0, 2);
+  const Vector2 j2 =
+      (R.col(0).head<2>() * G(2, 0) + R.col(1).head<2>() * G(2, 1)) + R.col(2).head<2>() * G(2, 2);
   const double j00 = j0[0], j10 = j0[1], j20 = j2[0], j21 = j2[1];
   const double j11 = (G(1, 0) * R(1, 0) + G(1, 1) * R(1, 1)) + G(1, 2) * R(1, 2);
   const double j22 = (G(2, 0) * R(2, 0) + G(2, 1) * R(2, 1)) + G(2, 2) * R(2, 2);
   const double m = I.mass;
   const Vector3 h = m * c;
   // (J, m, c) => [[O, [h]x], [-[h]x, m 1]], O = J + m (|c|^2 1 - c c^T), column by column
-  const double o00 = j00 + (h[1] * c[1] + h[2] * c[2]), o10 = j10 - h[1] * c[0], o20 = j20 - h[2] * c[0];
+  const double o00 = j00 + (h[1] * c[1] + h[2] * c[2]), o10 = j10 - h[1] * c[0],
+               o20 = j20 - h[2] * c[0];
   const double o11 = j11 + (h[0] * c[0] + h[2] * c[2]), o21 = j21 - h[2] * c[1];
   const double o22 = j22 + (h[0] * c[0] + h[1] * c[1]);
   M.col(0) << o00, o10, o20, 0.0, -h[2], h[1];
@@ -113,7 +117,8 @@ inline void abaFreeRootBackward(Data& d, int i, int iv, const Eigen::VectorXd& t
 inline void abaFreeRootForward(Data& d, int i, int iv) {
   const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
   auto qdd = d.ddq.segment<6>(iv);
-  qdd = ldltSolve6(Eigen::Map<const Matrix6>(d.Dinv[i].data()), Eigen::Map<const Vector6>(d.u[i].data()));
+  qdd = ldltSolve6(Eigen::Map<const Matrix6>(d.Dinv[i].data()),
+                   Eigen::Map<const Vector6>(d.u[i].data()));
   d.A_W[i] = d.A_W[0] + d.C_W[i] + S * qdd;
 }
 

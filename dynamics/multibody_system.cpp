@@ -40,7 +40,9 @@ namespace {
 // (x) => whether every entry is finite: x 0 is 0 for a finite entry and NaN for an infinite or NaN
 // one, and their sum is one vectorised pass without branches (Eigen's allFinite tests entry by
 // entry: at every integrator stage on q, v and a)
-bool finite(const Eigen::VectorXd& x) { return (x.array() * 0.0).sum() == 0.0; }
+bool finite(const Eigen::VectorXd& x) {
+  return (x.array() * 0.0).sum() == 0.0;
+}
 
 int firstNonFinite(const Eigen::VectorXd& x) {
   for (int k = 0; k < x.size(); ++k) {

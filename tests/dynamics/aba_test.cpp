@@ -104,8 +104,9 @@ TEST_CASE("ABA after forward kinematics equals ABA to the last bit, and does use
   }
 }
 
-TEST_CASE("ABA on chains and floating trees of axis joints with diagonal inertias, tilted gravity, "
-          "against CRBA + solve, RNEA and the accelerations of forward kinematics") {
+TEST_CASE(
+    "ABA on chains and floating trees of axis joints with diagonal inertias, tilted gravity, "
+    "against CRBA + solve, RNEA and the accelerations of forward kinematics") {
   // the kernels' special cases together: coordinate-axis revolute and prismatic joints on a
   // free root, inertias diagonal about the centre of mass (Model::inertiaDiagonal), planar chains;
   // gravity off the z axis (ABA folds -g into the root's acceleration); A_W, which ABA leaves,
@@ -124,7 +125,8 @@ TEST_CASE("ABA on chains and floating trees of axis joints with diagonal inertia
       if (i % 3 == 0) f.addBodyFrame(i, randomVectorX(rng, 6));
       if (i % 3 == 1) f.addWorldFrame(i, randomVectorX(rng, 6));
     }
-    for (const ExternalForces* fext : {static_cast<const ExternalForces*>(nullptr), static_cast<const ExternalForces*>(&f)}) {
+    for (const ExternalForces* fext :
+         {static_cast<const ExternalForces*>(nullptr), static_cast<const ExternalForces*>(&f)}) {
       const Eigen::VectorXd ddq = aba(m, d, q, v, tau, fext);
       const std::vector<Motion> A_W = d.A_W;
       const Eigen::VectorXd h = biasForces(m, d, q, v, fext);

@@ -67,11 +67,14 @@ TEST_CASE("a diverging integration stops with a diagnosis naming the body") {
   CHECK_THROWS_WITH(run(), Catch::Matchers::Contains("body 'hook'") && Catch::Matchers::Contains("smaller step"));
 }
 
-TEST_CASE("a non-finite configuration, velocity or acceleration is refused naming the body; huge finite ones are not") {
+TEST_CASE(
+    "a non-finite configuration, velocity or acceleration is refused naming the body; huge finite "
+    "ones are not") {
   const Model m = planarChain(3);
   MultibodySystem sys(m);
   Eigen::VectorXd a(3);
-  const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+  const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::infinity(),
                         -std::numeric_limits<double>::infinity()};
   for (const double x : bad) {
     for (int k = 0; k < 3; ++k) {
@@ -82,13 +85,15 @@ TEST_CASE("a non-finite configuration, velocity or acceleration is refused namin
                         Catch::Matchers::Contains("the configuration of " + body));
       q[k] = 0.0;
       v[k] = x;
-      CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a), Catch::Matchers::Contains("the velocity of " + body));
+      CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a),
+                        Catch::Matchers::Contains("the velocity of " + body));
     }
   }
   // (a torque that overflows the acceleration) => refused there
   sys.tau() << 0.0, 0.0, 1e308;
   Eigen::VectorXd q = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
-  CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a), Catch::Matchers::Contains("the acceleration of body"));
+  CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a),
+                    Catch::Matchers::Contains("the acceleration of body"));
   // (angles of 1e300 rad, finite) => accepted
   sys.tau().setZero();
   q.setConstant(1e300);

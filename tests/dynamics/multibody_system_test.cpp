@@ -68,8 +68,8 @@ TEST_CASE("a diverging integration stops with a diagnosis naming the body") {
 }
 
 TEST_CASE(
-    "a non-finite configuration, velocity or acceleration is refused naming the body; huge finite "
-    "ones are not") {
+    "a non-finite configuration, velocity or acceleration is refused naming the body, a huge "
+    "finite one is not") {
   const Model m = planarChain(3);
   MultibodySystem sys(m);
   Eigen::VectorXd a(3);

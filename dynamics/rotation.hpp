@@ -51,30 +51,23 @@ inline void sinCos(double angle, double& s, double& c) {
   }
   // (angle) => n = nearest integer of angle * 2/pi (|n| < 2^16), r + rt = angle - n pi/2
   constexpr double invPio2 = 6.36619772367581382433e-01, toInt = 0x1.8p52;
-  // pi/2 = pio2_1 + pio2_1t = pio2_1 + pio2_2 + pio2_3 + pio2_3t, the first two of 33 bits
-  // (fdlibm's constants)
-  constexpr double pio2_1 = 1.57079632673412561417e+00, pio2_1t = 6.07710050650619224932e-11;
-  constexpr double pio2_2 = 6.07710050630396597660e-11;
+  // pi/2 = pio2_1 + pio2_2 + pio2_3 + pio2_3t, the first two of 33 bits (fdlibm's constants)
+  constexpr double pio2_1 = 1.57079632673412561417e+00, pio2_2 = 6.07710050630396597660e-11;
   constexpr double pio2_3 = 2.02226624871116645580e-21, pio2_3t = 8.47842766036889956997e-32;
   const double fn = (angle * invPio2 + toInt) - toInt;
   const int n = static_cast<int>(fn);
-  // first round, good to 85 bits; on a cancellation (|y0| < 2^-15 |angle|: near a multiple of
-  // pi/2, rare) two more (pio2_1t = pio2_2 + pio2_2t, pio2_2t = pio2_3 + pio2_3t), each
-  // subtraction's rounding error e2, e3 carried in the tail w: good to 151 bits
+  // three rounds each subtraction's
+  // rounding error e2, e3 carried in the tail w: good to 151 bits
   double r = angle - fn * pio2_1;  // exact: fn * pio2_1 has at most 49 bits
-  double w = fn * pio2_1t;
-  double y0 = r - w;
-  if (std::fabs(y0) < a * 0x1p-15) [[unlikely]] {
-    double t = r;
-    w = fn * pio2_2;  // exact
-    r = t - w;
-    const double e2 = (t - r) - w;
-    t = r;
-    w = fn * pio2_3;
-    r = t - w;
-    w = fn * pio2_3t - ((t - r) - w) - e2;
-    y0 = r - w;
-  }
+  double t = r;
+  double w = fn * pio2_2;  // exact
+  r = t - w;
+  const double e2 = (t - r) - w;
+  t = r;
+  w = fn * pio2_3;
+  r = t - w;
+  w = fn * pio2_3t - ((t - r) - w) - e2;
+  const double y0 = r - w;
   const double y1 = (r - y0) - w;
   // (r + rt, n) => sin, cos of the angle: swap on odd n, sign of sin from bit 1 of n, of cos
   // from bit 1 of n + 1

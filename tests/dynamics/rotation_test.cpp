@@ -1,8 +1,6 @@
 // Rotations: exp/log, quaternions, Euler angles with the documented z-y'-x'' convention.
 #include <catch2/catch.hpp>
 
-#include <cfloat>
-#include <cstdint>
 #include <cstring>
 
 #include "dynamics/rotation.hpp"
@@ -85,74 +83,28 @@ TEST_CASE("a rotation about a coordinate axis equals the axis-angle formula bit 
       INFO("axis " << axis << ", angle " << angle);
       Matrix3 R;
       R.setConstant(42.0);
-      double s = 0.0, c = 0.0;
-      sinCos(angle, s, c);  // as axisRotation
-      coordinateAxisRotation(axis, s, c, R);
+      coordinateAxisRotation(axis, std::sin(angle), std::cos(angle), R);
       const Matrix3 ref = axisRotation(Vector3::Unit(axis), angle);
       CHECK(std::memcmp(R.data(), ref.data(), sizeof(double) * 9) == 0);
     }
   }
 }
 
-namespace {
-// (a, b) => their distance in units in the last place: the count of doubles between them (the
-// sign-magnitude bits mapped to a monotone integer); 0 for two NaNs, huge for one NaN
-std::int64_t ulpDistance(double a, double b) {
-  if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b) ? 0 : INT64_MAX;
-  const auto ordered = [](double x) {
-    std::int64_t i = 0;
-    std::memcpy(&i, &x, sizeof x);
-    return i < 0 ? INT64_MIN - i : i;
-  };
-  const std::int64_t d = ordered(a) - ordered(b);
-  return d < 0 ? -d : d;
-}
-}  // namespace
-
-TEST_CASE("sinCos is within 1 ulp of std::sin and std::cos, and glibc's outside its range") {
-  // (angles over every range the reduction sees, the multiples of pi/2 and pi/4 and their
-  // neighbours, tiny, subnormal and special values, both sides of the 1e5 bound) => the largest
-  // ulp distance from glibc's sin and cos, and sin^2 + cos^2 - 1
-  std::mt19937_64 rng(22);
+TEST_CASE("sinCos returns the doubles of std::sin and std::cos") {
+  // the kernels place every revolute joint with it: a last-bit difference would change every
+  // scene's results; special values, every binade of the double range and random angles
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<double> small(-10.0, 10.0), large(-1e7, 1e7);
   std::vector<double> angles{0.0, -0.0, M_PI, -M_PI, 0.5 * M_PI, 1e-300, -1e-17, 1e22, 2.0 * M_PI};
   for (int e = -1074; e < 1024; e += 3) angles.push_back(std::ldexp(1.3, e));
-  for (const double bound : {1.0, M_PI, 100.0, 1e5}) {
-    std::uniform_real_distribution<double> u(-bound, bound);
-    for (int k = 0; k < 500000; ++k) angles.push_back(u(rng));
-  }
-  std::uniform_real_distribution<double> offset(-1e-6, 1e-6);
-  for (int k = -127324; k <= 127324; ++k) {  // k pi/4 up to 1e5
-    double x = k * (0.25 * M_PI);
-    angles.push_back(x + offset(rng));
-    for (int j = 0; j < 4; ++j) {
-      angles.push_back(x);
-      x = std::nextafter(x, HUGE_VAL);
-    }
-  }
-  std::uniform_real_distribution<double> exponent(-1074.0, -20.0);
-  for (int k = 0; k < 100000; ++k) angles.push_back((k % 2 ? 1.0 : -1.0) * std::exp2(exponent(rng)));
-  for (double x : {1e5, -1e5, 0x1p-26, -0x1p-26}) {
-    for (int j = 0; j < 8; ++j) x = std::nextafter(x, 0.0);
-    for (int j = 0; j < 16; ++j, x = std::nextafter(x, 2.0 * x)) angles.push_back(x);
-  }
-  for (const double x : {double(NAN), -double(NAN), HUGE_VAL, -HUGE_VAL, DBL_MIN, DBL_TRUE_MIN, -DBL_TRUE_MIN})
-    angles.push_back(x);
-  std::int64_t maxUlp = 0;
-  double maxPythagoras = 0.0;
-  int outsideDiffer = 0;
+  for (int k = 0; k < 20000; ++k) angles.push_back(small(rng));
+  for (int k = 0; k < 2000; ++k) angles.push_back(large(rng));
+  int differ = 0;
   for (const double angle : angles) {
     double s = 42.0, c = 42.0;
     sinCos(angle, s, c);
     const double s0 = std::sin(angle), c0 = std::cos(angle);
-    maxUlp = std::max({maxUlp, ulpDistance(s, s0), ulpDistance(c, c0)});
-    if (std::isfinite(angle)) maxPythagoras = std::max(maxPythagoras, std::fabs(s * s + c * c - 1.0));
-    const double a = std::fabs(angle);
-    const bool outside = !(a >= 0x1p-26 && a < 1e5);
-    if (outside && (std::memcmp(&s, &s0, sizeof s) != 0 || std::memcmp(&c, &c0, sizeof c) != 0))
-      ++outsideDiffer;
+    if (std::memcmp(&s, &s0, sizeof s) != 0 || std::memcmp(&c, &c0, sizeof c) != 0) ++differ;
   }
-  INFO("angles " << angles.size());
-  CHECK(maxUlp <= 1);
-  CHECK(maxPythagoras <= 3.0 * DBL_EPSILON);
-  CHECK(outsideDiffer == 0);
+  CHECK(differ == 0);
 }

@@ -10,6 +10,69 @@ namespace yardsim::dynamics {
 
 namespace {
 
+// The passes carry the bias accelerations from the root instead of each joint's own: pass 1
+// leaves in A_W[i] the acceleration body i would have with ddq = 0, A0_i = A0_parent + C_W[i]
+// (A0 of the world -g), and the bias force PA_W[i] = I_i A0_i + V_i x* I_i V_i - F_ext_i. With
+// a_i = A0_i + da_i, da_i = da_parent + S qdd, ABA's recursions for da have no velocity-product
+// terms: the parent receives Ia (as before) and pa = PA + U D^-1 u, u = tau - S^T PA, and
+// qdd = D^-1 (u - U^T da_parent) = D^-1 (u + U^T A0_parent - U^T a_parent). Equal to the textbook
+// form (Featherstone, table 7.1) to round-off: IA_i A0_i sums I_i A0_i (10 numbers, not a 6x6
+// product) over the subtree, and the textbook's IA c of every body is not formed.
+
+// (body inertia, X_WB, V = (w, v) and A0 = (al, a) of the body, world frame) => I, its 6x6 inertia
+// about the world origin in world axes (the values of SpatialInertia::matrixIn), and
+// I A0 + V x* I V from its centre of mass c and rotational inertia J = R Ic R^T there (the
+// Newton-Euler form): f = m (a + al x c + w x (v + w x c)), n = c x f + J al + w x J w
+inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transform& X,
+                            const Motion& V, const Motion& A0, Matrix6& M) {
+  const Matrix3& R = X.R;
+  using Vector2 = Eigen::Vector2d;
+  const Vector3& b = I.com;
+  // (R, b, p) => c = R b + p: rows 0-1 as one pair (SSE2's width), row 2 alone
+  const Vector2 c01 = (R.col(0).head<2>() * b[0] + R.col(1).head<2>() * b[1]) +
+                      (R.col(2).head<2>() * b[2] + X.p.head<2>());
+  const Vector3 c(c01[0], c01[1], (R(2, 0) * b[0] + R(2, 1) * b[1]) + (R(2, 2) * b[2] + X.p[2]));
+  Matrix3 G;  // R Ic
+  if (diagonal) {
+    G = R * I.inertiaCom.diagonal().asDiagonal();
+  } else {
+    G = R * I.inertiaCom;
+  }
+  // (G, R) => J = G R^T's lower triangle: (j00, j10) = sum_k G(0:1, k) R(0, k), (j20, j21) =
+  // sum_k G(2, k) R(0:1, k), j11 and j22 alone
+  const Vector2 j0 =
+      (G.col(0).head<2>() * R(0, 0) + G.col(1).head<2>() * R(0, 1)) + G.col(2).head<2>() * R(0, 2);
+  const Vector2 j2 =
+      (R.col(0).head<2>() * G(2, 0) + R.col(1).head<2>() * G(2, 1)) + R.col(2).head<2>() * G(2, 2);
+  const double j00 = j0[0], j10 = j0[1], j20 = j2[0], j21 = j2[1];
+  const double j11 = (G(1, 0) * R(1, 0) + G(1, 1) * R(1, 1)) + G(1, 2) * R(1, 2);
+  const double j22 = (G(2, 0) * R(2, 0) + G(2, 1) * R(2, 1)) + G(2, 2) * R(2, 2);
+  const double m = I.mass;
+  const Vector3 h = m * c;
+  // (J, m, c) => [[O, [h]x], [-[h]x, m 1]], O = J + m (|c|^2 1 - c c^T), column by column
+  const double o00 = j00 + (h[1] * c[1] + h[2] * c[2]), o10 = j10 - h[1] * c[0],
+               o20 = j20 - h[2] * c[0];
+  const double o11 = j11 + (h[0] * c[0] + h[2] * c[2]), o21 = j21 - h[2] * c[1];
+  const double o22 = j22 + (h[0] * c[0] + h[1] * c[1]);
+  M.col(0) << o00, o10, o20, 0.0, -h[2], h[1];
+  M.col(1) << o10, o11, o21, h[2], 0.0, -h[0];
+  M.col(2) << o20, o21, o22, -h[1], h[0], 0.0;
+  M.col(3) << 0.0, h[2], -h[1], m, 0.0, 0.0;
+  M.col(4) << -h[2], 0.0, h[0], 0.0, m, 0.0;
+  M.col(5) << h[1], -h[0], 0.0, 0.0, 0.0, m;
+  // (V, A0, c, J) => the Newton-Euler force and moment about the origin
+  const Vector3 w = V.head<3>(), al = A0.head<3>();
+  const auto J = [&](const Vector3& x) {
+    return Vector3(j00 * x[0] + j10 * x[1] + j20 * x[2], j10 * x[0] + j11 * x[1] + j21 * x[2],
+                   j20 * x[0] + j21 * x[1] + j22 * x[2]);
+  };
+  const Vector3 vc = V.tail<3>() + w.cross(c);
+  Force f;
+  f.tail<3>() = m * (A0.tail<3>() + al.cross(c) + w.cross(vc));
+  f.head<3>() = c.cross(f.tail<3>()) + J(al) + w.cross(J(w));
+  return f;
+}
+
 // (symmetric positive definite D, 6 x 6) => its L D L^T factors in place: L's strict lower
 // triangle (unit diagonal implied) and D's pivots on the diagonal; the upper triangle is not read
 inline void ldltInPlace6(Eigen::Map<Matrix6> A) {
@@ -37,8 +100,8 @@ inline Vector6 ldltSolve6(const Eigen::Map<const Matrix6> F, Vector6 b) {
 }
 
 // (free joint at the root: IA_W[i], PA_W[i]) => U = IA S, D = S^T U factored as L D L^T in
-// Dinv's buffer (the root hands nothing to a parent, so only D^-1 (u - U^T a) is needed: one
-// solve instead of the inverse, a twelfth of its cost), u = tau - S^T PA
+// Dinv's buffer (the root hands nothing to a parent, so only D^-1 u is needed: one solve
+// instead of the inverse, a twelfth of its cost), u = tau - S^T PA
 inline void abaFreeRootBackward(Data& d, int i, int iv, const Eigen::VectorXd& tau) {
   const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
   Eigen::Map<Matrix6> U(d.U[i].data());
@@ -49,21 +112,21 @@ inline void abaFreeRootBackward(Data& d, int i, int iv, const Eigen::VectorXd& t
   Eigen::Map<Vector6>(d.u[i].data()).noalias() = tau.segment<6>(iv) - S.transpose() * d.PA_W[i];
 }
 
-// (free joint at the root, its factors, a = A_W[0] + C_W[i]) => ddq of the joint, A_W[i]
-inline void abaFreeRootForward(Data& d, int i, int iv, const Motion& a) {
+// (free joint at the root, its factors) => ddq = D^-1 u (da_parent = 0), A_W[i] = A_W[0] +
+// C_W[i] + S ddq
+inline void abaFreeRootForward(Data& d, int i, int iv) {
   const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
-  const Eigen::Map<const Matrix6> U(d.U[i].data());
-  const Eigen::Map<const Vector6> u(d.u[i].data());
   auto qdd = d.ddq.segment<6>(iv);
-  qdd = ldltSolve6(Eigen::Map<const Matrix6>(d.Dinv[i].data()), u - U.transpose() * a);
-  d.A_W[i] = a + S * qdd;
+  qdd = ldltSolve6(Eigen::Map<const Matrix6>(d.Dinv[i].data()),
+                   Eigen::Map<const Vector6>(d.u[i].data()));
+  d.A_W[i] = d.A_W[0] + d.C_W[i] + S * qdd;
 }
 
-// (body i with an NV-dof joint, IA_W[i], PA_W[i], c = C_W[i]) => U = IA S, D^-1 = (S^T U)^-1,
-// u = tau - S^T PA, and the articulated inertia and bias handed to the parent p (p = 0: none);
-// fixed-size maps of Data's buffers, without the heap temporaries of the dynamic-size code below
-// (Eigen's dynamic-size inverse takes its LU's workspace from malloc at every call): for the free
-// joint (NV = 6) the same doubles, for NV = 2, 3 the same to round-off (3.6e-13 relative in ddq)
+// (body i with an NV-dof joint, IA_W[i], PA_W[i], A_W[p] = A0_p) => U = IA S, D^-1 = (S^T U)^-1,
+// u = tau - S^T PA (stored plus U^T A0_p when p > 0), and Ia = IA - U D^-1 U^T and
+// pa = PA + U D^-1 u added to the parent p's; fixed-size maps of Data's buffers, without the
+// heap temporaries of the dynamic-size code below (Eigen's dynamic-size inverse takes its LU's
+// workspace from malloc at every call)
 template <int NV>
 inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorXd& tau) {
   const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
@@ -75,51 +138,95 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
   Dinv = Eigen::PartialPivLU<Eigen::Matrix<double, NV, NV>>(S.transpose() * U).inverse();
   u.noalias() = tau.segment<NV>(iv) - S.transpose() * d.PA_W[i];
   if (p == 0) return;
-  const Motion& c = d.C_W[i];
-  const Eigen::Matrix<double, NV, 1> w = Dinv * (u - U.transpose() * c);
-  d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + U * w;
+  const Eigen::Matrix<double, NV, 1> w = Dinv * u;
+  u.noalias() += U.transpose() * d.A_W[p];
+  d.PA_W[p] += d.PA_W[i] + U * w;
   d.IA_W[p] += d.IA_W[i];
   d.IA_W[p].noalias() -= U * Dinv * U.transpose();
 }
 
-// (body i with a 1-dof joint, IA_W[i], PA_W[i], c = C_W[i], tau_i) => U = IA s, D^-1 = 1 / s^T U,
-// u = tau_i - s^T PA, and pa = PA + Ia c + U D^-1 u, Ia = IA - U D^-1 U^T added to the parent p
-// (p = 0: none). The products IA s and IA c in one pass over IA's columns, in the order of Eigen's
-// fixed-size products (column by column, the first a product), and IA_W[p] + IA - (D^-1 U) U^T in
-// one pass over the parent's: the same doubles as the separate products and updates, without
-// reading IA and the parent's twice (Data's stores may alias them, so the compiler does not)
+// (body i with a 1-dof joint, IA_W[i], PA_W[i], A_W[p] = A0_p, tau_i) => U = IA s,
+// D^-1 = 1 / s^T U, u = tau_i - s^T PA (stored plus U . A0_p when p > 0), and
+// pa = PA + U D^-1 u, Ia = IA - U D^-1 U^T added to the parent p's. IA s in one pass over IA's
+// columns, and IA_W[p] + IA - (D^-1 U) U^T in one pass over the parent's (Data's stores may
+// alias them, so the compiler would not fuse the loops)
 inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
   const Motion s = d.S_W.col(iv);
-  const Motion& c = d.C_W[i];
   const Matrix6& IA = d.IA_W[i];
-  Vector6 U = IA.col(0) * s[0];
-  Vector6 IAc = IA.col(0) * c[0];
-  for (int k = 1; k < 6; ++k) {
-    U += IA.col(k) * s[k];
-    IAc += IA.col(k) * c[k];
-  }
+  // (pairs summed first: a shorter chain of dependent additions)
+  const Vector6 U = (IA.col(0) * s[0] + IA.col(1) * s[1]) + (IA.col(2) * s[2] + IA.col(3) * s[3]) +
+                    (IA.col(4) * s[4] + IA.col(5) * s[5]);
   const double Dinv = 1.0 / s.dot(U);
   const double ui = tau - s.dot(d.PA_W[i]);
   d.U[i].col(0) = U;
   d.Dinv[i](0, 0) = Dinv;
-  d.u[i][0] = ui;
-  if (p == 0) return;
-  d.PA_W[p] += d.PA_W[i] + IAc + U * (Dinv * (ui - U.dot(c)));
+  if (p == 0) {
+    d.u[i][0] = ui;
+    return;
+  }
+  d.u[i][0] = ui + U.dot(d.A_W[p]);
+  d.PA_W[p] += d.PA_W[i] + U * (Dinv * ui);
   const Vector6 DU = Dinv * U;
   Matrix6& IAp = d.IA_W[p];
   for (int k = 0; k < 6; ++k) IAp.col(k) = (IAp.col(k) + IA.col(k)) - DU * U[k];
 }
 
-// (body i with an NV-dof joint, a = A_W[parent] + C_W[i]) => ddq of the joint, A_W[i]
+// (body i with an NV-dof joint, a = A_W[p]) => ddq of the joint, A_W[i] = a + C_W[i] + S ddq
+// (p = 0: da_parent = 0, ddq = D^-1 u)
 template <int NV>
-inline void abaJointForward(Data& d, int i, int iv, const Motion& a) {
+inline void abaJointForward(Data& d, int i, int p, int iv) {
   const Eigen::Map<const Eigen::Matrix<double, 6, NV>> S(d.S_W.col(iv).data());
   const Eigen::Map<const Eigen::Matrix<double, 6, NV>> U(d.U[i].data());
   const Eigen::Map<const Eigen::Matrix<double, NV, NV>> Dinv(d.Dinv[i].data());
   const Eigen::Map<const Eigen::Matrix<double, NV, 1>> u(d.u[i].data());
+  const Motion& a = d.A_W[p];
   auto qdd = d.ddq.segment<NV>(iv);
-  qdd.noalias() = Dinv * (u - U.transpose() * a);
-  d.A_W[i] = a + S * qdd;
+  if (p == 0) {
+    qdd.noalias() = Dinv * u;
+  } else {
+    qdd.noalias() = Dinv * (u - U.transpose() * a);
+  }
+  d.A_W[i] = a + d.C_W[i] + S * qdd;
+}
+
+// (q, v, body i's X_WB) => S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), A_W = A0_i, IA_W = I_W,
+// PA_W = I_W A0_i + V_W x* I_W V_W - F_ext_W
+inline void abaBodyTerms(const Model& m, Data& d, int i, const Eigen::VectorXd& q,
+                         const Eigen::VectorXd& v, const ExternalForces* fext) {
+  const int p = m.parent[i];
+  const Transform& X = d.X_WB[i];
+  const int nv = m.jointNv[i];
+  const int iv = m.idxV[i];
+  Motion vJ;
+  if (nv == 1) {
+    const Motion s = worldSubspaceColumn(m, d, i);
+    d.S_W.col(iv) = s;
+    vJ = s * v[iv];
+  } else {
+    for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
+    vJ = d.S_W.middleCols(iv, nv) * v.segment(iv, nv);
+    d.C_W[i] = m.joints[i].constantSubspace()
+                   ? Motion::Zero()
+                   : X.actMotion(jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv));
+  }
+  const Motion& V = d.V_W[i] = d.V_W[p] + vJ;
+  if (nv == 1) {
+    d.C_W[i] = crossMotion(V, vJ);  // the 1-dof joints' S is constant: no c_J
+  } else {
+    d.C_W[i] += crossMotion(V, vJ);
+  }
+  const Motion& A0 = d.A_W[i] = d.A_W[p] + d.C_W[i];
+  const Force f = rigidBodyTerms(m.inertias[i], m.inertiaDiagonal[i] != 0, X, V, A0, d.IA_W[i]);
+  if (d.hasAddedMass[i]) {
+    // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
+    // not act on it: its share A_W (0, -g) goes back as an external force
+    const Matrix6 A_W = actInertia(X, d.addedMass[i]);
+    d.IA_W[i] += A_W;
+    d.PA_W[i] = f + A_W * A0 + crossForce(V, A_W * V) + A_W.rightCols<3>() * m.gravity;
+  } else {
+    d.PA_W[i] = f;
+  }
+  if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
 }
 
 // (q, v, tau, fext; with kPlaced, d.X_PB and d.X_WB already hold q's placements) => ddq
@@ -130,52 +237,20 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
                                                  const Eigen::VectorXd& v,
                                                  const Eigen::VectorXd& tau,
                                                  const ExternalForces* fext) {
-  // (q, v) => X_WB, S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), IA = I_W, PA = V_W x* I_W V_W -
-  // F_ext_W
+  // (q, v) => X_WB and the body terms of abaBodyTerms, root to leaves
+  d.A_W[0].head<3>().setZero();
+  d.A_W[0].tail<3>() = -m.gravity;
   for (int i = 1; i < m.nbodies; ++i) {
-    const int p = m.parent[i];
     if constexpr (!kPlaced) {
       placeBody(m, d, i, q);
     }
-    const Transform& X = d.X_WB[i];
-    const int nv = m.jointNv[i];
-    const int iv = m.idxV[i];
-    Motion vJ;
-    if (nv == 1) {
-      const Motion s = worldSubspaceColumn(m, d, i);
-      d.S_W.col(iv) = s;
-      vJ = s * v[iv];
-    } else {
-      for (int k = 0; k < nv; ++k) d.S_W.col(iv + k) = X.actMotion(d.S[i].col(k));
-      vJ = d.S_W.middleCols(iv, nv) * v.segment(iv, nv);
-      d.C_W[i] = m.joints[i].constantSubspace()
-                     ? Motion::Zero()
-                     : X.actMotion(jointBias(m.joints[i], q.data() + m.idxQ[i], v.data() + iv));
-    }
-    d.V_W[i] = d.V_W[p] + vJ;
-    if (nv == 1) {
-      d.C_W[i] = crossMotion(d.V_W[i], vJ);  // the 1-dof joints' S is constant: no c_J
-    } else {
-      d.C_W[i] += crossMotion(d.V_W[i], vJ);
-    }
-    d.IA_W[i] = m.inertiaDiagonal[i] ? m.inertias[i].matrixIn<true>(X) : m.inertias[i].matrixIn(X);
-    if (d.hasAddedMass[i]) {
-      // (A_B) => A_W on the left-hand side; gravity, folded into the base acceleration -g, must
-      // not act on it: its share A_W (0, -g) goes back as an external force
-      const Matrix6 A_W = actInertia(X, d.addedMass[i]);
-      d.IA_W[i] += A_W;
-      d.PA_W[i] = crossForce(d.V_W[i], d.IA_W[i] * d.V_W[i]) + A_W.rightCols<3>() * m.gravity;
-    } else {
-      d.PA_W[i] = crossForce(d.V_W[i], d.IA_W[i] * d.V_W[i]);
-    }
-    if (fext != nullptr) d.PA_W[i] -= X.actForce(fext->bodyFrame(i)) + fext->worldFrame(i);
+    abaBodyTerms(m, d, i, q, v, fext);
   }
-  // (IA, PA) => U = IA S, D^-1, u = tau - S^T PA; articulated inertia and bias added to the parent
+  // (IA, PA) => U = IA S, D^-1, u; articulated inertia and bias added to the parent
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const int nv = m.jointNv[i];
     const int p = m.parent[i];
     const int iv = m.idxV[i];
-    const Motion& c = d.C_W[i];
     if (nv == 1) {
       abaOneDofBackward(d, i, p, iv, tau[iv]);
     } else if (nv == 6 && p == 0) {
@@ -192,42 +267,46 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.Dinv[i] = (S.transpose() * d.U[i]).inverse();
       d.u[i].noalias() = tau.segment(iv, nv) - S.transpose() * d.PA_W[i];
       if (p == 0) continue;
-      const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w =
-          d.Dinv[i] * (d.u[i] - d.U[i].transpose() * c);
-      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c + d.U[i] * w;
+      const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1> w = d.Dinv[i] * d.u[i];
+      d.u[i].noalias() += d.U[i].transpose() * d.A_W[p];
+      d.PA_W[p] += d.PA_W[i] + d.U[i] * w;
       d.IA_W[p] += d.IA_W[i];
       d.IA_W[p].noalias() -= d.U[i] * d.Dinv[i] * d.U[i].transpose();
     } else {
       if (p == 0) continue;
-      d.PA_W[p] += d.PA_W[i] + d.IA_W[i] * c;
+      d.PA_W[p] += d.PA_W[i];
       d.IA_W[p] += d.IA_W[i];
     }
   }
-  // (IA, PA, U, D, u) => ddq, A_W (including -g)
-  d.A_W[0].head<3>().setZero();
-  d.A_W[0].tail<3>() = -m.gravity;
+  // (U, D, u) => ddq, A_W (including -g); a root's da_parent is zero (its U^T a is not formed)
   for (int i = 1; i < m.nbodies; ++i) {
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
-    const Motion a = d.A_W[m.parent[i]] + d.C_W[i];
+    const int p = m.parent[i];
+    const Motion& a = d.A_W[p];
     if (nv == 1) {
-      const double qdd = d.Dinv[i](0, 0) * (d.u[i][0] - d.U[i].col(0).dot(a));
+      const double r = p == 0 ? d.u[i][0] : d.u[i][0] - d.U[i].col(0).dot(a);
+      const double qdd = d.Dinv[i](0, 0) * r;
       d.ddq[iv] = qdd;
-      d.A_W[i] = a + d.S_W.col(iv) * qdd;
-    } else if (nv == 6 && m.parent[i] == 0) {
-      abaFreeRootForward(d, i, iv, a);
+      d.A_W[i] = a + d.C_W[i] + d.S_W.col(iv) * qdd;
+    } else if (nv == 6 && p == 0) {
+      abaFreeRootForward(d, i, iv);
     } else if (nv == 6) {
-      abaJointForward<6>(d, i, iv, a);
+      abaJointForward<6>(d, i, p, iv);
     } else if (nv == 3) {
-      abaJointForward<3>(d, i, iv, a);
+      abaJointForward<3>(d, i, p, iv);
     } else if (nv == 2) {
-      abaJointForward<2>(d, i, iv, a);
+      abaJointForward<2>(d, i, p, iv);
     } else if (nv > 0) {
       auto qdd = d.ddq.segment(iv, nv);
-      qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);
-      d.A_W[i] = a + d.S_W.middleCols(iv, nv) * qdd;
+      if (p == 0) {
+        qdd.noalias() = d.Dinv[i] * d.u[i];
+      } else {
+        qdd.noalias() = d.Dinv[i] * (d.u[i] - d.U[i].transpose() * a);
+      }
+      d.A_W[i] = a + d.C_W[i] + d.S_W.middleCols(iv, nv) * qdd;
     } else {
-      d.A_W[i] = a;
+      d.A_W[i] = a + d.C_W[i];
     }
   }
   return d.ddq;

@@ -27,17 +27,31 @@ void Rk4::step(AccelerationSource& system, double& t, Eigen::VectorXd& q, Eigen:
   static constexpr double kW[3] = {2.0, 2.0, 1.0};
   for (int s = 0; s < 3; ++s) {
     // stage s+2: (theta = c h k_theta, v = v0 + c h a) => a, k_theta
-    theta_ = (kC[s] * h) * (s == 0 ? v0_ : kTheta_);
-    integrate(model_, q0_, theta_, 1.0, qs_);
-    vs_ = v0_ + (kC[s] * h) * a_;
-    evaluate(system, t + kC[s] * h, qs_, vs_, a_);
-    chartRate(model_, theta_, vs_, kTheta_);
-    sumTheta_ += kW[s] * kTheta_;
+    const double ch = kC[s] * h;
+    if (model_.euclidean) {
+      // (q0 (+) theta = q0 + theta, theta rate = v: configuration.cpp's Euclidean case) => the
+      // same doubles without theta and k_theta (the previous stage's v is its theta rate)
+      qs_ = q0_ + ch * (s == 0 ? v0_ : vs_);
+      vs_ = v0_ + ch * a_;
+      evaluate(system, t + ch, qs_, vs_, a_);
+      sumTheta_ += kW[s] * vs_;
+    } else {
+      theta_ = ch * (s == 0 ? v0_ : kTheta_);
+      integrate(model_, q0_, theta_, 1.0, qs_);
+      vs_ = v0_ + ch * a_;
+      evaluate(system, t + ch, qs_, vs_, a_);
+      chartRate(model_, theta_, vs_, kTheta_);
+      sumTheta_ += kW[s] * kTheta_;
+    }
     sumA_ += kW[s] * a_;
   }
   // (sums) => q = q0 (+) h/6 sum theta rates, v = v0 + h/6 sum a
-  theta_ = (h / 6.0) * sumTheta_;
-  integrate(model_, q0_, theta_, 1.0, q);
+  if (model_.euclidean) {
+    q = q0_ + (h / 6.0) * sumTheta_;
+  } else {
+    theta_ = (h / 6.0) * sumTheta_;
+    integrate(model_, q0_, theta_, 1.0, q);
+  }
   v = v0_ + (h / 6.0) * sumA_;
   t += h;
   ++stats_.steps;

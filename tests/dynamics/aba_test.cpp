@@ -103,3 +103,43 @@ TEST_CASE("ABA after forward kinematics equals ABA to the last bit, and does use
     CHECK(relativeError(abaAfterKinematics(m, reuse, q, v, tau, &f), a) > 1e-6);
   }
 }
+
+TEST_CASE(
+    "ABA on chains and floating trees of axis joints with diagonal inertias, tilted gravity, "
+    "against CRBA + solve, RNEA and the accelerations of forward kinematics") {
+  // the kernels' special cases together: coordinate-axis revolute and prismatic joints on a
+  // free root, inertias diagonal about the centre of mass (Model::inertiaDiagonal), planar chains;
+  // gravity off the z axis (ABA folds -g into the root's acceleration); A_W, which ABA leaves,
+  // against forwardKinematics(q, v, ddq)'s body accelerations plus the folded -g
+  std::mt19937 rng(29);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int n = 1 + (trial % 8) * 5;
+    Model m = trial < 8 ? planarChain(n) : randomAxisTree(rng, n, trial >= 16, true);
+    m.gravity = Vector3(1.5, -2.0, -9.0);
+    INFO("trial " << trial << ", bodies " << n);
+    Data d(m), fk(m);
+    const Eigen::VectorXd q = randomConfiguration(m, rng), v = randomVectorX(rng, m.nv, 2.0),
+                          tau = randomVectorX(rng, m.nv);
+    ExternalForces f(m);
+    for (int i = 1; i < m.nbodies; ++i) {
+      if (i % 3 == 0) f.addBodyFrame(i, randomVectorX(rng, 6));
+      if (i % 3 == 1) f.addWorldFrame(i, randomVectorX(rng, 6));
+    }
+    for (const ExternalForces* fext :
+         {static_cast<const ExternalForces*>(nullptr), static_cast<const ExternalForces*>(&f)}) {
+      const Eigen::VectorXd ddq = aba(m, d, q, v, tau, fext);
+      const std::vector<Motion> A_W = d.A_W;
+      const Eigen::VectorXd h = biasForces(m, d, q, v, fext);
+      const Eigen::VectorXd ref = crba(m, d, q).ldlt().solve(tau - h);
+      CHECK(relativeError(ddq, ref) < 1e-10);
+      // (against the size of the terms that cancel: a long chain turning fast has |h| >> |tau|)
+      CHECK((rnea(m, d, q, v, ddq, fext) - tau).norm() < 1e-12 * (tau.norm() + h.norm()));
+      forwardKinematics(m, fk, q, v, ddq);
+      for (int i = 1; i < m.nbodies; ++i) {
+        Motion expected = bodyAccelerationWorld(fk, i);
+        expected.tail<3>() -= m.gravity;
+        CHECK((A_W[i] - expected).norm() < 1e-10 * (1.0 + expected.norm()));
+      }
+    }
+  }
+}

@@ -1,6 +1,8 @@
 // The AccelerationSource wrapper: tau, a force callback evaluated at every stage, ABA for trees.
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 #include "dynamics/aba.hpp"
 #include "dynamics/configuration.hpp"
 #include "dynamics/integrators/rk4.hpp"
@@ -63,6 +65,40 @@ TEST_CASE("a diverging integration stops with a diagnosis naming the body") {
   v.setZero();
   t = 0.0;
   CHECK_THROWS_WITH(run(), Catch::Matchers::Contains("body 'hook'") && Catch::Matchers::Contains("smaller step"));
+}
+
+TEST_CASE(
+    "a non-finite configuration, velocity or acceleration is refused naming the body, a huge "
+    "finite one is not") {
+  const Model m = planarChain(3);
+  MultibodySystem sys(m);
+  Eigen::VectorXd a(3);
+  const double bad[] = {std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::infinity()};
+  for (const double x : bad) {
+    for (int k = 0; k < 3; ++k) {
+      Eigen::VectorXd q = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
+      q[k] = x;
+      const std::string body = "body '" + m.names[static_cast<std::size_t>(k) + 1] + "'";
+      CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a),
+                        Catch::Matchers::Contains("the configuration of " + body));
+      q[k] = 0.0;
+      v[k] = x;
+      CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a),
+                        Catch::Matchers::Contains("the velocity of " + body));
+    }
+  }
+  // (a torque that overflows the acceleration) => refused there
+  sys.tau() << 0.0, 0.0, 1e308;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(3), v = Eigen::VectorXd::Zero(3);
+  CHECK_THROWS_WITH(sys.acceleration(0.0, q, v, a),
+                    Catch::Matchers::Contains("the acceleration of body"));
+  // (angles of 1e300 rad, finite) => accepted
+  sys.tau().setZero();
+  q.setConstant(1e300);
+  sys.acceleration(0.0, q, v, a);
+  CHECK(a.allFinite());
 }
 
 TEST_CASE("a kept stage is the first acceleration after keepNextStage, with its own forces") {

@@ -344,9 +344,11 @@ MechanicsSpec parseMechanics(const Params& p, const MechanicsReport& report) {
         rope.path = points(rr, n["path"], k + ".path", 2);
       rope.material = material(rr, n, k);
       const double parts = rr.number(n["parts"], k + ".parts", 1.0);
-      rope.parts = static_cast<int>(parts);
+      // (parts) => the count, cast only once it is known to be a whole number in range
       if (parts < 1 || parts > 1000 || parts != std::floor(parts))
         rr.fail(n["parts"], k + ".parts", "parts must be a whole number from 1 to 1000, got " + std::to_string(parts));
+      else
+        rope.parts = static_cast<int>(parts);
       spec.ropes.push_back(std::move(rope));
     }
   } else if (ropes.IsDefined() && !ropes.IsNull()) {

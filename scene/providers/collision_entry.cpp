@@ -305,8 +305,14 @@ CollisionSpec readEntry(const YAML::Node& n, const spec::Reader& r, const std::s
       }
   }
   if (const YAML::Node p = n["points_per_pair"]) {
-    c.pointsPerPair = static_cast<int>(r.number(p, key + ".points_per_pair", 4.0));
-    if (c.pointsPerPair < 1) r.fail(p, key + ".points_per_pair", "must be >= 1");
+    // (value) => the count, cast only once it is known to be in an int's range
+    const double points = r.number(p, key + ".points_per_pair", 4.0);
+    if (!(points >= 1))
+      r.fail(p, key + ".points_per_pair", "must be >= 1");
+    else if (points > 1000)
+      r.fail(p, key + ".points_per_pair", "must be at most 1000");
+    else
+      c.pointsPerPair = static_cast<int>(points);
   }
   const double ropeDiameter = nonNegative(r, n["rope_diameter"], key + ".rope_diameter", 0.04);
   if (const YAML::Node w = n["clearance"]) {  // (name: {between: [a, b], below, range}) => watches

@@ -79,8 +79,10 @@ MechanicsSpec::ProviderSpec readJointSpring(const std::string&, const YAML::Node
   p.neutral = n["neutral_deg"] ? r.number(n["neutral_deg"], key + ".neutral_deg", 0.0) * spec::kDeg
                                : r.number(n["neutral"], key + ".neutral", 0.0);
   const double c = nonNegative(r, n["coordinate"], key + ".coordinate", 0.0);
-  if (c != std::floor(c)) r.fail(n["coordinate"], key + ".coordinate", "expected a whole number");
-  const int coordinate = static_cast<int>(c);
+  // (value) => the coordinate's index, cast only once it is a whole number in an int's range
+  const bool whole = c == std::floor(c) && c <= 1e6;
+  if (!whole) r.fail(n["coordinate"], key + ".coordinate", "expected a whole number up to 1000000");
+  const int coordinate = whole ? static_cast<int>(c) : 0;
   // (name, the system's model, the attachments placed) => the provider with its channels
   out.build = [p, coordinate](const std::string& name, const dynamics::Model& model,
                               const std::vector<forces::Attachment>& at) {

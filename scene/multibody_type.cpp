@@ -7,6 +7,9 @@
 #include "models/multibody/multibody_model.hpp"
 #include "models/registry.hpp"
 
+#include <cmath>
+#include <string>
+
 namespace yardsim::scene {
 
 using mechanics::MechanicsSpec;
@@ -127,12 +130,22 @@ YARDSIM_REGISTER_TYPE(multibody, TypeInfo{
     .check =
         [](const Params& p, ParamCheck& c) {
           if (!(p.number("dt") > 0)) c.error("dt", "must be > 0 s");
-          for (const auto& problem : dynamics::checkIntegratorSpec(integratorSpec(p))) {
-            if (problem.key == "dt") continue;
-            const std::string hint =
-                problem.key == "method" ? didYouMean(p.string("method"), dynamics::integratorMethodNames()) : "";
-            c.error(problem.key, problem.message + (hint.empty() ? "" : " (" + hint + ")"));
-          }
+          // (max_order as written) => refused unless a whole number from 0 to 12, before any cast
+          // to int
+          const double maxOrder = p.number("max_order");
+          if (!(maxOrder >= 0 && maxOrder <= 12 && maxOrder == std::floor(maxOrder)))
+            c.error("max_order",
+                    "expected a whole number from 0 to 12 (0: the method's highest order), got " +
+                        p.node("max_order").Scalar());
+          else
+            for (const auto& problem : dynamics::checkIntegratorSpec(integratorSpec(p))) {
+              if (problem.key == "dt") continue;
+              const std::string hint =
+                  problem.key == "method"
+                      ? didYouMean(p.string("method"), dynamics::integratorMethodNames())
+                      : "";
+              c.error(problem.key, problem.message + (hint.empty() ? "" : " (" + hint + ")"));
+            }
           const MechanicsSpec spec = parseMechanics(
               p, [&](const std::string& param, const YAML::Node& at, const std::string& key,
                      const std::string& msg) { c.errorAt(param, at, key, msg); });

@@ -1,6 +1,7 @@
 #include "scene/integrator_reader.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "models/params.hpp"
 #include "scene/yaml_source.hpp"
@@ -76,10 +77,15 @@ dynamics::IntegratorSpec parseIntegratorSpec(const YAML::Node& n, const std::str
   auto integer = [&](const char* key, int& out) {
     const YAML::Node v = n[key];
     if (!v) return;
+    // (value) => an int, or an error when it is no integer or beyond an int's range (not a throw)
     if (!hasKind(v, ParamKind::Integer))
       d.error(markOf(v, f), std::string("integrator.") + key, "expected an integer, got " + shown(v));
+    else if (const long long k = v.as<long long>();
+             k < std::numeric_limits<int>::min() || k > std::numeric_limits<int>::max())
+      d.error(markOf(v, f), std::string("integrator.") + key,
+              "expected an integer of magnitude at most 2147483647, got " + shown(v));
     else
-      out = v.as<int>();
+      out = static_cast<int>(k);
   };
   number("alpha", spec.alpha);
   number("rho_inf", spec.rhoInf);

@@ -79,6 +79,17 @@ TEST_CASE("integrator mistakes are reported at file:line:column with did-you-mea
   CHECK_THAT(r.diagnostics.report(), Catch::Contains("integrator.rho_inf: expected a number, got 'high'") &&
                                          Catch::Contains("integrator.loops: expected projection, baumgarte or none") &&
                                          Catch::Contains("did you mean 'projection'?"));
+  // an integer beyond an int is a located error, not an internal fault (was exit 3: yaml-cpp threw)
+  r = load(
+      dir,
+      "integrator: {method: cvode_bdf, dt: 0.02, max_order: 3000000000, max_newton: -99999999999}");
+  REQUIRE_FALSE(r.scene);
+  CHECK_THAT(
+      r.diagnostics.report(),
+      Catch::Contains(
+          "s.yaml:2:54: error: integrator.max_order: expected an integer of magnitude at most "
+          "2147483647, got '3000000000'") &&
+          Catch::Contains("error: integrator.max_newton: expected an integer of magnitude"));
   // a key the method does not use: a warning, the scene still loads
   r = load(dir, "integrator: {method: rk4, dt: 0.02, alpha: -0.1}");
   REQUIRE(r.scene);

@@ -58,28 +58,23 @@ SubmergedProperties Hydrostatics::submerged(const Stage& s, const AiryWaves& sur
   const AiryWaves& at =
       &surface == sea_.get() && (sea_->calm() || sea_->ramp(s.t) == 0.0) ? calm_ : surface;
   Scratch::Last(&ring)[2] = scratch.last[&at == &calm_ ? 1 : 0];
-  // (integrals) => their rank: the force alone, with the volume, all; an entry of a rank serves
-  // every request of that rank or lower
-  const auto level = [](SubmergedIntegrals i) {
-    return i == SubmergedIntegrals::Force ? 1 : i == SubmergedIntegrals::Volume ? 2 : 3;
-  };
   // (the same surface, time and pose, bit for bit, and the integrals asked for) => the same
   // clipping
-  const int asked = level(which);
+  const bool all = which == SubmergedIntegrals::All;
   for (const Scratch::Last& e : ring)
     if (e.sea == &at && std::memcmp(&e.t, &s.t, sizeof(double)) == 0 &&
-        std::memcmp(&e.X_WB, &X, sizeof X) == 0 && level(e.which) >= asked)
+        std::memcmp(&e.X_WB, &X, sizeof X) == 0 && (e.all || !all))
       return e.p;
-  // (else) => clip, kept in place of an empty or lower-ranked entry (the older of two equal):
-  // a step's end clipping with the volume outlives the next step's force-only stages
-  const auto rank = [&](const Scratch::Last& e) { return e.sea == nullptr ? 0 : level(e.which); };
+  // (else) => clip, kept in place of an empty or force-only entry (the older of two), else of
+  // the older: a step's end clipping with every integral outlives the next step's stages
+  const auto rank = [](const Scratch::Last& e) { return e.sea == nullptr ? 0 : e.all ? 2 : 1; };
   const int r0 = rank(ring[0]), r1 = rank(ring[1]);
   Scratch::Last& last = r0 < r1 || (r0 == r1 && ring[0].when <= ring[1].when) ? ring[0] : ring[1];
   last.sea = &at;
   last.t = s.t;
   last.X_WB = X;
   last.p = integrateSubmerged(hull_, X, at, s.t, scratch.ws, false, which);
-  last.which = which;
+  last.all = all;
   last.when = ++scratch.clippings;
   return last.p;
 }
@@ -94,15 +89,15 @@ void Hydrostatics::doEvaluate(const Stage& s, dynamics::ExternalForces& f,
 }
 
 double Hydrostatics::doPotentialEnergy(const Stage& s) const {
-  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::Volume);
+  const SubmergedProperties c = submerged(s, calm_);
   const WaterProperties& w = calm_.water();
   return w.density * w.gravity * c.volume * (w.level - c.centreOfBuoyancy.z());
 }
 
 double Hydrostatics::doPower(const Stage& s) const {
   if (sea_->calm() || !incident_) return 0.0;
-  // (calm water: with the volume, since the energy at the step's end asks for the same clipping)
-  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::Volume);
+  // (calm water: every integral, since the energy at the step's end asks for the same clipping)
+  const SubmergedProperties c = submerged(s, calm_, SubmergedIntegrals::All);
   const SubmergedProperties w = submerged(s, *sea_, SubmergedIntegrals::Force);
   const dynamics::Motion V_W = dynamics::bodyVelocityWorld(s.data, body_);  // [omega; v at origin]
   return (w.moment - c.moment).dot(V_W.head<3>()) + (w.force - c.force).dot(V_W.tail<3>());

@@ -64,7 +64,7 @@ class Hydrostatics final : public ForceProvider {
       double t = 0.0;
       dynamics::Transform X_WB;
       SubmergedProperties p;
-      SubmergedIntegrals which = SubmergedIntegrals::Force;  // the integrals p holds
+      bool all = false;        // p holds every integral, not the force and moment alone
       unsigned long when = 0;  // the number of the clipping: the larger, the newer
     };
     Last last[2][2];              // [0] the sea, [1] calm water (and the sea while it is calm)
@@ -93,9 +93,7 @@ class Hydrostatics final : public ForceProvider {
   // (stage, surface: *sea_ or calm_, the integrals needed) => integrateSubmerged at the stage's
   // pose and time, or the scratch's copy when it was for the same time and pose (bit for bit) and
   // holds those integrals. The forces (evaluate, power in waves) need the force and moment alone;
-  // the potential energy the volume and centre of buoyancy too (and the power's calm clipping
-  // asks for those: the energy at the step's end asks for the same clipping); the report every
-  // integral. Before its waves start (ramp 0) and
+  // the potential energy and the report every integral. Before its waves start (ramp 0) and
   // without waves the sea is calm water, whose clipping gives the same doubles: one cache for both.
   SubmergedProperties submerged(const Stage& s, const AiryWaves& surface,
                                 SubmergedIntegrals which = SubmergedIntegrals::All) const;

@@ -35,9 +35,8 @@ SubmergedWorkspace::SubmergedWorkspace(const TriangleMesh& mesh, std::size_t com
 
 namespace {
 
-// (as integrateSubmerged; kVolume: the volume and centre of buoyancy too; kAll: every integral,
-// kVolume's and the waterplane and wetted area) => submerged properties
-template <bool kVolume, bool kAll>
+// (as integrateSubmerged; kAll false: the force and moment alone) => submerged properties
+template <bool kAll>
 SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
                               const AiryWaves& sea, double t, SubmergedWorkspace& ws,
                               bool keepWet) {
@@ -80,7 +79,7 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   // where the waterplane's own tetrahedra vanish)
   const Vector3 o(
       X_WB.p.x(), X_WB.p.y(),
-      !kVolume || sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
+      !kAll || sea.calm() ? sea.water().level : sea.elevation(X_WB.p.x(), X_WB.p.y(), t));
   // (a new call) => every cached edge pressure stale
   if (++ws.call == 0) {
     std::fill(ws.edgeStamp.begin(), ws.edgeStamp.end(), 0U);
@@ -98,7 +97,7 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
     const Vector3 m[3] = {0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)};
     double pSum = 0.0;
     Vector3 pq = Vector3::Zero();
-    if constexpr (kVolume) {
+    if constexpr (kAll) {
       const Vector3 ao = a - o, bo = b - o, co = c - o;
       const double d6 = ao.dot(bo.cross(co));
       vol6 += d6;
@@ -208,10 +207,9 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
   }
   r.force = waves ? Vector3(F / 3.0) : F;
   r.moment = waves ? Vector3(M / 3.0) : M;
-  if constexpr (!kVolume) return r;
+  if constexpr (!kAll) return r;
   r.volume = vol6 / 6.0;
   r.centreOfBuoyancy = r.volume > 0.0 ? Vector3(o + first / (4.0 * vol6)) : o;
-  if constexpr (!kAll) return r;
   r.waterplaneArea = wpA;
   if (wpA > 0.0) {
     const double xc = wpX / wpA, yc = wpY / wpA;
@@ -228,15 +226,8 @@ SubmergedProperties integrate(const TriangleMesh& mesh, const dynamics::Transfor
 SubmergedProperties integrateSubmerged(const TriangleMesh& mesh, const dynamics::Transform& X_WB,
                                        const AiryWaves& sea, double t, SubmergedWorkspace& ws,
                                        bool keepWet, SubmergedIntegrals which) {
-  switch (which) {
-    case SubmergedIntegrals::Force:
-      return integrate<false, false>(mesh, X_WB, sea, t, ws, keepWet);
-    case SubmergedIntegrals::Volume:
-      return integrate<true, false>(mesh, X_WB, sea, t, ws, keepWet);
-    case SubmergedIntegrals::All:
-      break;
-  }
-  return integrate<true, true>(mesh, X_WB, sea, t, ws, keepWet);
+  return which == SubmergedIntegrals::All ? integrate<true>(mesh, X_WB, sea, t, ws, keepWet)
+                                          : integrate<false>(mesh, X_WB, sea, t, ws, keepWet);
 }
 
 }  // namespace yardsim::forces

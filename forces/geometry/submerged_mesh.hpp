@@ -55,10 +55,9 @@ struct SubmergedWorkspace {
   std::vector<double> halfPhase;
 };
 
-// Which integrals integrateSubmerged computes: all of them; the pressure force and moment alone;
-// or those with the volume and the centre of buoyancy (the potential energy's). Each field that
-// is computed is the same double as with All, by the same operations; the others stay zero.
-enum class SubmergedIntegrals { All, Force, Volume };
+// Which integrals integrateSubmerged computes: all of them, or the pressure force and moment
+// alone (the same doubles as with All, by the same operations; the other fields stay zero)
+enum class SubmergedIntegrals { All, Force };
 
 // (mesh in the body frame, X_WB, sea, t, workspace built for this mesh, keep the wetted pieces,
 // which integrals) => submerged properties and the pressure force of the sea on the wetted surface

@@ -29,8 +29,8 @@ TEST_CASE("FCL is mapped only once a collision world is made", "[fcl]") {
   CHECK(fclCounts().worldsMade == 1);
   CHECK(fclCounts().worldsAlive == 1);
   // spheres of radii 1 and 0.5 m with centres 4 m apart: 2.5 m between them
-  Transform a = Transform::Identity(), b = Transform::Identity();
-  b.translation() = Vector3(4.0, 0.0, 0.0);
+  const Transform a = Transform::translation(Vector3::Zero()),
+                  b = Transform::translation(Vector3(4.0, 0.0, 0.0));
   const ObjectId s1 = world.add(Shape::sphere(1.0), a), s2 = world.add(Shape::sphere(0.5), b);
   CHECK(fclCounts().objectsAlive >= 2);
   CHECK(world.distance(s1, s2).distance == Approx(2.5).epsilon(1e-9));

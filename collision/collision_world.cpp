@@ -71,7 +71,9 @@ std::vector<ObjectId> CollisionWorld::addRope(const std::vector<Vector3>& path_W
                                               const ObjectOptions& options) {
   return backend_->addRope(path_W, diameter, options);
 }
-void CollisionWorld::setPose(ObjectId id, const Transform& X_WB) { backend_->setPose(id, X_WB); }
+void CollisionWorld::setPose(ObjectId id, const Transform& X_WB) {
+  backend_->setPose(id, X_WB);
+}
 void CollisionWorld::setSegment(ObjectId id, const Vector3& p0_W, const Vector3& p1_W) {
   backend_->setSegment(id, p0_W, p1_W);
 }
@@ -79,29 +81,53 @@ void CollisionWorld::setRopePath(const std::vector<ObjectId>& ids,
                                  const std::vector<Vector3>& path_W) {
   backend_->setRopePath(ids, path_W);
 }
-void CollisionWorld::update() { backend_->update(); }
-int CollisionWorld::size() const { return backend_->size(); }
-const std::string& CollisionWorld::name(ObjectId id) const { return backend_->name(id); }
-const Shape& CollisionWorld::shape(ObjectId id) const { return backend_->shape(id); }
-const Transform& CollisionWorld::pose(ObjectId id) const { return backend_->pose(id); }
-Aabb CollisionWorld::aabb(ObjectId id) const { return backend_->aabb(id); }
-CollisionFilter& CollisionWorld::filter() { return backend_->filter(); }
+void CollisionWorld::update() {
+  backend_->update();
+}
+int CollisionWorld::size() const {
+  return backend_->size();
+}
+const std::string& CollisionWorld::name(ObjectId id) const {
+  return backend_->name(id);
+}
+const Shape& CollisionWorld::shape(ObjectId id) const {
+  return backend_->shape(id);
+}
+const Transform& CollisionWorld::pose(ObjectId id) const {
+  return backend_->pose(id);
+}
+Aabb CollisionWorld::aabb(ObjectId id) const {
+  return backend_->aabb(id);
+}
+CollisionFilter& CollisionWorld::filter() {
+  return backend_->filter();
+}
 const CollisionFilter& CollisionWorld::filter() const {
   return static_cast<const WorldBackend&>(*backend_).filter();
 }
 const std::vector<std::pair<ObjectId, ObjectId>>& CollisionWorld::candidatePairs() {
   return backend_->candidatePairs();
 }
-bool CollisionWorld::anyInterference() { return backend_->anyInterference(); }
+bool CollisionWorld::anyInterference() {
+  return backend_->anyInterference();
+}
 const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
   return backend_->contacts(maxPerPair);
 }
-Distance CollisionWorld::distance(ObjectId a, ObjectId b) { return backend_->distance(a, b); }
-bool CollisionWorld::intersects(ObjectId a, ObjectId b) { return backend_->intersects(a, b); }
+Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
+  return backend_->distance(a, b);
+}
+bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
+  return backend_->intersects(a, b);
+}
 int CollisionWorld::addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, double margin) {
   return backend_->addWatch(std::move(a), std::move(b), margin);
 }
-const Clearance& CollisionWorld::clearance(int watch) { return backend_->clearance(watch); }
-const QueryStats& CollisionWorld::stats() const { return backend_->stats(); }
+const Clearance& CollisionWorld::clearance(int watch) {
+  return backend_->clearance(watch);
+}
+const QueryStats& CollisionWorld::stats() const {
+  return backend_->stats();
+}
 
 }  // namespace yardsim::collision

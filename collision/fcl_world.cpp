@@ -119,10 +119,8 @@ FclWorld::FclWorld(const WorldOptions& options) : impl_(std::make_unique<Impl>()
   impl_->distanceRequest.enable_signed_distance = true;
 }
 
-
 // (shape, X_WB, options) => FCL geometry (meshes shared), object, filter entry; pending insert
-ObjectId FclWorld::add(const Shape& shape, const Transform& X_WB,
-                             const ObjectOptions& options) {
+ObjectId FclWorld::add(const Shape& shape, const Transform& X_WB, const ObjectOptions& options) {
   Impl& m = *impl_;
   const auto id = static_cast<ObjectId>(m.records.size());
   Record r;
@@ -181,7 +179,7 @@ ObjectId FclWorld::add(const Shape& shape, const Transform& X_WB,
 
 // (p0, p1, d, options) => a capsule object of radius d / 2 marked as a segment
 ObjectId FclWorld::addSegment(const Vector3& p0_W, const Vector3& p1_W, double diameter,
-                                    const ObjectOptions& options) {
+                              const ObjectOptions& options) {
   const std::string name = options.name.empty() ? "rope segment" : options.name;
   if (!p0_W.allFinite() || !p1_W.allFinite()) {
     throw CollisionError("collision: rope segment '" + name + "': non-finite end point");
@@ -197,7 +195,7 @@ ObjectId FclWorld::addSegment(const Vector3& p0_W, const Vector3& p1_W, double d
 
 // (path, d, options) => one segment per span, named "<name>[i]"
 std::vector<ObjectId> FclWorld::addRope(const std::vector<Vector3>& path_W, double diameter,
-                                              const ObjectOptions& options) {
+                                        const ObjectOptions& options) {
   if (path_W.size() < 2)
     throw CollisionError("collision: rope '" + options.name + "' needs 2 points");
   std::vector<ObjectId> ids;
@@ -236,8 +234,7 @@ void FclWorld::setSegment(ObjectId id, const Vector3& p0_W, const Vector3& p1_W)
 }
 
 // (ids, path) => one setSegment per span
-void FclWorld::setRopePath(const std::vector<ObjectId>& ids,
-                                 const std::vector<Vector3>& path_W) {
+void FclWorld::setRopePath(const std::vector<ObjectId>& ids, const std::vector<Vector3>& path_W) {
   if (path_W.size() != ids.size() + 1) {
     throw CollisionError("collision: setRopePath needs one more point than segments");
   }

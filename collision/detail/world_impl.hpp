@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "collision/collision_world.hpp"
-#include "collision/world_backend.hpp"
 #include "collision/pair_cache.hpp"
+#include "collision/world_backend.hpp"
 
 namespace yardsim::collision::detail {
 

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-
 namespace yardsim::forces::hydro {
 
 Eigen::VectorXcd denseEigenvalues(Eigen::MatrixXd A) {
@@ -24,11 +23,11 @@ Eigen::VectorXcd denseEigenvalues(Eigen::MatrixXd A) {
   const LapackRoutines& la = lapack();
   // (n) => the workspace DGEEV asks for, then the eigenvalues (A is overwritten)
   la.dgeev("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one, &size,
-         &query, &info);
+           &query, &info);
   int lwork = std::max(static_cast<int>(size), 3 * n);
   std::vector<double> work(static_cast<std::size_t>(lwork));
   la.dgeev("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one,
-         work.data(), &lwork, &info);
+           work.data(), &lwork, &info);
   if (info > 0)
     throw std::runtime_error("denseEigenvalues: the QR iteration did not converge (" +
                              std::to_string(info) + " of " + std::to_string(n) +

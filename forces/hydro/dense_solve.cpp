@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-
 namespace yardsim::forces::hydro {
 
 void solveInPlace(Eigen::MatrixXd& M, Eigen::MatrixXd& B) {

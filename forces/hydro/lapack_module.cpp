@@ -15,6 +15,7 @@ void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
 
 // () => the library's four routines
 extern "C" const yardsim::forces::hydro::LapackRoutines* yardsim_lapack_routines() {
-  static const yardsim::forces::hydro::LapackRoutines routines{&dgetrf_, &dlaswp_, &dtrsm_, &dgeev_};
+  static const yardsim::forces::hydro::LapackRoutines routines{&dgetrf_, &dlaswp_, &dtrsm_,
+                                                               &dgeev_};
   return &routines;
 }

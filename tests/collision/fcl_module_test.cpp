@@ -12,8 +12,8 @@
 #include "support/loaded_objects.hpp"
 
 using namespace yardsim::collision;
-using yardsim::testing::loaded;
 using Catch::Matchers::Contains;
+using yardsim::testing::loaded;
 
 TEST_CASE("FCL is mapped only once a collision world is made", "[fcl]") {
   // (each test case runs in its own process under ctest) => nothing of FCL at start-up

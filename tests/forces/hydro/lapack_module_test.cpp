@@ -12,8 +12,8 @@
 #include "support/loaded_objects.hpp"
 
 using namespace yardsim::forces::hydro;
-using yardsim::testing::loaded;
 using Catch::Matchers::Contains;
+using yardsim::testing::loaded;
 
 TEST_CASE("OpenBLAS is mapped only once a dense solve needs it", "[lapack]") {
   // (each test case runs in its own process under ctest) => nothing of OpenBLAS at start-up
@@ -40,7 +40,8 @@ TEST_CASE("OpenBLAS is mapped only once a dense solve needs it", "[lapack]") {
   CHECK(std::abs(e(1) - std::complex<double>(0, -1)) < 1e-14);
 }
 
-TEST_CASE("The LAPACK module sits beside libyardsim_forces and a missing one is named", "[lapack]") {
+TEST_CASE("The LAPACK module sits beside libyardsim_forces and a missing one is named",
+          "[lapack]") {
   const std::filesystem::path module = lapackModulePath();
   CHECK(module.filename() == "libyardsim_lapack.so");
   CHECK(std::filesystem::is_regular_file(module));
@@ -50,5 +51,6 @@ TEST_CASE("The LAPACK module sits beside libyardsim_forces and a missing one is 
                         Contains("reinstall yardsim"));
   // a loadable library without the entry
   const std::string forces = (module.parent_path() / "libyardsim_forces.so").string();
-  CHECK_THROWS_WITH(loadLapackModule(forces), Contains(forces) && Contains("yardsim_lapack_routines"));
+  CHECK_THROWS_WITH(loadLapackModule(forces),
+                    Contains(forces) && Contains("yardsim_lapack_routines"));
 }

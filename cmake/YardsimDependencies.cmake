@@ -16,12 +16,6 @@ yardsim_require(fcl libfcl-dev)
 yardsim_require(yaml-cpp libyaml-cpp-dev)
 yardsim_require(spdlog libspdlog-dev)
 yardsim_require(CLI11 libcli11-dev)
-# SHA-256 and base64 (scene fingerprints, report pages): OpenSSL's libcrypto, a module package
-find_package(OpenSSL QUIET COMPONENTS Crypto)
-if(NOT OpenSSL_FOUND)
-  message(FATAL_ERROR "yardsim: OpenSSL's libcrypto not found. Install the Debian package 'libssl-dev' "
-    "(sudo apt-get install --no-install-recommends libssl-dev), or run scripts/setup.sh.")
-endif()
 # the yard's database (yard/): SQLite through CMake's own find module
 find_package(SQLite3 QUIET)
 if(NOT SQLite3_FOUND)

@@ -2,7 +2,8 @@
 // The collision world of one scene: every shape and rope segment as an object with an id, one
 // broad phase over all of them (FCL's dynamic AABB tree, behind a pimpl: no FCL type here), and
 // the queries (world_queries.cpp): boolean interference, contact points, minimum distance with
-// witness points, and clearance watches that query only the pairs within a margin.
+// witness points, and clearance watches that query only the pairs within a margin. The FCL side
+// is a module, libyardsim_fcl.so, opened with the first world of a process (world_backend.hpp).
 //
 // Motion: setPose / setSegment store the new pose and mark the object dirty; update() computes
 // the tight world boxes of the dirty objects only and moves only their leaves in the tree (every
@@ -82,8 +83,10 @@ struct QueryStats {
 struct FclCounts {
   long worldsMade = 0, worldsAlive = 0, objectsMade = 0, objectsAlive = 0;
 };
-// () => the counts now
+// () => the counts now (all zero while no world has opened the FCL module)
 FclCounts fclCounts();
+
+class WorldBackend;
 
 class CollisionWorld {
  public:
@@ -151,7 +154,7 @@ class CollisionWorld {
   struct Impl;  // opaque: the FCL side (collision/detail/world_impl.hpp, private to collision/)
 
  private:
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<WorldBackend> backend_;  // in the module libyardsim_fcl.so (world_backend.hpp)
 };
 
 }  // namespace yardsim::collision

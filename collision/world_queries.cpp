@@ -190,7 +190,7 @@ double collideOrdered(CollisionWorld::Impl& m, ObjectId a, ObjectId b) {
 }
 
 // () => filtered pairs whose boxes overlap
-const std::vector<std::pair<ObjectId, ObjectId>>& CollisionWorld::candidatePairs() {
+const std::vector<std::pair<ObjectId, ObjectId>>& FclWorld::candidatePairs() {
   update();
   Impl& m = *impl_;
   m.stats = {};
@@ -201,7 +201,7 @@ const std::vector<std::pair<ObjectId, ObjectId>>& CollisionWorld::candidatePairs
 }
 
 // () => first intersecting candidate pair found
-bool CollisionWorld::anyInterference() {
+bool FclWorld::anyInterference() {
   update();
   Impl& m = *impl_;
   m.stats = {};
@@ -213,7 +213,7 @@ bool CollisionWorld::anyInterference() {
 }
 
 // (max per pair) => contact points of all intersecting candidate pairs
-const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
+const std::vector<Contact>& FclWorld::contacts(int maxPerPair) {
   update();
   Impl& m = *impl_;
   m.stats = {};
@@ -232,7 +232,7 @@ const std::vector<Contact>& CollisionWorld::contacts(int maxPerPair) {
 
 // (a, b) => minimum distance with witness points: capsule-box by segmentBoxDistance, the rest by
 // FCL (closed forms where it has them, libccd or its own GJK otherwise)
-Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
+Distance FclWorld::distance(ObjectId a, ObjectId b) {
   update();
   Impl& m = *impl_;
   const detail::Record& ra = m.at(a);
@@ -259,7 +259,7 @@ Distance CollisionWorld::distance(ObjectId a, ObjectId b) {
 }
 
 // (a, b) => whether they intersect
-bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
+bool FclWorld::intersects(ObjectId a, ObjectId b) {
   update();
   Impl& m = *impl_;
   m.request.num_max_contacts = 1;
@@ -277,7 +277,7 @@ bool CollisionWorld::intersects(ObjectId a, ObjectId b) {
 }
 
 // (sets, margin) => a watch
-int CollisionWorld::addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, double margin) {
+int FclWorld::addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, double margin) {
   Impl& m = *impl_;
   if (!(margin >= 0.0) || !std::isfinite(margin)) {
     throw CollisionError("collision: a watch margin must be finite and >= 0");
@@ -298,7 +298,7 @@ int CollisionWorld::addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, d
 namespace {
 
 struct WatchContext {
-  CollisionWorld* world;
+  FclWorld* world;
   CollisionWorld::Impl* m;
   detail::Watch* w;
   ObjectId a;
@@ -324,7 +324,7 @@ bool watchPair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data)
 }  // namespace
 
 // (watch) => the closest pair within the margin, querying only pairs whose grown boxes overlap
-const Clearance& CollisionWorld::clearance(int watch) {
+const Clearance& FclWorld::clearance(int watch) {
   update();
   Impl& m = *impl_;
   if (watch < 0 || watch >= static_cast<int>(m.watches.size())) {

@@ -1,25 +1,30 @@
 #include "output/base64.hpp"
 
-#include <openssl/evp.h>
-
 #include <algorithm>
-#include <climits>
-#include <stdexcept>
 
 namespace yardsim::output {
 
 void appendBase64(std::string& out, const void* data, std::size_t bytes) {
-  // (bytes, in chunks libcrypto's int sizes take, multiples of 3) => padded base64, no newlines
-  constexpr std::size_t kChunk = 3 * (1u << 28);
+  // (three bytes) => four characters of 6 bits each; a last one or two bytes padded with '='
+  static const char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   const auto* p = static_cast<const unsigned char*>(data);
-  for (std::size_t done = 0; done < bytes || (bytes == 0 && done == 0); done += kChunk) {
-    const std::size_t n = std::min(kChunk, bytes - done);
-    const std::size_t at = out.size();
-    out.resize(at + 4 * ((n + 2) / 3) + 1);  // EVP_EncodeBlock writes a terminating NUL
-    const int written = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(out.data() + at), p + done, static_cast<int>(n));
-    if (written < 0) throw std::runtime_error("base64: libcrypto's EVP_EncodeBlock failed");
-    out.resize(at + static_cast<std::size_t>(written));
-    if (bytes == 0) break;
+  std::size_t at = out.size();
+  out.resize(at + 4 * ((bytes + 2) / 3));
+  char* o = out.data() + at;
+  std::size_t i = 0;
+  for (; i + 3 <= bytes; i += 3, o += 4) {
+    const unsigned v = unsigned{p[i]} << 16 | unsigned{p[i + 1]} << 8 | unsigned{p[i + 2]};
+    o[0] = kDigits[v >> 18];
+    o[1] = kDigits[(v >> 12) & 63];
+    o[2] = kDigits[(v >> 6) & 63];
+    o[3] = kDigits[v & 63];
+  }
+  if (i < bytes) {
+    const unsigned v = unsigned{p[i]} << 16 | (i + 1 < bytes ? unsigned{p[i + 1]} << 8 : 0U);
+    o[0] = kDigits[v >> 18];
+    o[1] = kDigits[(v >> 12) & 63];
+    o[2] = i + 1 < bytes ? kDigits[(v >> 6) & 63] : '=';
+    o[3] = '=';
   }
 }
 

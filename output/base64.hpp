@@ -1,5 +1,6 @@
 #pragma once
-// Base64 (RFC 4648, with padding; OpenSSL libcrypto): how the report embeds binary arrays and replay.glb.
+// Base64 (RFC 4648, with padding; written out here, no libcrypto): how the report embeds binary
+// arrays and replay.glb.
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build git pkg-config ca-certificates
   libeigen3-dev libboost-graph-dev libsundials-dev libfcl-dev libyaml-cpp-dev
-  libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev libssl-dev
+  libspdlog-dev catch2 libcli11-dev libbenchmark-dev libode-dev
   libsqlite3-dev  # the yard's database (yard/)
   libopenblas-dev  # LAPACK's dense eigenvalues for the time-domain Rankine solver's growth check (forces/hydro)
   # STEP import (YARDSIM_WITH_STEP): OpenCASCADE 7.6, about 37 MB download, 188 MB installed

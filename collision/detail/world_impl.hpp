@@ -1,6 +1,6 @@
 #pragma once
-// Private to collision/: the FCL side of CollisionWorld (its pimpl), shared by
-// collision_world.cpp (objects, poses, broad phase) and world_queries.cpp (queries). Not part of
+// Private to collision/: the FCL side of CollisionWorld (the module libyardsim_fcl.so), shared by
+// fcl_world.cpp (objects, poses, broad phase) and world_queries.cpp (queries). Not part of
 // the API: no header outside collision/*.cpp includes it.
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
@@ -18,6 +18,7 @@
 
 #include "collision/collision_world.hpp"
 #include "collision/pair_cache.hpp"
+#include "collision/world_backend.hpp"
 
 namespace yardsim::collision::detail {
 
@@ -122,6 +123,40 @@ struct CollisionWorld::Impl {
   }
   // (id) => the record, or std::out_of_range naming the id
   detail::Record& at(ObjectId id);
+};
+
+// The world on FCL's side: CollisionWorld's methods (fcl_world.cpp, world_queries.cpp) on its Impl
+class FclWorld final : public WorldBackend {
+ public:
+  using Impl = CollisionWorld::Impl;
+  explicit FclWorld(const WorldOptions& options);
+  ObjectId add(const Shape& shape, const Transform& X_WB, const ObjectOptions& options) override;
+  ObjectId addSegment(const Vector3& p0_W, const Vector3& p1_W, double diameter,
+                      const ObjectOptions& options) override;
+  std::vector<ObjectId> addRope(const std::vector<Vector3>& path_W, double diameter,
+                                const ObjectOptions& options) override;
+  void setPose(ObjectId id, const Transform& X_WB) override;
+  void setSegment(ObjectId id, const Vector3& p0_W, const Vector3& p1_W) override;
+  void setRopePath(const std::vector<ObjectId>& ids, const std::vector<Vector3>& path_W) override;
+  void update() override;
+  int size() const override;
+  const std::string& name(ObjectId id) const override;
+  const Shape& shape(ObjectId id) const override;
+  const Transform& pose(ObjectId id) const override;
+  Aabb aabb(ObjectId id) const override;
+  CollisionFilter& filter() override;
+  const CollisionFilter& filter() const override;
+  const std::vector<std::pair<ObjectId, ObjectId>>& candidatePairs() override;
+  bool anyInterference() override;
+  const std::vector<Contact>& contacts(int maxPerPair) override;
+  Distance distance(ObjectId a, ObjectId b) override;
+  bool intersects(ObjectId a, ObjectId b) override;
+  int addWatch(std::vector<ObjectId> a, std::vector<ObjectId> b, double margin) override;
+  const Clearance& clearance(int watch) override;
+  const QueryStats& stats() const override;
+
+ private:
+  std::unique_ptr<Impl> impl_;
 };
 
 // (world, a, b) => fcl::collide into m.result, a mesh first; the sign that makes normals a -> b

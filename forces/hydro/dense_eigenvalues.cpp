@@ -1,16 +1,11 @@
 #include "forces/hydro/dense_eigenvalues.hpp"
 
+#include "forces/hydro/lapack_module.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-extern "C" {
-// LAPACK (Fortran calling convention): the eigenvalues (and eigenvectors) of a general matrix
-void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda,
-            double* wr, double* wi, double* vl, const int* ldvl, double* vr, const int* ldvr,
-            double* work, const int* lwork, int* info);
-}
 
 namespace yardsim::forces::hydro {
 
@@ -25,13 +20,14 @@ Eigen::VectorXcd denseEigenvalues(Eigen::MatrixXd A) {
   double unused = 0.0, size = 0.0;
   const int one = 1;
   int info = 0, query = -1;
+  const LapackRoutines& la = lapack();
   // (n) => the workspace DGEEV asks for, then the eigenvalues (A is overwritten)
-  dgeev_("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one, &size,
-         &query, &info);
+  la.dgeev("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one, &size,
+           &query, &info);
   int lwork = std::max(static_cast<int>(size), 3 * n);
   std::vector<double> work(static_cast<std::size_t>(lwork));
-  dgeev_("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one,
-         work.data(), &lwork, &info);
+  la.dgeev("N", "N", &n, A.data(), &n, wr.data(), wi.data(), &unused, &one, &unused, &one,
+           work.data(), &lwork, &info);
   if (info > 0)
     throw std::runtime_error("denseEigenvalues: the QR iteration did not converge (" +
                              std::to_string(info) + " of " + std::to_string(n) +

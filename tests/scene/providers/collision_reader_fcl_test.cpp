@@ -2,6 +2,7 @@
 // process-wide FCL counts (collision::fclCounts) do not move while a scene with bodies, their
 // geometry and a rope, but no `collision:` or `clearance:`, is loaded, built and run; the same
 // scene with a collision set makes its worlds and objects, and they are all gone with the scene.
+// FCL itself (the module libyardsim_fcl.so and libfcl) is mapped only once a scene has collision.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "run/runner.hpp"
 #include "scene/assembler.hpp"
 #include "scene/scene_loader.hpp"
+#include "support/loaded_objects.hpp"
 #include "support/scene_files.hpp"
 
 using namespace yardsim;
@@ -54,6 +56,9 @@ TEST_CASE("collision scene: a scene without collision builds no FCL object at al
   CHECK(during.objectsMade == before.objectsMade);
   CHECK(after.worldsMade == before.worldsMade);
   CHECK(after.objectsMade == before.objectsMade);
+  // (each test case runs in its own process under ctest) => FCL never loaded
+  CHECK_FALSE(testing::loaded("libfcl"));
+  CHECK_FALSE(testing::loaded("libyardsim_fcl"));
 }
 
 TEST_CASE("collision scene: a scene with collision builds FCL objects and frees them") {
@@ -68,4 +73,6 @@ TEST_CASE("collision scene: a scene with collision builds FCL objects and frees 
   CHECK(during.objectsMade > before.objectsMade);
   CHECK(after.worldsAlive == before.worldsAlive);
   CHECK(after.objectsAlive == before.objectsAlive);
+  CHECK(testing::loaded("libyardsim_fcl"));
+  CHECK(testing::loaded("libfcl"));
 }

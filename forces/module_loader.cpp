@@ -1,11 +1,11 @@
-#include "output/module_loader.hpp"
+#include "forces/module_loader.hpp"
 
 #include <dlfcn.h>
 
 #include <filesystem>
 #include <stdexcept>
 
-namespace yardsim::output {
+namespace yardsim::forces {
 
 std::string moduleBeside(const void* anchor, const std::string& name) {
   // (an address inside the library) => the file it was loaded from, and the module beside it
@@ -35,4 +35,4 @@ void* openModuleEntry(const std::string& file, const char* entry, const std::str
   return address;
 }
 
-}  // namespace yardsim::output
+}  // namespace yardsim::forces

@@ -54,12 +54,13 @@ inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transf
                o20 = j20 - h[2] * c[0];
   const double o11 = j11 + (h[0] * c[0] + h[2] * c[2]), o21 = j21 - h[2] * c[1];
   const double o22 = j22 + (h[0] * c[0] + h[1] * c[1]);
+  // (the lower block triangle only, kLowerBlocks: the 1-dof joints read nothing else)
   M.col(0) << o00, o10, o20, 0.0, -h[2], h[1];
   M.col(1) << o10, o11, o21, h[2], 0.0, -h[0];
-  M.col(2) << o20, o21, o22, -h[1], h[0], 0.0;
-  M.col(3) << 0.0, h[2], -h[1], m, 0.0, 0.0;
-  M.col(4) << -h[2], 0.0, h[0], 0.0, m, 0.0;
-  M.col(5) << h[1], -h[0], 0.0, 0.0, 0.0, m;
+  M.col(2).tail<4>() << o22, -h[1], h[0], 0.0;
+  M.col(3).tail<4>() << -h[1], m, 0.0, 0.0;
+  M.col(4).tail<2>() << m, 0.0;
+  M.col(5).tail<2>() << 0.0, m;
   // (V, A0, c, J) => the Newton-Euler force and moment about the origin
   const Vector3 w = V.head<3>(), al = A0.head<3>();
   const auto J = [&](const Vector3& x) {
@@ -71,6 +72,52 @@ inline Force rigidBodyTerms(const SpatialInertia& I, bool diagonal, const Transf
   f.tail<3>() = m * (A0.tail<3>() + al.cross(c) + w.cross(vc));
   f.head<3>() = c.cross(f.tail<3>()) + J(al) + w.cross(J(w));
   return f;
+}
+
+// The articulated inertias IA_W are symmetric; the 1-dof joints read and write only their lower
+// block triangle, the 2x2 blocks (rows 2r, 2r + 1; columns 2c, 2c + 1) with r >= c: 12 pairs of
+// doubles, each one SSE2 register (kLowerBlocks, as (row, column) of the pair's first entry).
+// The upper block triangle is left stale; the joints that read all of IA (multi-dof, the free
+// root) fill it from the lower first (symmetrizeFromLower).
+using Pair = Eigen::Vector2d;
+constexpr int kLowerBlocks[12][2] = {{0, 0}, {2, 0}, {4, 0}, {0, 1}, {2, 1}, {4, 1},
+                                     {2, 2}, {4, 2}, {2, 3}, {4, 3}, {4, 4}, {4, 5}};
+
+// (A, pair at row r of column c) => a view of A(r : r + 1, c), 16-byte aligned (r even)
+inline Eigen::Map<Pair, Eigen::Aligned16> pairAt(Matrix6& A, int r, int c) {
+  return Eigen::Map<Pair, Eigen::Aligned16>(A.data() + 6 * c + r);
+}
+inline Eigen::Map<const Pair, Eigen::Aligned16> pairAt(const Matrix6& A, int r, int c) {
+  return Eigen::Map<const Pair, Eigen::Aligned16>(A.data() + 6 * c + r);
+}
+
+// (x, y) => (x0 + x1, y0 + y1): the products of a transposed block by a pair, summed
+inline Pair pairSums(const Pair& x, const Pair& y) {
+  return Pair(x[0], y[0]) + Pair(x[1], y[1]);
+}
+
+// (IA's lower block triangle, s) => IA s, the upper blocks' products taken as the transposed
+// lower ones': U(0:1) = B00 s01 + B10^T s23 + B20^T s45, U(2:3) = B10 s01 + B11 s23 + B21^T s45,
+// U(4:5) = B20 s01 + B21 s23 + B22 s45
+inline Vector6 lowerTimes(const Matrix6& A, const Motion& s) {
+  const Pair s23 = s.segment<2>(2), s45 = s.segment<2>(4);
+  const auto P = [&](int r, int c) { return pairAt(A, r, c); };
+  const Pair a = (P(0, 0) * s[0] + P(0, 1) * s[1]) +
+                 pairSums(P(2, 0).cwiseProduct(s23) + P(4, 0).cwiseProduct(s45),
+                          P(2, 1).cwiseProduct(s23) + P(4, 1).cwiseProduct(s45));
+  const Pair b = (P(2, 0) * s[0] + P(2, 1) * s[1]) + (P(2, 2) * s[2] + P(2, 3) * s[3]) +
+                 pairSums(P(4, 2).cwiseProduct(s45), P(4, 3).cwiseProduct(s45));
+  const Pair c = (P(4, 0) * s[0] + P(4, 1) * s[1]) + (P(4, 2) * s[2] + P(4, 3) * s[3]) +
+                 (P(4, 4) * s[4] + P(4, 5) * s[5]);
+  Vector6 U;
+  U << a, b, c;
+  return U;
+}
+
+// (IA's lower triangle) => its upper triangle, a copy
+inline void symmetrizeFromLower(Matrix6& A) {
+  for (int c = 1; c < 6; ++c)
+    for (int r = 0; r < c; ++r) A(r, c) = A(c, r);
 }
 
 // (symmetric positive definite D, 6 x 6) => its L D L^T factors in place: L's strict lower
@@ -103,6 +150,7 @@ inline Vector6 ldltSolve6(const Eigen::Map<const Matrix6> F, Vector6 b) {
 // Dinv's buffer (the root hands nothing to a parent, so only D^-1 u is needed: one solve
 // instead of the inverse, a twelfth of its cost), u = tau - S^T PA
 inline void abaFreeRootBackward(Data& d, int i, int iv, const Eigen::VectorXd& tau) {
+  symmetrizeFromLower(d.IA_W[i]);
   const Eigen::Map<const Matrix6> S(d.S_W.col(iv).data());
   Eigen::Map<Matrix6> U(d.U[i].data());
   Eigen::Map<Matrix6> F(d.Dinv[i].data());
@@ -133,6 +181,7 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
   Eigen::Map<Eigen::Matrix<double, 6, NV>> U(d.U[i].data());
   Eigen::Map<Eigen::Matrix<double, NV, NV>> Dinv(d.Dinv[i].data());
   Eigen::Map<Eigen::Matrix<double, NV, 1>> u(d.u[i].data());
+  symmetrizeFromLower(d.IA_W[i]);
   U.noalias() = d.IA_W[i] * S;
   // (as Eigen's dynamic-size inverse does; its fixed-size one would use closed forms for NV <= 4)
   Dinv = Eigen::PartialPivLU<Eigen::Matrix<double, NV, NV>>(S.transpose() * U).inverse();
@@ -145,17 +194,14 @@ inline void abaJointBackward(Data& d, int i, int p, int iv, const Eigen::VectorX
   d.IA_W[p].noalias() -= U * Dinv * U.transpose();
 }
 
-// (body i with a 1-dof joint, IA_W[i], PA_W[i], A_W[p] = A0_p, tau_i) => U = IA s,
-// D^-1 = 1 / s^T U, u = tau_i - s^T PA (stored plus U . A0_p when p > 0), and
-// pa = PA + U D^-1 u, Ia = IA - U D^-1 U^T added to the parent p's. IA s in one pass over IA's
-// columns, and IA_W[p] + IA - (D^-1 U) U^T in one pass over the parent's (Data's stores may
-// alias them, so the compiler would not fuse the loops)
+// (body i with a 1-dof joint, IA_W[i]'s lower block triangle, PA_W[i], A_W[p] = A0_p, tau_i) =>
+// U = IA s, D^-1 = 1 / s^T U, u = tau_i - s^T PA (stored plus U . A0_p when p > 0), and
+// pa = PA + U D^-1 u, Ia = IA - U D^-1 U^T added to the parent p's, on its lower block triangle
+// (12 pairs of the 18 of a full update)
 inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
   const Motion s = d.S_W.col(iv);
   const Matrix6& IA = d.IA_W[i];
-  // (pairs summed first: a shorter chain of dependent additions)
-  const Vector6 U = (IA.col(0) * s[0] + IA.col(1) * s[1]) + (IA.col(2) * s[2] + IA.col(3) * s[3]) +
-                    (IA.col(4) * s[4] + IA.col(5) * s[5]);
+  const Vector6 U = lowerTimes(IA, s);
   const double Dinv = 1.0 / s.dot(U);
   const double ui = tau - s.dot(d.PA_W[i]);
   d.U[i].col(0) = U;
@@ -168,7 +214,10 @@ inline void abaOneDofBackward(Data& d, int i, int p, int iv, double tau) {
   d.PA_W[p] += d.PA_W[i] + U * (Dinv * ui);
   const Vector6 DU = Dinv * U;
   Matrix6& IAp = d.IA_W[p];
-  for (int k = 0; k < 6; ++k) IAp.col(k) = (IAp.col(k) + IA.col(k)) - DU * U[k];
+  for (const auto& rc : kLowerBlocks) {
+    const int r = rc[0], c = rc[1];
+    pairAt(IAp, r, c) = (pairAt(IAp, r, c) + pairAt(IA, r, c)) - DU.segment<2>(r) * U[c];
+  }
 }
 
 // (body i with an NV-dof joint, a = A_W[p]) => ddq of the joint, A_W[i] = a + C_W[i] + S ddq
@@ -263,6 +312,7 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       abaJointBackward<2>(d, i, p, iv, tau);
     } else if (nv > 0) {
       const auto S = d.S_W.middleCols(iv, nv);
+      symmetrizeFromLower(d.IA_W[i]);
       d.U[i].noalias() = d.IA_W[i] * S;
       d.Dinv[i] = (S.transpose() * d.U[i]).inverse();
       d.u[i].noalias() = tau.segment(iv, nv) - S.transpose() * d.PA_W[i];

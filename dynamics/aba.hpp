@@ -12,8 +12,10 @@
 namespace yardsim::dynamics {
 
 /// (q, v, tau, external forces) => data.ddq with M ddq + h = tau + sum J_i^T F_ext_i.
-/// Also leaves data.X_PB, data.X_WB, data.S_W, data.V_W, data.C_W, data.IA_W (world frame) and
-/// data.A_W (world frame, including -g: add g to the linear part for the true acceleration).
+/// Also leaves data.X_PB, data.X_WB, data.S_W, data.V_W, data.C_W, data.IA_W (world frame; its
+/// lower block triangle, the 2x2 blocks on and below the diagonal: the 1-dof joints leave the upper
+/// blocks stale) and data.A_W (world frame, including -g: add g to the linear part for
+/// the true acceleration).
 const Eigen::VectorXd& aba(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& tau, const ExternalForces* fext = nullptr);
 

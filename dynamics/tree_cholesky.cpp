@@ -48,7 +48,7 @@ void ancestorRowFixed(std::span<const int> parent, int i, const double* li, cons
        j = parent[static_cast<std::size_t>(j)]) {
     const double* lj = out + j * ld + 1;  // L(sub i, j)
     double s = ai[j];
-    for (int k = 0; k < NS; ++k) s -= x[k] * lj[k];
+    for (int k = NS - 1; k >= 0; --k) s -= x[k] * lj[k];
     out[j * ld] = s * inv;
   }
 }
@@ -149,7 +149,7 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const double* ai = a + i * lda;         // A(., i)
     double pivot = ai[i];
     if (ns < kLongRow) {
-      for (int k = 0; k < ns; ++k) pivot -= li[k] * li[k];
+      for (int k = ns - 1; k >= 0; --k) pivot -= li[k] * li[k];
     } else {
       double sq = 0.0;
       dotColumns<1>(li, li, 0, ns, &sq);
@@ -158,7 +158,7 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     if (!(pivot > 0.0)) ok = false;
     const double lii = std::sqrt(pivot);
     l[i * ld + i] = lii;
-    const double inv = 1.0 / lii;
+    const double inv = lii * (1.0 / pivot);
     ancestorRow(std::make_integer_sequence<int, kLongRow>{}, ns, parent, i, li, ai, inv, l + i, ld);
   }
   return ok;

@@ -101,15 +101,16 @@ void applyCompact(const double* k, const double* s, double* f) {
 }
 
 // (force f of dof c, S_W, the dof tree) => M(c, a) = M(a, c) = f . S_a for a = c and every
-// ancestor dof a of c, each summed as (f0 s0 + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5) (with SSE2
+// ancestor dof a >= stop of c (returns the first ancestor below stop, or -1), each summed as (f0 s0 + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5) (with SSE2
 // the two sums are the lanes of one register, f held in three registers across the ancestors)
-void rowOfM(const double* f, const double* S, const int* dofParent, int c, double* M,
-            Eigen::Index ld) {
+int rowOfM(const double* f, const double* S, const int* dofParent, int c, int stop, double* M,
+           Eigen::Index ld) {
   double* rowC = M + c;       // M(c, a) = rowC[a ld]
   double* colC = M + c * ld;  // M(a, c) = colC[a]
 #if defined(EIGEN_VECTORIZE_SSE2)
   const __m128d f0 = _mm_loadu_pd(f), f1 = _mm_loadu_pd(f + 2), f2 = _mm_loadu_pd(f + 4);
-  for (int a = c; a >= 0; a = dofParent[a]) {
+  int a = c;
+  for (; a >= stop; a = dofParent[a]) {
     const double* s = S + 6 * a;
     const __m128d t = _mm_add_pd(
         _mm_add_pd(_mm_mul_pd(f0, _mm_loadu_pd(s)), _mm_mul_pd(f1, _mm_loadu_pd(s + 2))),
@@ -119,7 +120,8 @@ void rowOfM(const double* f, const double* S, const int* dofParent, int c, doubl
     colC[a] = v;
   }
 #else
-  for (int a = c; a >= 0; a = dofParent[a]) {
+  int a = c;
+  for (; a >= stop; a = dofParent[a]) {
     const double* s = S + 6 * a;
     const double v =
         ((f[0] * s[0] + f[2] * s[2]) + f[4] * s[4]) + ((f[1] * s[1] + f[3] * s[3]) + f[5] * s[5]);
@@ -127,6 +129,77 @@ void rowOfM(const double* f, const double* S, const int* dofParent, int c, doubl
     colC[a] = v;
   }
 #endif
+  return a;
+}
+
+// (force f = (n, f) of dof c, in world axes about the world origin; X_WB of a free-joint body
+// whose dofs are 0 .. 5) => M(c, j) = M(j, c) = S_j . f for j = 0 .. 5: with S = 1 in the body
+// frame, f in the body frame about its origin, (R^T (n - p x f), R^T f): one force transform
+// instead of six 6-entry products
+[[gnu::noinline]] void freeRootRow(const double* f, const Transform& X, int c, double* M, Eigen::Index ld) {
+  const Eigen::Map<const Vector3> n(f), lin(f + 3);
+  const Vector3 nB = X.R.transpose() * (n - X.p.cross(lin));
+  const Vector3 fB = X.R.transpose() * lin;
+  for (int j = 0; j < 3; ++j) {
+    M[c + j * ld] = M[j + c * ld] = nB[j];
+    M[c + (j + 3) * ld] = M[j + 3 + c * ld] = fB[j];
+  }
+}
+
+// (the composite of a free-joint body whose dofs are 0 .. 5 as 10 numbers in world axes about the
+// world origin, its X_WB) => M's 6x6 block of those dofs: the composite in the body frame about its
+// origin, [I_B, [h_B]x; -[h_B]x, m 1] (S = 1)
+[[gnu::noinline]] void freeRootBlock(const double* k, const Transform& X, double* M, Eigen::Index ld) {
+  const double mass = k[0];
+  const Vector3 h(k[1], k[2], k[3]);
+  const Vector3& p = X.p;
+  Matrix3 I;
+  I << k[4], k[5], k[6], k[5], k[7], k[8], k[6], k[8], k[9];
+  // (about the world origin) => about p: I - 2 (p . h) 1 + (p h^T + h p^T) + m (p . p 1 - p p^T)
+  const Matrix3 outer = p * h.transpose();
+  I += outer + outer.transpose() - mass * (p * p.transpose());
+  I.diagonal().array() += mass * p.squaredNorm() - 2.0 * p.dot(h);
+  const Matrix3 IB = X.R.transpose() * I * X.R;
+  const Vector3 hB = X.R.transpose() * (h - mass * p);
+  Matrix3 hx;
+  hx << 0.0, -hB.z(), hB.y(), hB.z(), 0.0, -hB.x(), -hB.y(), hB.x(), 0.0;
+  Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>> B(M, 6, 6, Eigen::OuterStride<>(ld));
+  for (int c = 0; c < 3; ++c) {
+    for (int r = c; r < 3; ++r) B(r, c) = B(c, r) = IB(r, c);  // R^T I R's lower triangle, mirrored
+  }
+  B.topRightCorner<3, 3>() = hx;
+  B.bottomLeftCorner<3, 3>() = hx.transpose();
+  B.bottomRightCorner<3, 3>() = mass * Matrix3::Identity();
+}
+
+// (X_WB, S_W, each body's 10 numbers in IC_W; FreeRoot: body 1 on a free joint at the world) =>
+// M, IC_W the composites. From the leaves (body i's composite complete when reached): per dof c of
+// body i F_c = IC_i S_c, then M(c, a) = M(a, c) = F_c . S_a for a = c and every ancestor dof a of c
+// (Featherstone, RBDA eq. 6.21, world frame: F needs no transform; S_a of every dof is known from
+// the placement); then IC_parent += IC_i. Entries between dofs on different branches are never
+// written (zero from Data).
+template <bool FreeRoot>
+void compositesAndM(const Model& m, Data& d) {
+  const double* S = d.S_W.data();
+  double* M = d.M.data();
+  const Eigen::Index ld = d.M.outerStride();
+  const int* dofParent = m.dofParent.data();
+  constexpr int stop = FreeRoot ? 6 : 0;
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    const double* k = d.IC_W[i].data();
+    if (FreeRoot && i == 1) {
+      freeRootBlock(k, d.X_WB[1], M, ld);
+      return;
+    }
+    const int iv = m.idxV[i];
+    for (int c = iv; c < iv + m.jointNv[i]; ++c) {
+      double f[6];
+      applyCompact(k, S + 6 * c, f);
+      const int a = rowOfM(f, S, dofParent, c, stop, M, ld);
+      if (FreeRoot && a >= 0) freeRootRow(f, d.X_WB[1], c, M, ld);
+    }
+    if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
+  }
 }
 
 // (q) => X_WB, S_W of body i (the shortcuts of RNEA and ABA for coordinate-axis joints, equal in
@@ -254,24 +327,12 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
     worldCompact(m.inertias[i], m.inertiaDiagonal[i] != 0, d.X_WB[i], d.IC_W[i].data());
     if (d.hasAddedMass[i]) addPointMass(d.addedMass[i](3, 3), d.X_WB[i].p, d.IC_W[i].data());
   }
-  // (bodies from the leaves: body i's composite complete) => per dof c of body i F_c = IC_i S_c,
-  // then M(c, a) = M(a, c) = F_c . S_a for a = c and every ancestor dof a of c (Featherstone, RBDA
-  // eq. 6.21, world frame: F needs no transform; S_a of every dof is known from the placement);
-  // then IC_parent += IC_i. Entries between dofs on different branches are never written (zero
-  // from Data).
-  const double* S = d.S_W.data();
-  double* M = d.M.data();
-  const Eigen::Index ld = d.M.outerStride();
-  const int* dofParent = m.dofParent.data();
-  for (int i = m.nbodies - 1; i >= 1; --i) {
-    const double* k = d.IC_W[i].data();
-    const int iv = m.idxV[i];
-    for (int c = iv; c < iv + m.jointNv[i]; ++c) {
-      double f[6];
-      applyCompact(k, S + 6 * c, f);
-      rowOfM(f, S, dofParent, c, M, ld);
-    }
-    if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
+  // a floating base (body 1 on a free joint at the world: dofs 0 .. 5, S = 1) takes its 6x6 block
+  // from its composite and each row below it from one force transform (freeRootBlock, freeRootRow)
+  if (m.nbodies > 1 && m.parent[1] == 0 && m.joints[1].type == JointType::Free) {
+    compositesAndM<true>(m, d);
+  } else {
+    compositesAndM<false>(m, d);
   }
   return d.M;
 }

@@ -136,13 +136,21 @@ int rowOfM(const double* f, const double* S, const int* dofParent, int c, int st
 // whose dofs are 0 .. 5) => M(c, j) = M(j, c) = S_j . f for j = 0 .. 5: with S = 1 in the body
 // frame, f in the body frame about its origin, (R^T (n - p x f), R^T f): one force transform
 // instead of six 6-entry products
-[[gnu::noinline]] void freeRootRow(const double* f, const Transform& X, int c, double* M, Eigen::Index ld) {
-  const Eigen::Map<const Vector3> n(f), lin(f + 3);
-  const Vector3 nB = X.R.transpose() * (n - X.p.cross(lin));
-  const Vector3 fB = X.R.transpose() * lin;
+[[gnu::noinline]] void freeRootRow(const double* f, const Transform& X, int c, double* M,
+                                   Eigen::Index ld) {
+  const double* R = X.R.data();  // column-major: R^T's row j is R's column j
+  const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
+  const double t0 = f[0] - (p1 * f[5] - p2 * f[4]);
+  const double t1 = f[1] - (p2 * f[3] - p0 * f[5]);
+  const double t2 = f[2] - (p0 * f[4] - p1 * f[3]);
+  double* row = M + c;       // M(c, j) = row[j ld]
+  double* col = M + c * ld;  // M(j, c) = col[j]
   for (int j = 0; j < 3; ++j) {
-    M[c + j * ld] = M[j + c * ld] = nB[j];
-    M[c + (j + 3) * ld] = M[j + 3 + c * ld] = fB[j];
+    const double* r = R + 3 * j;
+    const double nB = r[0] * t0 + r[1] * t1 + r[2] * t2;
+    const double fB = r[0] * f[3] + r[1] * f[4] + r[2] * f[5];
+    row[j * ld] = col[j] = nB;
+    row[(j + 3) * ld] = col[j + 3] = fB;
   }
 }
 
@@ -191,8 +199,8 @@ void compositesAndM(const Model& m, Data& d) {
       freeRootBlock(k, d.X_WB[1], M, ld);
       return;
     }
-    const int iv = m.idxV[i];
-    for (int c = iv; c < iv + m.jointNv[i]; ++c) {
+    const int iv = m.idxV[i], end = iv + m.jointNv[i];
+    for (int c = iv; c < end; ++c) {
       double f[6];
       applyCompact(k, S + 6 * c, f);
       const int a = rowOfM(f, S, dofParent, c, stop, M, ld);

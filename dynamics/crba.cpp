@@ -252,12 +252,30 @@ void placeRevoluteWorld(const Transform& P, const Vector3& o, double c, double s
   sw[5] = p0 * w1 - p1 * w0;
 }
 
+// (q, body i on a free joint: S = 1) => X_WB of body i (placeBody) and its six columns of S_W,
+// [R 0; p x R R] column by column (not X_WB S's products)
+[[gnu::noinline]] void placeFree(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
+  placeBody(m, d, i, q);
+  const Transform& X = d.X_WB[i];
+  double* sw = d.S_W.data() + 6 * m.idxV[i];
+  for (int c = 0; c < 3; ++c, sw += 6) {
+    const Eigen::Map<const Vector3> r(X.R.data() + 3 * c);
+    Eigen::Map<Motion> rot(sw), lin(sw + 18);  // the columns of dofs c and c + 3
+    rot << r, X.p.cross(r);
+    lin << Vector3::Zero(), r;
+  }
+}
+
 // (q) => X_WB of body i and its columns of S_W: coordinate-axis revolute and prismatic joints in
 // translated frames directly (X_PB not written), any other joint by placeBody
 void placeForCrba(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
   const int k = m.jointAxis[i];
   if (k < 0 || m.placementRotated[i] != 0) {
-    placeWithSubspace(m, d, i, q);
+    if (m.joints[i].type != JointType::Free) {
+      placeWithSubspace(m, d, i, q);
+      return;
+    }
+    placeFree(m, d, i, q);
     return;
   }
   const Transform& P = d.X_WB[m.parent[i]];

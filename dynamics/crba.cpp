@@ -8,7 +8,6 @@
 #include <emmintrin.h>
 #endif
 
-
 namespace yardsim::dynamics {
 
 namespace {
@@ -101,8 +100,9 @@ void applyCompact(const double* k, const double* s, double* f) {
 }
 
 // (force f of dof c, S_W, the dof tree) => M(c, a) = M(a, c) = f . S_a for a = c and every
-// ancestor dof a >= stop of c (returns the first ancestor below stop, or -1), each summed as (f0 s0 + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5) (with SSE2
-// the two sums are the lanes of one register, f held in three registers across the ancestors)
+// ancestor dof a >= stop of c (returns the first ancestor below stop, or -1), each summed as (f0 s0
+// + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5) (with SSE2 the two sums are the lanes of one register,
+// f held in three registers across the ancestors)
 int rowOfM(const double* f, const double* S, const int* dofParent, int c, int stop, double* M,
            Eigen::Index ld) {
   double* rowC = M + c;       // M(c, a) = rowC[a ld]
@@ -112,9 +112,9 @@ int rowOfM(const double* f, const double* S, const int* dofParent, int c, int st
   int a = c;
   for (; a >= stop; a = dofParent[a]) {
     const double* s = S + 6 * a;
-    const __m128d t = _mm_add_pd(
-        _mm_add_pd(_mm_mul_pd(f0, _mm_loadu_pd(s)), _mm_mul_pd(f1, _mm_loadu_pd(s + 2))),
-        _mm_mul_pd(f2, _mm_loadu_pd(s + 4)));
+    const __m128d t =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(f0, _mm_loadu_pd(s)), _mm_mul_pd(f1, _mm_loadu_pd(s + 2))),
+                   _mm_mul_pd(f2, _mm_loadu_pd(s + 4)));
     const double v = _mm_cvtsd_f64(_mm_add_sd(t, _mm_unpackhi_pd(t, t)));
     rowC[a * ld] = v;
     colC[a] = v;
@@ -157,7 +157,8 @@ int rowOfM(const double* f, const double* S, const int* dofParent, int c, int st
 // (the composite of a free-joint body whose dofs are 0 .. 5 as 10 numbers in world axes about the
 // world origin, its X_WB) => M's 6x6 block of those dofs: the composite in the body frame about its
 // origin, [I_B, [h_B]x; -[h_B]x, m 1] (S = 1)
-[[gnu::noinline]] void freeRootBlock(const double* k, const Transform& X, double* M, Eigen::Index ld) {
+[[gnu::noinline]] void freeRootBlock(const double* k, const Transform& X, double* M,
+                                     Eigen::Index ld) {
   const double mass = k[0];
   const Vector3 h(k[1], k[2], k[3]);
   const Vector3& p = X.p;
@@ -355,7 +356,7 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   }
   // a floating base (body 1 on a free joint at the world: dofs 0 .. 5, S = 1) takes its 6x6 block
   // from its composite and each row below it from one force transform (freeRootBlock, freeRootRow)
-  if (m.nbodies > 1 && m.parent[1] == 0 && m.joints[1].type == JointType::Free) {
+  if (m.nbodies > 1 && m.parent[1] == 0 && m.joints[1].type == JointType::Free && m.idxV[1] == 0) {
     compositesAndM<true>(m, d);
   } else {
     compositesAndM<false>(m, d);

@@ -99,31 +99,116 @@ void applyCompact(const double* k, const double* s, double* f) {
   f[5] = k[0] * v2 - (h0 * w1 - h1 * w0);
 }
 
-// (n force columns F_j (6 each, contiguous), motion s) => out_j = F_j . s. With SSE2 two rows
-// at a time: per row three products of pairs, the two lanes added at the end for both rows in
-// one instruction (the row's sum (f0 s0 + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5)).
-void columnDots(const double* F, const double* s, int n, double* out) {
+// (force f of dof c, S_W, the dof tree) => M(c, a) = M(a, c) = f . S_a for a = c and every
+// ancestor dof a >= stop of c (returns the first ancestor below stop, or -1), each summed as (f0 s0
+// + f2 s2 + f4 s4) + (f1 s1 + f3 s3 + f5 s5) (with SSE2 the two sums are the lanes of one register,
+// f held in three registers across the ancestors)
+int rowOfM(const double* f, const double* S, const int* dofParent, int c, int stop, double* M,
+           Eigen::Index ld) {
+  double* rowC = M + c;       // M(c, a) = rowC[a ld]
+  double* colC = M + c * ld;  // M(a, c) = colC[a]
 #if defined(EIGEN_VECTORIZE_SSE2)
-  const __m128d s0 = _mm_loadu_pd(s), s1 = _mm_loadu_pd(s + 2), s2 = _mm_loadu_pd(s + 4);
-  // (F_j) => the lanes (f0 s0 + f2 s2 + f4 s4, f1 s1 + f3 s3 + f5 s5)
-  const auto lanes = [&](const double* f) {
-    return _mm_add_pd(
-        _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(f), s0), _mm_mul_pd(_mm_loadu_pd(f + 2), s1)),
-        _mm_mul_pd(_mm_loadu_pd(f + 4), s2));
-  };
-  int j = 0;
-  for (; j + 1 < n; j += 2) {
-    const __m128d a = lanes(F + 6 * j), b = lanes(F + 6 * j + 6);
-    _mm_storeu_pd(out + j, _mm_add_pd(_mm_unpacklo_pd(a, b), _mm_unpackhi_pd(a, b)));
-  }
-  if (j < n) {
-    const __m128d a = lanes(F + 6 * j);
-    out[j] = _mm_cvtsd_f64(_mm_add_sd(a, _mm_unpackhi_pd(a, a)));
+  const __m128d f0 = _mm_loadu_pd(f), f1 = _mm_loadu_pd(f + 2), f2 = _mm_loadu_pd(f + 4);
+  int a = c;
+  for (; a >= stop; a = dofParent[a]) {
+    const double* s = S + 6 * a;
+    const __m128d t =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(f0, _mm_loadu_pd(s)), _mm_mul_pd(f1, _mm_loadu_pd(s + 2))),
+                   _mm_mul_pd(f2, _mm_loadu_pd(s + 4)));
+    const double v = _mm_cvtsd_f64(_mm_add_sd(t, _mm_unpackhi_pd(t, t)));
+    rowC[a * ld] = v;
+    colC[a] = v;
   }
 #else
-  const Eigen::Map<const Motion> sm(s);
-  for (int j = 0; j < n; ++j) out[j] = Eigen::Map<const Motion>(F + 6 * j).dot(sm);
+  int a = c;
+  for (; a >= stop; a = dofParent[a]) {
+    const double* s = S + 6 * a;
+    const double v =
+        ((f[0] * s[0] + f[2] * s[2]) + f[4] * s[4]) + ((f[1] * s[1] + f[3] * s[3]) + f[5] * s[5]);
+    rowC[a * ld] = v;
+    colC[a] = v;
+  }
 #endif
+  return a;
+}
+
+// (force f = (n, f) of dof c, in world axes about the world origin; X_WB of a free-joint body
+// whose dofs are 0 .. 5) => M(c, j) = M(j, c) = S_j . f for j = 0 .. 5: with S = 1 in the body
+// frame, f in the body frame about its origin, (R^T (n - p x f), R^T f): one force transform
+// instead of six 6-entry products
+[[gnu::noinline]] void freeRootRow(const double* f, const Transform& X, int c, double* M,
+                                   Eigen::Index ld) {
+  const double* R = X.R.data();  // column-major: R^T's row j is R's column j
+  const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
+  const double t0 = f[0] - (p1 * f[5] - p2 * f[4]);
+  const double t1 = f[1] - (p2 * f[3] - p0 * f[5]);
+  const double t2 = f[2] - (p0 * f[4] - p1 * f[3]);
+  double* row = M + c;       // M(c, j) = row[j ld]
+  double* col = M + c * ld;  // M(j, c) = col[j]
+  for (int j = 0; j < 3; ++j) {
+    const double* r = R + 3 * j;
+    const double nB = r[0] * t0 + r[1] * t1 + r[2] * t2;
+    const double fB = r[0] * f[3] + r[1] * f[4] + r[2] * f[5];
+    row[j * ld] = col[j] = nB;
+    row[(j + 3) * ld] = col[j + 3] = fB;
+  }
+}
+
+// (the composite of a free-joint body whose dofs are 0 .. 5 as 10 numbers in world axes about the
+// world origin, its X_WB) => M's 6x6 block of those dofs: the composite in the body frame about its
+// origin, [I_B, [h_B]x; -[h_B]x, m 1] (S = 1)
+[[gnu::noinline]] void freeRootBlock(const double* k, const Transform& X, double* M,
+                                     Eigen::Index ld) {
+  const double mass = k[0];
+  const Vector3 h(k[1], k[2], k[3]);
+  const Vector3& p = X.p;
+  Matrix3 I;
+  I << k[4], k[5], k[6], k[5], k[7], k[8], k[6], k[8], k[9];
+  // (about the world origin) => about p: I - 2 (p . h) 1 + (p h^T + h p^T) + m (p . p 1 - p p^T)
+  const Matrix3 outer = p * h.transpose();
+  I += outer + outer.transpose() - mass * (p * p.transpose());
+  I.diagonal().array() += mass * p.squaredNorm() - 2.0 * p.dot(h);
+  const Matrix3 IB = X.R.transpose() * I * X.R;
+  const Vector3 hB = X.R.transpose() * (h - mass * p);
+  Matrix3 hx;
+  hx << 0.0, -hB.z(), hB.y(), hB.z(), 0.0, -hB.x(), -hB.y(), hB.x(), 0.0;
+  Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>> B(M, 6, 6, Eigen::OuterStride<>(ld));
+  for (int c = 0; c < 3; ++c) {
+    for (int r = c; r < 3; ++r) B(r, c) = B(c, r) = IB(r, c);  // R^T I R's lower triangle, mirrored
+  }
+  B.topRightCorner<3, 3>() = hx;
+  B.bottomLeftCorner<3, 3>() = hx.transpose();
+  B.bottomRightCorner<3, 3>() = mass * Matrix3::Identity();
+}
+
+// (X_WB, S_W, each body's 10 numbers in IC_W; FreeRoot: body 1 on a free joint at the world) =>
+// M, IC_W the composites. From the leaves (body i's composite complete when reached): per dof c of
+// body i F_c = IC_i S_c, then M(c, a) = M(a, c) = F_c . S_a for a = c and every ancestor dof a of c
+// (Featherstone, RBDA eq. 6.21, world frame: F needs no transform; S_a of every dof is known from
+// the placement); then IC_parent += IC_i. Entries between dofs on different branches are never
+// written (zero from Data).
+template <bool FreeRoot>
+void compositesAndM(const Model& m, Data& d) {
+  const double* S = d.S_W.data();
+  double* M = d.M.data();
+  const Eigen::Index ld = d.M.outerStride();
+  const int* dofParent = m.dofParent.data();
+  constexpr int stop = FreeRoot ? 6 : 0;
+  for (int i = m.nbodies - 1; i >= 1; --i) {
+    const double* k = d.IC_W[i].data();
+    if (FreeRoot && i == 1) {
+      freeRootBlock(k, d.X_WB[1], M, ld);
+      return;
+    }
+    const int iv = m.idxV[i], end = iv + m.jointNv[i];
+    for (int c = iv; c < end; ++c) {
+      double f[6];
+      applyCompact(k, S + 6 * c, f);
+      const int a = rowOfM(f, S, dofParent, c, stop, M, ld);
+      if (FreeRoot && a >= 0) freeRootRow(f, d.X_WB[1], c, M, ld);
+    }
+    if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
+  }
 }
 
 // (q) => X_WB, S_W of body i (the shortcuts of RNEA and ABA for coordinate-axis joints, equal in
@@ -135,6 +220,88 @@ void placeWithSubspace(const Model& m, Data& d, int i, const Eigen::VectorXd& q)
   } else {
     for (int k = 0; k < m.jointNv[i]; ++k)
       d.S_W.col(m.idxV[i] + k) = d.X_WB[i].actMotion(d.S[i].col(k));
+  }
+}
+
+// (X_WB of the parent P, the joint frame's origin o in P, axis K, cos c and sin s of a revolute
+// joint's angle) => X_WB of the body and its S_W column (R_WB's column K; p x it): the doubles of
+// placeBody and worldSubspaceColumn (R_PB(K, K) as the joint's formula rounds it, o + 0 as X_PB.p,
+// each row's terms in Eigen's order), without writing X_PB
+template <int K>
+void placeRevoluteWorld(const Transform& P, const Vector3& o, double c, double s, Transform& X,
+                        double* sw) {
+  constexpr int a = (K + 1) % 3;
+  constexpr int b = (K + 2) % 3;
+  const double* pr = P.R.data();
+  double* r = X.R.data();
+  const double o0 = o[0] + 0.0, o1 = o[1] + 0.0, o2 = o[2] + 0.0;
+  for (int row = 0; row < 3; ++row)
+    X.p[row] = P.p[row] + ((pr[row] * o0 + pr[row + 3] * o1) + pr[row + 6] * o2);
+  const double kk = c + (1.0 - c), sPos = 0.0 + s, sNeg = 0.0 - s;
+  for (int row = 0; row < 3; ++row) {
+    r[row + 3 * K] = pr[row + 3 * K] * kk;
+    r[row + 3 * a] = pr[row + 3 * a] * c + pr[row + 3 * b] * sPos;
+    r[row + 3 * b] = pr[row + 3 * a] * sNeg + pr[row + 3 * b] * c;
+  }
+  const double w0 = r[3 * K], w1 = r[3 * K + 1], w2 = r[3 * K + 2];
+  const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
+  sw[0] = w0;
+  sw[1] = w1;
+  sw[2] = w2;
+  sw[3] = p1 * w2 - p2 * w1;
+  sw[4] = p2 * w0 - p0 * w2;
+  sw[5] = p0 * w1 - p1 * w0;
+}
+
+// (q, body i on a free joint: S = 1) => X_WB of body i (placeBody) and its six columns of S_W,
+// [R 0; p x R R] column by column (not X_WB S's products)
+[[gnu::noinline]] void placeFree(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
+  placeBody(m, d, i, q);
+  const Transform& X = d.X_WB[i];
+  double* sw = d.S_W.data() + 6 * m.idxV[i];
+  for (int c = 0; c < 3; ++c, sw += 6) {
+    const Eigen::Map<const Vector3> r(X.R.data() + 3 * c);
+    Eigen::Map<Motion> rot(sw), lin(sw + 18);  // the columns of dofs c and c + 3
+    rot << r, X.p.cross(r);
+    lin << Vector3::Zero(), r;
+  }
+}
+
+// (q) => X_WB of body i and its columns of S_W: coordinate-axis revolute and prismatic joints in
+// translated frames directly (X_PB not written), any other joint by placeBody
+void placeForCrba(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
+  const int k = m.jointAxis[i];
+  if (k < 0 || m.placementRotated[i] != 0) {
+    if (m.joints[i].type != JointType::Free) {
+      placeWithSubspace(m, d, i, q);
+      return;
+    }
+    placeFree(m, d, i, q);
+    return;
+  }
+  const Transform& P = d.X_WB[m.parent[i]];
+  Transform& X = d.X_WB[i];
+  double* sw = d.S_W.data() + 6 * m.idxV[i];
+  const double qi = q[m.idxQ[i]];
+  if (m.joints[i].type == JointType::Revolute) {
+    double s = 0.0, c = 0.0;
+    sinCos(qi, s, c);
+    if (k == 0) {
+      placeRevoluteWorld<0>(P, m.X_PJ[i].p, c, s, X, sw);
+    } else if (k == 1) {
+      placeRevoluteWorld<1>(P, m.X_PJ[i].p, c, s, X, sw);
+    } else {
+      placeRevoluteWorld<2>(P, m.X_PJ[i].p, c, s, X, sw);
+    }
+    return;
+  }
+  // (prismatic) => R_WB = R_WP, p_WB = p_WP + R_WP (o + e_K q), S_W = (0, R_WB's column K)
+  const Vector3 t = m.X_PJ[i].p + m.joints[i].axis * qi;
+  X.p = P.p + P.R * t;
+  X.R = P.R;
+  for (int r = 0; r < 3; ++r) {
+    sw[r] = 0.0;
+    sw[3 + r] = X.R(r, k);
   }
 }
 
@@ -183,32 +350,16 @@ YARDSIM_FLATTEN const Eigen::MatrixXd& crba(const Model& m, Data& d, const Eigen
   // (q) => X_WB, S_W and each body's inertia (and added point mass) as 10 numbers in world axes
   // about the world origin
   for (int i = 1; i < m.nbodies; ++i) {
-    placeWithSubspace(m, d, i, q);
+    placeForCrba(m, d, i, q);
     worldCompact(m.inertias[i], m.inertiaDiagonal[i] != 0, d.X_WB[i], d.IC_W[i].data());
     if (d.hasAddedMass[i]) addPointMass(d.addedMass[i](3, 3), d.X_WB[i].p, d.IC_W[i].data());
   }
-  // (bodies from the leaves: body i's composite complete, and F of every dof below it) => per
-  // dof k of body i F_k = IC_i S_k, then M(j, k) = F_j . S_k for the dofs j of k's subtree (k
-  // itself included; Featherstone, RBDA eq. 6.21, world frame: F needs no transform) and
-  // M(k, j) = M(j, k); then IC_parent += IC_i. Entries between dofs on different branches are
-  // never written (zero from Data).
-  const double* F = d.Fcrb.data();
-  const double* S = d.S_W.data();
-  double* M = d.M.data();
-  const Eigen::Index ld = d.M.outerStride();
-  for (int i = m.nbodies - 1; i >= 1; --i) {
-    const double* k = d.IC_W[i].data();
-    const int iv = m.idxV[i];
-    for (int c = iv; c < iv + m.jointNv[i]; ++c)
-      applyCompact(k, d.S_W.col(c).data(), d.Fcrb.col(c).data());
-    for (int c = iv; c < iv + m.jointNv[i]; ++c) {
-      const int ns = m.dofSubtree[c];
-      double* col = M + c * ld + c;  // M(c.., c)
-      columnDots(F + 6 * c, S + 6 * c, ns, col);
-      double* row = M + (c + 1) * ld + c;  // M(c, c + 1 ..): ld apart
-      for (int j = 1; j < ns; ++j, row += ld) *row = col[j];
-    }
-    if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
+  // a floating base (body 1 on a free joint at the world: dofs 0 .. 5, S = 1) takes its 6x6 block
+  // from its composite and each row below it from one force transform (freeRootBlock, freeRootRow)
+  if (m.nbodies > 1 && m.parent[1] == 0 && m.joints[1].type == JointType::Free && m.idxV[1] == 0) {
+    compositesAndM<true>(m, d);
+  } else {
+    compositesAndM<false>(m, d);
   }
   return d.M;
 }

@@ -36,31 +36,46 @@ bool denseChainFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, Eigen::Ref<Eig
   return llt.info() == Eigen::Success;
 }
 
-// (NS subtree rows below row i, L(sub i, i) = li, A(., i) = ai, 1 / L_ii) => L(i, j) = out[j ld]
-// for every ancestor j of i, found by walking the parents: (A_ji - L(sub i, i) . L(sub i, j)) /
-// L_ii, the terms subtracted in the order of k; NS fixed at compile time (the loop unrolled)
+// (pivot p = A_ii - |L(sub i, i)|^2) => L_ii = sqrt(p) at *diag, returns 1 / L_ii: the root and
+// the reciprocal of p side by side (sqrt(p) / p), not one after the other
+inline double pivotRoot(double p, double* diag) {
+  const double lii = std::sqrt(p);
+  *diag = lii;
+  return lii * (1.0 / p);
+}
+
+// (NS subtree rows below row i, L(sub i, i) = li, A(., i) = ai) => L_ii = out[i ld] and L(i, j) =
+// out[j ld] for every ancestor j of i, found by walking the parents: L_ii = sqrt(A_ii -
+// |L(sub i, i)|^2), L(i, j) = (A_ji - L(sub i, i) . L(sub i, j)) / L_ii; NS fixed at compile time
+// (the loops unrolled), the terms subtracted from k = NS - 1 down to 0: L(i + 1, i), written by
+// the row just before, enters last (the rows' chain of dependences is one product and one
+// subtraction a row shorter per term). Returns whether the pivot is positive.
 template <int NS>
-void ancestorRowFixed(std::span<const int> parent, int i, const double* li, const double* ai,
-                      double inv, double* out, Eigen::Index ld) {
+bool rowFixed(std::span<const int> parent, int i, const double* li, const double* ai, double* out,
+              Eigen::Index ld) {
   double x[NS > 0 ? NS : 1];
   for (int k = 0; k < NS; ++k) x[k] = li[k];
+  double pivot = ai[i];
+  for (int k = NS - 1; k >= 0; --k) pivot -= x[k] * x[k];
+  const double inv = pivotRoot(pivot, out + i * ld);
   for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;
        j = parent[static_cast<std::size_t>(j)]) {
     const double* lj = out + j * ld + 1;  // L(sub i, j)
     double s = ai[j];
-    for (int k = 0; k < NS; ++k) s -= x[k] * lj[k];
+    for (int k = NS - 1; k >= 0; --k) s -= x[k] * lj[k];
     out[j * ld] = s * inv;
   }
+  return pivot > 0.0;
 }
 
 // Eigen's vector register of at most 4 doubles (2 lanes with SSE2, 4 with AVX and AVX-512: its
 // 8-lane predux trips GCC 12's -Wuninitialized in the intrinsics' header) for the long dot products
 using Packet = Eigen::internal::find_best_packet<double, 4>::type;
 constexpr int kLanes = Eigen::internal::unpacket_traits<Packet>::size;
-// From this many subtree rows a row's dot products run in vector registers (ancestorRowLong);
-// below it, one unrolled scalar loop per count of rows (ancestorRowFixed), summed term by term
+// From this many subtree rows a row's dot products run in vector registers (rowLong);
+// below it, one unrolled scalar loop per count of rows (rowFixed), summed term by term
 constexpr int kLongRow = 8;
-// ancestorRowLong takes up to this many consecutive ancestor columns per pass over L(sub i, i)
+// rowLong takes up to this many consecutive ancestor columns per pass over L(sub i, i)
 // (two: four spilled registers in GCC 12's code and cost more instructions)
 constexpr int kMaxRun = 2;
 
@@ -87,10 +102,15 @@ void dotColumns(const double* x, const double* y0, Eigen::Index ld, int n, doubl
   }
 }
 
-// (as ancestorRowFixed, any ns) => row i of L; where ancestors run (each the parent of the next:
-// columns ld apart) two ancestor columns share each load of L(sub i, i)
-void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
-                     double inv, double* out, Eigen::Index ld) {
+// (as rowFixed, any ns) => row i of L, the dot products in vector registers (dotColumns); where
+// ancestors run (each the parent of the next: columns ld apart) two ancestor columns share each
+// load of L(sub i, i)
+bool rowLong(int ns, std::span<const int> parent, int i, const double* li, const double* ai,
+             double* out, Eigen::Index ld) {
+  double sq = 0.0;
+  dotColumns<1>(li, li, 0, ns, &sq);
+  const double pivot = ai[i] - sq;
+  const double inv = pivotRoot(pivot, out + i * ld);
   for (int j = parent[static_cast<std::size_t>(i)]; j >= 0;) {
     // (j) => the run j, j - 1, ..., j - len + 1 (len <= kMaxRun) and the ancestor after it
     int len = 1, next = parent[static_cast<std::size_t>(j)];
@@ -108,16 +128,18 @@ void ancestorRowLong(int ns, std::span<const int> parent, int i, const double* l
     for (int c = 0; c < len; ++c) out[(j - c) * ld] = (ai[j - c] - s[c]) * inv;
     j = next;
   }
+  return pivot > 0.0;
 }
 
-// (ns subtree rows, as ancestorRowFixed) => row i of L left of the diagonal: ancestorRowFixed<ns>
-// for ns in NS... (one comparison each, inlined), ancestorRowLong from kLongRow rows
+// (ns subtree rows, as rowFixed) => row i of L: rowFixed<ns> for ns in NS... (one comparison
+// each, inlined), rowLong from kLongRow rows; whether the pivot is positive
 template <int... NS>
-void ancestorRow(std::integer_sequence<int, NS...>, int ns, std::span<const int> parent, int i,
-                 const double* li, const double* ai, double inv, double* out, Eigen::Index ld) {
+bool row(std::integer_sequence<int, NS...>, int ns, std::span<const int> parent, int i,
+         const double* li, const double* ai, double* out, Eigen::Index ld) {
+  bool positive = false;
   const bool fixed =
-      ((ns == NS && (ancestorRowFixed<NS>(parent, i, li, ai, inv, out, ld), true)) || ...);
-  if (!fixed) ancestorRowLong(ns, parent, i, li, ai, inv, out, ld);
+      ((ns == NS && (positive = rowFixed<NS>(parent, i, li, ai, out, ld), true)) || ...);
+  return fixed ? positive : rowLong(ns, parent, i, li, ai, out, ld);
 }
 
 // (parent) => whether dof i's parent is i - 1 for every i (one chain: every entry non-zero)
@@ -147,19 +169,8 @@ bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<co
     const int ns = subtree[static_cast<std::size_t>(i)] - 1;
     const double* li = l + i * ld + i + 1;  // L(sub i, i)
     const double* ai = a + i * lda;         // A(., i)
-    double pivot = ai[i];
-    if (ns < kLongRow) {
-      for (int k = 0; k < ns; ++k) pivot -= li[k] * li[k];
-    } else {
-      double sq = 0.0;
-      dotColumns<1>(li, li, 0, ns, &sq);
-      pivot -= sq;
-    }
-    if (!(pivot > 0.0)) ok = false;
-    const double lii = std::sqrt(pivot);
-    l[i * ld + i] = lii;
-    const double inv = 1.0 / lii;
-    ancestorRow(std::make_integer_sequence<int, kLongRow>{}, ns, parent, i, li, ai, inv, l + i, ld);
+    if (!row(std::make_integer_sequence<int, kLongRow>{}, ns, parent, i, li, ai, l + i, ld))
+      ok = false;
   }
   return ok;
 }

@@ -10,6 +10,7 @@
 #include "dynamics/configuration.hpp"
 #include "dynamics/crba.hpp"
 #include "dynamics/energy.hpp"
+#include "dynamics/kinematics.hpp"
 #include "dynamics/rnea.hpp"
 #include "dynamics/tree_cholesky.hpp"
 #include "test_models.hpp"
@@ -70,6 +71,16 @@ namespace {
 void checkColumns(const Model& m, Data& d, Data& other, const Eigen::VectorXd& q,
                   std::mt19937& rng) {
   const Eigen::MatrixXd M = crba(m, d, q);
+  // crba's other outputs, X_WB and S_W, against forward kinematics and X_WB S column by column
+  forwardKinematics(m, other, q);
+  for (int i = 1; i < m.nbodies; ++i) {
+    CHECK(relativeError(d.X_WB[i].R, other.X_WB[i].R) < 1e-14);
+    CHECK(relativeError(d.X_WB[i].p, other.X_WB[i].p) < 1e-14);
+    for (int k = 0; k < m.jointNv[i]; ++k) {
+      const Motion s = other.X_WB[i].actMotion(other.S[i].col(k));
+      CHECK(relativeError(d.S_W.col(m.idxV[i] + k), s) < 1e-14);
+    }
+  }
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m.nv);
   for (int k = 0; k < m.nv; ++k) {
     Eigen::VectorXd e = zero;
@@ -87,11 +98,31 @@ void checkColumns(const Model& m, Data& d, Data& other, const Eigen::VectorXd& q
   CHECK((x - llt.solve(b)).norm() <= 1e-9 * x.norm());
 }
 
+// (rng) => three roots: a floating base with a branch (body 1: crba's floating-base form), a
+// fixed-base chain and a second floating body with two children beside it (their dofs' rows end
+// at the world, not at body 1's)
+Model threeRoots(std::mt19937& rng) {
+  ModelBuilder b;
+  const auto body = [&](const std::string& name, const std::string& parent, const Joint& j) {
+    b.addBody(name, parent, j, Transform::translation(randomVector(rng)), randomInertia(rng));
+  };
+  body("base", "world", Joint::free());
+  body("arm", "base", Joint::revolute(Vector3::UnitX()));
+  body("slide", "arm", Joint::prismatic(Vector3::UnitY()));
+  body("post", "world", Joint::revolute(Vector3::UnitZ()));
+  body("boom", "post", Joint::revolute(Vector3::UnitY()));
+  body("float", "world", Joint::free());
+  body("hook", "float", Joint::revolute(Vector3::UnitX()));
+  body("trolley", "float", Joint::prismatic(Vector3::UnitZ()));
+  return b.build();
+}
+
 }  // namespace
 
 TEST_CASE("CRBA's compact composites against RNEA and ABA column by column, and the tree solve") {
   // chains and floating-base trees of revolute, prismatic and free joints (the kernels' axis and
-  // diagonal-inertia shortcuts and the general path): M from 10-number composites; then each
+  // diagonal-inertia shortcuts and the general path; a floating base beside other roots): M from
+  // 10-number composites, X_WB and S_W; then each
   // again with point masses at every third body origin written as added mass (as
   // mechanics::followMass writes a winched rope's node masses), which the 10 numbers carry too
   std::mt19937 rng(2811);
@@ -100,7 +131,8 @@ TEST_CASE("CRBA's compact composites against RNEA and ABA column by column, and 
                                randomAxisTree(rng, 9, false, true),
                                randomAxisTree(rng, 33, false, false),
                                randomAxisTree(rng, 70, false, true),
-                               randomTree(rng, 20)};
+                               randomTree(rng, 20),
+                               threeRoots(rng)};
   for (Model& m : models) {
     m.gravity.setZero();
     for (bool pointMasses : {false, true}) {

@@ -64,7 +64,7 @@ void ChromeTraceSink::step(Time start, Time e, const AtomicBase& m) {
   if (!first_) p = put(p, ",\n");
   first_ = false;
   p = put(p, head_);
-  p = writeJsonNumber(p, start * kMicro);
+  p = writeJsonMicroseconds(p, start);  // start * kMicro
   p = put(p, kCat);
   p = writeDuration(p, e);
   *p++ = '}';

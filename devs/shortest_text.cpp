@@ -71,16 +71,14 @@ void writeDigits(char* p, std::uint64_t n, int len) {
   if (len == 1) *--q = static_cast<char>('0' + m);
 }
 
-// (0 < a < 1e15, finite, the sign already written at p) => a's shortest round-trip text in
-// std::to_chars' form. Dragonbox (fmt's) gives the shortest digits m and exponent e with a = m
-// 10^e read back, the nearest to a of that length, ties to even: the digits the standard asks of
-// std::to_chars. Fixed when no longer than scientific; whole numbers fixed are m and e zeros,
-// which is a's exact value below 2^53 (its rounding interval holds one integer)
-char* writeDragonbox(char* p, double a) {
-  const auto d = fmt::detail::dragonbox::to_decimal(a);
-  const std::uint64_t m = d.significand;
+}  // namespace
+
+// Dragonbox (fmt's) gives a's shortest digits m and exponent e with a = m 10^e read back, the
+// nearest to a of that length, ties to even: the digits the standard asks of std::to_chars. Fixed
+// when no longer than scientific; whole numbers fixed are m and e zeros, which is a's exact value
+// below 2^53 (its rounding interval holds one integer)
+char* writeDecimal(char* p, std::uint64_t m, int e) {
   const int len = digitCount(m);
-  const int e = d.exponent;
   const int sci = e + len - 1;  // the scientific exponent
   const int sciAbs = sci < 0 ? -sci : sci;
   const int sciLength = len + (len > 1 ? 1 : 0) + 2 + (sciAbs >= 100 ? 3 : 2);
@@ -119,18 +117,27 @@ char* writeDragonbox(char* p, double a) {
   std::memcpy(p, kPairs + 2 * (sciAbs % 100), 2);
   return p + 2;
 }
-}  // namespace
 
-char* writeShortest(char* buf, double value) {
+char* writeShortest(char* buf, double value, ShortestDecimal& decimal) {
   // (finite non-zero value below 1e15) => Dragonbox; zero, 1e15 and above, nan and inf =>
   // std::to_chars
+  decimal = {};
   const double a = std::fabs(value);
   if (a > 0.0 && a < 1e15) {
     char* p = buf;
-    if (std::signbit(value)) *p++ = '-';
-    return writeDragonbox(p, a);
+    const auto d = fmt::detail::dragonbox::to_decimal(a);
+    if (std::signbit(value))
+      *p++ = '-';
+    else
+      decimal = {d.significand, d.exponent};
+    return writeDecimal(p, d.significand, d.exponent);
   }
   return std::to_chars(buf, buf + kShortestTextSize, value).ptr;
+}
+
+char* writeShortest(char* buf, double value) {
+  ShortestDecimal unused;
+  return writeShortest(buf, value, unused);
 }
 
 }  // namespace yardsim::devs

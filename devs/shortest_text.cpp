@@ -118,26 +118,31 @@ char* writeDecimal(char* p, std::uint64_t m, int e) {
   return p + 2;
 }
 
-char* writeShortest(char* buf, double value, ShortestDecimal& decimal) {
+namespace {
+// (value, where its decimal goes or null) => writeShortest's text; inlined into both forms, so
+// that the time series' numbers do not keep a decimal they never read
+[[gnu::always_inline]] inline char* shortest(char* buf, double value, ShortestDecimal* decimal) {
   // (finite non-zero value below 1e15) => Dragonbox; zero, 1e15 and above, nan and inf =>
   // std::to_chars
-  decimal = {};
+  if (decimal) *decimal = {};
   const double a = std::fabs(value);
   if (a > 0.0 && a < 1e15) {
     char* p = buf;
     const auto d = fmt::detail::dragonbox::to_decimal(a);
     if (std::signbit(value))
       *p++ = '-';
-    else
-      decimal = {d.significand, d.exponent};
+    else if (decimal)
+      *decimal = {d.significand, d.exponent};
     return writeDecimal(p, d.significand, d.exponent);
   }
   return std::to_chars(buf, buf + kShortestTextSize, value).ptr;
 }
+}  // namespace
 
-char* writeShortest(char* buf, double value) {
-  ShortestDecimal unused;
-  return writeShortest(buf, value, unused);
+char* writeShortest(char* buf, double value, ShortestDecimal& decimal) {
+  return shortest(buf, value, &decimal);
 }
+
+char* writeShortest(char* buf, double value) { return shortest(buf, value, nullptr); }
 
 }  // namespace yardsim::devs

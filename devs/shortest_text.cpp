@@ -143,6 +143,8 @@ char* writeShortest(char* buf, double value, ShortestDecimal& decimal) {
   return shortest(buf, value, &decimal);
 }
 
-char* writeShortest(char* buf, double value) { return shortest(buf, value, nullptr); }
+char* writeShortest(char* buf, double value) {
+  return shortest(buf, value, nullptr);
+}
 
 }  // namespace yardsim::devs

@@ -100,8 +100,8 @@ TEST_CASE("writeJsonMicroseconds is the product's shortest text, the seconds' te
   // std::to_chars' of seconds * 1e6 (the double product), whether the product is the seconds'
   // digits six places on or one of their neighbours
   yardsim::test::SplitMix64 rng{53};
-  const double steps[] = {1e-6, 2e-6, 1e-5, 1e-4, 5e-4, 0.001, 0.002, 0.0025, 0.01, 0.05, 0.1,
-                          0.25, 1.0};
+  const double steps[] = {1e-6,   2e-6, 1e-5, 1e-4, 5e-4, 0.001, 0.002,
+                          0.0025, 0.01, 0.05, 0.1,  0.25, 1.0};
   std::vector<double> times;
   for (double h : steps)
     for (int i = 0; i < 400; ++i) {

@@ -29,11 +29,21 @@ std::string reference(double t, std::uint64_t steps) {
 
 TEST_CASE("a DTSS state's head is its time's and step count's text, after what came before") {
   const double inf = std::numeric_limits<double>::infinity();
-  const std::vector<double> times = {0.0, -0.0, 0.002, 29.998, 0.30000000000000004, 1e-7,
-                                     123456789.125, 1e300, -2.5, 5e-324, inf, -inf,
+  const std::vector<double> times = {0.0,
+                                     -0.0,
+                                     0.002,
+                                     29.998,
+                                     0.30000000000000004,
+                                     1e-7,
+                                     123456789.125,
+                                     1e300,
+                                     -2.5,
+                                     5e-324,
+                                     inf,
+                                     -inf,
                                      std::numeric_limits<double>::quiet_NaN()};
-  const std::vector<std::uint64_t> counts = {0, 1, 9, 10, 99, 100, 14999, 1000000007,
-                                             std::numeric_limits<std::uint64_t>::max()};
+  const std::vector<std::uint64_t> counts = {
+      0, 1, 9, 10, 99, 100, 14999, 1000000007, std::numeric_limits<std::uint64_t>::max()};
   // (every pair, twice: the second round's times come from the number texts kept) => the head
   // appended to a string that already holds text
   for (int round = 0; round < 2; ++round)

@@ -30,24 +30,6 @@ struct NumberCache {
 
 static_assert(kJsonNumberSize >= kShortestTextSize);
 
-// 10^0 ... 10^15 (writeShortest's own conversions stop at 1e15, below 2^53)
-constexpr std::uint64_t kPow10[] = {1ULL,
-                                    10ULL,
-                                    100ULL,
-                                    1000ULL,
-                                    10000ULL,
-                                    100000ULL,
-                                    1000000ULL,
-                                    10000000ULL,
-                                    100000000ULL,
-                                    1000000000ULL,
-                                    10000000000ULL,
-                                    100000000000ULL,
-                                    1000000000000ULL,
-                                    10000000000000ULL,
-                                    100000000000000ULL,
-                                    1000000000000000ULL};
-
 }  // namespace
 
 char* writeJsonNumber(char* buf, double value) {
@@ -94,8 +76,8 @@ char* writeJsonMicroseconds(char* buf, double seconds) {
       m /= 10;
       ++e;
     }
-    if (e < 0 || e > 15 || m >= kPow10[15 - e]) break;
-    const std::uint64_t whole = m * kPow10[e];  // < 1e15 < 2^53: exact as a double
+    if (e < 0 || e > 15 || m >= kPowersOfTen[15 - e]) break;
+    const std::uint64_t whole = m * kPowersOfTen[e];  // < 1e15 < 2^53: exact as a double
     if (static_cast<double>(whole) != us) break;
     return writeDecimal(buf, m, e);
   }

@@ -11,27 +11,6 @@
 namespace yardsim::devs {
 
 namespace {
-// 10^0 ... 10^19, the powers below 2^64
-constexpr std::uint64_t kPow10Int[] = {1ULL,
-                                       10ULL,
-                                       100ULL,
-                                       1000ULL,
-                                       10000ULL,
-                                       100000ULL,
-                                       1000000ULL,
-                                       10000000ULL,
-                                       100000000ULL,
-                                       1000000000ULL,
-                                       10000000000ULL,
-                                       100000000000ULL,
-                                       1000000000000ULL,
-                                       10000000000000ULL,
-                                       100000000000000ULL,
-                                       1000000000000000ULL,
-                                       10000000000000000ULL,
-                                       100000000000000000ULL,
-                                       1000000000000000000ULL,
-                                       10000000000000000000ULL};
 // "00" "01" ... "99": two digits at once
 constexpr char kPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -42,7 +21,7 @@ constexpr char kPairs[] =
 int digitCount(std::uint64_t n) {
   // floor(log10(2^bits)): the count or one less
   const int guess = (static_cast<int>(std::bit_width(n)) * 1233) >> 12;
-  return guess + (n >= kPow10Int[guess] ? 1 : 0);
+  return guess + (n >= kPowersOfTen[guess] ? 1 : 0);
 }
 
 // (n < 10^8) => its eight digits, leading zeros included, at p[0..8)
@@ -71,13 +50,12 @@ void writeDigits(char* p, std::uint64_t n, int len) {
   if (len == 1) *--q = static_cast<char>('0' + m);
 }
 
-}  // namespace
-
 // Dragonbox (fmt's) gives a's shortest digits m and exponent e with a = m 10^e read back, the
 // nearest to a of that length, ties to even: the digits the standard asks of std::to_chars. Fixed
 // when no longer than scientific; whole numbers fixed are m and e zeros, which is a's exact value
-// below 2^53 (its rounding interval holds one integer)
-char* writeDecimal(char* p, std::uint64_t m, int e) {
+// below 2^53 (its rounding interval holds one integer). Inlined into writeShortest's conversions
+// (one call a number) and writeDecimal.
+[[gnu::always_inline]] inline char* decimalText(char* p, std::uint64_t m, int e) {
   const int len = digitCount(m);
   const int sci = e + len - 1;  // the scientific exponent
   const int sciAbs = sci < 0 ? -sci : sci;
@@ -118,6 +96,12 @@ char* writeDecimal(char* p, std::uint64_t m, int e) {
   return p + 2;
 }
 
+}  // namespace
+
+char* writeDecimal(char* p, std::uint64_t m, int e) {
+  return decimalText(p, m, e);
+}
+
 namespace {
 // (value, where its decimal goes or null) => writeShortest's text; inlined into both forms, so
 // that the time series' numbers do not keep a decimal they never read
@@ -133,7 +117,7 @@ namespace {
       *p++ = '-';
     else if (decimal)
       *decimal = {d.significand, d.exponent};
-    return writeDecimal(p, d.significand, d.exponent);
+    return decimalText(p, d.significand, d.exponent);
   }
   return std::to_chars(buf, buf + kShortestTextSize, value).ptr;
 }

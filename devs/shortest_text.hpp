@@ -6,6 +6,28 @@
 
 namespace yardsim::devs {
 
+// 10^0 ... 10^19, the powers of ten below 2^64
+inline constexpr std::uint64_t kPowersOfTen[] = {1ULL,
+                                                 10ULL,
+                                                 100ULL,
+                                                 1000ULL,
+                                                 10000ULL,
+                                                 100000ULL,
+                                                 1000000ULL,
+                                                 10000000ULL,
+                                                 100000000ULL,
+                                                 1000000000ULL,
+                                                 10000000000ULL,
+                                                 100000000000ULL,
+                                                 1000000000000ULL,
+                                                 10000000000000ULL,
+                                                 100000000000000ULL,
+                                                 1000000000000000ULL,
+                                                 10000000000000000ULL,
+                                                 100000000000000000ULL,
+                                                 1000000000000000000ULL,
+                                                 10000000000000000000ULL};
+
 // Longest text writeShortest writes ("-2.2250738585072014e-308"), with room to spare.
 inline constexpr std::size_t kShortestTextSize = 32;
 

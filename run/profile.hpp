@@ -63,18 +63,17 @@ class TimedListener final : public devs::Listener {
   /// (sinks, where their seconds go) => the time-stamp counter where it is invariant, else
   /// steady_clock
   TimedListener(std::vector<devs::Listener*> inner, double& seconds)
-      : TimedListener(timeStampTicksInvariant()
-                          ? TimedListener(std::move(inner), seconds, timeStampTicks,
-                                          steadyNanoseconds)
-                          : TimedListener(std::move(inner), seconds, steadyNanoseconds)) {}
+      : TimedListener(
+            timeStampTicksInvariant()
+                ? TimedListener(std::move(inner), seconds, timeStampTicks, steadyNanoseconds)
+                : TimedListener(std::move(inner), seconds, steadyNanoseconds)) {}
   /// (sinks, seconds, a clock in nanoseconds: tests give one of their own) => booked at once
   TimedListener(std::vector<devs::Listener*> inner, double& seconds, Clock nanoseconds)
       : inner_(std::move(inner)), seconds_(seconds), clock_(nanoseconds) {}
   /// (sinks, seconds, a tick counter, a clock in nanoseconds) => the hooks timed in ticks, booked
   /// in seconds at every run call's end and when the listener goes, at the rate the two clocks
   /// show from the listener's making to then
-  TimedListener(std::vector<devs::Listener*> inner, double& seconds, Clock ticks,
-                Clock nanoseconds)
+  TimedListener(std::vector<devs::Listener*> inner, double& seconds, Clock ticks, Clock nanoseconds)
       : inner_(std::move(inner)),
         seconds_(seconds),
         clock_(ticks),

@@ -24,15 +24,20 @@ std::string reference(double v) {
   return {buf, std::to_chars(buf, buf + sizeof buf, v).ptr};
 }
 
-// (value) => writeJsonNumber's text, from a buffer of exactly kJsonNumberSize chars followed by a
+// (a writer, value) => its text, from a buffer of exactly kJsonNumberSize chars followed by a
 // guard that must stay untouched (reported when not)
-std::string written(double v) {
+std::string guarded(char* (*write)(char*, double), double v) {
   char buf[kJsonNumberSize + 8];
   std::memset(buf, '#', sizeof buf);
-  char* end = writeJsonNumber(buf, v);
+  char* end = write(buf, v);
   for (std::size_t i = kJsonNumberSize; i < sizeof buf; ++i)
     if (buf[i] != '#') FAIL("written past the buffer for " << v);
   return {buf, end};
+}
+
+// (value) => writeJsonNumber's text
+std::string written(double v) {
+  return guarded(writeJsonNumber, v);
 }
 }  // namespace
 
@@ -80,19 +85,6 @@ TEST_CASE("writeJsonNumber on random doubles, new and repeated, is std::to_chars
   }
 }
 
-namespace {
-// (seconds) => writeJsonMicroseconds' text, from a buffer of exactly kJsonNumberSize chars
-// followed by a guard that must stay untouched (reported when not)
-std::string writtenMicroseconds(double s) {
-  char buf[kJsonNumberSize + 8];
-  std::memset(buf, '#', sizeof buf);
-  char* end = writeJsonMicroseconds(buf, s);
-  for (std::size_t i = kJsonNumberSize; i < sizeof buf; ++i)
-    if (buf[i] != '#') FAIL("written past the buffer for " << s);
-  return {buf, end};
-}
-}  // namespace
-
 TEST_CASE("writeJsonMicroseconds is the product's shortest text, the seconds' text kept or not") {
   // (times on grids of every step from 1 us to 1 s, both signs, step counts up to 10^9, random
   // bits, the 1e15 us and 2^53 ends and their neighbours) => each written as a trace does: the
@@ -118,7 +110,7 @@ TEST_CASE("writeJsonMicroseconds is the product's shortest text, the seconds' te
   for (std::size_t i = 0; i < times.size(); ++i) {
     const double s = times[i];
     if (i % 4 != 3) written(s);  // (three in four) => the seconds' text written first, kept
-    const std::string a = writtenMicroseconds(s), b = reference(s * 1e6);
+    const std::string a = guarded(writeJsonMicroseconds, s), b = reference(s * 1e6);
     if (a != b) FAIL(std::hexfloat << s << ": " << a << " against " << b);
     if (s > 0.0 && b.find_first_of(".e") == std::string::npos) ++whole;
   }

@@ -127,7 +127,9 @@ TEST_CASE("a transition hook that no state hook follows is counted up to the nex
 
 namespace {
 // A tick counter of the test's own: three ticks a nanosecond of the fake clock, from an offset
-std::int64_t fakeTicks() { return 3 * gNow + 12'345; }
+std::int64_t fakeTicks() {
+  return 3 * gNow + 12'345;
+}
 }  // namespace
 
 TEST_CASE(

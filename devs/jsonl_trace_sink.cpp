@@ -47,8 +47,9 @@ void JsonlTraceSink::write(const TraceRecord& r) {
   if (!r.port.empty()) appendJsonString(portJson_, r.port);
   setSequence(r.seq);
   // (record) => its line written straight into the stream's chunk: room for the longest line
-  // first ({"t":,"seq":"",",,"port":,"value":}\n: 36 chars, the number's kJsonNumberSize and the
-  // sequence number's 20 digits copied whole), then the pieces
+  // first: the fixed pieces {"t": ,"seq": " ,"port": ,"value": }\n (32 chars; 36 allowed), the
+  // number's kJsonNumberSize and the sequence number's whole buffer (both copied whole), then the
+  // pieces
   const std::size_t most = 36 + kJsonNumberSize + sizeof seqText_ + modelJson_.size() +
                            r.kind.size() + portJson_.size() + r.value.size();
   char* const start = stream().room(most);

@@ -41,6 +41,7 @@ void ChromeTraceSink::setHead(std::string_view phase, std::string_view name, con
   head_ += ",\"pid\":1,\"tid\":";
   appendJsonInteger(head_, static_cast<std::uint64_t>(m.simIndex()) + 1);
   head_ += ",\"ts\":";
+  headStep_ = phase == "X" && name == "step";
 }
 
 // (phase, name, t, model) => the common head of one event object in ev_
@@ -56,13 +57,14 @@ void ChromeTraceSink::begin(std::string_view phase, std::string_view name, Time 
 // (a DTSS step of model m from start, e long) => its X event written straight into the stream's
 // chunk: room for the longest first, then the pieces
 void ChromeTraceSink::step(Time start, Time e, const AtomicBase& m) {
-  setHead("X", "step", m);
+  // (the last head a step of m's) => kept without comparing its phase and name again
+  if (!headStep_ || &m != headModel_) setHead("X", "step", m);
   constexpr std::string_view kCat = ",\"cat\":\"dtss\",\"dur\":";
   char* p = stream_.room(2 + head_.size() + 2 * kJsonNumberSize + kCat.size() + 1);
   if (!first_) p = put(p, ",\n");
   first_ = false;
   p = put(p, head_);
-  p = writeJsonNumber(p, start * kMicro);
+  p = writeJsonMicroseconds(p, start);  // start * kMicro
   p = put(p, kCat);
   p = writeDuration(p, e);
   *p++ = '}';

@@ -45,6 +45,7 @@ class ChromeTraceSink final : public Listener {
   std::string headPhase_, headName_;
   const AtomicBase* headModel_ = nullptr;
   std::string head_;
+  bool headStep_ = false;  // head_ is a DTSS step's ("X", "step") of headModel_
   std::array<DurationText, 4> durations_;
   std::size_t nextDuration_ = 0;  // the entry replaced next
   bool first_ = true;

@@ -22,6 +22,7 @@ struct NumberCache {
   std::uint64_t bits[kSize] = {};
   char text[kSize][kJsonNumberSize] = {};
   unsigned char length[kSize] = {};  // 0: empty
+  ShortestDecimal decimal[kSize];    // the digits of a positive number below 1e15, else m = 0
   std::uint64_t used[kSize] = {};    // when each entry was last written or hit (0: never)
   std::uint64_t clock = 0;
 };
@@ -49,14 +50,38 @@ char* writeJsonNumber(char* buf, double value) {
     if (c.used[i] < c.used[oldest]) oldest = i;
   }
   // (value) => its shortest round-trip form, kept in the cache in place of the oldest entry
-  char* end = writeShortest(buf, value);
+  ShortestDecimal decimal;
+  char* end = writeShortest(buf, value, decimal);
   const auto n = static_cast<std::size_t>(end - buf);
   if (n == 0) return end;
   std::memcpy(c.text[oldest], buf, kJsonNumberSize);
+  c.decimal[oldest] = decimal;
   c.bits[oldest] = bits;
   c.length[oldest] = static_cast<unsigned char>(n);
   c.used[oldest] = ++c.clock;
   return end;
+}
+
+char* writeJsonMicroseconds(char* buf, double seconds) {
+  const double us = seconds * 1e6;
+  // (the kept digits m 10^e of seconds) => m 10^(e + 6), when it is a whole number below 1e15
+  // (< 2^53) and exactly the product: its text from them, no conversion
+  const auto bits = std::bit_cast<std::uint64_t>(seconds);
+  const NumberCache& c = tCache;
+  for (std::size_t i = 0; i < NumberCache::kSize; ++i) {
+    if (c.length[i] == 0 || c.bits[i] != bits || c.decimal[i].significand == 0) continue;
+    std::uint64_t m = c.decimal[i].significand;
+    int e = c.decimal[i].exponent + 6;
+    while (m % 10 == 0) {  // (trailing zeros) => off the digits: the shortest's own
+      m /= 10;
+      ++e;
+    }
+    if (e < 0 || e > 15 || m >= kPowersOfTen[15 - e]) break;
+    const std::uint64_t whole = m * kPowersOfTen[e];  // < 1e15 < 2^53: exact as a double
+    if (static_cast<double>(whole) != us) break;
+    return writeDecimal(buf, m, e);
+  }
+  return writeJsonNumber(buf, us);
 }
 
 }  // namespace yardsim::devs

@@ -11,27 +11,6 @@
 namespace yardsim::devs {
 
 namespace {
-// 10^0 ... 10^19, the powers below 2^64
-constexpr std::uint64_t kPow10Int[] = {1ULL,
-                                       10ULL,
-                                       100ULL,
-                                       1000ULL,
-                                       10000ULL,
-                                       100000ULL,
-                                       1000000ULL,
-                                       10000000ULL,
-                                       100000000ULL,
-                                       1000000000ULL,
-                                       10000000000ULL,
-                                       100000000000ULL,
-                                       1000000000000ULL,
-                                       10000000000000ULL,
-                                       100000000000000ULL,
-                                       1000000000000000ULL,
-                                       10000000000000000ULL,
-                                       100000000000000000ULL,
-                                       1000000000000000000ULL,
-                                       10000000000000000000ULL};
 // "00" "01" ... "99": two digits at once
 constexpr char kPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -42,7 +21,7 @@ constexpr char kPairs[] =
 int digitCount(std::uint64_t n) {
   // floor(log10(2^bits)): the count or one less
   const int guess = (static_cast<int>(std::bit_width(n)) * 1233) >> 12;
-  return guess + (n >= kPow10Int[guess] ? 1 : 0);
+  return guess + (n >= kPowersOfTen[guess] ? 1 : 0);
 }
 
 // (n < 10^8) => its eight digits, leading zeros included, at p[0..8)
@@ -71,16 +50,13 @@ void writeDigits(char* p, std::uint64_t n, int len) {
   if (len == 1) *--q = static_cast<char>('0' + m);
 }
 
-// (0 < a < 1e15, finite, the sign already written at p) => a's shortest round-trip text in
-// std::to_chars' form. Dragonbox (fmt's) gives the shortest digits m and exponent e with a = m
-// 10^e read back, the nearest to a of that length, ties to even: the digits the standard asks of
-// std::to_chars. Fixed when no longer than scientific; whole numbers fixed are m and e zeros,
-// which is a's exact value below 2^53 (its rounding interval holds one integer)
-char* writeDragonbox(char* p, double a) {
-  const auto d = fmt::detail::dragonbox::to_decimal(a);
-  const std::uint64_t m = d.significand;
+// Dragonbox (fmt's) gives a's shortest digits m and exponent e with a = m 10^e read back, the
+// nearest to a of that length, ties to even: the digits the standard asks of std::to_chars. Fixed
+// when no longer than scientific; whole numbers fixed are m and e zeros, which is a's exact value
+// below 2^53 (its rounding interval holds one integer). Inlined into writeShortest's conversions
+// (one call a number) and writeDecimal.
+[[gnu::always_inline]] inline char* decimalText(char* p, std::uint64_t m, int e) {
   const int len = digitCount(m);
-  const int e = d.exponent;
   const int sci = e + len - 1;  // the scientific exponent
   const int sciAbs = sci < 0 ? -sci : sci;
   const int sciLength = len + (len > 1 ? 1 : 0) + 2 + (sciAbs >= 100 ? 3 : 2);
@@ -119,18 +95,40 @@ char* writeDragonbox(char* p, double a) {
   std::memcpy(p, kPairs + 2 * (sciAbs % 100), 2);
   return p + 2;
 }
+
 }  // namespace
 
-char* writeShortest(char* buf, double value) {
+char* writeDecimal(char* p, std::uint64_t m, int e) {
+  return decimalText(p, m, e);
+}
+
+namespace {
+// (value, where its decimal goes or null) => writeShortest's text; inlined into both forms, so
+// that the time series' numbers do not keep a decimal they never read
+[[gnu::always_inline]] inline char* shortest(char* buf, double value, ShortestDecimal* decimal) {
   // (finite non-zero value below 1e15) => Dragonbox; zero, 1e15 and above, nan and inf =>
   // std::to_chars
+  if (decimal) *decimal = {};
   const double a = std::fabs(value);
   if (a > 0.0 && a < 1e15) {
     char* p = buf;
-    if (std::signbit(value)) *p++ = '-';
-    return writeDragonbox(p, a);
+    const auto d = fmt::detail::dragonbox::to_decimal(a);
+    if (std::signbit(value))
+      *p++ = '-';
+    else if (decimal)
+      *decimal = {d.significand, d.exponent};
+    return decimalText(p, d.significand, d.exponent);
   }
   return std::to_chars(buf, buf + kShortestTextSize, value).ptr;
+}
+}  // namespace
+
+char* writeShortest(char* buf, double value, ShortestDecimal& decimal) {
+  return shortest(buf, value, &decimal);
+}
+
+char* writeShortest(char* buf, double value) {
+  return shortest(buf, value, nullptr);
 }
 
 }  // namespace yardsim::devs

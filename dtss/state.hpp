@@ -9,6 +9,7 @@
 #include "devs/checkpoint_archive.hpp"
 #include "devs/time.hpp"
 #include "devs/trace_format.hpp"
+#include "devs/trace_state_head.hpp"
 
 namespace yardsim::dtss {
 
@@ -52,15 +53,11 @@ struct StateCodec<dtss::State<X>> : FieldCodec<dtss::State<X>> {
   }
 };
 
-// A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}
+// A DTSS state in a trace: {"t": time of x, "steps": k, "x": x}, its head in one append
 template <class X>
 struct TraceFormat<dtss::State<X>> {
   static void write(std::string& out, const dtss::State<X>& s) {
-    out += "{\"t\":";
-    appendJsonNumber(out, s.tx);
-    out += ",\"steps\":";
-    appendJsonInteger(out, static_cast<std::uint64_t>(s.steps));  // counted up from 0
-    out += ",\"x\":";
+    appendStateHead(out, s.tx, static_cast<std::uint64_t>(s.steps));  // steps: counted up from 0
     TraceFormat<X>::write(out, s.x);
     out += '}';
   }

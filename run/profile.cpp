@@ -2,12 +2,38 @@
 
 #include <cstdio>
 
+#if defined(__x86_64__)
+#include <cpuid.h>
+#include <x86intrin.h>
+#endif
+
 namespace yardsim::run {
 
 std::int64_t steadyNanoseconds() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(
              std::chrono::steady_clock::now().time_since_epoch())
       .count();
+}
+
+std::int64_t timeStampTicks() {
+#if defined(__x86_64__)
+  return static_cast<std::int64_t>(__rdtsc());
+#else
+  return steadyNanoseconds();
+#endif
+}
+
+bool timeStampTicksInvariant() {
+#if defined(__x86_64__)
+  // (CPUID 0x80000007, advanced power management) => EDX bit 8: the counter is invariant
+  static const bool invariant = [] {
+    unsigned a = 0, b = 0, c = 0, d = 0;
+    return __get_cpuid(0x80000007, &a, &b, &c, &d) != 0 && (d & (1u << 8)) != 0;
+  }();
+  return invariant;
+#else
+  return false;
+#endif
 }
 
 std::string formatProfile(const PhaseTimes& p) {

@@ -20,12 +20,14 @@
 
 namespace yardsim::models {
 
-void appendStateText(std::string& out, const MultibodyState& s) {
-  // (state) => its text written straight into out: room for every coordinate first, then out cut
-  // to what was written
-  const std::size_t at = out.size();
-  out.resize(at + 4 + static_cast<std::size_t>(s.q.size()) * (devs::kGeneral6TextSize + 1));
-  char* p = out.data() + at;
+namespace {
+// (state) => the most chars its text "q=[...]" takes
+std::size_t stateTextMost(const MultibodyState& s) {
+  return 4 + static_cast<std::size_t>(s.q.size()) * (devs::kGeneral6TextSize + 1);
+}
+
+// (state, room for stateTextMost(s) chars at p) => "q=[...]" written at p; the end after it
+char* writeStateText(char* p, const MultibodyState& s) {
   std::memcpy(p, "q=[", 3);
   p += 3;
   for (Eigen::Index i = 0; i < s.q.size(); ++i) {
@@ -33,7 +35,17 @@ void appendStateText(std::string& out, const MultibodyState& s) {
     p = devs::writeGeneral6(p, s.q[i]);  // "%g"
   }
   *p++ = ']';
-  out.resize(static_cast<std::size_t>(p - out.data()));
+  return p;
+}
+}  // namespace
+
+void appendStateText(std::string& out, const MultibodyState& s) {
+  // (state) => its text written straight into out: room for every coordinate first, then out cut
+  // to what was written
+  const std::size_t at = out.size();
+  out.resize(at + stateTextMost(s));
+  char* const end = writeStateText(out.data() + at, s);
+  out.resize(static_cast<std::size_t>(end - out.data()));
 }
 
 std::ostream& operator<<(std::ostream& os, const MultibodyState& s) {
@@ -465,9 +477,14 @@ namespace yardsim::devs {
 
 void TraceFormat<models::MultibodyState>::write(std::string& out, const models::MultibodyState& s) {
   // (state) => its text as a JSON string: digits, signs, 'e', "q=[", ',' and ']' need no escapes
-  out += '"';
-  models::appendStateText(out, s);
-  out += '"';
+  // (one resize for the quotes and the text, one cut)
+  const std::size_t at = out.size();
+  out.resize(at + 2 + models::stateTextMost(s));
+  char* p = out.data() + at;
+  *p++ = '"';
+  p = models::writeStateText(p, s);
+  *p++ = '"';
+  out.resize(static_cast<std::size_t>(p - out.data()));
 }
 
 }  // namespace yardsim::devs

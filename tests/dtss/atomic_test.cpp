@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <charconv>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -302,4 +303,35 @@ TEST_CASE("the step count counts grid steps only, with time and state events bet
   b.runUntil(8.05);
   REQUIRE(times(rec.records, "bounce").size() >= 4);
   CHECK(ball.state().steps == 80);
+}
+
+TEST_CASE("two DTSS models' steps, interleaved, each on its own track with its own length") {
+  // (balls stepping at 0.1 s and 0.03 s, no output before their first impact at 1.43 s) => the
+  // Chrome trace's steps alternate between the models with nothing between them: each span on its
+  // model's track, as long as its model's step
+  devs::Coupled root("root");
+  root.add<devs::Coupled>("a").add<BouncingBall>(10.0, 0.8, 0.1, 1e-11);
+  root.add<devs::Coupled>("b").add<BouncingBall>(10.0, 0.8, 0.03, 1e-11);
+  devs::Simulator sim(root);
+  std::ostringstream text;
+  {
+    devs::ChromeTraceSink chrome{devs::TraceStream(text)};
+    sim.addListener(chrome);
+    sim.runUntil(0.95);
+  }
+  const YAML::Node events = YAML::Load(text.str())["traceEvents"];
+  std::map<int, std::string> track;  // tid => the model's path, from the tracks' names
+  for (const auto& ev : events)
+    if (ev["ph"].as<std::string>() == "M")
+      track[ev["tid"].as<int>()] = ev["args"]["name"].as<std::string>();
+  const std::map<std::string, double> step = {{"root.a.ball", 0.1}, {"root.b.ball", 0.03}};
+  std::map<std::string, int> spans;
+  for (const auto& ev : events) {
+    if (ev["ph"].as<std::string>() != "X") continue;
+    const std::string& model = track.at(ev["tid"].as<int>());
+    ++spans[model];
+    CHECK(ev["dur"].as<double>() == Approx(step.at(model) * 1e6));
+  }
+  CHECK(spans["root.a.ball"] == 9);   // 0.1 ... 0.9 s
+  CHECK(spans["root.b.ball"] == 31);  // 0.03 ... 0.93 s
 }

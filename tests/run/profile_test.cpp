@@ -125,6 +125,40 @@ TEST_CASE("a transition hook that no state hook follows is counted up to the nex
   CHECK(seconds == Approx(3'500e-9).epsilon(1e-12));
 }
 
+namespace {
+// A tick counter of the test's own: three ticks a nanosecond of the fake clock, from an offset
+std::int64_t fakeTicks() {
+  return 3 * gNow + 12'345;
+}
+}  // namespace
+
+TEST_CASE(
+    "a timed listener on a tick counter books its sinks' ticks in seconds at every run call's end "
+    "and when it goes, at the rate the two clocks show") {
+  gNow = 5'000;
+  CostlySink a(1'000), b(10);
+  double seconds = 0.0;
+  testing::Emitter m("m", {});
+  {
+    run::TimedListener timed({&a, &b}, seconds, fakeTicks, fakeClock);
+    devs::Listener& l = timed;
+    for (int k = 1; k <= 50; ++k) {
+      gNow += 1'000'000;  // simulation between the hooks
+      l.onTransition(k, m, devs::Transition::Internal, 1.0);
+      l.onState(k, m);
+    }
+    CHECK(seconds == 0.0);  // the ticks kept until the run call's end
+    l.onEnd(50.0);
+    // exactly the sinks' own time, 1,010 ns a hook, whatever the ticks' rate
+    CHECK(seconds == Approx(101 * 1'010e-9).epsilon(1e-12));
+    gNow += 7'000'000;
+    l.onTransition(51.0, m, devs::Transition::Internal, 1.0);
+    l.onState(51.0, m);
+  }
+  // (the listener gone) => the last hooks booked too
+  CHECK(seconds == Approx(103 * 1'010e-9).epsilon(1e-12));
+}
+
 TEST_CASE("the profile line gives every phase and output's share of the total") {
   run::PhaseTimes p;
   p.read = 1.0;

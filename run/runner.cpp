@@ -163,27 +163,33 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
     std::vector<devs::Listener*> profiled;
     std::vector<devs::RecordSink*> records;
     const bool full = std::find(opt.trace.begin(), opt.trace.end(), "jsonl") != opt.trace.end();
-    for (const auto& name : opt.trace) {
-      if (name == "events" && full) continue;
-      if (name == "jsonl" || name == "events")
-        sinks.push_back(std::make_unique<devs::JsonlTraceSink>(devs::TraceStream(opt.outdir / "trace.jsonl")));
-      else if (name == "chrome")
-        sinks.push_back(std::make_unique<devs::ChromeTraceSink>(devs::TraceStream(opt.outdir / "trace.json")));
-      else if (name == "csv")
-        sinks.push_back(std::make_unique<devs::CsvTraceSink>(devs::TraceStream(opt.outdir / "trace.csv")));
-      else
-        throw std::invalid_argument("unknown trace sink '" + name +
-                                    "' (expected jsonl, events, chrome or csv)");
-      if (auto* r = dynamic_cast<devs::RecordSink*>(sinks.back().get())) records.push_back(r);
-      // (events) => the sink sees the outputs only; (profile) => its hooks timed
-      devs::Listener* listener = sinks.back().get();
-      if (name == "events")
-        listener = filters.emplace_back(std::make_unique<OutputsOnly>(*listener)).get();
-      if (opt.profile)
-        profiled.push_back(listener);
-      else
-        sim.addListener(*listener);
-    }
+    // (trace names) => the sinks made and their files opened, booked as output
+    output([&] {
+      for (const auto& name : opt.trace) {
+        if (name == "events" && full) continue;
+        if (name == "jsonl" || name == "events")
+          sinks.push_back(std::make_unique<devs::JsonlTraceSink>(
+              devs::TraceStream(opt.outdir / "trace.jsonl")));
+        else if (name == "chrome")
+          sinks.push_back(std::make_unique<devs::ChromeTraceSink>(
+              devs::TraceStream(opt.outdir / "trace.json")));
+        else if (name == "csv")
+          sinks.push_back(
+              std::make_unique<devs::CsvTraceSink>(devs::TraceStream(opt.outdir / "trace.csv")));
+        else
+          throw std::invalid_argument("unknown trace sink '" + name +
+                                      "' (expected jsonl, events, chrome or csv)");
+        if (auto* r = dynamic_cast<devs::RecordSink*>(sinks.back().get())) records.push_back(r);
+        // (events) => the sink sees the outputs only; (profile) => its hooks timed
+        devs::Listener* listener = sinks.back().get();
+        if (name == "events")
+          listener = filters.emplace_back(std::make_unique<OutputsOnly>(*listener)).get();
+        if (opt.profile)
+          profiled.push_back(listener);
+        else
+          sim.addListener(*listener);
+      }
+    });
     // (profile) => the sinks behind one timer, in their order
     std::optional<TimedListener> timed;
     if (!profiled.empty()) sim.addListener(timed.emplace(std::move(profiled), outputSeconds));
@@ -272,6 +278,13 @@ RunResult runScene(const Scene& scene, devs::Coupled& root, const RunOptions& op
       if (next >= opt.until) break;
       if (std::isinf(opt.until) && sim.nextEventTime() == devs::kInfinity) break;
     }
+    // (sinks) => their last chunks written and their files closed, booked as output as their
+    // opening is (the simulator calls none of them after the last step)
+    output([&] {
+      timed.reset();
+      filters.clear();
+      sinks.clear();
+    });
     result.tEnd = sim.time();
     result.wall = wall();
     result.samples = recorder ? recorder->rows() : 0;

@@ -50,3 +50,34 @@ TEST_CASE("a BufferedFile that cannot be opened tests false") {
   BufferedFile missing(std::filesystem::temp_directory_path() / "no_such_dir_yardsim" / "x.txt");
   CHECK_FALSE(missing.stream());
 }
+
+TEST_CASE("a BufferedFile replaces an existing file with a new one rather than truncating it") {
+  // (a file with a second name, a hard link) => the new text under the path, the old text kept
+  // under the link: the old file was removed, not truncated and written again (which ext4
+  // flushes to disk at its close)
+  const auto dir = std::filesystem::temp_directory_path() / "yardsim_buffered_file_replace_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "trace.jsonl", link = dir / "earlier.jsonl";
+  std::ofstream(path) << "the earlier run's trace";
+  std::filesystem::create_hard_link(path, link);
+  {
+    BufferedFile file(path);
+    REQUIRE(file.stream());
+    file.stream() << "this run's trace";
+  }
+  auto text = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  };
+  CHECK(text(path) == "this run's trace");
+  CHECK(text(link) == "the earlier run's trace");
+  CHECK(std::filesystem::hard_link_count(path) == 1);
+  // (append mode) => the file kept and written on
+  {
+    BufferedFile file(path, std::ios::out | std::ios::app);
+    file.stream() << ", continued";
+  }
+  CHECK(text(path) == "this run's trace, continued");
+  std::filesystem::remove_all(dir);
+}

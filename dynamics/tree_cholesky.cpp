@@ -62,8 +62,8 @@ inline double pivotInverse(double d, double* diag, double* scale) {
 // the first, then k = i + 1's from the numerators; NS fixed at compile time (the loops unrolled);
 // work[j] = t_j; returns 1 / D_i, and whether the pivot is positive in *positive.
 template <int NS>
-double rowFixed(std::span<const int> parent, int i, const double* li, const double* ai,
-                double* out, Eigen::Index ld, double* work, double dinvPrev, bool* positive) {
+double rowFixed(std::span<const int> parent, int i, const double* li, const double* ai, double* out,
+                Eigen::Index ld, double* work, double dinvPrev, bool* positive) {
   double x[NS > 0 ? NS : 1];
   for (int k = 1; k < NS; ++k) x[k] = li[k];
   double pivot = ai[i];
@@ -191,6 +191,16 @@ bool denseTop(std::span<const int> parent, std::span<const int> subtree, int n) 
   return true;
 }
 
+// (f, I...) => f<I>() for each I in order; forEachDown: f<N - 1 - I>() (I = 0 .. N - 1)
+template <typename F, int... I>
+void forEach(std::integer_sequence<int, I...>, const F& f) {
+  (f.template operator()<I>(), ...);
+}
+template <typename F, int... I>
+void forEachDown(std::integer_sequence<int, I...>, const F& f) {
+  (f.template operator()<static_cast<int>(sizeof...(I)) - 1 - I>(), ...);
+}
+
 // (A, rows kTop .. n - 1 of L) => rows kTop - 1 .. 0 of L: the block's Schur complement S =
 // A(0..5, 0..5) - B^T B first, B = L(6 .., 0 .. 5) (21 dot products of columns of length n - 6,
 // none waiting for a pivot), then S = L_top^T L_top densely, from row 5 to row 0, unrolled: D_k =
@@ -209,9 +219,7 @@ bool topBlock(const double* a, Eigen::Index lda, double* l, Eigen::Index ld, int
     }
     for (int c = 0; c <= I; ++c) S[I][I - c] = s[c];
   };
-  [&]<int... I>(std::integer_sequence<int, I...>) {
-    (lower.template operator()<I>(), ...);
-  }(std::make_integer_sequence<int, kTop>{});
+  forEach(std::make_integer_sequence<int, kTop>{}, lower);
   bool ok = true;
   // (K) => pivot K of S: row K of L and the update of S above it (every loop of fixed length)
   const auto pivot = [&]<int K>() {
@@ -230,9 +238,7 @@ bool topBlock(const double* a, Eigen::Index lda, double* l, Eigen::Index ld, int
       for (int j = 0; j <= i; ++j) S[i][j] -= S[K][i] * c[j];
     }
   };
-  [&]<int... I>(std::integer_sequence<int, I...>) {
-    (pivot.template operator()<kTop - 1 - I>(), ...);
-  }(std::make_integer_sequence<int, kTop>{});
+  forEachDown(std::make_integer_sequence<int, kTop>{}, pivot);
   return ok;
 }
 

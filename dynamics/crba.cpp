@@ -132,26 +132,48 @@ int rowOfM(const double* f, const double* S, const int* dofParent, int c, int st
   return a;
 }
 
-// (force f = (n, f) of dof c, in world axes about the world origin; X_WB of a free-joint body
-// whose dofs are 0 .. 5) => M(c, j) = M(j, c) = S_j . f for j = 0 .. 5: with S = 1 in the body
-// frame, f in the body frame about its origin, (R^T (n - p x f), R^T f): one force transform
+// (force f = (n, f) of dof c, in world axes about the world origin; R, p of X_WB of a free-joint
+// body whose dofs are 0 .. 5) => M(c, j) = M(j, c) = S_j . f for j = 0 .. 5: with S = 1 in the
+// body frame, f in the body frame about its origin, (R^T (n - p x f), R^T f): one force transform
 // instead of six 6-entry products
-[[gnu::noinline]] void freeRootRow(const double* f, const Transform& X, int c, double* M,
-                                   Eigen::Index ld) {
-  const double* R = X.R.data();  // column-major: R^T's row j is R's column j
-  const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
+inline void freeRootRow(const double* f, const double* R, const double* p, int c, double* M,
+                        Eigen::Index ld) {
+  const double p0 = p[0], p1 = p[1], p2 = p[2];
   const double t0 = f[0] - (p1 * f[5] - p2 * f[4]);
   const double t1 = f[1] - (p2 * f[3] - p0 * f[5]);
   const double t2 = f[2] - (p0 * f[4] - p1 * f[3]);
   double* row = M + c;       // M(c, j) = row[j ld]
   double* col = M + c * ld;  // M(j, c) = col[j]
   for (int j = 0; j < 3; ++j) {
-    const double* r = R + 3 * j;
+    const double* r = R + 3 * j;  // column-major: R^T's row j is R's column j
     const double nB = r[0] * t0 + r[1] * t1 + r[2] * t2;
     const double fB = r[0] * f[3] + r[1] * f[4] + r[2] * f[5];
     row[j * ld] = col[j] = nB;
     row[(j + 3) * ld] = col[j + 3] = fB;
   }
+}
+
+// Where the free root's rows are formed: after the loop over the bodies, all at once (F_c kept in
+// Fcrb, R and p loaded once), or per dof right after its row of M (an out-of-line call). Measured
+// at tree 9 (docs/performance_peers.md, crba31): after the loop 0.96 of the per-dof time with SSE2
+// code, but 1.11 with AVX (-march=native), where the per-dof form is kept.
+#if defined(__AVX__)
+constexpr bool kRootRowsAfter = false;
+#else
+constexpr bool kRootRowsAfter = true;
+#endif
+
+// (f of dof c, X_WB of the free root) => freeRootRow, out of line (the per-dof form)
+[[gnu::noinline]] void freeRootRowCall(const double* f, const Transform& X, int c, double* M,
+                                       Eigen::Index ld) {
+  freeRootRow(f, X.R.data(), X.p.data(), c, M, ld);
+}
+
+// (F_c of dofs c = 6 .. end - 1, end - 1 the free root's subtree's last dof) => freeRootRow for
+// each
+[[gnu::noinline]] void freeRootRows(const double* F, const Transform& X, int end, double* M,
+                                    Eigen::Index ld) {
+  for (int c = 6; c < end; ++c) freeRootRow(F + 6 * c, X.R.data(), X.p.data(), c, M, ld);
 }
 
 // (the composite of a free-joint body whose dofs are 0 .. 5 as 10 numbers in world axes about the
@@ -193,19 +215,24 @@ void compositesAndM(const Model& m, Data& d) {
   double* M = d.M.data();
   const Eigen::Index ld = d.M.outerStride();
   const int* dofParent = m.dofParent.data();
+  double* F = d.Fcrb.data();  // F_c = IC S_c, kept for the free root's rows
   constexpr int stop = FreeRoot ? 6 : 0;
   for (int i = m.nbodies - 1; i >= 1; --i) {
     const double* k = d.IC_W[i].data();
     if (FreeRoot && i == 1) {
       freeRootBlock(k, d.X_WB[1], M, ld);
+      if constexpr (kRootRowsAfter) freeRootRows(F, d.X_WB[1], m.dofSubtree[0], M, ld);
       return;
     }
     const int iv = m.idxV[i], end = iv + m.jointNv[i];
     for (int c = iv; c < end; ++c) {
-      double f[6];
+      double local[6];
+      double* f = FreeRoot && kRootRowsAfter ? F + 6 * c : local;
       applyCompact(k, S + 6 * c, f);
       const int a = rowOfM(f, S, dofParent, c, stop, M, ld);
-      if (FreeRoot && a >= 0) freeRootRow(f, d.X_WB[1], c, M, ld);
+      if constexpr (FreeRoot && !kRootRowsAfter) {
+        if (a >= 0) freeRootRowCall(f, d.X_WB[1], c, M, ld);
+      }
     }
     if (m.parent[i] > 0) Compact(d.IC_W[m.parent[i]].data()) += Compact(d.IC_W[i].data());
   }

@@ -20,8 +20,9 @@
 namespace yardsim::dynamics {
 
 /// (A: its upper triangle and diagonal are read, tree sparsity) => L (lower triangle and diagonal;
-/// entries off the ancestor pattern are neither read nor written); work is not used (it was the
-/// scratch of an earlier kernel; kept for the callers).
+/// entries off the ancestor pattern are neither read nor written); work: scratch of at least
+/// A.rows() entries (each row's numerators D_i U(i, j) of the square-root-free form, which carry
+/// the rows' chain of dependences; resized if shorter).
 /// Returns false when A is not positive definite (L then holds a NaN or a non-positive pivot).
 bool treeCholeskyFactor(const Eigen::Ref<const Eigen::MatrixXd>& A, std::span<const int> parent,
                         std::span<const int> subtree, Eigen::Ref<Eigen::MatrixXd> L,

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <Eigen/Cholesky>
+#include <limits>
+#include <vector>
 
 #include "dynamics/configuration.hpp"
 #include "dynamics/crba.hpp"
@@ -160,4 +162,90 @@ TEST_CASE("tree Cholesky: the generic kernel on a dense chain pattern equals the
   Eigen::VectorXd x = b;
   treeCholeskySolveInPlace(L, subtree, x);
   CHECK((x - A.llt().solve(b)).norm() < 1e-12 * x.norm());
+}
+
+namespace {
+
+// (n, rng, top) => a random dof tree in depth-first order: parent[i] on the path from the root to
+// i - 1 (or -1: a forest); top: dofs 0 .. 5 a chain at the single root (a floating base)
+std::vector<int> randomDofTree(int n, std::mt19937& rng, bool top) {
+  std::vector<int> parent(static_cast<std::size_t>(n), -1);
+  for (int i = 1; i < n; ++i) {
+    if (top && i < 6) {
+      parent[static_cast<std::size_t>(i)] = i - 1;
+      continue;
+    }
+    std::vector<int> path;  // i - 1 and its ancestors
+    for (int j = i - 1; j >= 0; j = parent[static_cast<std::size_t>(j)]) path.push_back(j);
+    if (top) path.resize(path.size() - 5);  // below dof 5
+    std::uniform_int_distribution<int> pick(top ? 0 : -1, static_cast<int>(path.size()) - 1);
+    const int k = pick(rng);
+    parent[static_cast<std::size_t>(i)] = k < 0 ? -1 : path[static_cast<std::size_t>(k)];
+  }
+  return parent;
+}
+
+// (parent) => subtree sizes and the ancestor pattern P(i, j) = 1 for j = i or an ancestor of i
+std::vector<int> subtreeSizes(const std::vector<int>& parent, Eigen::MatrixXi& P) {
+  const int n = static_cast<int>(parent.size());
+  std::vector<int> subtree(parent.size(), 1);
+  P = Eigen::MatrixXi::Zero(n, n);
+  for (int i = n - 1; i >= 0; --i) {
+    for (int j = i; j >= 0; j = parent[static_cast<std::size_t>(j)]) P(i, j) = 1;
+    if (parent[static_cast<std::size_t>(i)] >= 0)
+      subtree[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])] +=
+          subtree[static_cast<std::size_t>(i)];
+  }
+  return subtree;
+}
+
+}  // namespace
+
+TEST_CASE("tree Cholesky: the factor of L0^T L0 is L0 on random tree-sparse matrices") {
+  // A = L0^T L0 for a random L0 on the ancestor pattern with a positive diagonal: the factor with
+  // a positive diagonal is unique, so treeCholeskyFactor must return L0 itself; A's entries off the
+  // pattern are NaN (never read) and L's are a sentinel (never written); the solve against
+  // Eigen's LDLT of the dense A
+  std::mt19937 rng(2110);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), diag(0.5, 2.0);
+  int tops = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const bool top = trial % 3 == 0;
+    const int n = top ? 7 + trial % 17 : 1 + trial % 23;
+    const std::vector<int> parent = randomDofTree(n, rng, top);
+    Eigen::MatrixXi P;
+    const std::vector<int> subtree = subtreeSizes(parent, P);
+    if (top && n > 7 && subtree[6] < n - 6) ++tops;  // a branched floating base: the 6x6 path
+    Eigen::MatrixXd L0 = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < i; ++j) L0(i, j) = P(i, j) != 0 ? u(rng) : 0.0;
+      L0(i, i) = diag(rng);
+    }
+    Eigen::MatrixXd A = L0.transpose() * L0;
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (P(i, j) == 0 && P(j, i) == 0) A(i, j) = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+    Eigen::MatrixXd L = Eigen::MatrixXd::Constant(n, n, 7.0);
+    Eigen::VectorXd work(n);
+    INFO("trial " << trial << " n " << n);
+    REQUIRE(treeCholeskyFactor(A, parent, subtree, L, work));
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (j <= i && P(i, j) != 0) {
+          CHECK(std::abs(L(i, j) - L0(i, j)) <= 1e-12 * L0.norm());
+        } else {
+          CHECK(L(i, j) == 7.0);
+        }
+      }
+    }
+    const Eigen::MatrixXd Ad = L0.transpose() * L0;
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    Eigen::VectorXd x = b;
+    treeCholeskySolveInPlace(L, subtree, x);
+    const Eigen::VectorXd xd = Ad.ldlt().solve(b);
+    CHECK((x - xd).norm() <= 1e-10 * xd.norm());
+  }
+  CHECK(tops >= 10);
 }

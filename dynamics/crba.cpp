@@ -108,7 +108,10 @@ int rowOfM(const double* f, const double* S, const int* dofParent, int c, int st
   double* rowC = M + c;       // M(c, a) = rowC[a ld]
   double* colC = M + c * ld;  // M(a, c) = colC[a]
 #if defined(EIGEN_VECTORIZE_SSE2)
-  const __m128d f0 = _mm_loadu_pd(f), f1 = _mm_loadu_pd(f + 2), f2 = _mm_loadu_pd(f + 4);
+  // (f just written entry by entry by applyCompact) => its pairs from 8-byte loads: a 16-byte load
+  // of two fresh 8-byte stores waits for them to drain instead of being forwarded
+  const __m128d f0 = _mm_set_pd(f[1], f[0]), f1 = _mm_set_pd(f[3], f[2]),
+                f2 = _mm_set_pd(f[5], f[4]);
   int a = c;
   for (; a >= stop; a = dofParent[a]) {
     const double* s = S + 6 * a;
@@ -181,26 +184,51 @@ constexpr bool kRootRowsAfter = true;
 // origin, [I_B, [h_B]x; -[h_B]x, m 1] (S = 1)
 [[gnu::noinline]] void freeRootBlock(const double* k, const Transform& X, double* M,
                                      Eigen::Index ld) {
+  // on plain doubles, entry by entry in the order of Eigen's expressions (the same doubles): a
+  // small matrix written entry by entry and then copied by 16-byte loads waits for its stores
   const double mass = k[0];
-  const Vector3 h(k[1], k[2], k[3]);
-  const Vector3& p = X.p;
-  Matrix3 I;
-  I << k[4], k[5], k[6], k[5], k[7], k[8], k[6], k[8], k[9];
+  const double h[3] = {k[1], k[2], k[3]};
+  const double p[3] = {X.p[0], X.p[1], X.p[2]};
+  const double* R = X.R.data();  // column-major: R(r, c) = R[r + 3 c]
   // (about the world origin) => about p: I - 2 (p . h) 1 + (p h^T + h p^T) + m (p . p 1 - p p^T)
-  const Matrix3 outer = p * h.transpose();
-  I += outer + outer.transpose() - mass * (p * p.transpose());
-  I.diagonal().array() += mass * p.squaredNorm() - 2.0 * p.dot(h);
-  const Matrix3 IB = X.R.transpose() * I * X.R;
-  const Vector3 hB = X.R.transpose() * (h - mass * p);
-  Matrix3 hx;
-  hx << 0.0, -hB.z(), hB.y(), hB.z(), 0.0, -hB.x(), -hB.y(), hB.x(), 0.0;
-  Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>> B(M, 6, 6, Eigen::OuterStride<>(ld));
+  const double ph = (p[0] * h[0] + p[1] * h[1]) + p[2] * h[2];
+  const double pp = (p[0] * p[0] + p[1] * p[1]) + p[2] * p[2];
+  const double shift = mass * pp - 2.0 * ph;
+  const double k3[3][3] = {{k[4], k[5], k[6]}, {k[5], k[7], k[8]}, {k[6], k[8], k[9]}};
+  double I[3][3];  // I[r][c]
   for (int c = 0; c < 3; ++c) {
-    for (int r = c; r < 3; ++r) B(r, c) = B(c, r) = IB(r, c);  // R^T I R's lower triangle, mirrored
+    for (int r = 0; r < 3; ++r) {
+      I[r][c] = k3[r][c] + ((p[r] * h[c] + p[c] * h[r]) - mass * (p[r] * p[c]));
+    }
+    I[c][c] += shift;
   }
-  B.topRightCorner<3, 3>() = hx;
-  B.bottomLeftCorner<3, 3>() = hx.transpose();
-  B.bottomRightCorner<3, 3>() = mass * Matrix3::Identity();
+  // (R, I) => T = R^T I, then IB = T R (each entry's three terms summed in order)
+  double T[3][3], IB[3][3];
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c)
+      T[r][c] = (R[3 * r] * I[0][c] + R[3 * r + 1] * I[1][c]) + R[3 * r + 2] * I[2][c];
+  }
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c)
+      IB[r][c] = (T[r][0] * R[3 * c] + T[r][1] * R[3 * c + 1]) + T[r][2] * R[3 * c + 2];
+  }
+  // (h, p) => hB = R^T (h - m p)
+  const double g[3] = {h[0] - mass * p[0], h[1] - mass * p[1], h[2] - mass * p[2]};
+  double hB[3];
+  for (int r = 0; r < 3; ++r) hB[r] = (R[3 * r] * g[0] + R[3 * r + 1] * g[1]) + R[3 * r + 2] * g[2];
+  // (IB, hB, m) => M's 6x6 block [IB, [hB]x; -[hB]x, m 1]: IB's lower triangle mirrored
+  const auto at = [&](int r, int c) -> double& { return M[r + c * ld]; };
+  for (int c = 0; c < 3; ++c) {
+    for (int r = c; r < 3; ++r) at(r, c) = at(c, r) = IB[r][c];
+  }
+  const double hx[3][3] = {{0.0, -hB[2], hB[1]}, {hB[2], 0.0, -hB[0]}, {-hB[1], hB[0], 0.0}};
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) {
+      at(r, 3 + c) = hx[r][c];
+      at(3 + r, c) = hx[c][r];
+      at(3 + r, 3 + c) = r == c ? mass : 0.0;
+    }
+  }
 }
 
 // (X_WB, S_W, each body's 10 numbers in IC_W; FreeRoot: body 1 on a free joint at the world) =>

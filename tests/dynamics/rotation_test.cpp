@@ -84,7 +84,9 @@ TEST_CASE("a rotation about a coordinate axis equals the axis-angle formula bit 
       INFO("axis " << axis << ", angle " << angle);
       Matrix3 R;
       R.setConstant(42.0);
-      coordinateAxisRotation(axis, std::sin(angle), std::cos(angle), R);
+      double s = 0.0, c = 0.0;
+      sinCos(angle, s, c);  // axisRotation's sine and cosine
+      coordinateAxisRotation(axis, s, c, R);
       const Matrix3 ref = axisRotation(Vector3::Unit(axis), angle);
       CHECK(std::memcmp(R.data(), ref.data(), sizeof(double) * 9) == 0);
     }

@@ -117,8 +117,8 @@ TEST_CASE("sinCos is within two units in the last place of std::sin and std::cos
   // pi/2 (where the reduction cancels); |angle| >= 1e5 goes to libm (exactly)
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> small(-10.0, 10.0), medium(-1e5, 1e5), large(-1e7, 1e7);
-  std::vector<double> angles{0.0, -0.0, M_PI, -M_PI, 0.5 * M_PI, 0.25 * M_PI, 1e-300, -1e-17, 1e22,
-                             2.0 * M_PI, 1e5, -1e5};
+  std::vector<double> angles{0.0,    -0.0,   M_PI, -M_PI,      0.5 * M_PI, 0.25 * M_PI,
+                             1e-300, -1e-17, 1e22, 2.0 * M_PI, 1e5,        -1e5};
   for (int e = -1074; e < 1024; e += 3) angles.push_back(std::ldexp(1.3, e));
   for (int k = 0; k < 20000; ++k) angles.push_back(small(rng));
   for (int k = 0; k < 20000; ++k) angles.push_back(medium(rng));

@@ -328,18 +328,42 @@ YARDSIM_FLATTEN const Eigen::VectorXd& abaPasses(const Model& m, Data& d, const 
       d.IA_W[p] += d.IA_W[i];
     }
   }
-  // (U, D, u) => ddq, A_W (including -g); a root's da_parent is zero (its U^T a is not formed)
+  // (U, D, u) => ddq, A_W (including -g); a root's da_parent is zero (its U^T a is not formed).
+  // The 1-dof joints carry the previous body's e = a_parent + C and qdd in registers: when body
+  // i - 1 is the parent with a 1-dof joint, U . a_p = U . e_p + (U . s_p) qdd_p, so that the
+  // chain from one joint's qdd to the next is a multiply-add and D^-1 (the dot products run
+  // beside it) instead of the whole a_p, its store and load and a 6-term dot product
+  Motion e = Motion::Zero();
+  double qddPrev = 0.0;
+  bool prevOneDof = false;
   for (int i = 1; i < m.nbodies; ++i) {
     const int nv = m.jointNv[i];
     const int iv = m.idxV[i];
     const int p = m.parent[i];
     const Motion& a = d.A_W[p];
     if (nv == 1) {
-      const double r = p == 0 ? d.u[i][0] : d.u[i][0] - d.U[i].col(0).dot(a);
+      const auto U = d.U[i].col(0);
+      double r = d.u[i][0];
+      Motion ei;
+      if (p == i - 1 && prevOneDof) {
+        // (e_p, s_p, qdd_p) => a_p = e_p + s_p qdd_p (A_W[p]'s doubles), U . a_p split
+        const Motion sp = d.S_W.col(m.idxV[p]);
+        r -= U.dot(e) + U.dot(sp) * qddPrev;
+        ei = (e + sp * qddPrev) + d.C_W[i];
+      } else {
+        if (p != 0) r -= U.dot(a);
+        ei = a + d.C_W[i];
+      }
       const double qdd = d.Dinv[i](0, 0) * r;
       d.ddq[iv] = qdd;
-      d.A_W[i] = a + d.C_W[i] + d.S_W.col(iv) * qdd;
-    } else if (nv == 6 && p == 0) {
+      d.A_W[i] = ei + d.S_W.col(iv) * qdd;
+      e = ei;
+      qddPrev = qdd;
+      prevOneDof = true;
+      continue;
+    }
+    prevOneDof = false;
+    if (nv == 6 && p == 0) {
       abaFreeRootForward(d, i, iv);
     } else if (nv == 6) {
       abaJointForward<6>(d, i, p, iv);

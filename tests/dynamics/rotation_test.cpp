@@ -1,6 +1,7 @@
 // Rotations: exp/log, quaternions, Euler angles with the documented z-y'-x'' convention.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 #include "dynamics/rotation.hpp"
@@ -83,16 +84,18 @@ TEST_CASE("a rotation about a coordinate axis equals the axis-angle formula bit 
       INFO("axis " << axis << ", angle " << angle);
       Matrix3 R;
       R.setConstant(42.0);
-      coordinateAxisRotation(axis, std::sin(angle), std::cos(angle), R);
+      double s = 0.0, c = 0.0;
+      sinCos(angle, s, c);  // axisRotation's sine and cosine
+      coordinateAxisRotation(axis, s, c, R);
       const Matrix3 ref = axisRotation(Vector3::Unit(axis), angle);
       CHECK(std::memcmp(R.data(), ref.data(), sizeof(double) * 9) == 0);
     }
   }
 }
 
-TEST_CASE("sinCos returns the doubles of std::sin and std::cos") {
-  // the kernels place every revolute joint with it: a last-bit difference would change every
-  // scene's results; special values, every binade of the double range and random angles
+TEST_CASE("libmSinCos returns the doubles of std::sin and std::cos") {
+  // sinCos hands it the large angles, infinities and NaN; special values, every binade of the
+  // double range and random angles
   std::mt19937 rng(22);
   std::uniform_real_distribution<double> small(-10.0, 10.0), large(-1e7, 1e7);
   std::vector<double> angles{0.0, -0.0, M_PI, -M_PI, 0.5 * M_PI, 1e-300, -1e-17, 1e22, 2.0 * M_PI};
@@ -102,9 +105,53 @@ TEST_CASE("sinCos returns the doubles of std::sin and std::cos") {
   int differ = 0;
   for (const double angle : angles) {
     double s = 42.0, c = 42.0;
-    sinCos(angle, s, c);
+    libmSinCos(angle, s, c);
     const double s0 = std::sin(angle), c0 = std::cos(angle);
     if (std::memcmp(&s, &s0, sizeof s) != 0 || std::memcmp(&c, &c0, sizeof c) != 0) ++differ;
   }
   CHECK(differ == 0);
+}
+
+TEST_CASE("sinCos is within two units in the last place of std::sin and std::cos") {
+  // every revolute placement uses it; the angles of the test above, and angles near multiples of
+  // pi/2 (where the reduction cancels); |angle| >= 1e5 goes to libm (exactly)
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> small(-10.0, 10.0), medium(-1e5, 1e5), large(-1e7, 1e7);
+  std::vector<double> angles{0.0,    -0.0,   M_PI, -M_PI,      0.5 * M_PI, 0.25 * M_PI,
+                             1e-300, -1e-17, 1e22, 2.0 * M_PI, 1e5,        -1e5};
+  for (int e = -1074; e < 1024; e += 3) angles.push_back(std::ldexp(1.3, e));
+  for (int k = 0; k < 20000; ++k) angles.push_back(small(rng));
+  for (int k = 0; k < 20000; ++k) angles.push_back(medium(rng));
+  for (int k = 0; k < 2000; ++k) angles.push_back(large(rng));
+  for (int n = -40; n <= 40; ++n) {
+    double a = n * 0.5 * M_PI;
+    for (int k = 0; k < 4; ++k) {
+      angles.push_back(a);
+      a = std::nextafter(a, 1e300);
+    }
+  }
+  // (x, x0) => |x - x0| in units of x0's last place
+  const auto ulps = [](double x, double x0) {
+    if (x == x0) return 0.0;
+    const double ax = std::abs(x0);
+    return std::abs(x - x0) / (std::nextafter(ax, 1e300) - ax);
+  };
+  double worst = 0.0;
+  for (const double angle : angles) {
+    double s = 42.0, c = 42.0;
+    sinCos(angle, s, c);
+    worst = std::max({worst, ulps(s, std::sin(angle)), ulps(c, std::cos(angle))});
+    if (std::abs(angle) >= 1e5) {
+      double s0 = 0.0, c0 = 0.0;
+      libmSinCos(angle, s0, c0);
+      CHECK(s == s0);
+      CHECK(c == c0);
+    }
+  }
+  CHECK(worst <= 2.0);
+  double s = 0.0, c = 0.0;
+  sinCos(std::nan(""), s, c);
+  CHECK((std::isnan(s) && std::isnan(c)));
+  sinCos(INFINITY, s, c);
+  CHECK((std::isnan(s) && std::isnan(c)));
 }

@@ -322,6 +322,16 @@ void placeRevoluteWorld(const Transform& P, const Vector3& o, double c, double s
   }
 }
 
+// (angle) => sinCos (the same doubles). With AVX out of line: inlined into the placement loop it
+// made native code 1.15-1.18 times as slow at tree 9 and 1.10 at tree 33 (and 0.90 at chain 8);
+// with SSE2 inline (out of line 1.02-1.03 times as slow). docs/performance_peers.md, fifteenth
+// session (lead).
+#if defined(__AVX__)
+[[gnu::noinline]] void crbaSinCos(double angle, double& s, double& c) { sinCos(angle, s, c); }
+#else
+inline void crbaSinCos(double angle, double& s, double& c) { sinCos(angle, s, c); }
+#endif
+
 // (q) => X_WB of body i and its columns of S_W: coordinate-axis revolute and prismatic joints in
 // translated frames directly (X_PB not written), any other joint by placeBody
 void placeForCrba(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
@@ -340,7 +350,7 @@ void placeForCrba(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
   const double qi = q[m.idxQ[i]];
   if (m.joints[i].type == JointType::Revolute) {
     double s = 0.0, c = 0.0;
-    sinCos(qi, s, c);
+    crbaSinCos(qi, s, c);
     if (k == 0) {
       placeRevoluteWorld<0>(P, m.X_PJ[i].p, c, s, X, sw);
     } else if (k == 1) {

@@ -327,9 +327,13 @@ void placeRevoluteWorld(const Transform& P, const Vector3& o, double c, double s
 // with SSE2 inline (out of line 1.02-1.03 times as slow). docs/performance_peers.md, fifteenth
 // session (lead).
 #if defined(__AVX__)
-[[gnu::noinline]] void crbaSinCos(double angle, double& s, double& c) { sinCos(angle, s, c); }
+[[gnu::noinline]] void crbaSinCos(double angle, double& s, double& c) {
+  sinCos(angle, s, c);
+}
 #else
-inline void crbaSinCos(double angle, double& s, double& c) { sinCos(angle, s, c); }
+inline void crbaSinCos(double angle, double& s, double& c) {
+  sinCos(angle, s, c);
+}
 #endif
 
 // (q) => X_WB of body i and its columns of S_W: coordinate-axis revolute and prismatic joints in

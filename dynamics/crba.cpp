@@ -166,9 +166,10 @@ constexpr bool kRootRowsAfter = false;
 constexpr bool kRootRowsAfter = true;
 #endif
 
-// (f of dof c, X_WB of the free root) => freeRootRow, out of line (the per-dof form)
-[[gnu::noinline]] void freeRootRowCall(const double* f, const Transform& X, int c, double* M,
-                                       Eigen::Index ld) {
+// (f of dof c, X_WB of the free root) => freeRootRow, out of line (the per-dof form; unused where
+// kRootRowsAfter)
+[[gnu::noinline, maybe_unused]] void freeRootRowCall(const double* f, const Transform& X, int c,
+                                                     double* M, Eigen::Index ld) {
   freeRootRow(f, X.R.data(), X.p.data(), c, M, ld);
 }
 

@@ -238,6 +238,39 @@ inline void abaJointForward(Data& d, int i, int p, int iv) {
   d.A_W[i] = a + d.C_W[i] + S * qdd;
 }
 
+// (body i on a 1-dof coordinate-axis joint, X_WB[i], qd) => S_W's column (worldSubspaceColumn's
+// doubles: (R_WB's column K, p x it) for a revolute, (0, it) for a prismatic joint) and vJ = s qd,
+// both written as three pairs formed in registers: the 6-vector worldSubspaceColumn builds entry by
+// entry and then copies as pairs waits for its stores instead of having them forwarded
+inline void subspaceAndVelocity(const Model& m, Data& d, int i, double qd, Motion& vJ) {
+  const Transform& X = d.X_WB[i];
+  const int k = m.jointAxis[i];
+  const double w0 = X.R(0, k), w1 = X.R(1, k), w2 = X.R(2, k);
+  double s[6];
+  if (m.joints[i].type == JointType::Revolute) {
+    const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
+    s[0] = w0;
+    s[1] = w1;
+    s[2] = w2;
+    s[3] = p1 * w2 - p2 * w1;
+    s[4] = p2 * w0 - p0 * w2;
+    s[5] = p0 * w1 - p1 * w0;
+  } else {
+    s[0] = 0.0;
+    s[1] = 0.0;
+    s[2] = 0.0;
+    s[3] = w0;
+    s[4] = w1;
+    s[5] = w2;
+  }
+  double* col = d.S_W.col(m.idxV[i]).data();
+  for (int r = 0; r < 6; r += 2) {
+    const Pair pr(s[r], s[r + 1]);
+    Eigen::Map<Pair>(col + r) = pr;
+    vJ.segment<2>(r) = pr * qd;
+  }
+}
+
 // (q, v, body i's X_WB) => S_W, V_W, C_W = V_W x S_W v_i (+ X c_J), A_W = A0_i, IA_W = I_W,
 // PA_W = I_W A0_i + V_W x* I_W V_W - F_ext_W
 inline void abaBodyTerms(const Model& m, Data& d, int i, const Eigen::VectorXd& q,
@@ -247,7 +280,9 @@ inline void abaBodyTerms(const Model& m, Data& d, int i, const Eigen::VectorXd& 
   const int nv = m.jointNv[i];
   const int iv = m.idxV[i];
   Motion vJ;
-  if (nv == 1) {
+  if (nv == 1 && m.jointAxis[i] >= 0) {
+    subspaceAndVelocity(m, d, i, v[iv], vJ);
+  } else if (nv == 1) {
     const Motion s = worldSubspaceColumn(m, d, i);
     d.S_W.col(iv) = s;
     vJ = s * v[iv];

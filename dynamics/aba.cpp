@@ -5,6 +5,7 @@
 #include "dynamics/checks.hpp"
 #include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
+#include "dynamics/subspace_column.hpp"
 
 namespace yardsim::dynamics {
 
@@ -244,25 +245,9 @@ inline void abaJointForward(Data& d, int i, int p, int iv) {
 // entry and then copies as pairs waits for its stores instead of having them forwarded
 inline void subspaceAndVelocity(const Model& m, Data& d, int i, double qd, Motion& vJ) {
   const Transform& X = d.X_WB[i];
-  const int k = m.jointAxis[i];
-  const double w0 = X.R(0, k), w1 = X.R(1, k), w2 = X.R(2, k);
   double s[6];
-  if (m.joints[i].type == JointType::Revolute) {
-    const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
-    s[0] = w0;
-    s[1] = w1;
-    s[2] = w2;
-    s[3] = p1 * w2 - p2 * w1;
-    s[4] = p2 * w0 - p0 * w2;
-    s[5] = p0 * w1 - p1 * w0;
-  } else {
-    s[0] = 0.0;
-    s[1] = 0.0;
-    s[2] = 0.0;
-    s[3] = w0;
-    s[4] = w1;
-    s[5] = w2;
-  }
+  coordinateAxisSubspace(m.joints[i].type == JointType::Revolute, X.R.data() + 3 * m.jointAxis[i],
+                         X.p.data(), s);
   double* col = d.S_W.col(m.idxV[i]).data();
   for (int r = 0; r < 6; r += 2) {
     const Pair pr(s[r], s[r + 1]);

@@ -3,6 +3,7 @@
 #include "dynamics/checks.hpp"
 #include "dynamics/flatten.hpp"
 #include "dynamics/kinematics.hpp"
+#include "dynamics/subspace_column.hpp"
 
 #if defined(EIGEN_VECTORIZE_SSE2)
 #include <emmintrin.h>
@@ -299,14 +300,7 @@ void placeRevoluteWorld(const Transform& P, const Vector3& o, double c, double s
     r[row + 3 * a] = pr[row + 3 * a] * c + pr[row + 3 * b] * sPos;
     r[row + 3 * b] = pr[row + 3 * a] * sNeg + pr[row + 3 * b] * c;
   }
-  const double w0 = r[3 * K], w1 = r[3 * K + 1], w2 = r[3 * K + 2];
-  const double p0 = X.p[0], p1 = X.p[1], p2 = X.p[2];
-  sw[0] = w0;
-  sw[1] = w1;
-  sw[2] = w2;
-  sw[3] = p1 * w2 - p2 * w1;
-  sw[4] = p2 * w0 - p0 * w2;
-  sw[5] = p0 * w1 - p1 * w0;
+  coordinateAxisSubspace(true, r + 3 * K, X.p.data(), sw);
 }
 
 // (q, body i on a free joint: S = 1) => X_WB of body i (placeBody) and its six columns of S_W,
@@ -369,10 +363,7 @@ void placeForCrba(const Model& m, Data& d, int i, const Eigen::VectorXd& q) {
   const Vector3 t = m.X_PJ[i].p + m.joints[i].axis * qi;
   X.p = P.p + P.R * t;
   X.R = P.R;
-  for (int r = 0; r < 3; ++r) {
-    sw[r] = 0.0;
-    sw[3 + r] = X.R(r, k);
-  }
+  coordinateAxisSubspace(false, X.R.data() + 3 * k, X.p.data(), sw);
 }
 
 // (q, added mass on some body) => M with the composite inertias as 6x6 matrices (an added mass is
